@@ -1,0 +1,8 @@
+# Every build option of rotorsweep, declared in one place.
+# Defaults give a native, optimised build with tests.
+option(ROTORSWEEP_NATIVE "Compile for the host CPU (-march=native): widest SIMD lanes" ON)
+option(ROTORSWEEP_BUILD_TESTS "Build the Catch2 test suite" ON)
+
+if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+  set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
+endif()

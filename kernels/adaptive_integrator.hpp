@@ -1,0 +1,106 @@
+// Adaptive lockstep integration of a block of lanes: each lane has its own t, h, stopping
+// time and status; accept/reject is a mask, and a failing lane freezes without stopping others.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "kernels/lane.hpp"
+#include "kernels/lane_state.hpp"
+#include "kernels/step_control.hpp"
+
+namespace rotorsweep::kernels {
+
+template <class System, class Stepper>
+class AdaptiveIntegrator {
+ public:
+  using V = typename System::lane_type;
+  static constexpr std::size_t nq = System::quadrature_count;
+
+  AdaptiveIntegrator(const System& system, Tolerances tol, StepLimits limits = {})
+      : tol_(tol),
+        limits_(limits),
+        stepper_(system),
+        work_(system.make_workspace()),
+        y_new_(system.dimension()),
+        y_error_(system.dimension()),
+        q_new_(nq + 1),
+        q_error_(nq + 1) {}
+
+  const Tolerances& tolerances() const { return tol_; }
+
+  /// One step attempt for every lane that is ok and short of its t_stop; the step is clipped
+  /// to land exactly on t_stop. Returns the lanes that accepted a step.
+  lane_mask<V> attempt(const System& system, LaneState<V>& s) {
+    const lane_mask<V> active = s.running() & (s.t < s.t_stop);
+    if (!lane_any(active)) return active;
+    propose_first_steps(system, s, active);
+
+    const std::size_t n = s.rows();
+    const V remaining = s.t_stop - s.t;
+    const lane_mask<V> clipped = s.h >= remaining;
+    const V h = lane_select(active, lane_min(s.h, remaining), V(1.0));
+    stepper_.attempt(system, s.t, h, s.theta.data(), s.quad.data(), y_new_.data(), q_new_.data(),
+                     y_error_.data(), q_error_.data());
+    const V err = error_norm(tol_, n, y_error_.data(), nq, System::error_controlled.data(), s.quad.data(), q_new_.data(), q_error_.data());
+
+    V checksum(0.0);
+    for (std::size_t k = 0; k < n; ++k) checksum += y_new_[k];
+    for (std::size_t p = 0; p < nq; ++p) checksum += q_new_[p];
+    const lane_mask<V> finite = lane_isfinite(err) & lane_isfinite(checksum);
+    const lane_mask<V> accept = active & finite & (err <= V(1.0));
+
+    for (std::size_t k = 0; k < n; ++k) s.theta[k] = lane_select(accept, y_new_[k], s.theta[k]);
+    for (std::size_t p = 0; p < nq; ++p) s.quad[p] = lane_select(accept, q_new_[p], s.quad[p]);
+    s.t = lane_select(accept, lane_select(clipped, s.t_stop, s.t + h), s.t);
+
+    V h_next = h * step_factor(limits_, Stepper::embedded_order(), lane_select(finite, err, err + V(INFINITY)), accept);
+    h_next = lane_select(accept & clipped, lane_max(h_next, s.h), h_next);
+    s.h = lane_select(active, lane_min(h_next, V(limits_.h_max)), s.h);
+    s.steps_accepted += lane_select(accept, V(1.0), V(0.0));
+    s.steps_rejected += lane_select(active & !accept, V(1.0), V(0.0));
+
+    const V h_floor = V(16.0 * std::numeric_limits<double>::epsilon()) * lane_max(V(1.0), lane_abs(s.t));
+    const lane_mask<V> trouble = active & ((s.h < h_floor) | (s.steps_accepted + s.steps_rejected >= V(limits_.max_steps)));
+    if (lane_any(trouble)) flag_failures(s, trouble, finite, h_floor);
+    return accept;
+  }
+
+  /// Attempts steps until every lane has reached its t_stop or failed.
+  void advance(const System& system, LaneState<V>& s) {
+    while (lane_any(s.running() & (s.t < s.t_stop))) attempt(system, s);
+  }
+
+ private:
+  // Lanes with h <= 0 get h = min(h_max, 0.01 (atol + rtol)^(1/(p+1)) / max_j |f_j|).
+  void propose_first_steps(const System& system, LaneState<V>& s, lane_mask<V> active) {
+    const lane_mask<V> fresh = active & (s.h <= V(0.0));
+    if (!lane_any(fresh)) return;
+    system.evaluate(work_, s.theta.data(), s.t, y_new_.data(), q_new_.data());
+    V rate(1e-300);
+    for (std::size_t k = 0; k < s.rows(); ++k) rate = lane_max(rate, lane_abs(y_new_[k]));
+    const double scale = 0.01 * std::pow(tol_.atol + tol_.rtol, 1.0 / (Stepper::order() + 1));
+    const V h0 = lane_min(V(limits_.h_max), V(scale) / rate);
+    s.h = lane_select(fresh, lane_select(lane_isfinite(h0), h0, V(limits_.h_max)), s.h);
+  }
+
+  void flag_failures(LaneState<V>& s, lane_mask<V> trouble, lane_mask<V> finite, V h_floor) const {
+    for (std::size_t l = 0; l < lane_width<V>; ++l) {
+      if (!mask_get(trouble, l)) continue;
+      if (lane_get(s.steps_accepted, l) + lane_get(s.steps_rejected, l) >= limits_.max_steps)
+        s.status[l] = LaneStatus::step_budget;
+      else if (lane_get(s.h, l) < lane_get(h_floor, l))
+        s.status[l] = mask_get(finite, l) ? LaneStatus::step_underflow : LaneStatus::non_finite;
+    }
+  }
+
+  Tolerances tol_;
+  StepLimits limits_;
+  Stepper stepper_;
+  typename System::Workspace work_;
+  lane_vector<V> y_new_, y_error_, q_new_, q_error_;
+};
+
+}  // namespace rotorsweep::kernels

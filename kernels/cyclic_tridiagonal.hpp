@@ -1,0 +1,85 @@
+// Cyclic tridiagonal Jacobian of the row model (model.md §1) and the O(N) solve of the
+// Rosenbrock stage matrix M = shift·I - J, eliminated lane by lane without pivoting.
+#pragma once
+
+#include <cstddef>
+
+#include "kernels/lane.hpp"
+
+namespace rotorsweep::kernels {
+
+/// A symmetric cyclic tridiagonal matrix J over n >= 2 rows, one per lane, and the
+/// factorisation of shift·I - J. Link k couples rows k and (k+1) mod n: J(k, k+1) = J(k+1, k)
+/// = off[k]. With n = 2 both links couple rows 0 and 1 and their entries add up.
+///
+/// The elimination keeps a spike in the last column and eliminates the corner of the last
+/// row front to back (no fill-in beyond two vectors, no pivoting). It is stable for the
+/// diagonally dominant and the symmetric positive definite matrices the steppers build near
+/// stable states; a vanishing pivot elsewhere yields non-finite stages, which the step
+/// controller rejects.
+template <class V>
+class CyclicTridiagonal {
+ public:
+  explicit CyclicTridiagonal(std::size_t n)
+      : n_(n), diag_(n), off_(n), inv_pivot_(n), upper_(n), spike_(n), corner_(n) {}
+
+  std::size_t size() const { return n_; }
+  V& diag(std::size_t i) { return diag_[i]; }
+  V& off(std::size_t k) { return off_[k]; }
+  const V& diag(std::size_t i) const { return diag_[i]; }
+  const V& off(std::size_t k) const { return off_[k]; }
+
+  /// y += J x
+  void multiply_add(const V* x, V* y) const {
+    const std::size_t n = n_;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t k1 = (k + 1 == n) ? 0 : k + 1;
+      y[k] += diag_[k] * x[k] + off_[k] * x[k1];
+      y[k1] += off_[k] * x[k];
+    }
+  }
+
+  /// Factorises M = shift·I - J for the following solve() calls.
+  void factor(V shift) {
+    const std::size_t m = n_ - 1;  // index of the last row
+    // rows 0 .. m-1:  x_i + upper_i x_{i+1} + spike_i x_m = y_i
+    V d = shift - diag_[0];
+    inv_pivot_[0] = V(1.0) / d;
+    upper_[0] = -off_[0] * inv_pivot_[0];
+    spike_[0] = -off_[m] * inv_pivot_[0];
+    for (std::size_t i = 1; i < m; ++i) {
+      const V sub = -off_[i - 1];
+      d = shift - diag_[i] - sub * upper_[i - 1];
+      inv_pivot_[i] = V(1.0) / d;
+      upper_[i] = -off_[i] * inv_pivot_[i];
+      spike_[i] = -sub * spike_[i - 1] * inv_pivot_[i];
+    }
+    spike_[m - 1] += upper_[m - 1];  // x_{(m-1)+1} is x_m itself
+    // last row: corner_k is the coefficient that multiplies x_k while x_0 .. x_{m-1} are eliminated
+    corner_[0] = -off_[m];
+    for (std::size_t k = 0; k + 2 <= m; ++k) corner_[k + 1] = -corner_[k] * upper_[k];
+    corner_[m - 1] += -off_[m - 1];
+    V beta = shift - diag_[m];
+    for (std::size_t k = 0; k < m; ++k) beta -= corner_[k] * spike_[k];
+    inv_pivot_[m] = V(1.0) / beta;
+  }
+
+  /// Solves M x = r in place (r becomes x), with M from the last factor().
+  void solve(V* r) const {
+    const std::size_t m = n_ - 1;
+    r[0] *= inv_pivot_[0];
+    for (std::size_t i = 1; i < m; ++i) r[i] = (r[i] + off_[i - 1] * r[i - 1]) * inv_pivot_[i];
+    V rho = r[m];
+    for (std::size_t k = 0; k < m; ++k) rho -= corner_[k] * r[k];
+    r[m] = rho * inv_pivot_[m];
+    r[m - 1] -= spike_[m - 1] * r[m];
+    for (std::size_t i = m - 1; i-- > 0;) r[i] -= upper_[i] * r[i + 1] + spike_[i] * r[m];
+  }
+
+ private:
+  std::size_t n_;
+  lane_vector<V> diag_, off_;
+  lane_vector<V> inv_pivot_, upper_, spike_, corner_;
+};
+
+}  // namespace rotorsweep::kernels

@@ -1,0 +1,70 @@
+// Lane-parallel explicit Dormand–Prince 5(4) stepper: the non-stiff reference for tests and
+// the benchmark that shows what stiffness costs. Quadrature states are plain extra components.
+#pragma once
+
+#include <cstddef>
+
+#include "kernels/dormand_prince_tableau.hpp"
+#include "kernels/lane.hpp"
+
+namespace rotorsweep::kernels {
+
+/// One attempted step of size h per lane. The first stage is evaluated afresh on every
+/// attempt (no first-same-as-last reuse), since lanes accept and reject independently.
+template <class System>
+class DormandPrince5 {
+ public:
+  using V = typename System::lane_type;
+  static constexpr const ExplicitTableau& tableau = dormand_prince5_tableau;
+  static constexpr std::size_t nq = System::quadrature_count;
+
+  explicit DormandPrince5(const System& system)
+      : n_(system.dimension()),
+        work_(system.make_workspace()),
+        argument_(n_),
+        slopes_(std::size_t(tableau.stages) * n_),
+        quad_slopes_(std::size_t(tableau.stages) * nq + 1) {}
+
+  static constexpr int order() { return tableau.order; }
+  static constexpr int embedded_order() { return tableau.embedded_order; }
+
+  void attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new,
+               V* y_error, V* q_error) {
+    const std::size_t n = n_;
+    constexpr const ExplicitTableau& T = tableau;
+    for (int i = 0; i < T.stages; ++i) {
+      for (std::size_t k = 0; k < n; ++k) argument_[k] = y[k];
+      for (int j = 0; j < i; ++j) {
+        if (T.a[i][j] == 0.0) continue;
+        const V ha = h * V(T.a[i][j]);
+        const V* kj = slopes_.data() + std::size_t(j) * n;
+        for (std::size_t k = 0; k < n; ++k) argument_[k] += ha * kj[k];
+      }
+      system.evaluate(work_, argument_.data(), t + V(T.c[i]) * h, slopes_.data() + std::size_t(i) * n,
+                      quad_slopes_.data() + std::size_t(i) * nq);
+    }
+    combine(h, y, n, slopes_.data(), y_new, y_error);
+    combine(h, q, nq, quad_slopes_.data(), q_new, q_error);
+  }
+
+ private:
+  static void combine(V h, const V* start, std::size_t count, const V* slopes, V* result, V* error) {
+    constexpr const ExplicitTableau& T = tableau;
+    for (std::size_t k = 0; k < count; ++k) {
+      V sum(0.0), err(0.0);
+      for (int i = 0; i < T.stages; ++i) {
+        const V s = slopes[std::size_t(i) * count + k];
+        if (T.b[i] != 0.0) sum += V(T.b[i]) * s;
+        if (T.e[i] != 0.0) err += V(T.e[i]) * s;
+      }
+      result[k] = start[k] + h * sum;
+      error[k] = h * err;
+    }
+  }
+
+  std::size_t n_;
+  typename System::Workspace work_;
+  lane_vector<V> argument_, slopes_, quad_slopes_;
+};
+
+}  // namespace rotorsweep::kernels

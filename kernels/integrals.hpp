@@ -1,0 +1,32 @@
+// Which per-period integrals ride along with the integration as quadrature states
+// (model.md §3: work W, Stokes S, drive R, time integrals of alignment ρ̄ and energy H).
+#pragma once
+
+#include <cstddef>
+
+namespace rotorsweep::kernels {
+
+/// The quadrature states a model carries; a compile-time choice, so that what a scene does
+/// not ask for costs nothing in the hot loop.
+struct Integrals {
+  bool drive = true;       ///< R = A Σ ∫ sin(θ_j - t) dt        (dissipation, robust estimator)
+  bool work = false;       ///< W = A Σ ∫ sin(θ_j - t) θ̇_j dt    (work done by the drive)
+  bool stokes = false;     ///< S = g Σ ∫ θ̇_j² dt               (Stokes dissipation)
+  bool alignment = false;  ///< ∫ ρ̄ dt, ρ̄ = (1/N) Σ cos²((θ_j - θ_{j+1})/2)
+  bool energy = false;     ///< ∫ H dt
+
+  constexpr std::size_t count() const {
+    return std::size_t(drive) + work + stokes + alignment + energy;
+  }
+  // Position of each integral in the quadrature state vector (valid when it is carried).
+  constexpr std::size_t drive_index() const { return 0; }
+  constexpr std::size_t work_index() const { return std::size_t(drive); }
+  constexpr std::size_t stokes_index() const { return work_index() + work; }
+  constexpr std::size_t alignment_index() const { return stokes_index() + stokes; }
+  constexpr std::size_t energy_index() const { return alignment_index() + alignment; }
+};
+
+inline constexpr Integrals all_integrals{true, true, true, true, true};
+inline constexpr Integrals dissipation_only{true, false, false, false, false};
+
+}  // namespace rotorsweep::kernels

@@ -1,0 +1,72 @@
+// Coefficient tables of the linearly implicit (Rosenbrock) steppers, in the transformed form
+// of Hairer & Wanner (Solving ODEs II, §IV.7, Eq. 7.25): stage unknowns U_i = Σ_j γ_ij k_j.
+#pragma once
+
+#include <cmath>
+
+namespace rotorsweep::kernels {
+
+/// Stage i solves (1/(hγ) I - J) U_i = f(t + α_i h, y + Σ_{j<i} a_ij U_j)
+///                                     + Σ_{j<i} (c_ij / h) U_j + γ_i h ∂f/∂t,
+/// then y_new = y + Σ m_i U_i and the error estimate is Σ e_i U_i.
+struct RosenbrockTableau {
+  static constexpr int max_stages = 6;
+  const char* name;
+  int stages;
+  int order;           ///< order of y_new
+  int embedded_order;  ///< order of the embedded solution behind the error estimate
+  double gamma;
+  double alpha[max_stages];
+  double gamma_sum[max_stages];  ///< γ_i = Σ_j γ_ij, the weight of h ∂f/∂t
+  double a[max_stages][max_stages];
+  double c[max_stages][max_stages];
+  double m[max_stages];
+  double e[max_stages];
+};
+
+/// RODAS (order 4, embedded 3, 6 stages, L-stable, stiffly accurate).
+/// Source: E. Hairer, G. Wanner, Solving Ordinary Differential Equations II, 2nd ed.,
+/// Springer 1996, §VI.4; coefficients as printed in the authors' code rodas.f (METH = 1).
+inline constexpr RosenbrockTableau rodas4_tableau{
+    "rodas4", 6, 4, 3, 0.25,
+    {0.0, 0.386, 0.21, 0.63, 1.0, 1.0},
+    {0.25, -0.1043, 0.1035, -0.3620000000000023e-01, 0.0, 0.0},
+    {{0, 0, 0, 0, 0, 0},
+     {0.1544000000000000e+01, 0, 0, 0, 0, 0},
+     {0.9466785280815826e+00, 0.2557011698983284e+00, 0, 0, 0, 0},
+     {0.3314825187068521e+01, 0.2896124015972201e+01, 0.9986419139977817e+00, 0, 0, 0},
+     {0.1221224509226641e+01, 0.6019134481288629e+01, 0.1253708332932087e+02,
+      -0.6878860361058950e+00, 0, 0},
+     {0.1221224509226641e+01, 0.6019134481288629e+01, 0.1253708332932087e+02,
+      -0.6878860361058950e+00, 1.0, 0}},
+    {{0, 0, 0, 0, 0, 0},
+     {-0.5668800000000000e+01, 0, 0, 0, 0, 0},
+     {-0.2430093356833875e+01, -0.2063599157091915e+00, 0, 0, 0, 0},
+     {-0.1073529058151375e+00, -0.9594562251023355e+01, -0.2047028614809616e+02, 0, 0, 0},
+     {0.7496443313967647e+01, -0.1024680431464352e+02, -0.3399990352819905e+02,
+      0.1170890893206160e+02, 0, 0},
+     {0.8083246795921522e+01, -0.7981132988064893e+01, -0.3152159432874371e+02,
+      0.1631930543123136e+02, -0.6058818238834054e+01, 0}},
+    {0.1221224509226641e+01, 0.6019134481288629e+01, 0.1253708332932087e+02,
+     -0.6878860361058950e+00, 1.0, 1.0},
+    {0, 0, 0, 0, 0, 1.0}};
+
+namespace detail {
+inline constexpr double ros2_gamma = 1.0 + 0.70710678118654752440;  // 1 + 1/√2
+}
+
+/// ROS2 (order 2, embedded 1, 2 stages, L-stable): the cheap method for loose tolerances.
+/// Source: J. G. Verwer, E. J. Spee, J. G. Blom, W. Hundsdorfer, "A second-order Rosenbrock
+/// method applied to photochemical dispersion problems", SIAM J. Sci. Comput. 20 (1999)
+/// 1456–1480, Eq. (2.5) with γ = 1 + 1/√2; embedded solution: the first stage alone
+/// (linearly implicit Euler), y + U_1/γ.
+inline constexpr RosenbrockTableau ros2_tableau{
+    "ros2", 2, 2, 1, detail::ros2_gamma,
+    {0.0, 1.0},
+    {detail::ros2_gamma, -detail::ros2_gamma},
+    {{0}, {1.0 / detail::ros2_gamma}},
+    {{0}, {-2.0 / detail::ros2_gamma}},
+    {1.5 / detail::ros2_gamma, 0.5 / detail::ros2_gamma},
+    {0.5 / detail::ros2_gamma, 0.5 / detail::ros2_gamma}};
+
+}  // namespace rotorsweep::kernels

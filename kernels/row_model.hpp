@@ -1,0 +1,209 @@
+// The nearest-neighbour periodic row model (model.md §1, paper Eq. EOMFULL): right-hand side,
+// cyclic tridiagonal Jacobian, ∂f/∂t, energy, and the quadrature integrands of model.md §3.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "kernels/cyclic_tridiagonal.hpp"
+#include "kernels/integrals.hpp"
+#include "kernels/lane.hpp"
+
+namespace rotorsweep::kernels {
+
+/// g dθ_j/dt = -3 sin 2θ_j + sin(θ_j - θ_{j+1}) + sin(θ_j - θ_{j-1}) + A sin(θ_j - t),
+/// rows periodic (θ_N ≡ θ_0), N >= 2. A and g are per lane. Every evaluation takes one
+/// sincos per row and one for the drive phase; all other trigonometry follows from sums
+/// and products of those.
+///
+/// The model keeps no mutable state: scratch lives in a Workspace owned by the caller.
+template <class V, Integrals Q>
+class NearestNeighbourRows {
+ public:
+  using lane_type = V;
+  using Jacobian = CyclicTridiagonal<V>;
+  static constexpr Integrals integrals = Q;
+  static constexpr std::size_t quadrature_count = Q.count();
+  /// Which quadratures steer the step size. W and S integrate θ̇ = f(θ, t), which the stages
+  /// sample off the slow manifold, with errors amplified by the stiffness (10 + A)/g that the
+  /// embedded estimate shares and so cannot see; they are carried but do not steer.
+  static constexpr std::array<bool, quadrature_count + 1> error_controlled = [] {
+    std::array<bool, quadrature_count + 1> c{};
+    if constexpr (Q.drive) c[Q.drive_index()] = true;
+    if constexpr (Q.alignment) c[Q.alignment_index()] = true;
+    if constexpr (Q.energy) c[Q.energy_index()] = true;
+    return c;
+  }();
+
+  struct Workspace {
+    explicit Workspace(std::size_t n)
+        : sin_row(n), cos_row(n), sin_lag(n), cos_lag(n), sin_link(n), cos_link(n), product(n) {}
+    lane_vector<V> sin_row, cos_row;    // sin θ_j, cos θ_j
+    lane_vector<V> sin_lag, cos_lag;    // sin(θ_j - t), cos(θ_j - t)
+    lane_vector<V> sin_link, cos_link;  // sin(θ_j - θ_{j+1}), cos(θ_j - θ_{j+1})
+    lane_vector<V> product;             // J·v products for the integrand gradients
+  };
+
+  NearestNeighbourRows(std::size_t rows, V A, V g) : rows_(rows), A_(A), g_(g), inv_g_(V(1.0) / g) {}
+
+  std::size_t dimension() const { return rows_; }
+  Workspace make_workspace() const { return Workspace(rows_); }
+  const V& A() const { return A_; }
+  const V& g() const { return g_; }
+
+  /// f = dθ/dt and the quadrature integrands qdot at (θ, t).
+  void evaluate(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
+    trigonometry(w, theta, t);
+    torques(w, f);
+    integrands(w, f, qdot);
+  }
+
+  /// evaluate() plus the Jacobian J = ∂f/∂θ, ∂f/∂t, and the gradients of the integrands
+  /// (dq_dtheta[q·N + k] = ∂qdot_q/∂θ_k, dq_dt[q] = ∂qdot_q/∂t) at the same point.
+  void linearize(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt,
+                 V* dq_dtheta, V* dq_dt) const {
+    evaluate(w, theta, t, f, qdot);
+    const std::size_t n = rows_;
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t jm = (j == 0) ? n - 1 : j - 1;
+      const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
+      J.diag(j) = inv_g_ * (V(-6.0) * cos_2theta + w.cos_link[j] + w.cos_link[jm] + A_ * w.cos_lag[j]);
+      J.off(j) = -inv_g_ * w.cos_link[j];
+      df_dt[j] = -inv_g_ * A_ * w.cos_lag[j];
+    }
+    integrand_gradients(w, f, J, df_dt, dq_dtheta, dq_dt);
+  }
+
+  /// H(θ; A, t) of model.md §1.
+  V energy(Workspace& w, const V* theta, V t) const {
+    trigonometry(w, theta, t);
+    return energy_from_trigonometry(w);
+  }
+
+  /// ρ̄(θ) = (1/N) Σ cos²((θ_j - θ_{j+1})/2).
+  V alignment(Workspace& w, const V* theta, V t) const {
+    trigonometry(w, theta, t);
+    return alignment_from_trigonometry(w);
+  }
+
+ private:
+  void trigonometry(Workspace& w, const V* theta, V t) const {
+    const std::size_t n = rows_;
+    V sin_t, cos_t;
+    lane_sincos(t, sin_t, cos_t);
+    for (std::size_t j = 0; j < n; ++j) {
+      lane_sincos(theta[j], w.sin_row[j], w.cos_row[j]);
+      w.sin_lag[j] = w.sin_row[j] * cos_t - w.cos_row[j] * sin_t;
+      w.cos_lag[j] = w.cos_row[j] * cos_t + w.sin_row[j] * sin_t;
+    }
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t jp = (j + 1 == n) ? 0 : j + 1;
+      w.sin_link[j] = w.sin_row[j] * w.cos_row[jp] - w.cos_row[j] * w.sin_row[jp];
+      w.cos_link[j] = w.cos_row[j] * w.cos_row[jp] + w.sin_row[j] * w.sin_row[jp];
+    }
+  }
+
+  void torques(const Workspace& w, V* f) const {
+    const std::size_t n = rows_;
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t jm = (j == 0) ? n - 1 : j - 1;
+      const V sin_2theta = V(2.0) * w.sin_row[j] * w.cos_row[j];
+      f[j] = inv_g_ * (V(-3.0) * sin_2theta + w.sin_link[j] - w.sin_link[jm] + A_ * w.sin_lag[j]);
+    }
+  }
+
+  V energy_from_trigonometry(const Workspace& w) const {
+    V h(0.0);
+    for (std::size_t j = 0; j < rows_; ++j) {
+      const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
+      h += V(-1.5) * cos_2theta + w.cos_link[j] + A_ * w.cos_lag[j];
+    }
+    return h;
+  }
+
+  V alignment_from_trigonometry(const Workspace& w) const {
+    V sum(0.0);
+    for (std::size_t j = 0; j < rows_; ++j) sum += w.cos_link[j];
+    return V(0.5) + V(0.5 / double(rows_)) * sum;
+  }
+
+  void integrands(const Workspace& w, const V* f, V* qdot) const {
+    const std::size_t n = rows_;
+    if constexpr (Q.drive) {
+      V sum(0.0);
+      for (std::size_t j = 0; j < n; ++j) sum += w.sin_lag[j];
+      qdot[Q.drive_index()] = A_ * sum;
+    }
+    if constexpr (Q.work) {
+      V sum(0.0);
+      for (std::size_t j = 0; j < n; ++j) sum += w.sin_lag[j] * f[j];
+      qdot[Q.work_index()] = A_ * sum;
+    }
+    if constexpr (Q.stokes) {
+      V sum(0.0);
+      for (std::size_t j = 0; j < n; ++j) sum += f[j] * f[j];
+      qdot[Q.stokes_index()] = g_ * sum;
+    }
+    if constexpr (Q.alignment) qdot[Q.alignment_index()] = alignment_from_trigonometry(w);
+    if constexpr (Q.energy) qdot[Q.energy_index()] = energy_from_trigonometry(w);
+  }
+
+  void integrand_gradients(Workspace& w, const V* f, const Jacobian& J, const V* df_dt,
+                           V* dq_dtheta, V* dq_dt) const {
+    const std::size_t n = rows_;
+    if constexpr (Q.drive) {
+      V* grad = dq_dtheta + Q.drive_index() * n;
+      V sum(0.0);
+      for (std::size_t k = 0; k < n; ++k) {
+        grad[k] = A_ * w.cos_lag[k];
+        sum += w.cos_lag[k];
+      }
+      dq_dt[Q.drive_index()] = -A_ * sum;
+    }
+    if constexpr (Q.work) {
+      V* grad = dq_dtheta + Q.work_index() * n;
+      for (std::size_t k = 0; k < n; ++k) w.product[k] = V(0.0);
+      J.multiply_add(w.sin_lag.data(), w.product.data());  // J symmetric: Jᵀ sin_lag
+      V sum(0.0);
+      for (std::size_t k = 0; k < n; ++k) {
+        grad[k] = A_ * (w.cos_lag[k] * f[k] + w.product[k]);
+        sum += w.sin_lag[k] * df_dt[k] - w.cos_lag[k] * f[k];
+      }
+      dq_dt[Q.work_index()] = A_ * sum;
+    }
+    if constexpr (Q.stokes) {
+      V* grad = dq_dtheta + Q.stokes_index() * n;
+      for (std::size_t k = 0; k < n; ++k) w.product[k] = V(0.0);
+      J.multiply_add(f, w.product.data());
+      V sum(0.0);
+      for (std::size_t k = 0; k < n; ++k) {
+        grad[k] = V(2.0) * g_ * w.product[k];
+        sum += f[k] * df_dt[k];
+      }
+      dq_dt[Q.stokes_index()] = V(2.0) * g_ * sum;
+    }
+    if constexpr (Q.alignment) {
+      V* grad = dq_dtheta + Q.alignment_index() * n;
+      const V scale(0.5 / double(n));
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t km = (k == 0) ? n - 1 : k - 1;
+        grad[k] = scale * (w.sin_link[km] - w.sin_link[k]);
+      }
+      dq_dt[Q.alignment_index()] = V(0.0);
+    }
+    if constexpr (Q.energy) {
+      V* grad = dq_dtheta + Q.energy_index() * n;
+      V sum(0.0);
+      for (std::size_t k = 0; k < n; ++k) {
+        grad[k] = -g_ * f[k];
+        sum += w.sin_lag[k];
+      }
+      dq_dt[Q.energy_index()] = A_ * sum;
+    }
+  }
+
+  std::size_t rows_;
+  V A_, g_, inv_g_;
+};
+
+}  // namespace rotorsweep::kernels

@@ -1,0 +1,74 @@
+// Observed convergence orders of every stepper (Rodas4: 4, ROS2: 2, Dormand–Prince: 5) in the
+// angles and in all quadrature states, from fixed-step runs on a smooth, mildly stiff case.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "kernels/dormand_prince.hpp"
+#include "kernels/rosenbrock.hpp"
+#include "kernels/row_model.hpp"
+#include "support/member_run.hpp"
+
+using namespace rotorsweep::kernels;
+
+namespace {
+
+using Model = NearestNeighbourRows<double, all_integrals>;
+constexpr std::size_t nq = Model::quadrature_count;
+
+// Fixed-step integration over [0.3, 1.3]; returns the angles followed by the quadratures.
+template <class Stepper>
+std::vector<double> fixed_steps(const Model& m, int steps) {
+  Stepper stepper(m);
+  const std::size_t n = m.dimension();
+  auto y = rotorsweep::testing::initial_angles(n, rotorsweep::testing::Start::afm, 0.4);
+  std::vector<double> q(nq, 0.0), y_new(n), q_new(nq), y_err(n), q_err(nq);
+  const double h = 1.0 / steps;
+  double t = 0.3;
+  for (int i = 0; i < steps; ++i) {
+    stepper.attempt(m, t, h, y.data(), q.data(), y_new.data(), q_new.data(), y_err.data(), q_err.data());
+    y.swap(y_new);
+    q.swap(q_new);
+    t += h;
+  }
+  y.insert(y.end(), q.begin(), q.end());
+  return y;
+}
+
+double max_error(const std::vector<double>& a, const std::vector<double>& b, std::size_t from, std::size_t to) {
+  double e = 0;
+  for (std::size_t k = from; k < to; ++k) e = std::max(e, std::fabs(a[k] - b[k]));
+  return e;
+}
+
+template <class Stepper>
+void check_order(int expected, std::vector<int> steps) {
+  const Model m(6, 2.5, 3.0);
+  const auto reference = fixed_steps<DormandPrince5<Model>>(m, 4096);
+  const std::size_t n = m.dimension();
+  for (std::size_t component = 0; component <= nq; ++component) {
+    // component 0: the angles; 1..nq: each quadrature state
+    const std::size_t from = component == 0 ? 0 : n + component - 1;
+    const std::size_t to = component == 0 ? n : from + 1;
+    const double coarse = max_error(fixed_steps<Stepper>(m, steps[0]), reference, from, to);
+    const double fine = max_error(fixed_steps<Stepper>(m, steps[1]), reference, from, to);
+    const double order = std::log2(coarse / fine) / std::log2(double(steps[1]) / steps[0]);
+    INFO(Stepper::tableau.name << " component " << component << ": errors " << coarse << " -> " << fine);
+    if (component == 0) {
+      CHECK(order == Approx(expected).margin(0.25));
+    } else {  // quadratures: at least the method's order (their own error terms may vanish faster)
+      CHECK(order >= expected - 0.25);
+      CHECK(order <= expected + 2.5);
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Rodas4 converges with order 4", "[kernels][order]") { check_order<Rodas4<Model>>(4, {64, 128}); }
+TEST_CASE("ROS2 converges with order 2", "[kernels][order]") { check_order<Ros2<Model>>(2, {128, 256}); }
+TEST_CASE("Dormand-Prince converges with order 5", "[kernels][order]") {
+  check_order<DormandPrince5<Model>>(5, {32, 64});
+}
