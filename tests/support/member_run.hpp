@@ -4,10 +4,9 @@
 
 #include <array>
 #include <cstddef>
-#include <numbers>
-#include <random>
 #include <vector>
 
+#include "ensemble/initial_conditions.hpp"
 #include "kernels/adaptive_integrator.hpp"
 #include "kernels/period_driver.hpp"
 #include "kernels/row_model.hpp"
@@ -16,15 +15,12 @@ namespace rotorsweep::testing {
 
 enum class Start { fm, afm };
 
-/// θ_j = π·(j mod 2 for AFM) + η_j, η_j ~ U[-noise, noise] from a fixed seed.
+/// FM or AFM angles with noise η_j ~ U[-noise, noise], member `member` of seed 7.
 inline std::vector<double> initial_angles(std::size_t rows, Start start, double noise = 0.01,
-                                          unsigned seed = 7) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> eta(-noise, noise);
-  std::vector<double> theta(rows);
-  for (std::size_t j = 0; j < rows; ++j)
-    theta[j] = (start == Start::afm && j % 2 == 1 ? std::numbers::pi : 0.0) + eta(rng);
-  return theta;
+                                          unsigned member = 0) {
+  const ensemble::InitialCondition ic{start == Start::afm ? ensemble::InitialKind::afm : ensemble::InitialKind::fm,
+                                      noise, 0.0, {}};
+  return ensemble::initial_angles(ic, rows, 7, member);
 }
 
 /// Per-period integrals averaged over `average` periods after `relax` periods, per quadrature.

@@ -1,0 +1,114 @@
+// `rotorsweep bench kernels`: single-thread throughput of the kernels, scalar and SIMD: RHS
+// evaluations, the bare vectorised sincos that bounds them, and step attempts per stepper.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <vector>
+
+#include "commands.hpp"
+#include "ensemble/initial_conditions.hpp"
+#include "kernels/adaptive_integrator.hpp"
+#include "kernels/row_model.hpp"
+#include "kernels/stepper_choice.hpp"
+
+namespace rotorsweep::apps {
+
+namespace {
+
+using kernels::lane_vector;
+using kernels::simd_lane;
+
+volatile double sink;
+
+/// Median over `repeats` of the rate (work units per second) of `body`, which does `units`
+/// units per call; each repeat runs about 0.2 s.
+template <class Body>
+double median_rate(int repeats, double units, Body&& body) {
+  using clock = std::chrono::steady_clock;
+  long calls = 1;
+  for (;;) {  // calibrate
+    const auto t0 = clock::now();
+    for (long i = 0; i < calls; ++i) body();
+    if (std::chrono::duration<double>(clock::now() - t0).count() > 0.05) break;
+    calls *= 2;
+  }
+  calls *= 4;
+  std::vector<double> rates;
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = clock::now();
+    for (long i = 0; i < calls; ++i) body();
+    rates.push_back(units * double(calls) / std::chrono::duration<double>(clock::now() - t0).count());
+  }
+  std::nth_element(rates.begin(), rates.begin() + rates.size() / 2, rates.end());
+  return rates[rates.size() / 2];
+}
+
+template <class V>
+lane_vector<V> afm_angles(std::size_t rows) {
+  const auto theta = ensemble::initial_angles({ensemble::InitialKind::afm, 0.01, 0.0, {}}, rows, 1, 0);
+  lane_vector<V> out(rows);
+  for (std::size_t j = 0; j < rows; ++j) out[j] = V(theta[j]);
+  return out;
+}
+
+template <class V>
+double rhs_rate(std::size_t rows, int repeats) {
+  using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
+  const Model model(rows, V(4.0), V(0.0011));
+  auto work = model.make_workspace();
+  auto theta = afm_angles<V>(rows);
+  lane_vector<V> f(rows), q(2);
+  return median_rate(repeats, double(kernels::lane_width<V>), [&] {
+    model.evaluate(work, theta.data(), V(0.3), f.data(), q.data());
+    sink = kernels::lane_get(f[0], 0);
+  });
+}
+
+double sincos_rate(std::size_t rows, int repeats) {
+  auto theta = afm_angles<simd_lane>(rows + 1);
+  lane_vector<simd_lane> s(rows + 1), c(rows + 1);
+  return median_rate(repeats, double((rows + 1) * kernels::lane_width<simd_lane>), [&] {
+    for (std::size_t j = 0; j <= rows; ++j) kernels::lane_sincos(theta[j], s[j], c[j]);
+    sink = kernels::lane_get(s[0], 0) + kernels::lane_get(c[rows], 0);
+  });
+}
+
+template <class V>
+double step_rate(kernels::StepperKind kind, std::size_t rows, int repeats) {
+  using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
+  const Model model(rows, V(4.0), V(0.0011));
+  return kernels::with_stepper<Model>(kind, [&]<class Stepper>() {
+    kernels::AdaptiveIntegrator<Model, Stepper> integrator(model, {1e-6, 1e-9});
+    kernels::LaneState<V> state(rows, Model::quadrature_count);
+    state.theta = afm_angles<V>(rows);
+    state.t_stop = V(1e300);
+    return median_rate(repeats, double(kernels::lane_width<V>), [&] { integrator.attempt(model, state); });
+  });
+}
+
+}  // namespace
+
+int run_bench_kernels(const BenchKernelOptions& options) {
+  const auto rows = std::size_t(options.rows);
+  const auto W = kernels::lane_width<simd_lane>;
+  std::printf("rotorsweep bench kernels: N = %zu rows, SIMD width %zu doubles, 1 thread, median of %d\n", rows, W,
+              options.repeats);
+  const double sincos = sincos_rate(rows, options.repeats);
+  const double bound = sincos / double(rows + 1);  // an RHS needs N + 1 sincos
+  const double scalar = rhs_rate<double>(rows, options.repeats);
+  const double simd = rhs_rate<simd_lane>(rows, options.repeats);
+  std::printf("  bare SIMD sincos            %12.4g values/s  -> RHS bound %.4g evaluations/s\n", sincos, bound);
+  std::printf("  RHS scalar                  %12.4g evaluations/s (%.2f of bound)\n", scalar, scalar / bound);
+  std::printf("  RHS SIMD                    %12.4g evaluations/s (%.2f of bound, %.1fx scalar)\n", simd, simd / bound,
+              simd / scalar);
+  for (std::size_t k = 0; k < kernels::stepper_names.size(); ++k) {
+    const auto kind = kernels::StepperKind(k);
+    const double s = step_rate<double>(kind, rows, options.repeats);
+    const double v = step_rate<simd_lane>(kind, rows, options.repeats);
+    std::printf("  steps %-8s scalar %10.4g /s   SIMD %10.4g member-steps/s (%.1fx)\n",
+                kernels::stepper_names[k].data(), s, v, v / s);
+  }
+  return 0;
+}
+
+}  // namespace rotorsweep::apps

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# The whole test suite from a bare Debian machine: install what is missing, build, run ctest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+scripts/build.sh
+ctest --test-dir build --output-on-failure -j"$(nproc)"
