@@ -39,7 +39,7 @@ TEST_CASE("each member's draws depend only on (seed, member)", "[ensemble][rando
   for (std::size_t j = 0; j < 4; ++j) CHECK(short_rows[j] == long_rows[j]);
 }
 
-TEST_CASE("stream draws are uniform on [0, 1)", "[ensemble][random]") {
+TEST_CASE("stream draws are uniform on the unit interval", "[ensemble][random]") {
   const RandomStream stream(9, 123);
   const int n = 200000;
   double mean = 0, second = 0;
