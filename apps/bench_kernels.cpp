@@ -91,16 +91,17 @@ double step_rate(kernels::StepperKind kind, std::size_t rows, int repeats) {
 int run_bench_kernels(const BenchKernelOptions& options) {
   const auto rows = std::size_t(options.rows);
   const auto W = kernels::lane_width<simd_lane>;
-  std::printf("rotorsweep bench kernels: N = %zu rows, SIMD width %zu doubles, 1 thread, median of %d\n", rows, W,
-              options.repeats);
+  std::printf("rotorsweep bench kernels: N = %zu rows, SIMD width %zu doubles, 1 thread, median of %d\n",
+              rows, W, options.repeats);
   const double sincos = sincos_rate(rows, options.repeats);
   const double bound = sincos / double(rows + 1);  // an RHS needs N + 1 sincos
   const double scalar = rhs_rate<double>(rows, options.repeats);
   const double simd = rhs_rate<simd_lane>(rows, options.repeats);
-  std::printf("  bare SIMD sincos            %12.4g values/s  -> RHS bound %.4g evaluations/s\n", sincos, bound);
+  std::printf("  bare SIMD sincos            %12.4g values/s  -> RHS bound %.4g evaluations/s\n", sincos,
+              bound);
   std::printf("  RHS scalar                  %12.4g evaluations/s (%.2f of bound)\n", scalar, scalar / bound);
-  std::printf("  RHS SIMD                    %12.4g evaluations/s (%.2f of bound, %.1fx scalar)\n", simd, simd / bound,
-              simd / scalar);
+  std::printf("  RHS SIMD                    %12.4g evaluations/s (%.2f of bound, %.1fx scalar)\n", simd,
+              simd / bound, simd / scalar);
   for (std::size_t k = 0; k < kernels::stepper_names.size(); ++k) {
     const auto kind = kernels::StepperKind(k);
     const double s = step_rate<double>(kind, rows, options.repeats);

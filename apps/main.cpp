@@ -14,8 +14,11 @@ int main(int argc, char** argv) {
 
   TableOptions table;
   auto* table_cmd = app.add_subcommand(
-      "table", "Reproduce the paper's table of dissipation integrals (N = 20, g = 0.0011, A = 1, 4, 6, 8, 11)");
-  table_cmd->add_option("--stepper", table.stepper, "Stepper")->check(CLI::IsMember(steppers))->capture_default_str();
+      "table",
+      "Reproduce the paper's table of dissipation integrals (N = 20, g = 0.0011, A = 1, 4, 6, 8, 11)");
+  table_cmd->add_option("--stepper", table.stepper, "Stepper")
+      ->check(CLI::IsMember(steppers))
+      ->capture_default_str();
   table_cmd->add_option("--rtol", table.rtol, "Relative tolerance (atol = rtol/1000)")
       ->check(CLI::Range(1e-14, 1e-2))
       ->capture_default_str();

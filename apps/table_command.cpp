@@ -84,8 +84,8 @@ int run_table(const TableOptions& options) {
                 ref.paper_R, deviation, row.steps_per_period);
     if (csv) {
       char line[256];
-      std::snprintf(line, sizeof line, "%g,%s,%.10e,%.10e,%.10e,%.7e,%.3e,%.1f\n", ref.A, ic.data(), row.W, row.S,
-                    row.R, ref.paper_R, deviation, row.steps_per_period);
+      std::snprintf(line, sizeof line, "%g,%s,%.10e,%.10e,%.10e,%.7e,%.3e,%.1f\n", ref.A, ic.data(), row.W,
+                    row.S, row.R, ref.paper_R, deviation, row.steps_per_period);
       csv << line;
     }
   }

@@ -44,7 +44,8 @@ class AdaptiveIntegrator {
     const V h = lane_select(active, lane_min(s.h, remaining), V(1.0));
     stepper_.attempt(system, s.t, h, s.theta.data(), s.quad.data(), y_new_.data(), q_new_.data(),
                      y_error_.data(), q_error_.data());
-    const V err = error_norm(tol_, n, y_error_.data(), nq, System::error_controlled.data(), s.quad.data(), q_new_.data(), q_error_.data());
+    const V err = error_norm(tol_, n, y_error_.data(), nq, System::error_controlled.data(), s.quad.data(),
+                             q_new_.data(), q_error_.data());
 
     V checksum(0.0);
     for (std::size_t k = 0; k < n; ++k) checksum += y_new_[k];
@@ -56,14 +57,16 @@ class AdaptiveIntegrator {
     for (std::size_t p = 0; p < nq; ++p) s.quad[p] = lane_select(accept, q_new_[p], s.quad[p]);
     s.t = lane_select(accept, lane_select(clipped, s.t_stop, s.t + h), s.t);
 
-    V h_next = h * step_factor(limits_, Stepper::embedded_order(), lane_select(finite, err, err + V(INFINITY)), accept);
+    V h_next = h * step_factor(limits_, Stepper::embedded_order(),
+                               lane_select(finite, err, err + V(INFINITY)), accept);
     h_next = lane_select(accept & clipped, lane_max(h_next, s.h), h_next);
     s.h = lane_select(active, lane_min(h_next, V(limits_.h_max)), s.h);
     s.steps_accepted += lane_select(accept, V(1.0), V(0.0));
     s.steps_rejected += lane_select(active & !accept, V(1.0), V(0.0));
 
     const V h_floor = V(16.0 * std::numeric_limits<double>::epsilon()) * lane_max(V(1.0), lane_abs(s.t));
-    const lane_mask<V> trouble = active & ((s.h < h_floor) | (s.steps_accepted + s.steps_rejected >= V(limits_.max_steps)));
+    const lane_mask<V> trouble =
+        active & ((s.h < h_floor) | (s.steps_accepted + s.steps_rejected >= V(limits_.max_steps)));
     if (lane_any(trouble)) flag_failures(s, trouble, finite, h_floor);
     return accept;
   }

@@ -28,8 +28,8 @@ class DormandPrince5 {
   static constexpr int order() { return tableau.order; }
   static constexpr int embedded_order() { return tableau.embedded_order; }
 
-  void attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new,
-               V* y_error, V* q_error) {
+  void attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
+               V* q_error) {
     const std::size_t n = n_;
     constexpr const ExplicitTableau& T = tableau;
     for (int i = 0; i < T.stages; ++i) {

@@ -17,7 +17,10 @@ struct ExplicitTableau {
 };
 
 inline constexpr ExplicitTableau dormand_prince5_tableau{
-    "dopri5", 7, 5, 4,
+    "dopri5",
+    7,
+    5,
+    4,
     {0.0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1.0, 1.0},
     {{0},
      {1.0 / 5},

@@ -15,9 +15,7 @@ struct Integrals {
   bool alignment = false;  ///< ∫ ρ̄ dt, ρ̄ = (1/N) Σ cos²((θ_j - θ_{j+1})/2)
   bool energy = false;     ///< ∫ H dt
 
-  constexpr std::size_t count() const {
-    return std::size_t(drive) + work + stokes + alignment + energy;
-  }
+  constexpr std::size_t count() const { return std::size_t(drive) + work + stokes + alignment + energy; }
   // Position of each integral in the quadrature state vector (valid when it is carried).
   constexpr std::size_t drive_index() const { return 0; }
   constexpr std::size_t work_index() const { return std::size_t(drive); }

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstddef>
 #include <vector>
-
 #include <xsimd/xsimd.hpp>
 
 namespace rotorsweep::kernels {
@@ -75,7 +74,9 @@ inline double lane_sqrt(double x) { return std::sqrt(x); }
 inline bool lane_isfinite(double x) { return std::isfinite(x); }
 
 template <class Arch>
-inline auto lane_abs(const xsimd::batch<double, Arch>& x) { return xsimd::abs(x); }
+inline auto lane_abs(const xsimd::batch<double, Arch>& x) {
+  return xsimd::abs(x);
+}
 template <class Arch>
 inline auto lane_min(const xsimd::batch<double, Arch>& a, const xsimd::batch<double, Arch>& b) {
   return xsimd::min(a, b);
@@ -85,22 +86,30 @@ inline auto lane_max(const xsimd::batch<double, Arch>& a, const xsimd::batch<dou
   return xsimd::max(a, b);
 }
 template <class Arch>
-inline auto lane_sqrt(const xsimd::batch<double, Arch>& x) { return xsimd::sqrt(x); }
+inline auto lane_sqrt(const xsimd::batch<double, Arch>& x) {
+  return xsimd::sqrt(x);
+}
 template <class Arch>
 inline auto lane_pow(const xsimd::batch<double, Arch>& x, double p) {
   return xsimd::pow(x, xsimd::batch<double, Arch>(p));
 }
 template <class Arch>
-inline auto lane_isfinite(const xsimd::batch<double, Arch>& x) { return xsimd::isfinite(x); }
+inline auto lane_isfinite(const xsimd::batch<double, Arch>& x) {
+  return xsimd::isfinite(x);
+}
 
 // --- masks -----------------------------------------------------------------------------------
 
 inline bool lane_any(bool m) { return m; }
 inline bool lane_all(bool m) { return m; }
 template <class Arch>
-inline bool lane_any(const xsimd::batch_bool<double, Arch>& m) { return xsimd::any(m); }
+inline bool lane_any(const xsimd::batch_bool<double, Arch>& m) {
+  return xsimd::any(m);
+}
 template <class Arch>
-inline bool lane_all(const xsimd::batch_bool<double, Arch>& m) { return xsimd::all(m); }
+inline bool lane_all(const xsimd::batch_bool<double, Arch>& m) {
+  return xsimd::all(m);
+}
 
 // --- single-lane access (outside hot loops: refill, read-out) --------------------------------
 
@@ -123,8 +132,8 @@ inline void lane_set(xsimd::batch<double, Arch>& v, std::size_t lane, double x) 
 }
 template <class Arch>
 inline bool mask_get(const xsimd::batch_bool<double, Arch>& m, std::size_t lane) {
-  return lane_get(xsimd::select(m, xsimd::batch<double, Arch>(1.0), xsimd::batch<double, Arch>(0.0)),
-                  lane) != 0.0;
+  return lane_get(xsimd::select(m, xsimd::batch<double, Arch>(1.0), xsimd::batch<double, Arch>(0.0)), lane) !=
+         0.0;
 }
 
 /// A lane value whose lanes are taken from a per-lane function f(lane).

@@ -14,8 +14,7 @@ template <class V>
 struct LaneState {
   static constexpr std::size_t width = lane_width<V>;
 
-  LaneState(std::size_t rows, std::size_t quadratures)
-      : theta(rows, V(0.0)), quad(quadratures + 1, V(0.0)) {
+  LaneState(std::size_t rows, std::size_t quadratures) : theta(rows, V(0.0)), quad(quadratures + 1, V(0.0)) {
     status.fill(LaneStatus::ok);
   }
 
@@ -23,9 +22,9 @@ struct LaneState {
 
   lane_vector<V> theta;  ///< θ_j per lane, unwrapped
   lane_vector<V> quad;   ///< quadrature states (one spare slot so that zero quadratures work)
-  V t = V(0.0);             ///< each lane's time
-  V h = V(0.0);             ///< each lane's next step size; 0 asks for an automatic first step
-  V t_stop = V(0.0);        ///< each lane integrates up to here
+  V t = V(0.0);          ///< each lane's time
+  V h = V(0.0);          ///< each lane's next step size; 0 asks for an automatic first step
+  V t_stop = V(0.0);     ///< each lane integrates up to here
   V steps_accepted = V(0.0);
   V steps_rejected = V(0.0);
   std::array<LaneStatus, width> status;

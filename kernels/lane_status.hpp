@@ -8,11 +8,11 @@
 namespace rotorsweep::kernels {
 
 enum class LaneStatus : std::uint8_t {
-  ok = 0,             ///< integrating (or finished) normally
-  non_finite = 1,     ///< the state or its error estimate stayed non-finite as h shrank
-  step_underflow = 2, ///< the step size fell below what t can resolve
-  step_budget = 3,    ///< the member used up its step budget
-  idle = 4,           ///< no member in this lane
+  ok = 0,              ///< integrating (or finished) normally
+  non_finite = 1,      ///< the state or its error estimate stayed non-finite as h shrank
+  step_underflow = 2,  ///< the step size fell below what t can resolve
+  step_budget = 3,     ///< the member used up its step budget
+  idle = 4,            ///< no member in this lane
 };
 
 constexpr std::string_view status_name(LaneStatus s) {

@@ -39,8 +39,8 @@ class RosenbrockStepper {
   static constexpr int order() { return T.order; }
   static constexpr int embedded_order() { return T.embedded_order; }
 
-  void attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new,
-               V* y_error, V* q_error) {
+  void attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
+               V* q_error) {
     const std::size_t n = n_;
     system.linearize(work_, y, t, f_.data(), qdot_.data(), jacobian_, df_dt_.data(), dq_dy_.data(),
                      dq_dt_.data());
@@ -85,8 +85,8 @@ class RosenbrockStepper {
  private:
   V* stage(int i) { return stages_.data() + std::size_t(i) * n_; }
 
-  static void combine(const V* start, std::size_t count, const V* stages, std::size_t stride,
-                      V* result, V* error) {
+  static void combine(const V* start, std::size_t count, const V* stages, std::size_t stride, V* result,
+                      V* error) {
     for (std::size_t k = 0; k < count; ++k) {
       V sum = start[k];
       V err(0.0);

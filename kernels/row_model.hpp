@@ -60,8 +60,8 @@ class NearestNeighbourRows {
 
   /// evaluate() plus the Jacobian J = ∂f/∂θ, ∂f/∂t, and the gradients of the integrands
   /// (dq_dtheta[q·N + k] = ∂qdot_q/∂θ_k, dq_dt[q] = ∂qdot_q/∂t) at the same point.
-  void linearize(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt,
-                 V* dq_dtheta, V* dq_dt) const {
+  void linearize(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt, V* dq_dtheta,
+                 V* dq_dt) const {
     evaluate(w, theta, t, f, qdot);
     const std::size_t n = rows_;
     for (std::size_t j = 0; j < n; ++j) {
@@ -148,8 +148,8 @@ class NearestNeighbourRows {
     if constexpr (Q.energy) qdot[Q.energy_index()] = energy_from_trigonometry(w);
   }
 
-  void integrand_gradients(Workspace& w, const V* f, const Jacobian& J, const V* df_dt,
-                           V* dq_dtheta, V* dq_dt) const {
+  void integrand_gradients(Workspace& w, const V* f, const Jacobian& J, const V* df_dt, V* dq_dtheta,
+                           V* dq_dt) const {
     const std::size_t n = rows_;
     if constexpr (Q.drive) {
       V* grad = dq_dtheta + Q.drive_index() * n;

@@ -14,11 +14,11 @@ struct Tolerances {
 };
 
 struct StepLimits {
-  double h_max = 0.5;              ///< largest step (the drive period is 2π)
-  double safety = 0.9;             ///< factor on the optimal step
-  double shrink_min = 0.2;         ///< smallest factor for the next step
-  double grow_max = 5.0;           ///< largest factor for the next step
-  double max_steps = 1e8;          ///< attempted steps per member before step_budget
+  double h_max = 0.5;       ///< largest step (the drive period is 2π)
+  double safety = 0.9;      ///< factor on the optimal step
+  double shrink_min = 0.2;  ///< smallest factor for the next step
+  double grow_max = 5.0;    ///< largest factor for the next step
+  double max_steps = 1e8;   ///< attempted steps per member before step_budget
 };
 
 /// sqrt(mean((e_i / s_i)²)) over angles (s = atol + rtol, angle units are radians) and

@@ -1,7 +1,6 @@
 // Tests of the initial conditions and random streams (ensemble/initial_conditions.hpp,
 // model.md §2): structure of each kind, reproducibility per member, uniformity of draws.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <numbers>
 

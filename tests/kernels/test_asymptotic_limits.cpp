@@ -1,7 +1,6 @@
 // The small-A (AFM) and large-A (FM) dissipation laws of model.md §4: the ratio numeric /
 // analytic approaches 1 monotonically as A → 0 (resp. A → ∞) over a few decades.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <numbers>
 #include <vector>

@@ -1,8 +1,7 @@
 // Observed convergence orders of every stepper (Rodas4: 4, ROS2: 2, Dormand–Prince: 5) in the
 // angles and in all quadrature states, from fixed-step runs on a smooth, mildly stiff case.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
 
@@ -37,7 +36,8 @@ std::vector<double> fixed_steps(const Model& m, int steps) {
   return y;
 }
 
-double max_error(const std::vector<double>& a, const std::vector<double>& b, std::size_t from, std::size_t to) {
+double max_error(const std::vector<double>& a, const std::vector<double>& b, std::size_t from,
+                 std::size_t to) {
   double e = 0;
   for (std::size_t k = from; k < to; ++k) e = std::max(e, std::fabs(a[k] - b[k]));
   return e;
@@ -51,7 +51,8 @@ void check_order(int expected, std::vector<int> steps) {
   const auto coarse = fixed_steps<Stepper>(m, steps[0]), fine = fixed_steps<Stepper>(m, steps[1]);
   const double refinement = std::log2(double(steps[1]) / steps[0]);
   // the angles, then all quadrature states together (one error can cross zero by accident)
-  const double angle_order = std::log2(max_error(coarse, reference, 0, n) / max_error(fine, reference, 0, n)) / refinement;
+  const double angle_order =
+      std::log2(max_error(coarse, reference, 0, n) / max_error(fine, reference, 0, n)) / refinement;
   const double quad_order =
       std::log2(max_error(coarse, reference, n, n + nq) / max_error(fine, reference, n, n + nq)) / refinement;
   INFO(Stepper::tableau.name << ": angle order " << angle_order << ", quadrature order " << quad_order);

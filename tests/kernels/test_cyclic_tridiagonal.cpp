@@ -1,10 +1,8 @@
 // Tests of the cyclic tridiagonal solve (kernels/cyclic_tridiagonal.hpp) against a dense
 // Eigen LU on the same matrix, for every size down to the two-row case.
-#include <catch2/catch.hpp>
-
-#include <random>
-
 #include <Eigen/Dense>
+#include <catch2/catch.hpp>
+#include <random>
 
 #include "kernels/cyclic_tridiagonal.hpp"
 
@@ -36,7 +34,8 @@ TEST_CASE("cyclic tridiagonal solve matches a dense LU", "[kernels][linear]") {
         J.diag(k) = -2.0 + u(rng);  // negative definite-ish, as near stable states
         J.off(k) = 0.9 * u(rng);
       }
-      const Eigen::MatrixXd M = shift * Eigen::MatrixXd::Identity(Eigen::Index(n), Eigen::Index(n)) - dense_jacobian(J);
+      const Eigen::MatrixXd M =
+          shift * Eigen::MatrixXd::Identity(Eigen::Index(n), Eigen::Index(n)) - dense_jacobian(J);
       Eigen::VectorXd r{Eigen::Index(n)};
       for (auto& x : r) x = u(rng);
       const Eigen::VectorXd expected = M.partialPivLu().solve(r);

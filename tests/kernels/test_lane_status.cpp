@@ -1,7 +1,6 @@
 // Failure isolation in a SIMD block: a lane whose state turns non-finite is frozen and flagged
 // while the other lanes finish bit-identically; an exhausted step budget is flagged per lane.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <limits>
 
@@ -30,7 +29,8 @@ LaneState<simd_lane> make_state(bool poison_lane_zero) {
 }  // namespace
 
 TEST_CASE("a non-finite lane is frozen and flagged; the others are untouched", "[kernels][status]") {
-  const Model model(rows, lane_from<simd_lane>([](std::size_t l) { return 1.0 + double(l); }), simd_lane(0.01));
+  const Model model(rows, lane_from<simd_lane>([](std::size_t l) { return 1.0 + double(l); }),
+                    simd_lane(0.01));
   AdaptiveIntegrator<Model, Rodas4<Model>> clean_run(model, {1e-7, 1e-10});
   AdaptiveIntegrator<Model, Rodas4<Model>> poisoned_run(model, {1e-7, 1e-10});
   auto clean = make_state(false), poisoned = make_state(true);
@@ -44,7 +44,8 @@ TEST_CASE("a non-finite lane is frozen and flagged; the others are untouched", "
     CHECK(clean.status[l] == LaneStatus::ok);
     CHECK(lane_get(poisoned.t, l) == drive_period);
     CHECK(lane_get(poisoned.steps_accepted, l) == lane_get(clean.steps_accepted, l));
-    for (std::size_t j = 0; j < rows; ++j) CHECK(lane_get(poisoned.theta[j], l) == lane_get(clean.theta[j], l));
+    for (std::size_t j = 0; j < rows; ++j)
+      CHECK(lane_get(poisoned.theta[j], l) == lane_get(clean.theta[j], l));
     CHECK(lane_get(poisoned.quad[0], l) == lane_get(clean.quad[0], l));
   }
 }

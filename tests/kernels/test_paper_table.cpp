@@ -33,7 +33,8 @@ TEST_CASE("paper table, CP regime, within 3 percent", "[kernels][paper]") {
 }
 
 TEST_CASE("work, Stokes and drive estimators agree in the periodic steady state", "[kernels][paper]") {
-  for (auto [A, start] : {std::pair{1.0, Start::fm}, {1.0, Start::afm}, {4.0, Start::afm}, {11.0, Start::afm}}) {
+  for (auto [A, start] :
+       {std::pair{1.0, Start::fm}, {1.0, Start::afm}, {4.0, Start::afm}, {11.0, Start::afm}}) {
     const auto q = mean_period_integrals<estimators, Rodas4>(20, A, 0.0011, start, 2, 2, 1e-11, 1e-14);
     const double R = q[estimators.drive_index()];
     INFO("A = " << A);

@@ -1,7 +1,6 @@
 // Tests of the row model (kernels/row_model.hpp, model.md §1 and §3): the Jacobian, ∂f/∂t and
 // the integrand gradients against central differences; f = -∇H/g; N = 2 is the two-angle H_r.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <random>
 #include <vector>
@@ -66,8 +65,10 @@ TEST_CASE("Jacobian, df/dt and integrand gradients match central differences", "
       }
     }
     const auto ep = evaluate(m, theta, t + eps), em = evaluate(m, theta, t - eps);
-    for (std::size_t j = 0; j < n; ++j) CHECK(df_dt[j] == Approx((ep.f[j] - em.f[j]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
-    for (std::size_t p = 0; p < nq; ++p) CHECK(dq_dt[p] == Approx((ep.q[p] - em.q[p]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
+    for (std::size_t j = 0; j < n; ++j)
+      CHECK(df_dt[j] == Approx((ep.f[j] - em.f[j]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
+    for (std::size_t p = 0; p < nq; ++p)
+      CHECK(dq_dt[p] == Approx((ep.q[p] - em.q[p]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
   }
 }
 

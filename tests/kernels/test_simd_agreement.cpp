@@ -1,7 +1,6 @@
 // Scalar and SIMD instantiations of the same kernel source agree: right-hand side, Jacobian,
 // one step of every stepper, and whole adaptive runs with different parameters in each lane.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <vector>
 
@@ -33,13 +32,12 @@ std::vector<double> lane_theta(std::size_t l) {
 
 lane_vector<simd_lane> gather_theta() {
   lane_vector<simd_lane> theta(rows);
-  for (std::size_t j = 0; j < rows; ++j) theta[j] = lane_from<simd_lane>([&](std::size_t l) { return lane_theta(l)[j]; });
+  for (std::size_t j = 0; j < rows; ++j)
+    theta[j] = lane_from<simd_lane>([&](std::size_t l) { return lane_theta(l)[j]; });
   return theta;
 }
 
-Simd simd_model() {
-  return Simd(rows, lane_from<simd_lane>(lane_A), lane_from<simd_lane>(lane_g));
-}
+Simd simd_model() { return Simd(rows, lane_from<simd_lane>(lane_A), lane_from<simd_lane>(lane_g)); }
 
 void check_close(double simd, double scalar, double tol) {
   INFO("simd " << simd << " scalar " << scalar << " difference " << simd - scalar);
@@ -59,7 +57,8 @@ void check_one_step() {
     Stepper<Scalar> ss(sm);
     auto y = lane_theta(l);
     std::vector<double> sq(nq, 0.1), sy_new(rows), sq_new(nq), sy_err(rows), sq_err(nq);
-    ss.attempt(sm, lane_t(l), 0.05, y.data(), sq.data(), sy_new.data(), sq_new.data(), sy_err.data(), sq_err.data());
+    ss.attempt(sm, lane_t(l), 0.05, y.data(), sq.data(), sy_new.data(), sq_new.data(), sy_err.data(),
+               sq_err.data());
     for (std::size_t j = 0; j < rows; ++j) {
       check_close(lane_get(y_new[j], l), sy_new[j], 1e-13);
       check_close(lane_get(y_err[j], l), sy_err[j], 1e-13);

@@ -18,16 +18,15 @@ enum class Start { fm, afm };
 /// FM or AFM angles with noise η_j ~ U[-noise, noise], member `member` of seed 7.
 inline std::vector<double> initial_angles(std::size_t rows, Start start, double noise = 0.01,
                                           unsigned member = 0) {
-  const ensemble::InitialCondition ic{start == Start::afm ? ensemble::InitialKind::afm : ensemble::InitialKind::fm,
-                                      noise, 0.0, {}};
+  const ensemble::InitialCondition ic{
+      start == Start::afm ? ensemble::InitialKind::afm : ensemble::InitialKind::fm, noise, 0.0, {}};
   return ensemble::initial_angles(ic, rows, 7, member);
 }
 
 /// Per-period integrals averaged over `average` periods after `relax` periods, per quadrature.
 template <kernels::Integrals Q, template <class> class Stepper>
 std::array<double, Q.count()> mean_period_integrals(std::size_t rows, double A, double g, Start start,
-                                                    int relax, int average, double rtol,
-                                                    double atol) {
+                                                    int relax, int average, double rtol, double atol) {
   using Model = kernels::NearestNeighbourRows<double, Q>;
   const Model model(rows, A, g);
   kernels::AdaptiveIntegrator<Model, Stepper<Model>> integrator(model, {rtol, atol});
