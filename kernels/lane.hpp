@@ -139,9 +139,13 @@ inline bool mask_get(const xsimd::batch_bool<double, Arch>& m, std::size_t lane)
 /// A lane value whose lanes are taken from a per-lane function f(lane).
 template <class V, class F>
 inline V lane_from(F&& f) {
-  V v(0.0);
-  for (std::size_t l = 0; l < lane_width<V>; ++l) lane_set(v, l, f(l));
-  return v;
+  if constexpr (lane_width<V> == 1) {
+    return V(f(std::size_t(0)));
+  } else {
+    alignas(V::arch_type::alignment()) std::array<double, lane_width<V>> values;
+    for (std::size_t l = 0; l < lane_width<V>; ++l) values[l] = f(l);
+    return V::load_aligned(values.data());
+  }
 }
 
 }  // namespace rotorsweep::kernels
