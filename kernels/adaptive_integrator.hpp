@@ -29,8 +29,6 @@ class AdaptiveIntegrator {
         q_new_(nq + 1),
         q_error_(nq + 1) {}
 
-  const Tolerances& tolerances() const { return tol_; }
-
   /// One step attempt for every lane that is ok and short of its t_stop; the step is clipped
   /// to land exactly on t_stop. Returns the lanes that accepted a step.
   lane_mask<V> attempt(const System& system, LaneState<V>& s) {

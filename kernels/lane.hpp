@@ -101,14 +101,9 @@ inline auto lane_isfinite(const xsimd::batch<double, Arch>& x) {
 // --- masks -----------------------------------------------------------------------------------
 
 inline bool lane_any(bool m) { return m; }
-inline bool lane_all(bool m) { return m; }
 template <class Arch>
 inline bool lane_any(const xsimd::batch_bool<double, Arch>& m) {
   return xsimd::any(m);
-}
-template <class Arch>
-inline bool lane_all(const xsimd::batch_bool<double, Arch>& m) {
-  return xsimd::all(m);
 }
 
 // --- single-lane access (outside hot loops: refill, read-out) --------------------------------
