@@ -19,4 +19,18 @@ struct BenchKernelOptions {
 };
 int run_bench_kernels(const BenchKernelOptions& options);
 
+struct RunOptions {
+  std::string scene;
+  std::string output;  ///< overrides the scene's output.path
+  int threads = 0;     ///< 0: OpenMP's default
+  bool quiet = false;  ///< no progress line
+};
+int run_sweep_command(const RunOptions& options);
+
+struct InfoOptions {
+  std::string file;
+  bool scene = false;  ///< also print the scene text
+};
+int run_info(const InfoOptions& options);
+
 }  // namespace rotorsweep::apps

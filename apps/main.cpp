@@ -24,6 +24,20 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   table_cmd->add_option("-o,--output", table.output, "Write the table as CSV to this file");
 
+  RunOptions run;
+  auto* run_cmd =
+      app.add_subcommand("run", "Run the sweep a scene file describes and write its HDF5 result file");
+  run_cmd->add_option("scene", run.scene, "Scene file (TOML)")->required();
+  run_cmd->add_option("-o,--output", run.output, "Result file (overrides the scene's output.path)");
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::Range(1, 4096));
+  run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
+
+  InfoOptions info;
+  auto* info_cmd = app.add_subcommand("info", "Summarise a result file");
+  info_cmd->add_option("file", info.file, "Result file (HDF5)")->required();
+  info_cmd->add_flag("--scene", info.scene, "Also print the scene the file was made from");
+
   auto* bench_cmd = app.add_subcommand("bench", "Measure speed (single thread)");
   bench_cmd->require_subcommand(1);
   BenchKernelOptions bench;
@@ -40,6 +54,8 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  if (*run_cmd) return run_sweep_command(run);
+  if (*info_cmd) return run_info(info);
   if (*table_cmd) return run_table(table);
   if (*kernels_cmd) return run_bench_kernels(bench);
   return 2;

@@ -46,6 +46,13 @@ class NearestNeighbourRows {
 
   NearestNeighbourRows(std::size_t rows, V A, V g) : rows_(rows), A_(A), g_(g), inv_g_(V(1.0) / g) {}
 
+  /// Gives one lane new parameters (a lane block refilled with another member).
+  void set_lane_parameters(std::size_t lane, double A, double g) {
+    lane_set(A_, lane, A);
+    lane_set(g_, lane, g);
+    lane_set(inv_g_, lane, 1.0 / g);
+  }
+
   std::size_t dimension() const { return rows_; }
   Workspace make_workspace() const { return Workspace(rows_); }
   const V& A() const { return A_; }

@@ -21,15 +21,31 @@ inline std::optional<StepperKind> parse_stepper(std::string_view name) {
   return std::nullopt;
 }
 
+/// The stepper type of `kind` on `System`.
+template <StepperKind kind, class System>
+struct stepper_of {
+  using type = Rodas4<System>;
+};
+template <class System>
+struct stepper_of<StepperKind::ros2, System> {
+  using type = Ros2<System>;
+};
+template <class System>
+struct stepper_of<StepperKind::dopri5, System> {
+  using type = DormandPrince5<System>;
+};
+
 /// Calls f.template operator()<Stepper>() with the stepper type for `kind` on `System`.
 template <class System, class F>
 decltype(auto) with_stepper(StepperKind kind, F&& f) {
   switch (kind) {
-    case StepperKind::ros2: return f.template operator()<Ros2<System>>();
-    case StepperKind::dopri5: return f.template operator()<DormandPrince5<System>>();
+    case StepperKind::ros2:
+      return f.template operator()<typename stepper_of<StepperKind::ros2, System>::type>();
+    case StepperKind::dopri5:
+      return f.template operator()<typename stepper_of<StepperKind::dopri5, System>::type>();
     case StepperKind::rodas4: break;
   }
-  return f.template operator()<Rodas4<System>>();
+  return f.template operator()<typename stepper_of<StepperKind::rodas4, System>::type>();
 }
 
 }  // namespace rotorsweep::kernels

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# The demonstration from a bare Debian machine: install, build, reproduce the paper's table of
-# dissipation integrals, and plot it (results/paper_table.csv, results/paper_table.png).
+# The demonstration from a bare Debian machine: install, build, sweep the default scene
+# (examples/friction_curve.toml) and plot its friction curve (results/friction_curve.{h5,png}).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 scripts/build.sh
-mkdir -p results
-build/bin/rotorsweep table -o results/paper_table.csv
-/usr/bin/python3 scripts/plot_table.py results/paper_table.csv results/paper_table.png
+build/bin/rotorsweep run examples/friction_curve.toml -o results/friction_curve.h5
+build/bin/rotorsweep info results/friction_curve.h5
+/usr/bin/python3 scripts/plot_friction.py results/friction_curve.h5 results/friction_curve.png

@@ -1,0 +1,86 @@
+// `rotorsweep info OUT.h5`: a human summary of a result file: provenance, completeness,
+// the grid, status and regime counts, and the range of the dissipation.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <set>
+
+#include "commands.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace rotorsweep::apps {
+
+namespace {
+
+void print_counts(const char* title, const std::vector<std::string>& labels) {
+  std::map<std::string, std::size_t> counts;
+  for (const auto& l : labels) ++counts[l];
+  std::printf("%-12s", title);
+  for (const auto& [label, count] : counts) std::printf(" %s %zu", label.c_str(), count);
+  std::printf("\n");
+}
+
+void print_range(const char* title, const std::vector<double>& values) {
+  const std::set<double> distinct(values.begin(), values.end());
+  if (distinct.empty()) return;
+  if (distinct.size() == 1)
+    std::printf("%-12s %g\n", title, *distinct.begin());
+  else
+    std::printf("%-12s %zu values from %g to %g\n", title, distinct.size(), *distinct.begin(),
+                *distinct.rbegin());
+}
+
+}  // namespace
+
+int run_info(const InfoOptions& options) {
+  try {
+    const auto file = io::Hdf5Location::open_file(options.file);
+    const bool complete = file.has_attribute("complete") && file.attribute_flag("complete");
+    std::printf("%-12s %s%s\n", "file", options.file.c_str(),
+                complete ? "" : "  (INCOMPLETE: the run did not finish; do not trust it)");
+    if (file.has_attribute("version"))
+      std::printf("%-12s rotorsweep %s (revision %s)\n", "written by",
+                  file.attribute_string("version").c_str(), file.attribute_string("revision").c_str());
+    if (file.has_attribute("scene_path"))
+      std::printf("%-12s %s\n", "scene", file.attribute_string("scene_path").c_str());
+    if (!file.has("members")) return complete ? 0 : 1;
+    const auto members = file.open_group("members");
+    const auto A = members.read_doubles("A");
+    std::printf("%-12s %zu\n", "members", A.size());
+    if (file.has_attribute("wall_seconds"))
+      std::printf("%-12s %.2f s on %lld threads × %lld lanes (%.1f members/s, lane occupancy %.1f %%)\n",
+                  "wall time", file.attribute_double("wall_seconds"),
+                  (long long)file.attribute_double("threads"), (long long)file.attribute_double("lane_width"),
+                  double(A.size()) / file.attribute_double("wall_seconds"),
+                  100 * file.attribute_double("lane_occupancy"));
+    const auto rows = members.read_integers("rows");
+    if (!rows.empty()) std::printf("%-12s %lld\n", "rows N", (long long)rows.front());
+    print_range("A", A);
+    print_range("g", members.read_doubles("g"));
+    print_counts("initial", members.read_strings("ic"));
+    print_counts("status", members.read_strings("status"));
+    if (members.has("regime")) print_counts("regime", members.read_strings("regime"));
+    if (members.has("dissipation")) {
+      auto D = members.read_doubles("dissipation");
+      D.erase(std::remove_if(D.begin(), D.end(), [](double d) { return !std::isfinite(d); }), D.end());
+      if (!D.empty())
+        std::printf("%-12s from %.6g to %.6g (per row: %.6g to %.6g)\n", "D per period",
+                    *std::min_element(D.begin(), D.end()), *std::max_element(D.begin(), D.end()),
+                    *std::min_element(D.begin(), D.end()) / double(rows.front()),
+                    *std::max_element(D.begin(), D.end()) / double(rows.front()));
+    }
+    std::printf("%-12s /members:", "datasets");
+    for (const auto& name : members.members()) std::printf(" %s", name.c_str());
+    std::printf("\n");
+    if (options.scene && file.has_attribute("scene"))
+      std::printf("\n# scene\n%s\n", file.attribute_string("scene").c_str());
+    return complete ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace rotorsweep::apps

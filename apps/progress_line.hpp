@@ -1,0 +1,30 @@
+// The progress line of long runs on stderr: members done / total, members per second and the
+// estimated time left; redrawn in place on a terminal, one line every 10 s otherwise.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+
+namespace rotorsweep::apps {
+
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::size_t total, bool enabled);
+  /// Reports `done` members; draws only if enough time has passed since the last draw.
+  void update(std::size_t done);
+  /// Clears the in-place line (terminal) before the closing message.
+  void finish();
+
+ private:
+  using clock = std::chrono::steady_clock;
+  std::size_t total_;
+  bool enabled_, terminal_;
+  clock::time_point start_, last_draw_;
+  std::size_t last_width_ = 0;
+};
+
+/// "3 min 12 s", "12.3 s", "850 ms".
+std::string format_duration(double seconds);
+
+}  // namespace rotorsweep::apps

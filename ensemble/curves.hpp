@@ -1,0 +1,27 @@
+// Per-point statistics of a sweep (/curves of the output): for each (A, g, initial kind),
+// count, mean, spread and range of D over its replicas, and the fraction in each regime.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "ensemble/member_plan.hpp"
+#include "ensemble/member_result.hpp"
+
+namespace rotorsweep::ensemble {
+
+struct CurvePoint {
+  double A = 0, g = 0;
+  InitialKind kind = InitialKind::afm;
+  std::size_t members = 0;  ///< replicas at this point
+  std::size_t count = 0;    ///< of them, members that finished with status ok (the statistics use these)
+  double dissipation_mean = 0, dissipation_std = 0, dissipation_min = 0, dissipation_max = 0;
+  std::array<double, 4> regime_fraction{};  ///< over all members of the point, in all_regimes order
+};
+
+/// One point per (A, g, kind), in plan order; members of a point are consecutive (replicas).
+std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
+                                         const std::vector<MemberResult>& results, int replicas);
+
+}  // namespace rotorsweep::ensemble

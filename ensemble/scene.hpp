@@ -1,0 +1,59 @@
+// A sweep as the user described it (one scene file): model, parameter grids, initial
+// conditions, schedule, observables, numerics, output. Plain data; io/ parses and validates it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ensemble/initial_conditions.hpp"
+#include "kernels/stepper_choice.hpp"
+
+namespace rotorsweep::ensemble {
+
+enum class LaneKind { simd, scalar };
+
+struct Scene {
+  std::string text;  ///< the scene file as written, stored in the output for provenance
+
+  std::size_t rows = 20;         ///< N (model.md §1)
+  std::vector<double> g_values;  ///< drive: g = damping × drive speed
+  std::vector<double> A_values;  ///< sweep: substrate strength A
+  std::vector<InitialKind> kinds{InitialKind::afm};
+  double noise = 0.01;               ///< η of model.md §2
+  double offset = 0.0;               ///< θ0 of model.md §2
+  std::vector<double> exact_angles;  ///< for kind exact
+  int replicas = 1;
+  std::uint64_t seed = 1;
+
+  int relax_periods = 2;
+  int average_periods = 2;
+  double steady_tol = 0.0;  ///< > 0: retire a member once successive periods agree to this
+  int max_periods = 50;
+  bool refill = true;  ///< refill a retired member's lane at once (false: wait for the whole block)
+
+  bool dissipation = true;  ///< R per period
+  bool estimators = false;  ///< W and S per period beside R
+  bool alignment = true;    ///< ∫ρ̄ dt and min/max of ρ̄
+  bool energy = false;      ///< ∫H dt
+  bool slips = true;        ///< count slip events
+  bool period_series = false;
+  double slip_rate = 10.0;  ///< a step with max_j |Δθ_j|/Δt above this is part of a slip
+
+  kernels::StepperKind stepper = kernels::StepperKind::rodas4;
+  double rtol = 1e-6;
+  double atol = 1e-9;
+  double h_max = 0.5;
+  double max_steps = 1e8;
+  LaneKind lanes = LaneKind::simd;
+
+  std::string output_path;
+
+  /// Whether the regime rule has what it needs (alignment extrema and slip counts).
+  bool classifies_regimes() const { return alignment && slips; }
+  std::size_t member_count() const {
+    return A_values.size() * g_values.size() * kinds.size() * std::size_t(replicas);
+  }
+};
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,72 @@
+// Reducers that watch every accepted step of a lane block (architecture.md principle 4):
+// the extremes of the alignment ρ̄ and the count of slip events (model.md §3).
+#pragma once
+
+#include <cstddef>
+
+#include "ensemble/member_result.hpp"
+#include "kernels/lane.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// min and max of ρ̄ over the step points of the current period, per lane.
+template <class V>
+struct AlignmentExtrema {
+  V min = V(0.0), max = V(0.0), current = V(0.0);
+
+  /// A lane starts (a new member, or a new period) at alignment rho.
+  void start_lane(std::size_t lane, double rho) {
+    kernels::lane_set(min, lane, rho);
+    kernels::lane_set(max, lane, rho);
+    kernels::lane_set(current, lane, rho);
+  }
+
+  void accumulate(kernels::lane_mask<V> accepted, V rho) {
+    current = kernels::lane_select(accepted, rho, current);
+    min = kernels::lane_select(accepted, kernels::lane_min(min, rho), min);
+    max = kernels::lane_select(accepted, kernels::lane_max(max, rho), max);
+  }
+
+  /// Writes the lane's extremes into the period record; the next period starts where this ends.
+  void end_period(std::size_t lane, PeriodRecord& record) {
+    record.alignment_min = kernels::lane_get(min, lane);
+    record.alignment_max = kernels::lane_get(max, lane);
+    start_lane(lane, kernels::lane_get(current, lane));
+  }
+};
+
+/// Slip events: an accepted step is fast when some row turns faster than `slip_rate`
+/// (max_j |Δθ_j| / Δt, in units of the drive's angular velocity); a slip is a run of fast
+/// steps, counted in the period where it begins.
+template <class V>
+struct SlipCounter {
+  explicit SlipCounter(double slip_rate) : rate(slip_rate) {}
+
+  double rate;
+  V count = V(0.0);  ///< slips begun in the current period
+  V fast = V(0.0);   ///< 1 while the lane is inside a slip
+
+  void start_lane(std::size_t lane) {
+    kernels::lane_set(count, lane, 0.0);
+    kernels::lane_set(fast, lane, 0.0);
+  }
+
+  void accumulate(kernels::lane_mask<V> accepted, std::size_t rows, const V* theta_before,
+                  const V* theta_after, V dt) {
+    V largest(0.0);
+    for (std::size_t j = 0; j < rows; ++j)
+      largest = kernels::lane_max(largest, kernels::lane_abs(theta_after[j] - theta_before[j]));
+    const V safe_dt = kernels::lane_select(accepted, dt, V(1.0));
+    const auto is_fast = largest > V(rate) * safe_dt;
+    const auto begins = accepted & is_fast & (fast == V(0.0));
+    count += kernels::lane_select(begins, V(1.0), V(0.0));
+    fast = kernels::lane_select(accepted, kernels::lane_select(is_fast, V(1.0), V(0.0)), fast);
+  }
+
+  void end_period(std::size_t lane, PeriodRecord& record) {
+    record.slips = kernels::lane_get(count, lane);
+    kernels::lane_set(count, lane, 0.0);
+  }
+};
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,35 @@
+// Runs a whole member plan (architecture.md data flow): lane blocks on OpenMP threads take
+// members from one shared counter; results land at their member index, whatever the order.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "ensemble/member_plan.hpp"
+#include "ensemble/member_result.hpp"
+#include "ensemble/scene.hpp"
+
+namespace rotorsweep::ensemble {
+
+struct SweepStatistics {
+  double wall_seconds = 0;
+  double lane_steps_busy = 0;   ///< Σ over step attempts of lanes that held a member
+  double lane_steps_total = 0;  ///< Σ over step attempts of all lanes
+  int threads = 1;
+  std::size_t lane_width = 1;
+  double occupancy() const { return lane_steps_total > 0 ? lane_steps_busy / lane_steps_total : 0.0; }
+};
+
+struct SweepOutcome {
+  std::vector<MemberResult> results;  ///< results[i] belongs to members[i]
+  SweepStatistics statistics;
+};
+
+/// Called now and then with the number of members finished (never from two threads at once).
+using ProgressCallback = std::function<void(std::size_t done)>;
+
+SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
+                       const ProgressCallback& progress);
+
+}  // namespace rotorsweep::ensemble

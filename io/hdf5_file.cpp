@@ -1,0 +1,272 @@
+// The HDF5 C API behind Hdf5Location: creation properties without timestamps (so that the
+// same results give the same bytes), UTF-8 variable-length strings, h5py-style booleans.
+#include "io/hdf5_file.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace rotorsweep::io {
+
+namespace {
+
+void silence_hdf5_error_stack() {
+  static const bool silenced = [] { return H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0; }();
+  (void)silenced;
+}
+
+Hdf5Handle string_type() {
+  Hdf5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.id(), H5T_VARIABLE);
+  H5Tset_cset(type.id(), H5T_CSET_UTF8);
+  return type;
+}
+
+Hdf5Handle flag_type() {
+  Hdf5Handle type(H5Tenum_create(H5T_NATIVE_INT8), H5Tclose);
+  const signed char no = 0, yes = 1;
+  H5Tenum_insert(type.id(), "FALSE", &no);
+  H5Tenum_insert(type.id(), "TRUE", &yes);
+  return type;
+}
+
+/// Object creation properties without modification times.
+Hdf5Handle untimed(hid_t list_class) {
+  Hdf5Handle plist(H5Pcreate(list_class), H5Pclose);
+  H5Pset_obj_track_times(plist.id(), false);
+  return plist;
+}
+
+Hdf5Handle scalar_space() { return Hdf5Handle(H5Screate(H5S_SCALAR), H5Sclose); }
+
+Hdf5Handle fresh_attribute(hid_t loc, const std::string& name, hid_t type) {
+  if (H5Aexists(loc, name.c_str()) > 0) H5Adelete(loc, name.c_str());
+  const auto space = scalar_space();
+  return Hdf5Handle(H5Acreate2(loc, name.c_str(), type, space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+}
+
+herr_t write_string_attribute(hid_t loc, const std::string& name, const std::string& value) {
+  const auto type = string_type();
+  const auto attribute = fresh_attribute(loc, name, type.id());
+  const char* pointer = value.c_str();
+  return attribute.id() < 0 ? -1 : H5Awrite(attribute.id(), type.id(), &pointer);
+}
+
+/// The "description" attribute every dataset carries (units and meaning).
+void describe(hid_t object, const std::string& description) {
+  write_string_attribute(object, "description", description);
+}
+
+}  // namespace
+
+Hdf5Handle& Hdf5Handle::operator=(Hdf5Handle&& other) noexcept {
+  if (this != &other) {
+    if (id_ >= 0 && close_) close_(id_);
+    id_ = other.id_;
+    close_ = other.close_;
+    other.id_ = -1;
+  }
+  return *this;
+}
+
+Hdf5Handle::~Hdf5Handle() {
+  if (id_ >= 0 && close_) close_(id_);
+}
+
+void Hdf5Location::fail(const std::string& what, const std::string& name) const {
+  throw std::runtime_error("HDF5: cannot " + what + " '" + name + "' in " + path_);
+}
+
+Hdf5Location Hdf5Location::create_file(const std::string& path) {
+  silence_hdf5_error_stack();
+  const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (id < 0) throw std::runtime_error("cannot create output file '" + path + "'");
+  return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
+}
+
+Hdf5Location Hdf5Location::open_file(const std::string& path) {
+  silence_hdf5_error_stack();
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id < 0) throw std::runtime_error("cannot open '" + path + "' as an HDF5 file");
+  return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
+}
+
+Hdf5Location Hdf5Location::create_group(const std::string& name) const {
+  const auto gcpl = untimed(H5P_GROUP_CREATE);
+  const hid_t id = H5Gcreate2(this->id(), name.c_str(), H5P_DEFAULT, gcpl.id(), H5P_DEFAULT);
+  if (id < 0) fail("create group", name);
+  return Hdf5Location(Hdf5Handle(id, H5Gclose), path_);
+}
+
+Hdf5Location Hdf5Location::open_group(const std::string& name) const {
+  const hid_t id = H5Gopen2(this->id(), name.c_str(), H5P_DEFAULT);
+  if (id < 0) fail("open group", name);
+  return Hdf5Location(Hdf5Handle(id, H5Gclose), path_);
+}
+
+bool Hdf5Location::has(const std::string& name) const {
+  return H5Lexists(id(), name.c_str(), H5P_DEFAULT) > 0;
+}
+
+std::vector<std::string> Hdf5Location::members() const {
+  std::vector<std::string> names;
+  const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
+    static_cast<std::vector<std::string>*>(out)->push_back(name);
+    return 0;
+  };
+  H5Literate(id(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+void Hdf5Location::flush() const { H5Fflush(id(), H5F_SCOPE_GLOBAL); }
+
+namespace {
+
+Hdf5Handle create_dataset(hid_t loc, const std::string& name, hid_t file_type,
+                          const std::vector<hsize_t>& dims) {
+  const Hdf5Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
+  const auto dcpl = untimed(H5P_DATASET_CREATE);
+  return Hdf5Handle(H5Dcreate2(loc, name.c_str(), file_type, space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
+                    H5Dclose);
+}
+
+}  // namespace
+
+void Hdf5Location::write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> dims,
+                         const std::string& description) const {
+  if (dims.empty()) dims = {hsize_t(data.size())};
+  const auto set = create_dataset(id(), name, H5T_IEEE_F64LE, dims);
+  if (set.id() < 0 || H5Dwrite(set.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
+    fail("write dataset", name);
+  if (!description.empty()) describe(set.id(), description);
+}
+
+void Hdf5Location::write(const std::string& name, const std::vector<std::int64_t>& data,
+                         const std::string& description) const {
+  const auto set = create_dataset(id(), name, H5T_STD_I64LE, {hsize_t(data.size())});
+  if (set.id() < 0 || H5Dwrite(set.id(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
+    fail("write dataset", name);
+  if (!description.empty()) describe(set.id(), description);
+}
+
+void Hdf5Location::write(const std::string& name, const std::vector<std::string>& data,
+                         const std::string& description) const {
+  const auto type = string_type();
+  std::vector<const char*> pointers;
+  for (const auto& s : data) pointers.push_back(s.c_str());
+  const auto set = create_dataset(id(), name, type.id(), {hsize_t(data.size())});
+  if (set.id() < 0 || H5Dwrite(set.id(), type.id(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0)
+    fail("write dataset", name);
+  if (!description.empty()) describe(set.id(), description);
+}
+
+std::vector<double> Hdf5Location::read_doubles(const std::string& name, std::vector<hsize_t>* dims) const {
+  const Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (set.id() < 0) fail("open dataset", name);
+  const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
+  std::vector<double> data(std::size_t(H5Sget_simple_extent_npoints(space.id())));
+  if (dims) {
+    dims->resize(std::size_t(H5Sget_simple_extent_ndims(space.id())));
+    H5Sget_simple_extent_dims(space.id(), dims->data(), nullptr);
+  }
+  if (H5Dread(set.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
+    fail("read dataset", name);
+  return data;
+}
+
+std::vector<std::int64_t> Hdf5Location::read_integers(const std::string& name) const {
+  const Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (set.id() < 0) fail("open dataset", name);
+  const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
+  std::vector<std::int64_t> data(std::size_t(H5Sget_simple_extent_npoints(space.id())));
+  if (H5Dread(set.id(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
+    fail("read dataset", name);
+  return data;
+}
+
+std::vector<std::string> Hdf5Location::read_strings(const std::string& name) const {
+  const Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (set.id() < 0) fail("open dataset", name);
+  const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
+  const auto type = string_type();
+  std::vector<char*> pointers(std::size_t(H5Sget_simple_extent_npoints(space.id())), nullptr);
+  if (H5Dread(set.id(), type.id(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0)
+    fail("read dataset", name);
+  std::vector<std::string> data;
+  for (char* p : pointers) data.emplace_back(p ? p : "");
+  H5Dvlen_reclaim(type.id(), space.id(), H5P_DEFAULT, pointers.data());
+  return data;
+}
+
+std::vector<unsigned char> Hdf5Location::read_bytes(const std::string& name) const {
+  const Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (set.id() < 0) fail("open dataset", name);
+  const Hdf5Handle type(H5Dget_type(set.id()), H5Tclose);
+  if (H5Tis_variable_str(type.id()) > 0) {
+    std::vector<unsigned char> bytes;
+    for (const auto& s : read_strings(name)) {
+      bytes.insert(bytes.end(), s.begin(), s.end());
+      bytes.push_back(0);
+    }
+    return bytes;
+  }
+  const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
+  std::vector<unsigned char> bytes(std::size_t(H5Sget_simple_extent_npoints(space.id())) *
+                                   H5Tget_size(type.id()));
+  if (H5Dread(set.id(), type.id(), H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()) < 0)
+    fail("read dataset", name);
+  return bytes;
+}
+
+void Hdf5Location::set_attribute(const std::string& name, double value) const {
+  const auto attribute = fresh_attribute(id(), name, H5T_IEEE_F64LE);
+  if (attribute.id() < 0 || H5Awrite(attribute.id(), H5T_NATIVE_DOUBLE, &value) < 0)
+    fail("write attribute", name);
+}
+
+void Hdf5Location::set_attribute(const std::string& name, std::int64_t value) const {
+  const auto attribute = fresh_attribute(id(), name, H5T_STD_I64LE);
+  if (attribute.id() < 0 || H5Awrite(attribute.id(), H5T_NATIVE_INT64, &value) < 0)
+    fail("write attribute", name);
+}
+
+void Hdf5Location::set_attribute(const std::string& name, const std::string& value) const {
+  if (write_string_attribute(id(), name, value) < 0) fail("write attribute", name);
+}
+
+void Hdf5Location::set_flag(const std::string& name, bool value) const {
+  const auto type = flag_type();
+  const auto attribute = fresh_attribute(id(), name, type.id());
+  const signed char stored = value ? 1 : 0;
+  if (attribute.id() < 0 || H5Awrite(attribute.id(), type.id(), &stored) < 0) fail("write attribute", name);
+}
+
+bool Hdf5Location::has_attribute(const std::string& name) const { return H5Aexists(id(), name.c_str()) > 0; }
+
+double Hdf5Location::attribute_double(const std::string& name) const {
+  const Hdf5Handle attribute(H5Aopen(id(), name.c_str(), H5P_DEFAULT), H5Aclose);
+  double value = 0;
+  if (attribute.id() < 0 || H5Aread(attribute.id(), H5T_NATIVE_DOUBLE, &value) < 0)
+    fail("read attribute", name);
+  return value;
+}
+
+std::string Hdf5Location::attribute_string(const std::string& name) const {
+  const Hdf5Handle attribute(H5Aopen(id(), name.c_str(), H5P_DEFAULT), H5Aclose);
+  const auto type = string_type();
+  char* pointer = nullptr;
+  if (attribute.id() < 0 || H5Aread(attribute.id(), type.id(), &pointer) < 0) fail("read attribute", name);
+  std::string value = pointer ? pointer : "";
+  H5free_memory(pointer);
+  return value;
+}
+
+bool Hdf5Location::attribute_flag(const std::string& name) const {
+  const Hdf5Handle attribute(H5Aopen(id(), name.c_str(), H5P_DEFAULT), H5Aclose);
+  const auto type = flag_type();
+  signed char value = 0;
+  if (attribute.id() < 0 || H5Aread(attribute.id(), type.id(), &value) < 0) fail("read attribute", name);
+  return value != 0;
+}
+
+}  // namespace rotorsweep::io

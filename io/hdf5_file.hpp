@@ -1,0 +1,80 @@
+// A thin RAII layer over the HDF5 C API: files, groups, 1-D/2-D datasets of doubles, integers
+// and strings, and attributes; every failure becomes a std::runtime_error naming the object.
+#pragma once
+
+#include <hdf5.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rotorsweep::io {
+
+/// An owned HDF5 identifier (file, group, dataset, ...), closed with the matching H5?close.
+class Hdf5Handle {
+ public:
+  Hdf5Handle() = default;
+  Hdf5Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  Hdf5Handle(Hdf5Handle&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = -1; }
+  Hdf5Handle& operator=(Hdf5Handle&& other) noexcept;
+  Hdf5Handle(const Hdf5Handle&) = delete;
+  Hdf5Handle& operator=(const Hdf5Handle&) = delete;
+  ~Hdf5Handle();
+  hid_t id() const { return id_; }
+
+ private:
+  hid_t id_ = -1;
+  herr_t (*close_)(hid_t) = nullptr;
+};
+
+/// A file or group to write into or read from.
+class Hdf5Location {
+ public:
+  /// Creates (truncating) the file at path.
+  static Hdf5Location create_file(const std::string& path);
+  /// Opens an existing file read-only.
+  static Hdf5Location open_file(const std::string& path);
+
+  Hdf5Location create_group(const std::string& name) const;
+  Hdf5Location open_group(const std::string& name) const;
+  bool has(const std::string& name) const;
+  /// Names of the links (datasets, groups) directly in this location, sorted.
+  std::vector<std::string> members() const;
+  void flush() const;
+
+  /// dims empty: one dimension of data.size().
+  void write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> dims = {},
+             const std::string& description = "") const;
+  void write(const std::string& name, const std::vector<std::int64_t>& data,
+             const std::string& description = "") const;
+  void write(const std::string& name, const std::vector<std::string>& data,
+             const std::string& description = "") const;
+
+  std::vector<double> read_doubles(const std::string& name, std::vector<hsize_t>* dims = nullptr) const;
+  std::vector<std::int64_t> read_integers(const std::string& name) const;
+  std::vector<std::string> read_strings(const std::string& name) const;
+  /// The raw bytes of a dataset in its file type (for byte-for-byte comparisons).
+  std::vector<unsigned char> read_bytes(const std::string& name) const;
+
+  void set_attribute(const std::string& name, double value) const;
+  void set_attribute(const std::string& name, std::int64_t value) const;
+  void set_attribute(const std::string& name, const std::string& value) const;
+  /// A boolean in h5py's convention (int8 enum FALSE = 0, TRUE = 1), read back as numpy.bool_.
+  void set_flag(const std::string& name, bool value) const;
+
+  bool has_attribute(const std::string& name) const;
+  double attribute_double(const std::string& name) const;
+  std::string attribute_string(const std::string& name) const;
+  bool attribute_flag(const std::string& name) const;
+
+  hid_t id() const { return handle_.id(); }
+
+ private:
+  Hdf5Location(Hdf5Handle handle, std::string path) : handle_(std::move(handle)), path_(std::move(path)) {}
+  [[noreturn]] void fail(const std::string& what, const std::string& name) const;
+
+  Hdf5Handle handle_;
+  std::string path_;
+};
+
+}  // namespace rotorsweep::io

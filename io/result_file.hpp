@@ -1,0 +1,40 @@
+// The output file of a sweep (README "Output file"): /members (one row per member),
+// /members/periods (per-period series), /curves (per-point statistics) and root attributes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ensemble/curves.hpp"
+#include "ensemble/member_plan.hpp"
+#include "ensemble/scene.hpp"
+#include "ensemble/sweep.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace rotorsweep::io {
+
+/// Where a result came from.
+struct Provenance {
+  std::string scene_path;
+  std::string version;
+  std::string revision;  ///< source revision, "unknown" when the build could not tell
+};
+
+/// A result file being written: it exists with complete = FALSE from construction on, and
+/// says complete = TRUE only after every dataset has been written and flushed.
+class ResultFile {
+ public:
+  /// Creates (truncates) path and writes the scene and provenance.
+  ResultFile(const std::string& path, const ensemble::Scene& scene, const Provenance& provenance);
+
+  void write_members(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
+                     const std::vector<ensemble::MemberResult>& results) const;
+  void write_curves(const ensemble::Scene& scene, const std::vector<ensemble::CurvePoint>& curves) const;
+  /// Run statistics, then complete = TRUE.
+  void finish(const ensemble::SweepStatistics& statistics) const;
+
+ private:
+  Hdf5Location file_;
+};
+
+}  // namespace rotorsweep::io

@@ -1,0 +1,304 @@
+// Scene parsing and validation with toml++: a table of allowed keys per section, typed
+// readers that name the key and the allowed values in every message (README "Scene files").
+#include "io/scene_parser.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace rotorsweep::io {
+
+namespace {
+
+using ensemble::Scene;
+
+const std::map<std::string, std::set<std::string>> allowed_keys{
+    {"model", {"rows"}},
+    {"drive", {"g"}},
+    {"sweep", {"A"}},
+    {"initial", {"kinds", "noise", "offset", "angles", "replicas", "seed"}},
+    {"schedule", {"relax_periods", "average_periods", "steady_tol", "max_periods", "refill"}},
+    {"observables",
+     {"dissipation", "estimators", "alignment", "energy", "slips", "period_series", "slip_rate"}},
+    {"numerics", {"stepper", "rtol", "atol", "h_max", "max_steps", "lanes"}},
+    {"output", {"path"}},
+};
+
+std::string join(const std::set<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+[[noreturn]] void fail(const std::string& key, const std::string& message) {
+  throw SceneError("scene key '" + key + "': " + message);
+}
+
+std::string describe(const toml::node& node) {
+  std::ostringstream out;
+  if (node.is_string())
+    out << '"' << node.value<std::string>().value_or("") << '"';
+  else if (node.is_table())
+    out << "a table";
+  else if (node.is_array())
+    out << "an array";
+  else
+    node.visit([&](const auto& value) { out << value; });
+  return out.str();
+}
+
+/// Typed access to one section of the scene, keys named "section.key" in messages.
+class Section {
+ public:
+  Section(const toml::table* table, std::string name) : table_(table), name_(std::move(name)) {}
+
+  std::string key(std::string_view k) const { return name_ + "." + std::string(k); }
+  const toml::node* find(std::string_view k) const { return table_ ? table_->get(k) : nullptr; }
+  const toml::node& require(std::string_view k, const std::string& what) const {
+    const toml::node* node = find(k);
+    if (!node) fail(key(k), "is missing; it must be " + what);
+    return *node;
+  }
+
+  double number(std::string_view k, double fallback, const std::string& what, bool (*valid)(double)) const {
+    const toml::node* node = find(k);
+    return node ? checked_number(*node, key(k), what, valid) : fallback;
+  }
+
+  long long integer(std::string_view k, long long fallback, const std::string& what,
+                    bool (*valid)(long long)) const {
+    const toml::node* node = find(k);
+    if (!node) return fallback;
+    const auto v = node->value_exact<long long>();
+    if (!node->is_integer() || !v || !valid(*v))
+      fail(key(k), "must be " + what + " (got " + describe(*node) + ")");
+    return *v;
+  }
+
+  bool boolean(std::string_view k, bool fallback) const {
+    const toml::node* node = find(k);
+    if (!node) return fallback;
+    if (!node->is_boolean()) fail(key(k), "must be true or false (got " + describe(*node) + ")");
+    return *node->value<bool>();
+  }
+
+  std::string choice(std::string_view k, std::string fallback, const std::set<std::string>& allowed) const {
+    const toml::node* node = find(k);
+    if (!node) return fallback;
+    const auto v = node->value_exact<std::string>();
+    if (!v || !allowed.count(*v))
+      fail(key(k), "must be one of " + join(allowed) + " (got " + describe(*node) + ")");
+    return *v;
+  }
+
+  static double checked_number(const toml::node& node, const std::string& key, const std::string& what,
+                               bool (*valid)(double)) {
+    std::optional<double> v;
+    if (node.is_floating_point() || node.is_integer()) v = node.value<double>();
+    if (!v || !std::isfinite(*v) || !valid(*v))
+      fail(key, "must be " + what + " (got " + describe(node) + ")");
+    return *v;
+  }
+
+ private:
+  const toml::table* table_;
+  std::string name_;
+};
+
+/// A list of numbers, or { from, to, count, spacing = "linear" | "log" }.
+std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
+                         bool (*valid)(double)) {
+  const std::string key = section.key(k);
+  const std::string shape =
+      "a list of numbers " + what + ", or { from, to, count, spacing = \"linear\"|\"log\" }";
+  const toml::node& node = section.require(k, shape);
+  std::vector<double> values;
+  if (const auto* list = node.as_array()) {
+    if (list->empty()) fail(key, "must not be empty; it must be " + shape);
+    for (const auto& element : *list) values.push_back(Section::checked_number(element, key, what, valid));
+    return values;
+  }
+  const auto* range = node.as_table();
+  if (!range) fail(key, "must be " + shape + " (got " + describe(node) + ")");
+  for (const auto& [name, value] : *range)
+    if (name != "from" && name != "to" && name != "count" && name != "spacing")
+      fail(key + "." + std::string(name.str()), "unknown key; a range has from, to, count, spacing");
+  const Section r(range, key);
+  const double from =
+      Section::checked_number(r.require("from", "a number " + what), r.key("from"), what, valid);
+  const double to = Section::checked_number(r.require("to", "a number " + what), r.key("to"), what, valid);
+  r.require("count", "an integer >= 1");
+  const long long count = r.integer("count", 1, "an integer from 1 to 10000000",
+                                    [](long long c) { return c >= 1 && c <= 10000000; });
+  const bool log = r.choice("spacing", "linear", {"linear", "log"}) == "log";
+  if (to < from) fail(r.key("to"), "must be >= from (" + std::to_string(from) + ")");
+  if (log && from <= 0) fail(r.key("from"), "must be > 0 with spacing = \"log\"");
+  for (long long i = 0; i < count; ++i) {
+    const double s = count == 1 ? 0.0 : double(i) / double(count - 1);
+    values.push_back(log ? std::exp(std::log(from) + s * (std::log(to) - std::log(from)))
+                         : from + s * (to - from));
+  }
+  values.back() = to;
+  return values;
+}
+
+void check_sections(const toml::table& root) {
+  std::set<std::string> sections;
+  for (const auto& [name, keys] : allowed_keys) sections.insert(name);
+  for (const auto& [name, node] : root) {
+    const std::string section(name.str());
+    const auto it = allowed_keys.find(section);
+    if (it == allowed_keys.end()) fail(section, "unknown; the scene sections are " + join(sections));
+    const auto* table = node.as_table();
+    if (!table) fail(section, "must be a table [" + section + "]");
+    for (const auto& [key, value] : *table)
+      if (!it->second.count(std::string(key.str())))
+        fail(section + "." + std::string(key.str()),
+             "unknown key; [" + section + "] allows " + join(it->second));
+  }
+}
+
+Section section(const toml::table& root, const std::string& name) {
+  return Section(root[name].as_table(), name);
+}
+
+Scene read_scene(const toml::table& root) {
+  check_sections(root);
+  Scene scene;
+  const Section model = section(root, "model");
+  model.require("rows", "an even integer >= 2");
+  scene.rows = std::size_t(model.integer("rows", 0, "an even integer from 2 to 100000",
+                                         [](long long n) { return n >= 2 && n <= 100000 && n % 2 == 0; }));
+
+  scene.g_values = grid(section(root, "drive"), "g", "> 0", [](double g) { return g > 0; });
+  scene.A_values = grid(section(root, "sweep"), "A", ">= 0", [](double A) { return A >= 0; });
+
+  const Section initial = section(root, "initial");
+  if (const toml::node* kinds = initial.find("kinds")) {
+    const auto* list = kinds->as_array();
+    const std::string allowed = "a non-empty list of distinct names from FM, AFM, random, exact";
+    if (!list || list->empty())
+      fail(initial.key("kinds"), "must be " + allowed + " (got " + describe(*kinds) + ")");
+    scene.kinds.clear();
+    for (const auto& element : *list) {
+      const auto name = element.value_exact<std::string>();
+      const auto kind = name ? ensemble::parse_kind(*name) : std::nullopt;
+      if (!kind || std::count(scene.kinds.begin(), scene.kinds.end(), *kind))
+        fail(initial.key("kinds"), "must be " + allowed + " (got " + describe(element) + ")");
+      scene.kinds.push_back(*kind);
+    }
+  }
+  scene.noise = initial.number("noise", scene.noise, "a number from 0 to 3.14159",
+                               [](double x) { return x >= 0 && x <= 3.1415926535897932; });
+  scene.offset = initial.number("offset", scene.offset, "a number", [](double) { return true; });
+  scene.replicas = int(initial.integer("replicas", scene.replicas, "an integer from 1 to 1000000",
+                                       [](long long r) { return r >= 1 && r <= 1000000; }));
+  scene.seed =
+      std::uint64_t(initial.integer("seed", 1, "an integer >= 0", [](long long s) { return s >= 0; }));
+  const bool exact = std::count(scene.kinds.begin(), scene.kinds.end(), ensemble::InitialKind::exact) > 0;
+  if (const toml::node* angles = initial.find("angles")) {
+    const auto* list = angles->as_array();
+    const std::string what = "a list of " + std::to_string(scene.rows) + " numbers (one angle per row)";
+    if (!list || list->size() != scene.rows) fail(initial.key("angles"), "must be " + what);
+    for (const auto& a : *list)
+      scene.exact_angles.push_back(
+          Section::checked_number(a, initial.key("angles"), "a number", [](double) { return true; }));
+    if (!exact) fail(initial.key("angles"), "is only used with kind \"exact\" in initial.kinds");
+  } else if (exact) {
+    initial.require("angles",
+                    "a list of " + std::to_string(scene.rows) + " numbers when kinds has \"exact\"");
+  }
+
+  const Section schedule = section(root, "schedule");
+  const auto non_negative = [](long long n) { return n >= 0 && n <= 1000000; };
+  const auto positive = [](long long n) { return n >= 1 && n <= 1000000; };
+  scene.relax_periods = int(
+      schedule.integer("relax_periods", scene.relax_periods, "an integer from 0 to 1000000", non_negative));
+  scene.average_periods = int(
+      schedule.integer("average_periods", scene.average_periods, "an integer from 1 to 1000000", positive));
+  scene.steady_tol = schedule.number("steady_tol", scene.steady_tol, "a number >= 0 (0: fixed schedule)",
+                                     [](double x) { return x >= 0; });
+  const int minimum_periods = scene.relax_periods + scene.average_periods;
+  scene.max_periods = std::max(scene.max_periods, minimum_periods);
+  if (schedule.find("max_periods")) {
+    scene.max_periods = int(schedule.integer("max_periods", 0, "an integer from 1 to 1000000", positive));
+    if (scene.max_periods < minimum_periods)
+      fail(schedule.key("max_periods"),
+           "must be >= relax_periods + average_periods = " + std::to_string(minimum_periods));
+  }
+  scene.refill = schedule.boolean("refill", scene.refill);
+
+  const Section observables = section(root, "observables");
+  scene.dissipation = observables.boolean("dissipation", scene.dissipation);
+  scene.estimators = observables.boolean("estimators", scene.estimators);
+  scene.alignment = observables.boolean("alignment", scene.alignment);
+  scene.energy = observables.boolean("energy", scene.energy);
+  scene.slips = observables.boolean("slips", scene.slips);
+  scene.period_series = observables.boolean("period_series", scene.period_series);
+  scene.slip_rate = observables.number("slip_rate", scene.slip_rate, "a number > 0 (rows' angular velocity)",
+                                       [](double x) { return x > 0; });
+  if (scene.steady_tol > 0 && !scene.dissipation)
+    fail(schedule.key("steady_tol"),
+         "needs observables.dissipation = true (it compares D of successive periods)");
+
+  const Section numerics = section(root, "numerics");
+  std::set<std::string> steppers(kernels::stepper_names.begin(), kernels::stepper_names.end());
+  scene.stepper = *kernels::parse_stepper(numerics.choice("stepper", "rodas4", steppers));
+  scene.rtol = numerics.number("rtol", scene.rtol, "a number from 1e-14 to 1e-2",
+                               [](double x) { return x >= 1e-14 && x <= 1e-2; });
+  scene.atol = numerics.number("atol", scene.atol, "a number from 1e-16 to 1e-2",
+                               [](double x) { return x >= 1e-16 && x <= 1e-2; });
+  scene.h_max = numerics.number("h_max", scene.h_max, "a number > 0 and <= 2π (the drive period)",
+                                [](double x) { return x > 0 && x <= 6.283185307179586; });
+  scene.max_steps =
+      double(numerics.integer("max_steps", 100000000, "an integer >= 1", [](long long n) { return n >= 1; }));
+  scene.lanes = numerics.choice("lanes", "simd", {"simd", "scalar"}) == "simd" ? ensemble::LaneKind::simd
+                                                                               : ensemble::LaneKind::scalar;
+
+  const Section output = section(root, "output");
+  if (const toml::node* path = output.find("path")) {
+    const auto v = path->value_exact<std::string>();
+    if (!v || v->empty())
+      fail(output.key("path"), "must be a non-empty string (got " + describe(*path) + ")");
+    scene.output_path = *v;
+  }
+  if (scene.member_count() > 100000000)
+    fail("sweep.A", "the scene has " + std::to_string(scene.member_count()) +
+                        " members (A × g × kinds × replicas); at most 100000000 are allowed");
+  return scene;
+}
+
+}  // namespace
+
+ensemble::Scene parse_scene_text(std::string_view text, std::string_view source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream message;
+    message << "scene file '" << source << "' line " << e.source().begin.line << ": " << e.description();
+    throw SceneError(message.str());
+  }
+  Scene scene = read_scene(root);
+  scene.text = std::string(text);
+  return scene;
+}
+
+ensemble::Scene parse_scene_file(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+    throw SceneError("cannot read scene file '" + path + "': no such file");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw SceneError("cannot read scene file '" + path + "': permission denied or unreadable");
+  return parse_scene_text(text.str(), path);
+}
+
+}  // namespace rotorsweep::io

@@ -1,0 +1,39 @@
+// `rotorsweep info`: the summary of a finished file, the warning and exit code 1 for an
+// incomplete one, and exit code 2 for a file that is not a result file.
+#include <catch2/catch.hpp>
+
+#include "io/result_file.hpp"
+#include "io/scene_parser.hpp"
+#include "support/cli.hpp"
+#include "support/scene_text.hpp"
+
+using namespace rotorsweep::testing;
+
+TEST_CASE("info summarises a finished run", "[apps][info]") {
+  const auto dir = scratch_directory("info");
+  write_text(dir / "s.toml",
+             "[model]\nrows = 4\n[drive]\ng = [0.01]\n[sweep]\nA = [1, 11]\n"
+             "[initial]\nkinds = [\"FM\"]\nreplicas = 3\n");
+  REQUIRE(run_cli("run '" + (dir / "s.toml").string() + "' -o '" + (dir / "s.h5").string() + "'", dir)
+              .exit_code == 0);
+  const auto info = run_cli("info '" + (dir / "s.h5").string() + "' --scene", dir);
+  INFO(info.output);
+  CHECK(info.exit_code == 0);
+  CHECK_THAT(info.output, Catch::Contains("members      6"));
+  CHECK_THAT(info.output, Catch::Contains("status       ok 6"));
+  CHECK_THAT(info.output, Catch::Contains("regime       FM 6"));
+  CHECK_THAT(info.output, Catch::Contains("replicas = 3"));
+  CHECK_THAT(info.output, !Catch::Contains("INCOMPLETE"));
+}
+
+TEST_CASE("info flags incomplete files and rejects others", "[apps][info]") {
+  const auto dir = scratch_directory("info-incomplete");
+  const auto scene =
+      rotorsweep::io::parse_scene_text("[model]\nrows = 4\n[drive]\ng = [0.01]\n[sweep]\nA = [1]\n", "s");
+  { rotorsweep::io::ResultFile started((dir / "started.h5").string(), scene, {"s", "0", "unknown"}); }
+  const auto info = run_cli("info '" + (dir / "started.h5").string() + "'", dir);
+  CHECK(info.exit_code == 1);
+  CHECK_THAT(info.output, Catch::Contains("INCOMPLETE"));
+  write_text(dir / "text.h5", "not hdf5");
+  CHECK(run_cli("info '" + (dir / "text.h5").string() + "'", dir).exit_code == 2);
+}

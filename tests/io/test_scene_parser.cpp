@@ -1,0 +1,154 @@
+// Scene validation (io/scene_parser): defaults, grids, and one clear message naming the key
+// for every kind of bad scene: missing key, wrong type, out of range, unknown key, unreadable.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "io/scene_parser.hpp"
+#include "support/scene_text.hpp"
+
+using rotorsweep::io::parse_scene_file;
+using rotorsweep::io::parse_scene_text;
+using rotorsweep::io::SceneError;
+
+namespace {
+
+const std::string minimal = "[model]\nrows = 20\n[drive]\ng = [0.001]\n[sweep]\nA = [1.0, 2]\n";
+
+/// The message of the SceneError the text raises ("" if it parses).
+std::string error_of(const std::string& text) {
+  try {
+    parse_scene_text(text, "test.toml");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("a minimal scene gets the documented defaults", "[io][scene]") {
+  const auto scene = parse_scene_text(minimal, "test.toml");
+  CHECK(scene.rows == 20);
+  CHECK(scene.A_values == std::vector<double>{1.0, 2.0});
+  CHECK(scene.g_values == std::vector<double>{0.001});
+  CHECK(scene.kinds == std::vector{rotorsweep::ensemble::InitialKind::afm});
+  CHECK(scene.noise == 0.01);
+  CHECK(scene.replicas == 1);
+  CHECK(scene.relax_periods == 2);
+  CHECK(scene.average_periods == 2);
+  CHECK(scene.steady_tol == 0);
+  CHECK(scene.rtol == 1e-6);
+  CHECK(scene.atol == 1e-9);
+  CHECK(scene.stepper == rotorsweep::kernels::StepperKind::rodas4);
+  CHECK(scene.dissipation);
+  CHECK(scene.alignment);
+  CHECK(scene.slips);
+  CHECK_FALSE(scene.energy);
+  CHECK_FALSE(scene.period_series);
+  CHECK(scene.text == minimal);
+  CHECK(scene.member_count() == 2);
+}
+
+TEST_CASE("grids are lists or ranges with linear or log spacing", "[io][scene]") {
+  const auto scene = parse_scene_text(
+      "[model]\nrows = 4\n[drive]\ng = { from = 1e-4, to = 1e-1, count = 4, spacing = \"log\" }\n"
+      "[sweep]\nA = { from = 0.25, to = 14.0, count = 281 }\n",
+      "test.toml");
+  REQUIRE(scene.g_values.size() == 4);
+  CHECK(scene.g_values[1] == Approx(1e-3).epsilon(1e-12));
+  CHECK(scene.g_values[3] == 1e-1);
+  REQUIRE(scene.A_values.size() == 281);
+  CHECK(scene.A_values.front() == 0.25);
+  CHECK(scene.A_values[4] == Approx(0.25 + 4 * 13.75 / 280));
+  CHECK(scene.A_values.back() == 14.0);
+}
+
+TEST_CASE("every option is read from its key", "[io][scene]") {
+  const auto scene =
+      parse_scene_text(minimal +
+                           "[initial]\nkinds = [\"FM\", \"exact\"]\nangles = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, "
+                           "10, 11, 12, 13, 14, 15, 16, 17, 18, 19]\nreplicas = 3\nseed = 9\nnoise = 0.1\n"
+                           "[schedule]\nsteady_tol = 1e-5\nmax_periods = 9\nrefill = false\n"
+                           "[observables]\nenergy = true\nestimators = true\nslip_rate = 4\n"
+                           "[numerics]\nstepper = \"ros2\"\nlanes = \"scalar\"\nh_max = 0.25\n"
+                           "[output]\npath = \"x.h5\"\n",
+                       "test.toml");
+  CHECK(scene.kinds.size() == 2);
+  CHECK(scene.exact_angles.size() == 20);
+  CHECK(scene.replicas == 3);
+  CHECK(scene.seed == 9);
+  CHECK(scene.noise == 0.1);
+  CHECK(scene.steady_tol == 1e-5);
+  CHECK(scene.max_periods == 9);
+  CHECK_FALSE(scene.refill);
+  CHECK(scene.energy);
+  CHECK(scene.estimators);
+  CHECK(scene.slip_rate == 4);
+  CHECK(scene.stepper == rotorsweep::kernels::StepperKind::ros2);
+  CHECK(scene.lanes == rotorsweep::ensemble::LaneKind::scalar);
+  CHECK(scene.h_max == 0.25);
+  CHECK(scene.output_path == "x.h5");
+  CHECK(scene.member_count() == 2 * 2 * 3);
+}
+
+TEST_CASE("a missing required key is named", "[io][scene]") {
+  CHECK_THAT(error_of("[model]\nrows = 20\n[drive]\ng = [0.001]\n"),
+             Catch::Contains("'sweep.A'") && Catch::Contains("missing"));
+  CHECK_THAT(error_of("[drive]\ng = [0.001]\n[sweep]\nA = [1]\n"), Catch::Contains("'model.rows'"));
+  CHECK_THAT(error_of(minimal + "[initial]\nkinds = [\"exact\"]\n"), Catch::Contains("'initial.angles'"));
+  CHECK_THAT(error_of("[model]\nrows = 2\n[drive]\ng = { from = 1, count = 3 }\n[sweep]\nA = [1]\n"),
+             Catch::Contains("'drive.g.to'"));
+}
+
+TEST_CASE("a wrong type is named with what is allowed", "[io][scene]") {
+  CHECK_THAT(error_of("[model]\nrows = \"20\"\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n"),
+             Catch::Contains("'model.rows'") && Catch::Contains("even integer"));
+  CHECK_THAT(error_of(minimal + "[observables]\nalignment = 1\n"),
+             Catch::Contains("'observables.alignment'") && Catch::Contains("true or false"));
+  CHECK_THAT(error_of(minimal + "[numerics]\nstepper = \"euler\"\n"),
+             Catch::Contains("'numerics.stepper'") && Catch::Contains("rodas4"));
+  CHECK_THAT(error_of("[model]\nrows = 20\n[drive]\ng = 0.001\n[sweep]\nA = [1]\n"),
+             Catch::Contains("'drive.g'") && Catch::Contains("list of numbers"));
+  CHECK_THAT(error_of(minimal + "[initial]\nkinds = [\"ferro\"]\n"),
+             Catch::Contains("'initial.kinds'") && Catch::Contains("FM, AFM, random, exact"));
+  CHECK_THAT(error_of("model = 3\n"), Catch::Contains("'model'"));
+}
+
+TEST_CASE("an out-of-range value is named with the allowed range", "[io][scene]") {
+  CHECK_THAT(error_of("[model]\nrows = 3\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n"),
+             Catch::Contains("'model.rows'") && Catch::Contains("got 3"));
+  CHECK_THAT(error_of("[model]\nrows = 20\n[drive]\ng = [0.001, -1]\n[sweep]\nA = [1]\n"),
+             Catch::Contains("'drive.g'") && Catch::Contains("> 0"));
+  CHECK_THAT(error_of(minimal + "[numerics]\nrtol = 0.5\n"), Catch::Contains("'numerics.rtol'"));
+  CHECK_THAT(error_of(minimal + "[schedule]\nrelax_periods = 5\nmax_periods = 4\n"),
+             Catch::Contains("'schedule.max_periods'"));
+  CHECK_THAT(error_of(minimal + "[initial]\nreplicas = 0\n"), Catch::Contains("'initial.replicas'"));
+  CHECK_THAT(error_of("[model]\nrows = 2\n[drive]\ng = { from = 0, to = 1, count = 3, spacing = \"log\" }\n"
+                      "[sweep]\nA = [1]\n"),
+             Catch::Contains("'drive.g"));
+  CHECK_THAT(
+      error_of("[model]\nrows = 2\n[drive]\ng = [0.1]\n[sweep]\nA = { from = 3, to = 1, count = 3 }\n"),
+      Catch::Contains("'sweep.A.to'"));
+  CHECK_THAT(error_of(minimal + "[initial]\nkinds = [\"FM\", \"FM\"]\n"), Catch::Contains("'initial.kinds'"));
+}
+
+TEST_CASE("unknown keys and sections are rejected with the allowed ones", "[io][scene]") {
+  CHECK_THAT(error_of(minimal + "[numerics]\nrtoll = 1e-6\n"),
+             Catch::Contains("'numerics.rtoll'") && Catch::Contains("rtol"));
+  CHECK_THAT(error_of(minimal + "[solver]\nrtol = 1e-6\n"),
+             Catch::Contains("'solver'") && Catch::Contains("numerics"));
+  CHECK_THAT(
+      error_of(
+          "[model]\nrows = 2\n[drive]\ng = { from = 1, to = 2, count = 2, steps = 3 }\n[sweep]\nA = [1]\n"),
+      Catch::Contains("'drive.g.steps'"));
+}
+
+TEST_CASE("syntax errors and unreadable files name the file", "[io][scene]") {
+  CHECK_THAT(error_of("[model\nrows = 20\n"), Catch::Contains("test.toml") && Catch::Contains("line 1"));
+  const auto dir = rotorsweep::testing::scratch_directory("scene-parser");
+  CHECK_THROWS_WITH(parse_scene_file((dir / "absent.toml").string()),
+                    Catch::Contains("cannot read scene file"));
+  CHECK_THROWS_WITH(parse_scene_file(dir.string()), Catch::Contains("cannot read scene file"));
+  const auto path = rotorsweep::testing::write_text(dir / "ok.toml", minimal);
+  CHECK(parse_scene_file(path.string()).A_values.size() == 2);
+}
