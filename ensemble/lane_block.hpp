@@ -2,6 +2,7 @@
 // lanes from the plan, step all lanes in lockstep, close periods, retire and refill lanes.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -102,7 +103,8 @@ class LaneBlock {
     kernels::lane_set(state_.steps_accepted, l, 0.0);
     kernels::lane_set(state_.steps_rejected, l, 0.0);
     state_.status[l] = kernels::LaneStatus::ok;
-    model_.set_lane_parameters(l, member.A, member.g);
+    const bool strict_fm = std::all_of(theta.begin(), theta.end(), [&](double x) { return x == theta[0]; });
+    model_.set_lane_parameters(l, member.A, member.g, strict_fm);
     slips_.start_lane(l);
     lanes_[l].occupied = true;
     lanes_[l].member = member;
@@ -150,7 +152,22 @@ class LaneBlock {
       retire(finish(l, settled));
       return;
     }
-    kernels::lane_set(state_.t_stop, l, kernels::lane_get(state_.t, l) + period);
+    if (scene_.wrap_angles)
+      restart_period_wrapped(l);
+    else
+      kernels::lane_set(state_.t_stop, l, kernels::lane_get(state_.t, l) + period);
+  }
+
+  // numerics.wrap_angles: the next period starts at t = 0 with every θ_j in [0, 2π) (the model
+  // is 2π-periodic in t and in each θ_j), so long runs keep full precision in sincos.
+  void restart_period_wrapped(std::size_t l) {
+    constexpr double turn = kernels::drive_period;
+    kernels::lane_set(state_.t, l, 0.0);
+    kernels::lane_set(state_.t_stop, l, turn);
+    for (auto& row : state_.theta) {
+      const double theta = kernels::lane_get(row, l);
+      kernels::lane_set(row, l, theta - turn * std::floor(theta / turn));
+    }
   }
 
   MemberResult finish(std::size_t l, bool settled) {

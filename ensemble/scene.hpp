@@ -46,6 +46,7 @@ struct Scene {
   double h_max = 0.5;
   double max_steps = 1e8;
   LaneKind lanes = LaneKind::simd;
+  bool wrap_angles = false;  ///< restart every period at t = 0 with θ_j in [0, 2π)
 
   std::string output_path;
 

@@ -26,7 +26,7 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
     {"schedule", {"relax_periods", "average_periods", "steady_tol", "max_periods", "refill"}},
     {"observables",
      {"dissipation", "estimators", "alignment", "energy", "slips", "period_series", "slip_rate"}},
-    {"numerics", {"stepper", "rtol", "atol", "h_max", "max_steps", "lanes"}},
+    {"numerics", {"stepper", "rtol", "atol", "h_max", "max_steps", "lanes", "wrap_angles"}},
     {"output", {"path"}},
 };
 
@@ -260,6 +260,8 @@ Scene read_scene(const toml::table& root) {
       double(numerics.integer("max_steps", 100000000, "an integer >= 1", [](long long n) { return n >= 1; }));
   scene.lanes = numerics.choice("lanes", "simd", {"simd", "scalar"}) == "simd" ? ensemble::LaneKind::simd
                                                                                : ensemble::LaneKind::scalar;
+
+  scene.wrap_angles = numerics.boolean("wrap_angles", scene.wrap_angles);
 
   const Section output = section(root, "output");
   if (const toml::node* path = output.find("path")) {

@@ -17,6 +17,13 @@ namespace rotorsweep::kernels {
 /// diagonally dominant and the symmetric positive definite matrices the steppers build near
 /// stable states; a vanishing pivot elsewhere yields non-finite stages, which the step
 /// controller rejects.
+///
+/// Strict-FM invariance: in lanes marked by keep_constant_solutions(), when every row is equal
+/// (a circulant M and a constant right-hand side) the solution is the constant
+/// r / (shift - diag - 2 off), taken in closed form. Elimination would break that symmetry at
+/// rounding level, and the transverse instability of strict-FM states in the CP regime would
+/// amplify it (model.md §5); marked lanes keep the strict-FM set invariant in floating point
+/// as it is in exact arithmetic.
 template <class V>
 class CyclicTridiagonal {
  public:
@@ -38,6 +45,9 @@ class CyclicTridiagonal {
       y[k1] += off_[k] * x[k];
     }
   }
+
+  /// Lanes whose all-equal solutions are taken in closed form (see the class comment).
+  void keep_constant_solutions(lane_mask<V> lanes) { keep_constant_ = lanes; }
 
   /// Factorises M = shift·I - J for the following solve() calls.
   void factor(V shift) {
@@ -62,11 +72,21 @@ class CyclicTridiagonal {
     V beta = shift - diag_[m];
     for (std::size_t k = 0; k < m; ++k) beta -= corner_[k] * spike_[k];
     inv_pivot_[m] = V(1.0) / beta;
+
+    circulant_ = keep_constant_;
+    if (lane_any(circulant_))
+      for (std::size_t i = 1; i < n_; ++i)
+        circulant_ = circulant_ & (diag_[i] == diag_[0]) & (off_[i] == off_[0]);
+    constant_inverse_ = V(1.0) / (shift - diag_[0] - V(2.0) * off_[0]);
   }
 
   /// Solves M x = r in place (r becomes x), with M from the last factor().
   void solve(V* r) const {
     const std::size_t m = n_ - 1;
+    const V r0 = r[0];
+    lane_mask<V> constant = circulant_;
+    if (lane_any(constant))
+      for (std::size_t i = 1; i < n_; ++i) constant = constant & (r[i] == r0);
     r[0] *= inv_pivot_[0];
     for (std::size_t i = 1; i < m; ++i) r[i] = (r[i] + off_[i - 1] * r[i - 1]) * inv_pivot_[i];
     V rho = r[m];
@@ -74,12 +94,19 @@ class CyclicTridiagonal {
     r[m] = rho * inv_pivot_[m];
     r[m - 1] -= spike_[m - 1] * r[m];
     for (std::size_t i = m - 1; i-- > 0;) r[i] -= upper_[i] * r[i + 1] + spike_[i] * r[m];
+    if (lane_any(constant)) {
+      const V x = r0 * constant_inverse_;
+      for (std::size_t i = 0; i < n_; ++i) r[i] = lane_select(constant, x, r[i]);
+    }
   }
 
  private:
   std::size_t n_;
   lane_vector<V> diag_, off_;
   lane_vector<V> inv_pivot_, upper_, spike_, corner_;
+  lane_mask<V> keep_constant_{};  ///< lanes marked by keep_constant_solutions()
+  lane_mask<V> circulant_{};      ///< marked lanes whose rows are all equal
+  V constant_inverse_ = V(0.0);
 };
 
 }  // namespace rotorsweep::kernels

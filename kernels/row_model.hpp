@@ -47,10 +47,14 @@ class NearestNeighbourRows {
   NearestNeighbourRows(std::size_t rows, V A, V g) : rows_(rows), A_(A), g_(g), inv_g_(V(1.0) / g) {}
 
   /// Gives one lane new parameters (a lane block refilled with another member).
-  void set_lane_parameters(std::size_t lane, double A, double g) {
+  /// `strict_fm` marks a member that starts exactly in the strict-FM set (all rows equal):
+  /// its stage solves keep all-equal rows exactly equal (CyclicTridiagonal), so that the
+  /// symmetry-protected state stays strict FM in floating point.
+  void set_lane_parameters(std::size_t lane, double A, double g, bool strict_fm = false) {
     lane_set(A_, lane, A);
     lane_set(g_, lane, g);
     lane_set(inv_g_, lane, 1.0 / g);
+    lane_set(strict_fm_, lane, strict_fm ? 1.0 : 0.0);
   }
 
   std::size_t dimension() const { return rows_; }
@@ -78,6 +82,7 @@ class NearestNeighbourRows {
       J.off(j) = -inv_g_ * w.cos_link[j];
       df_dt[j] = -inv_g_ * A_ * w.cos_lag[j];
     }
+    J.keep_constant_solutions(strict_fm_ != V(0.0));
     integrand_gradients(w, f, J, df_dt, dq_dtheta, dq_dt);
   }
 
@@ -211,6 +216,7 @@ class NearestNeighbourRows {
 
   std::size_t rows_;
   V A_, g_, inv_g_;
+  V strict_fm_ = V(0.0);  ///< 1 in lanes whose member is symmetry protected
 };
 
 }  // namespace rotorsweep::kernels

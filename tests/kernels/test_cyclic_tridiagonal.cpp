@@ -68,3 +68,35 @@ TEST_CASE("cyclic tridiagonal product matches the dense matrix", "[kernels][line
     for (std::size_t k = 0; k < n; ++k) CHECK(y[k] == Approx(expected(Eigen::Index(k))).epsilon(1e-14));
   }
 }
+
+TEST_CASE("marked lanes keep all-equal solutions exactly equal", "[kernels][linear][symmetry]") {
+  for (std::size_t n : {2u, 3u, 20u, 1024u}) {
+    CyclicTridiagonal<double> J(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      J.diag(k) = -2.7;
+      J.off(k) = 0.3;
+    }
+    const double shift = 1e3 / 7;
+    std::vector<double> plain(n, 0.1), kept(n, 0.1);
+    J.factor(shift);
+    J.solve(plain.data());
+    J.keep_constant_solutions(true);
+    J.factor(shift);
+    J.solve(kept.data());
+    INFO("n=" << n);
+    const double exact = 0.1 / (shift + 2.7 - 2 * 0.3);
+    for (std::size_t k = 0; k < n; ++k) {
+      CHECK(kept[k] == kept[0]);                        // bitwise equal rows
+      CHECK(kept[k] == Approx(exact).epsilon(1e-15));   // the closed form
+      CHECK(plain[k] == Approx(exact).epsilon(1e-13));  // elimination: equal to rounding only
+    }
+    // a right-hand side that is not constant takes the ordinary elimination
+    std::vector<double> varied(n, 0.1), expected(n, 0.1);
+    varied[n / 2] = expected[n / 2] = 0.2;
+    J.solve(varied.data());
+    J.keep_constant_solutions(false);
+    J.factor(shift);
+    J.solve(expected.data());
+    CHECK(varied == expected);
+  }
+}
