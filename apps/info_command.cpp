@@ -56,20 +56,27 @@ int run_info(const InfoOptions& options) {
                   double(A.size()) / file.attribute_double("wall_seconds"),
                   100 * file.attribute_double("lane_occupancy"));
     const auto rows = members.read_integers("rows");
-    if (!rows.empty()) std::printf("%-12s %lld\n", "rows N", (long long)rows.front());
+    print_range("rows N", std::vector<double>(rows.begin(), rows.end()));
+    if (members.has("rtol")) print_range("rtol", members.read_doubles("rtol"));
     print_range("A", A);
     print_range("g", members.read_doubles("g"));
     print_counts("initial", members.read_strings("ic"));
     print_counts("status", members.read_strings("status"));
     if (members.has("regime")) print_counts("regime", members.read_strings("regime"));
     if (members.has("dissipation")) {
-      auto D = members.read_doubles("dissipation");
-      D.erase(std::remove_if(D.begin(), D.end(), [](double d) { return !std::isfinite(d); }), D.end());
-      if (!D.empty())
-        std::printf("%-12s from %.6g to %.6g (per row: %.6g to %.6g)\n", "D per period",
-                    *std::min_element(D.begin(), D.end()), *std::max_element(D.begin(), D.end()),
-                    *std::min_element(D.begin(), D.end()) / double(rows.front()),
-                    *std::max_element(D.begin(), D.end()) / double(rows.front()));
+      const auto D = members.read_doubles("dissipation");
+      std::vector<double> finite, per_row;
+      for (std::size_t i = 0; i < D.size(); ++i)
+        if (std::isfinite(D[i])) {
+          finite.push_back(D[i]);
+          per_row.push_back(D[i] / double(rows[i]));
+        }
+      if (!finite.empty())
+        std::printf("%-12s from %.6g to %.6g (per row D/N: %.6g to %.6g)\n", "D per period",
+                    *std::min_element(finite.begin(), finite.end()),
+                    *std::max_element(finite.begin(), finite.end()),
+                    *std::min_element(per_row.begin(), per_row.end()),
+                    *std::max_element(per_row.begin(), per_row.end()));
     }
     std::printf("%-12s /members:", "datasets");
     for (const auto& name : members.members()) std::printf(" %s", name.c_str());

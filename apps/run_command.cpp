@@ -63,13 +63,22 @@ int run_sweep_command(const RunOptions& options) {
 
   const std::size_t lanes =
       scene.lanes == ensemble::LaneKind::simd ? kernels::lane_width<kernels::simd_lane> : 1;
-  std::fprintf(
-      stderr,
-      "rotorsweep run %s: %zu members (%zu A × %zu g × %zu kinds × %d replicas), N = %zu, %s rtol %g, "
-      "%d threads × %zu lanes\n",
-      options.scene.c_str(), members.size(), scene.A_values.size(), scene.g_values.size(), scene.kinds.size(),
-      scene.replicas, scene.rows, kernels::stepper_names[std::size_t(scene.stepper)].data(), scene.rtol,
-      threads, lanes);
+  std::string rows, tolerances;
+  for (std::size_t n : scene.row_counts) {
+    if (!rows.empty()) rows += ",";
+    rows += std::to_string(n);
+  }
+  for (double r : scene.rtol_values) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%s%g", tolerances.empty() ? "" : ",", r);
+    tolerances += text;
+  }
+  std::fprintf(stderr,
+               "rotorsweep run %s: %zu members (%zu N × %zu rtol × %zu A × %zu g × %zu kinds × %d replicas), "
+               "N = %s, %s rtol %s, %d threads × %zu lanes\n",
+               options.scene.c_str(), members.size(), scene.row_counts.size(), scene.rtol_values.size(),
+               scene.A_values.size(), scene.g_values.size(), scene.kinds.size(), scene.replicas, rows.c_str(),
+               kernels::stepper_names[std::size_t(scene.stepper)].data(), tolerances.c_str(), threads, lanes);
   ProgressLine progress(members.size(), !options.quiet);
   const auto outcome =
       ensemble::run_sweep(scene, members, threads, [&](std::size_t done) { progress.update(done); });

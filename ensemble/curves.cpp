@@ -13,7 +13,8 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
   std::vector<CurvePoint> curves;
   const std::size_t group = std::size_t(replicas);
   for (std::size_t first = 0; first + group <= members.size(); first += group) {
-    CurvePoint point{members[first].A, members[first].g, members[first].kind, group};
+    const Member& m = members[first];
+    CurvePoint point{m.rows, m.rtol, m.A, m.g, m.kind, group};
     double sum = 0;
     point.dissipation_min = std::numeric_limits<double>::infinity();
     point.dissipation_max = -std::numeric_limits<double>::infinity();

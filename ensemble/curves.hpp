@@ -1,4 +1,4 @@
-// Per-point statistics of a sweep (/curves of the output): for each (A, g, initial kind),
+// Per-point statistics of a sweep (/curves of the output): for each (N, rtol, A, g, initial kind),
 // count, mean, spread and range of D over its replicas, and the fraction in each regime.
 #pragma once
 
@@ -12,6 +12,8 @@
 namespace rotorsweep::ensemble {
 
 struct CurvePoint {
+  std::size_t rows = 0;
+  double rtol = 0;
   double A = 0, g = 0;
   InitialKind kind = InitialKind::afm;
   std::size_t members = 0;  ///< replicas at this point
@@ -20,7 +22,7 @@ struct CurvePoint {
   std::array<double, 4> regime_fraction{};  ///< over all members of the point, in all_regimes order
 };
 
-/// One point per (A, g, kind), in plan order; members of a point are consecutive (replicas).
+/// One point per (variant, A, g, kind), in plan order; members of a point are consecutive (replicas).
 std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
                                          const std::vector<MemberResult>& results, int replicas);
 

@@ -23,12 +23,16 @@ struct SweepStatistics {
 
 struct SweepOutcome {
   std::vector<MemberResult> results;  ///< results[i] belongs to members[i]
+  /// Adds another part of the same sweep (its results go after these).
+  void append(SweepOutcome&& part);
   SweepStatistics statistics;
 };
 
 /// Called now and then with the number of members finished (never from two threads at once).
 using ProgressCallback = std::function<void(std::size_t done)>;
 
+/// Runs `members` (any subset of the scene's plan, in plan order) and returns their results in
+/// the same order; members of different variants run one variant after the other.
 SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
                        const ProgressCallback& progress);
 

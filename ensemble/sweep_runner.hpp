@@ -4,6 +4,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -36,8 +37,10 @@ SweepOutcome run_lane_blocks(const Scene& scene, const std::vector<Member>& memb
       return members[i];
     };
     const auto retire = [&](MemberResult&& result) {
-      const std::size_t index = result.index;
-      outcome.results[index] = std::move(result);
+      // members are in plan order (sorted by index): find the result's position
+      const auto at = std::lower_bound(members.begin(), members.end(), result.index,
+                                       [](const Member& m, std::size_t index) { return m.index < index; });
+      outcome.results[std::size_t(at - members.begin())] = std::move(result);
       const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
       if (progress && progress_lock.try_lock()) {
         progress(finished);

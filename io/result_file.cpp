@@ -71,20 +71,25 @@ ResultFile::ResultFile(const std::string& path, const ensemble::Scene& scene, co
 void ResultFile::write_members(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
                                const std::vector<MemberResult>& results) const {
   const auto group = file_.create_group("members");
-  std::vector<double> A, g;
-  std::vector<std::int64_t> replica;
+  std::vector<double> A, g, rtol, atol;
+  std::vector<std::int64_t> replica, rows;
   std::vector<std::string> ic, status, regime;
   for (std::size_t i = 0; i < members.size(); ++i) {
     A.push_back(members[i].A);
     g.push_back(members[i].g);
     replica.push_back(members[i].replica);
+    rows.push_back(std::int64_t(members[i].rows));
+    rtol.push_back(members[i].rtol);
+    atol.push_back(members[i].atol);
     ic.emplace_back(ensemble::kind_name(members[i].kind));
     status.emplace_back(kernels::status_name(results[i].status));
     regime.emplace_back(ensemble::regime_name(results[i].regime));
   }
   group.write("A", A, {}, "substrate strength A");
   group.write("g", g, {}, "g = damping × drive speed");
-  group.write("rows", std::vector<std::int64_t>(members.size(), std::int64_t(scene.rows)), "N");
+  group.write("rows", rows, "N");
+  group.write("rtol", rtol, {}, "relative tolerance");
+  group.write("atol", atol, {}, "absolute tolerance");
   group.write("ic", ic, "initial condition kind: FM, AFM, random, exact");
   group.write("replica", replica, "replica index at this (A, g, ic)");
   const std::string averaged = " over the averaged periods; NaN when status is not ok";
@@ -125,11 +130,13 @@ void ResultFile::write_members(const ensemble::Scene& scene, const std::vector<e
               "accepted steps");
   group.write("steps_rejected", integer_column(results, [](auto& r) { return r.steps_rejected; }),
               "rejected steps");
-  std::vector<double> theta;
-  theta.reserve(results.size() * scene.rows);
-  for (const auto& r : results) theta.insert(theta.end(), r.theta_final.begin(), r.theta_final.end());
-  group.write("theta_final", theta, {results.size(), scene.rows},
-              "θ_j at the end, in [0, 2π) (members × rows)");
+  const std::size_t width = scene.max_rows();
+  std::vector<double> theta(results.size() * width, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t m = 0; m < results.size(); ++m)
+    std::copy(results[m].theta_final.begin(), results[m].theta_final.end(),
+              theta.begin() + std::ptrdiff_t(m * width));
+  group.write("theta_final", theta, {results.size(), width},
+              "θ_j at the end, in [0, 2π) (members × largest N; NaN beyond a member's rows)");
   if (scene.period_series) write_period_series(group, scene, results);
 }
 
@@ -142,12 +149,15 @@ void ResultFile::write_curves(const ensemble::Scene& scene,
     return out;
   };
   std::vector<std::string> ic;
-  std::vector<std::int64_t> members, count;
+  std::vector<std::int64_t> members, count, rows;
   for (const auto& p : curves) {
+    rows.push_back(std::int64_t(p.rows));
     ic.emplace_back(ensemble::kind_name(p.kind));
     members.push_back(std::int64_t(p.members));
     count.push_back(std::int64_t(p.count));
   }
+  group.write("rows", rows, "N");
+  group.write("rtol", values([](auto& p) { return p.rtol; }), {}, "relative tolerance");
   group.write("A", values([](auto& p) { return p.A; }), {}, "substrate strength A");
   group.write("g", values([](auto& p) { return p.g; }), {}, "g = damping × drive speed");
   group.write("ic", ic, "initial condition kind");

@@ -81,6 +81,40 @@ class Section {
     return *v;
   }
 
+  /// A number, or a non-empty list of numbers, each valid.
+  std::vector<double> numbers(std::string_view k, std::vector<double> fallback, const std::string& what,
+                              bool (*valid)(double)) const {
+    const toml::node* node = find(k);
+    if (!node) return fallback;
+    const auto* list = node->as_array();
+    if (!list) return {checked_number(*node, key(k), what + ", or a list of them", valid)};
+    if (list->empty()) fail(key(k), "must be " + what + ", or a non-empty list of them");
+    std::vector<double> values;
+    for (const auto& element : *list) values.push_back(checked_number(element, key(k), what, valid));
+    return values;
+  }
+
+  /// An integer, or a non-empty list of distinct integers, each valid.
+  std::vector<long long> integers(std::string_view k, const std::string& what,
+                                  bool (*valid)(long long)) const {
+    const toml::node& node = require(k, what + ", or a list of them");
+    const auto* list = node.as_array();
+    std::vector<long long> values;
+    const auto check = [&](const toml::node& n) {
+      const auto v = n.value_exact<long long>();
+      if (!n.is_integer() || !v || !valid(*v) || std::count(values.begin(), values.end(), *v))
+        fail(key(k), "must be " + what + ", or a list of distinct ones (got " + describe(n) + ")");
+      values.push_back(*v);
+    };
+    if (!list)
+      check(node);
+    else if (list->empty())
+      fail(key(k), "must be " + what + ", or a non-empty list of them");
+    else
+      for (const auto& element : *list) check(element);
+    return values;
+  }
+
   bool boolean(std::string_view k, bool fallback) const {
     const toml::node* node = find(k);
     if (!node) return fallback;
@@ -172,9 +206,11 @@ Scene read_scene(const toml::table& root) {
   check_sections(root);
   Scene scene;
   const Section model = section(root, "model");
-  model.require("rows", "an even integer >= 2");
-  scene.rows = std::size_t(model.integer("rows", 0, "an even integer from 2 to 100000",
-                                         [](long long n) { return n >= 2 && n <= 100000 && n % 2 == 0; }));
+  scene.row_counts.clear();
+  for (long long n : model.integers("rows", "an even integer from 2 to 100000",
+                                    [](long long n) { return n >= 2 && n <= 100000 && n % 2 == 0; }))
+    scene.row_counts.push_back(std::size_t(n));
+  scene.rows = scene.row_counts.front();
 
   scene.g_values = grid(section(root, "drive"), "g", "> 0", [](double g) { return g > 0; });
   scene.A_values = grid(section(root, "sweep"), "A", ">= 0", [](double A) { return A >= 0; });
@@ -202,17 +238,23 @@ Scene read_scene(const toml::table& root) {
   scene.seed =
       std::uint64_t(initial.integer("seed", 1, "an integer >= 0", [](long long s) { return s >= 0; }));
   const bool exact = std::count(scene.kinds.begin(), scene.kinds.end(), ensemble::InitialKind::exact) > 0;
+  const std::string angles_what =
+      "a list of numbers whose length divides every model.rows "
+      "(repeated over the rows; one angle per row for a single N)";
   if (const toml::node* angles = initial.find("angles")) {
     const auto* list = angles->as_array();
-    const std::string what = "a list of " + std::to_string(scene.rows) + " numbers (one angle per row)";
-    if (!list || list->size() != scene.rows) fail(initial.key("angles"), "must be " + what);
+    if (!list || list->empty()) fail(initial.key("angles"), "must be " + angles_what);
+    for (std::size_t n : scene.row_counts)
+      if (n % list->size() != 0)
+        fail(initial.key("angles"), "has " + std::to_string(list->size()) +
+                                        " values, which does not divide N = " + std::to_string(n) +
+                                        "; it must be " + angles_what);
     for (const auto& a : *list)
       scene.exact_angles.push_back(
           Section::checked_number(a, initial.key("angles"), "a number", [](double) { return true; }));
     if (!exact) fail(initial.key("angles"), "is only used with kind \"exact\" in initial.kinds");
   } else if (exact) {
-    initial.require("angles",
-                    "a list of " + std::to_string(scene.rows) + " numbers when kinds has \"exact\"");
+    initial.require("angles", angles_what + " when kinds has \"exact\"");
   }
 
   const Section schedule = section(root, "schedule");
@@ -250,10 +292,17 @@ Scene read_scene(const toml::table& root) {
   const Section numerics = section(root, "numerics");
   std::set<std::string> steppers(kernels::stepper_names.begin(), kernels::stepper_names.end());
   scene.stepper = *kernels::parse_stepper(numerics.choice("stepper", "rodas4", steppers));
-  scene.rtol = numerics.number("rtol", scene.rtol, "a number from 1e-14 to 1e-2",
-                               [](double x) { return x >= 1e-14 && x <= 1e-2; });
-  scene.atol = numerics.number("atol", scene.atol, "a number from 1e-16 to 1e-2",
-                               [](double x) { return x >= 1e-16 && x <= 1e-2; });
+  scene.rtol_values = numerics.numbers("rtol", scene.rtol_values, "a number from 1e-14 to 1e-2",
+                                       [](double x) { return x >= 1e-14 && x <= 1e-2; });
+  scene.atol_values = numerics.numbers("atol", scene.atol_values, "a number from 1e-16 to 1e-2",
+                                       [](double x) { return x >= 1e-16 && x <= 1e-2; });
+  if (scene.atol_values.size() == 1)
+    scene.atol_values.assign(scene.rtol_values.size(), scene.atol_values.front());
+  if (scene.atol_values.size() != scene.rtol_values.size())
+    fail(numerics.key("atol"), "must be one number, or a list as long as numerics.rtol (" +
+                                   std::to_string(scene.rtol_values.size()) + " values, paired with them)");
+  scene.rtol = scene.rtol_values.front();
+  scene.atol = scene.atol_values.front();
   scene.h_max = numerics.number("h_max", scene.h_max, "a number > 0 and <= 2π (the drive period)",
                                 [](double x) { return x > 0 && x <= 6.283185307179586; });
   scene.max_steps =
@@ -272,7 +321,7 @@ Scene read_scene(const toml::table& root) {
   }
   if (scene.member_count() > 100000000)
     fail("sweep.A", "the scene has " + std::to_string(scene.member_count()) +
-                        " members (A × g × kinds × replicas); at most 100000000 are allowed");
+                        " members (rows × rtol × A × g × kinds × replicas); at most 100000000 are allowed");
   return scene;
 }
 

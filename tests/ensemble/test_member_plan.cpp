@@ -40,3 +40,24 @@ TEST_CASE("a member's initial angles depend on its index and the seed only", "[e
   larger.seed = 2;
   CHECK(member_initial_angles(larger, plan_members(larger)[3]) != first);
 }
+
+TEST_CASE("the same member under another N or tolerance starts from the same draw", "[ensemble][plan]") {
+  Scene scene;
+  scene.row_counts = {4, 8};
+  scene.rtol_values = {1e-4, 1e-8};
+  scene.atol_values = {1e-7, 1e-11};
+  scene.A_values = {1, 2, 3};
+  scene.g_values = {0.1};
+  scene.kinds = {InitialKind::random};
+  const auto members = plan_members(scene);
+  REQUIRE(members.size() == 12);
+  CHECK(members[4].variant == 1);
+  CHECK(members[4].stream == 1);
+  CHECK(members[4].rtol == 1e-8);
+  CHECK(members[7].rows == 8);
+  const auto small = member_initial_angles(scene, members[1]);  // N = 4, rtol 1e-4, A = 2
+  CHECK(member_initial_angles(scene, members[4]) == small);     // N = 4, rtol 1e-8, A = 2
+  const auto large = member_initial_angles(scene, members[7]);  // N = 8, A = 2
+  CHECK(std::vector<double>(large.begin(), large.begin() + 4) == small);
+  CHECK(member_initial_angles(scene, members[2]) != small);
+}

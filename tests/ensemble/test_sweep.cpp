@@ -14,10 +14,13 @@ namespace {
 
 /// A small friction curve with every observable; `extra` adds sections, `observables` keys.
 Scene curve_scene(const std::string& extra = "", const std::string& observables = "") {
+  const std::string model = extra.find("[model]") == std::string::npos ? "[model]\nrows = 8\n" : "";
   return rotorsweep::io::parse_scene_text(
-      "[model]\nrows = 8\n[drive]\ng = [0.002]\n[sweep]\nA = { from = 0.5, to = 12.5, count = 13 }\n"
-      "[initial]\nkinds = [\"AFM\", \"random\"]\nreplicas = 2\n[observables]\nestimators = true\nenergy = "
-      "true\n" +
+      model +
+          "[drive]\ng = [0.002]\n[sweep]\nA = { from = 0.5, to = 12.5, count = 13 }\n"
+          "[initial]\nkinds = [\"AFM\", \"random\"]\nreplicas = 2\n[observables]\nestimators = true\nenergy "
+          "= "
+          "true\n" +
           observables + extra,
       "sweep-test.toml");
 }
@@ -139,4 +142,26 @@ TEST_CASE("a failing member is isolated from its lane neighbours", "[ensemble][s
     }
   }
   CHECK(failed >= int(steps.size()) / 2);
+}
+
+TEST_CASE("a subset of the plan gives the same bits as the whole plan", "[ensemble][sweep]") {
+  const Scene scene = curve_scene("[model]\nrows = [2, 8]\n[numerics]\nrtol = [1e-5, 1e-8]\n");
+  const auto members = plan_members(scene);
+  REQUIRE(members.size() == 4 * 52);
+  const auto whole = run_sweep(scene, members, 2, nullptr);
+  std::vector<Member> every_third;
+  std::vector<MemberResult> expected;
+  for (std::size_t i = 0; i < members.size(); i += 3) {
+    every_third.push_back(members[i]);
+    expected.push_back(whole.results[i]);
+  }
+  const auto part = run_sweep(scene, every_third, 1, nullptr);
+  REQUIRE(part.results.size() == every_third.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    INFO("member " << every_third[i].index);
+    CHECK(part.results[i].index == every_third[i].index);
+    CHECK(part.results[i].theta_final.size() == every_third[i].rows);
+    CHECK(same_bits(part.results[i].dissipation, expected[i].dissipation));
+    CHECK(part.results[i].theta_final == expected[i].theta_final);
+  }
 }

@@ -152,3 +152,24 @@ TEST_CASE("syntax errors and unreadable files name the file", "[io][scene]") {
   const auto path = rotorsweep::testing::write_text(dir / "ok.toml", minimal);
   CHECK(parse_scene_file(path.string()).A_values.size() == 2);
 }
+
+TEST_CASE("rows and tolerances may be lists: one variant each", "[io][scene]") {
+  const auto scene = parse_scene_text(
+      "[model]\nrows = [2, 64]\n[drive]\ng = [0.1]\n[sweep]\nA = [1]\n[initial]\nkinds = [\"exact\"]\n"
+      "angles = [0, 3.14]\n[numerics]\nrtol = [1e-4, 1e-8, 1e-10]\natol = 1e-12\n",
+      "test.toml");
+  REQUIRE(scene.variants().size() == 6);
+  CHECK(scene.variants()[1].rows == 2);
+  CHECK(scene.variants()[1].rtol == 1e-8);
+  CHECK(scene.variants()[5].rows == 64);
+  CHECK(scene.variants()[5].atol == 1e-12);
+  CHECK(scene.member_count() == 6);
+  CHECK(scene.max_rows() == 64);
+  CHECK_THAT(error_of(minimal + "[numerics]\nrtol = [1e-4, 1e-8]\natol = [1e-7, 1e-9, 1e-11]\n"),
+             Catch::Contains("'numerics.atol'"));
+  CHECK_THAT(error_of("[model]\nrows = [2, 2]\n[drive]\ng = [0.1]\n[sweep]\nA = [1]\n"),
+             Catch::Contains("'model.rows'") && Catch::Contains("distinct"));
+  CHECK_THAT(error_of("[model]\nrows = [4, 6]\n[drive]\ng = [0.1]\n[sweep]\nA = [1]\n[initial]\nkinds = "
+                      "[\"exact\"]\nangles = [0, 1, 2, 3]\n"),
+             Catch::Contains("'initial.angles'") && Catch::Contains("N = 6"));
+}
