@@ -1,5 +1,6 @@
 // Adaptive lockstep integration of a block of lanes: each lane has its own t, h, stopping
 // time and status; accept/reject is a mask, and a failing lane freezes without stopping others.
+// A step is accepted when its error is within tolerance and it resolves every unstable mode.
 #pragma once
 
 #include <algorithm>
@@ -40,8 +41,9 @@ class AdaptiveIntegrator {
     const V remaining = s.t_stop - s.t;
     const lane_mask<V> clipped = s.h >= remaining;
     const V h = lane_select(active, lane_min(s.h, remaining), V(1.0));
-    stepper_.attempt(system, s.t, h, s.theta.data(), s.quad.data(), y_new_.data(), q_new_.data(),
-                     y_error_.data(), q_error_.data());
+    const lane_mask<V> resolved =
+        stepper_.attempt(system, s.t, h, s.theta.data(), s.quad.data(), y_new_.data(), q_new_.data(),
+                         y_error_.data(), q_error_.data());
     const V err = error_norm(tol_, n, y_error_.data(), nq, System::error_controlled.data(), s.quad.data(),
                              q_new_.data(), q_error_.data());
 
@@ -49,7 +51,7 @@ class AdaptiveIntegrator {
     for (std::size_t k = 0; k < n; ++k) checksum += y_new_[k];
     for (std::size_t p = 0; p < nq; ++p) checksum += q_new_[p];
     const lane_mask<V> finite = lane_isfinite(err) & lane_isfinite(checksum);
-    const lane_mask<V> accept = active & finite & (err <= V(1.0));
+    const lane_mask<V> accept = active & finite & resolved & (err <= V(1.0));
 
     for (std::size_t k = 0; k < n; ++k) s.theta[k] = lane_select(accept, y_new_[k], s.theta[k]);
     for (std::size_t p = 0; p < nq; ++p) s.quad[p] = lane_select(accept, q_new_[p], s.quad[p]);
@@ -58,6 +60,7 @@ class AdaptiveIntegrator {
     V h_next = h * step_factor(limits_, Stepper::embedded_order(),
                                lane_select(finite, err, err + V(INFINITY)), accept);
     h_next = lane_select(accept & clipped, lane_max(h_next, s.h), h_next);
+    h_next = lane_select(resolved, h_next, h * V(limits_.shrink_min));
     s.h = lane_select(active, lane_min(h_next, V(limits_.h_max)), s.h);
     s.steps_accepted += lane_select(accept, V(1.0), V(0.0));
     s.steps_rejected += lane_select(active & !accept, V(1.0), V(0.0));

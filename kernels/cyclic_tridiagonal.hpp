@@ -46,6 +46,12 @@ class CyclicTridiagonal {
     }
   }
 
+  /// Lanes where M = shift·I - J is positive definite: every pivot of the factorisation is
+  /// positive. By Sylvester's law of inertia the number of negative pivots is the number of
+  /// eigenvalues of J above `shift`, so a lane outside this mask has an unstable direction
+  /// growing faster than the step can follow (see RosenbrockStepper::attempt).
+  lane_mask<V> positive_definite() const { return positive_definite_; }
+
   /// Lanes whose all-equal solutions are taken in closed form (see the class comment).
   void keep_constant_solutions(lane_mask<V> lanes) { keep_constant_ = lanes; }
 
@@ -72,6 +78,8 @@ class CyclicTridiagonal {
     V beta = shift - diag_[m];
     for (std::size_t k = 0; k < m; ++k) beta -= corner_[k] * spike_[k];
     inv_pivot_[m] = V(1.0) / beta;
+    positive_definite_ = inv_pivot_[0] > V(0.0);
+    for (std::size_t i = 1; i < n_; ++i) positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
 
     circulant_ = keep_constant_;
     if (lane_any(circulant_))
@@ -104,6 +112,7 @@ class CyclicTridiagonal {
   std::size_t n_;
   lane_vector<V> diag_, off_;
   lane_vector<V> inv_pivot_, upper_, spike_, corner_;
+  lane_mask<V> positive_definite_{};
   lane_mask<V> keep_constant_{};  ///< lanes marked by keep_constant_solutions()
   lane_mask<V> circulant_{};      ///< marked lanes whose rows are all equal
   V constant_inverse_ = V(0.0);

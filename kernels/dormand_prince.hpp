@@ -28,8 +28,10 @@ class DormandPrince5 {
   static constexpr int order() { return tableau.order; }
   static constexpr int embedded_order() { return tableau.embedded_order; }
 
-  void attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
-               V* q_error) {
+  /// One step of size h. Returns every lane: an explicit method follows unstable directions
+  /// (its error estimate sees them), so no lane needs the implicit steppers' extra check.
+  lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
+                       V* q_error) {
     const std::size_t n = n_;
     constexpr const ExplicitTableau& T = tableau;
     for (int i = 0; i < T.stages; ++i) {
@@ -45,6 +47,7 @@ class DormandPrince5 {
     }
     combine(h, y, n, slopes_.data(), y_new, y_error);
     combine(h, q, nq, quad_slopes_.data(), q_new, q_error);
+    return h == h;
   }
 
  private:

@@ -39,8 +39,12 @@ class RosenbrockStepper {
   static constexpr int order() { return T.order; }
   static constexpr int embedded_order() { return T.embedded_order; }
 
-  void attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
-               V* q_error) {
+  /// One step of size h from (t, y, q). Returns the lanes where the step resolves every
+  /// unstable direction of J: where J has an eigenvalue λ > 1/(hγ), the stage solves damp a
+  /// mode that grows like exp(λt) (an L-stable method turns a saddle into a false attractor,
+  /// and the embedded estimate shares the error); such a lane must retry with a smaller h.
+  lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
+                       V* q_error) {
     const std::size_t n = n_;
     system.linearize(work_, y, t, f_.data(), qdot_.data(), jacobian_, df_dt_.data(), dq_dy_.data(),
                      dq_dt_.data());
@@ -80,6 +84,7 @@ class RosenbrockStepper {
 
     combine(y, n, stages_.data(), n, y_new, y_error);
     combine(q, nq, quad_stages_.data(), nq, q_new, q_error);
+    return jacobian_.positive_definite();
   }
 
  private:

@@ -100,3 +100,29 @@ TEST_CASE("marked lanes keep all-equal solutions exactly equal", "[kernels][line
     CHECK(varied == expected);
   }
 }
+
+TEST_CASE("negative pivots flag eigenvalues of J above the shift (Sylvester inertia)", "[kernels][linear]") {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int indefinite = 0, definite = 0;
+  for (std::size_t n : {2u, 3u, 8u, 33u}) {
+    for (int trial = 0; trial < 40; ++trial) {
+      CyclicTridiagonal<double> J(n);
+      for (std::size_t k = 0; k < n; ++k) {
+        J.diag(k) = 2.0 * u(rng);
+        J.off(k) = u(rng);
+      }
+      const double shift = 1.5 + u(rng);
+      const Eigen::MatrixXd M =
+          shift * Eigen::MatrixXd::Identity(Eigen::Index(n), Eigen::Index(n)) - dense_jacobian(J);
+      const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(M).eigenvalues().minCoeff();
+      if (std::fabs(smallest) < 1e-9) continue;  // singular to rounding: either answer is fine
+      J.factor(shift);
+      INFO("n=" << n << " smallest eigenvalue of M " << smallest);
+      CHECK(J.positive_definite() == (smallest > 0));
+      (smallest > 0 ? definite : indefinite) += 1;
+    }
+  }
+  CHECK(definite > 20);
+  CHECK(indefinite > 20);
+}
