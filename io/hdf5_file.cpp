@@ -120,33 +120,27 @@ std::vector<std::string> Hdf5Location::members() const {
 
 void Hdf5Location::flush() const { H5Fflush(id(), H5F_SCOPE_GLOBAL); }
 
-namespace {
-
-Hdf5Handle create_dataset(hid_t loc, const std::string& name, hid_t file_type,
-                          const std::vector<hsize_t>& dims) {
+void Hdf5Location::write_dataset(const std::string& name, hid_t file_type, hid_t memory_type,
+                                 const std::vector<hsize_t>& dims, const void* data,
+                                 const std::string& description) const {
   const Hdf5Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
   const auto dcpl = untimed(H5P_DATASET_CREATE);
-  return Hdf5Handle(H5Dcreate2(loc, name.c_str(), file_type, space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
-                    H5Dclose);
+  const Hdf5Handle set(
+      H5Dcreate2(id(), name.c_str(), file_type, space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT), H5Dclose);
+  if (set.id() < 0 || H5Dwrite(set.id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+    fail("write dataset", name);
+  if (!description.empty()) describe(set.id(), description);
 }
-
-}  // namespace
 
 void Hdf5Location::write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> dims,
                          const std::string& description) const {
   if (dims.empty()) dims = {hsize_t(data.size())};
-  const auto set = create_dataset(id(), name, H5T_IEEE_F64LE, dims);
-  if (set.id() < 0 || H5Dwrite(set.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
-    fail("write dataset", name);
-  if (!description.empty()) describe(set.id(), description);
+  write_dataset(name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, data.data(), description);
 }
 
 void Hdf5Location::write(const std::string& name, const std::vector<std::int64_t>& data,
                          const std::string& description) const {
-  const auto set = create_dataset(id(), name, H5T_STD_I64LE, {hsize_t(data.size())});
-  if (set.id() < 0 || H5Dwrite(set.id(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
-    fail("write dataset", name);
-  if (!description.empty()) describe(set.id(), description);
+  write_dataset(name, H5T_STD_I64LE, H5T_NATIVE_INT64, {hsize_t(data.size())}, data.data(), description);
 }
 
 void Hdf5Location::write(const std::string& name, const std::vector<std::string>& data,
@@ -154,39 +148,40 @@ void Hdf5Location::write(const std::string& name, const std::vector<std::string>
   const auto type = string_type();
   std::vector<const char*> pointers;
   for (const auto& s : data) pointers.push_back(s.c_str());
-  const auto set = create_dataset(id(), name, type.id(), {hsize_t(data.size())});
-  if (set.id() < 0 || H5Dwrite(set.id(), type.id(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0)
-    fail("write dataset", name);
-  if (!description.empty()) describe(set.id(), description);
+  write_dataset(name, type.id(), type.id(), {hsize_t(data.size())}, pointers.data(), description);
 }
 
-std::vector<double> Hdf5Location::read_doubles(const std::string& name, std::vector<hsize_t>* dims) const {
-  const Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
+Hdf5Handle Hdf5Location::open_dataset(const std::string& name) const {
+  Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
   if (set.id() < 0) fail("open dataset", name);
+  return set;
+}
+
+template <class T>
+std::vector<T> Hdf5Location::read_numbers(const std::string& name, hid_t memory_type,
+                                          std::vector<hsize_t>* dims) const {
+  const auto set = open_dataset(name);
   const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
-  std::vector<double> data(std::size_t(H5Sget_simple_extent_npoints(space.id())));
+  std::vector<T> data(std::size_t(H5Sget_simple_extent_npoints(space.id())));
   if (dims) {
     dims->resize(std::size_t(H5Sget_simple_extent_ndims(space.id())));
     H5Sget_simple_extent_dims(space.id(), dims->data(), nullptr);
   }
-  if (H5Dread(set.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
+  if (H5Dread(set.id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
     fail("read dataset", name);
   return data;
+}
+
+std::vector<double> Hdf5Location::read_doubles(const std::string& name, std::vector<hsize_t>* dims) const {
+  return read_numbers<double>(name, H5T_NATIVE_DOUBLE, dims);
 }
 
 std::vector<std::int64_t> Hdf5Location::read_integers(const std::string& name) const {
-  const Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
-  if (set.id() < 0) fail("open dataset", name);
-  const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
-  std::vector<std::int64_t> data(std::size_t(H5Sget_simple_extent_npoints(space.id())));
-  if (H5Dread(set.id(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
-    fail("read dataset", name);
-  return data;
+  return read_numbers<std::int64_t>(name, H5T_NATIVE_INT64, nullptr);
 }
 
 std::vector<std::string> Hdf5Location::read_strings(const std::string& name) const {
-  const Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
-  if (set.id() < 0) fail("open dataset", name);
+  const auto set = open_dataset(name);
   const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
   const auto type = string_type();
   std::vector<char*> pointers(std::size_t(H5Sget_simple_extent_npoints(space.id())), nullptr);
@@ -199,8 +194,7 @@ std::vector<std::string> Hdf5Location::read_strings(const std::string& name) con
 }
 
 std::vector<unsigned char> Hdf5Location::read_bytes(const std::string& name) const {
-  const Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
-  if (set.id() < 0) fail("open dataset", name);
+  const auto set = open_dataset(name);
   const Hdf5Handle type(H5Dget_type(set.id()), H5Tclose);
   if (H5Tis_variable_str(type.id()) > 0) {
     std::vector<unsigned char> bytes;

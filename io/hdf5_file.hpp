@@ -72,6 +72,12 @@ class Hdf5Location {
  private:
   Hdf5Location(Hdf5Handle handle, std::string path) : handle_(std::move(handle)), path_(std::move(path)) {}
   [[noreturn]] void fail(const std::string& what, const std::string& name) const;
+  void write_dataset(const std::string& name, hid_t file_type, hid_t memory_type,
+                     const std::vector<hsize_t>& dims, const void* data,
+                     const std::string& description) const;
+  Hdf5Handle open_dataset(const std::string& name) const;
+  template <class T>
+  std::vector<T> read_numbers(const std::string& name, hid_t memory_type, std::vector<hsize_t>* dims) const;
 
   Hdf5Handle handle_;
   std::string path_;
