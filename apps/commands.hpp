@@ -33,4 +33,20 @@ struct InfoOptions {
 };
 int run_info(const InfoOptions& options);
 
+struct LandscapeOptions {
+  std::string output;
+  bool quiet = false;
+  // chambers
+  double A_min = 0, A_max = 12;
+  int A_cells = 400, tau_cells = 300;
+  int min_zone_cells = 0;  ///< 0: max(10, cells / 10⁴)
+  // curves
+  int samples = 2000;
+  // jump-friction
+  int count = 10000;
+};
+int run_landscape_chambers(const LandscapeOptions& options);
+int run_landscape_curves(const LandscapeOptions& options);
+int run_landscape_jump_friction(const LandscapeOptions& options);
+
 }  // namespace rotorsweep::apps

@@ -38,6 +38,45 @@ int main(int argc, char** argv) {
   info_cmd->add_option("file", info.file, "Result file (HDF5)")->required();
   info_cmd->add_flag("--scene", info.scene, "Also print the scene the file was made from");
 
+  LandscapeOptions landscape;
+  auto* landscape_cmd = app.add_subcommand(
+      "landscape",
+      "The two-angle energy landscape: chamber map, bifurcation curves, quasi-static friction J(A)");
+  landscape_cmd->require_subcommand(1);
+  const auto output_option = [&](CLI::App* cmd) {
+    cmd->add_option("-o,--output", landscape.output, "HDF5 file to write")->required();
+    cmd->add_flag("-q,--quiet", landscape.quiet, "No progress line");
+  };
+  auto* chambers_cmd = landscape_cmd->add_subcommand(
+      "chambers", "Raster over (A, τ ∈ [0, π/2]): Morse signature, alignment classes, zones and chambers");
+  output_option(chambers_cmd);
+  chambers_cmd->add_option("--A-min", landscape.A_min, "Smallest A")->capture_default_str();
+  chambers_cmd->add_option("--A-max", landscape.A_max, "Largest A")->capture_default_str();
+  chambers_cmd->add_option("--A-cells", landscape.A_cells, "Cells along A")
+      ->check(CLI::Range(2, 100000))
+      ->capture_default_str();
+  chambers_cmd->add_option("--tau-cells", landscape.tau_cells, "Cells along τ")
+      ->check(CLI::Range(2, 100000))
+      ->capture_default_str();
+  chambers_cmd
+      ->add_option("--min-zone-cells", landscape.min_zone_cells,
+                   "Smallest component counted as a zone or chamber (0: max(10, cells/10^4))")
+      ->check(CLI::Range(0, 1 << 30));
+  auto* curves_cmd = landscape_cmd->add_subcommand(
+      "curves", "The four bifurcation curves and the alignment curve, sampled and folded into τ ∈ [0, π/2]");
+  output_option(curves_cmd);
+  curves_cmd->add_option("--samples", landscape.samples, "Points per curve")
+      ->check(CLI::Range(2, 10000000))
+      ->capture_default_str();
+  curves_cmd->add_option("--A-max", landscape.A_max, "Drop off-diagonal points above this A")
+      ->capture_default_str();
+  auto* jump_cmd = landscape_cmd->add_subcommand(
+      "jump-friction", "Quasi-static CP friction J(A) on a uniform grid over [A_-, A_*]");
+  output_option(jump_cmd);
+  jump_cmd->add_option("--count", landscape.count, "Number of A values")
+      ->check(CLI::Range(1, 100000000))
+      ->capture_default_str();
+
   auto* bench_cmd = app.add_subcommand("bench", "Measure speed (single thread)");
   bench_cmd->require_subcommand(1);
   BenchKernelOptions bench;
@@ -58,5 +97,8 @@ int main(int argc, char** argv) {
   if (*info_cmd) return run_info(info);
   if (*table_cmd) return run_table(table);
   if (*kernels_cmd) return run_bench_kernels(bench);
+  if (*chambers_cmd) return run_landscape_chambers(landscape);
+  if (*curves_cmd) return run_landscape_curves(landscape);
+  if (*jump_cmd) return run_landscape_jump_friction(landscape);
   return 2;
 }

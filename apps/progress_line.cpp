@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <utility>
 
 namespace rotorsweep::apps {
 
@@ -21,10 +22,11 @@ std::string format_duration(double seconds) {
   return text;
 }
 
-ProgressLine::ProgressLine(std::size_t total, bool enabled)
+ProgressLine::ProgressLine(std::size_t total, bool enabled, std::string unit)
     : total_(total),
       enabled_(enabled),
       terminal_(isatty(STDERR_FILENO) != 0),
+      unit_(std::move(unit)),
       start_(clock::now()),
       last_draw_(start_) {}
 
@@ -38,8 +40,8 @@ void ProgressLine::update(std::size_t done) {
   const double rate = double(done) / elapsed;
   const std::string eta = rate > 0 ? format_duration(double(total_ - done) / rate) : "?";
   char line[160];
-  const int width = std::snprintf(line, sizeof line, "  %zu / %zu members  %.1f members/s  ETA %s", done,
-                                  total_, rate, eta.c_str());
+  const int width = std::snprintf(line, sizeof line, "  %zu / %zu %s  %.1f %s/s  ETA %s", done, total_,
+                                  unit_.c_str(), rate, unit_.c_str(), eta.c_str());
   if (terminal_) {
     std::fprintf(stderr, "\r%s%*s", line, int(last_width_ > std::size_t(width) ? last_width_ - width : 0),
                  "");

@@ -1,4 +1,4 @@
-// The progress line of long runs on stderr: members done / total, members per second and the
+// The progress line of long runs on stderr: items (members, raster rows) done / total, per second and the
 // estimated time left; redrawn in place on a terminal, one line every 10 s otherwise.
 #pragma once
 
@@ -10,8 +10,8 @@ namespace rotorsweep::apps {
 
 class ProgressLine {
  public:
-  explicit ProgressLine(std::size_t total, bool enabled);
-  /// Reports `done` members; draws only if enough time has passed since the last draw.
+  ProgressLine(std::size_t total, bool enabled, std::string unit = "members");
+  /// Reports `done` items; draws only if enough time has passed since the last draw.
   void update(std::size_t done);
   /// Clears the in-place line (terminal) before the closing message.
   void finish();
@@ -20,6 +20,7 @@ class ProgressLine {
   using clock = std::chrono::steady_clock;
   std::size_t total_;
   bool enabled_, terminal_;
+  std::string unit_;
   clock::time_point start_, last_draw_;
   std::size_t last_width_ = 0;
 };

@@ -140,7 +140,12 @@ void Hdf5Location::write(const std::string& name, const std::vector<double>& dat
 
 void Hdf5Location::write(const std::string& name, const std::vector<std::int64_t>& data,
                          const std::string& description) const {
-  write_dataset(name, H5T_STD_I64LE, H5T_NATIVE_INT64, {hsize_t(data.size())}, data.data(), description);
+  write(name, data, {hsize_t(data.size())}, description);
+}
+
+void Hdf5Location::write(const std::string& name, const std::vector<std::int64_t>& data,
+                         std::vector<hsize_t> dims, const std::string& description) const {
+  write_dataset(name, H5T_STD_I64LE, H5T_NATIVE_INT64, dims, data.data(), description);
 }
 
 void Hdf5Location::write(const std::string& name, const std::vector<std::string>& data,

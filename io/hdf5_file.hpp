@@ -47,6 +47,8 @@ class Hdf5Location {
              const std::string& description = "") const;
   void write(const std::string& name, const std::vector<std::int64_t>& data,
              const std::string& description = "") const;
+  void write(const std::string& name, const std::vector<std::int64_t>& data, std::vector<hsize_t> dims,
+             const std::string& description) const;
   void write(const std::string& name, const std::vector<std::string>& data,
              const std::string& description = "") const;
 

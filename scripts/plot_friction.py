@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """Plots a sweep's friction curve: dissipation per period and row d = D/N against A, one curve
 per (g, initial kind), members coloured by regime, with the small-A (AFM) and large-A (FM)
-limits of model.md §4 drawn over it.  Usage: plot_friction.py RESULT.h5 OUT.png"""
+limits of model.md §4 drawn over it, and optionally the quasi-static CP friction J(A) from
+`rotorsweep landscape jump-friction` (D/N → J as g → 0).
+Usage: plot_friction.py RESULT.h5 OUT.png [--jump JUMP.h5]"""
+import argparse
 import sys
 
 import h5py
@@ -24,7 +27,7 @@ def large_A_limit(A, g):
     return 2 * np.pi * g + 36 * np.pi * g / A**2
 
 
-def main(h5_path, png_path):
+def main(h5_path, png_path, jump_path=None):
     with h5py.File(h5_path, "r") as f:
         if not f.attrs.get("complete", False):
             sys.exit(f"error: {h5_path} is incomplete (the run did not finish)")
@@ -64,6 +67,14 @@ def main(h5_path, png_path):
         large = A_line >= 0.5 * A.max()
         ax.plot(A_line[large], large_A_limit(A_line[large], g_value), "--", color="tab:red", lw=1,
                 label=r"large A: $2\pi g + 36\pi g/A^2$" if g_value == g.min() else None)
+    if jump_path:
+        with h5py.File(jump_path, "r") as f:
+            if not f.attrs.get("complete", False):
+                sys.exit(f"error: {jump_path} is incomplete")
+            A_J, J = f["A"][:], f["J"][:]
+            keep = J > 0.5 * np.nanmin(d[d > 0])  # J → 0 at A_*: stay within the sweep's range
+            ax.plot(A_J[keep], J[keep], color="tab:green", lw=1.5,
+                    label=r"quasi-static CP: $J(A)$ on $[A_-, A_*]$ ($g \to 0$)")
     ax.set_yscale("log")
     ax.set_xlabel("substrate strength A")
     ax.set_ylabel("dissipated energy per period and row  D/N  [ε]")
@@ -76,6 +87,9 @@ def main(h5_path, png_path):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("result", help="result file of `rotorsweep run`")
+    parser.add_argument("png", help="figure to write")
+    parser.add_argument("--jump", help="file of `rotorsweep landscape jump-friction` to overlay J(A)")
+    args = parser.parse_args()
+    main(args.result, args.png, args.jump)

@@ -1,0 +1,177 @@
+// `rotorsweep landscape chambers|curves|jump-friction -o FILE.h5`: the chamber raster, the sampled
+// bifurcation and alignment curves, and J(A) on [A_-, A_*] (model.md §4–5), each as an HDF5 file.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <optional>
+
+#include "build_info.hpp"
+#include "commands.hpp"
+#include "io/hdf5_file.hpp"
+#include "landscape/bifurcation_curves.hpp"
+#include "landscape/chamber_map.hpp"
+#include "landscape/jump_friction.hpp"
+#include "progress_line.hpp"
+
+namespace rotorsweep::apps {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Creates the file with `complete` = FALSE, lets `fill` write it, then records the wall time and
+/// sets `complete` = TRUE. Exit code 2 when the file cannot be created, 1 on a later failure.
+int write_landscape_file(const std::string& path, const std::string& kind,
+                         const std::function<void(const io::Hdf5Location&)>& fill) {
+  std::optional<io::Hdf5Location> file;
+  try {
+    const auto parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    file = io::Hdf5Location::create_file(path);
+  } catch (const std::exception& e) {
+    std::cerr << "error: output path '" << path << "' (-o): " << e.what() << "\n";
+    return 2;
+  }
+  try {
+    file->set_flag("complete", false);
+    file->set_attribute("kind", "landscape " + kind);
+    file->set_attribute("version", std::string(version));
+    file->set_attribute("revision", std::string(revision));
+    file->flush();
+    const auto start = Clock::now();
+    fill(*file);
+    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+    file->set_attribute("wall_time_s", wall);
+    file->set_flag("complete", true);
+    file->flush();
+    std::printf("wrote %s (%s) in %s\n", path.c_str(), kind.c_str(), format_duration(wall).c_str());
+  } catch (const std::exception& e) {
+    std::cerr << "error: writing '" << path << "': " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+void write_closed_forms(const io::Hdf5Location& file) {
+  file.set_attribute("A_minus", landscape::A_minus());
+  file.set_attribute("A_star", landscape::A_star());
+  file.set_attribute("alignment_tau1", landscape::alignment_tau1());
+  file.set_attribute("alignment_tau2", landscape::alignment_tau2());
+}
+
+std::vector<std::int64_t> cell_field(const landscape::ChamberMap& map,
+                                     const std::function<int(const landscape::ChamberCell&)>& field) {
+  std::vector<std::int64_t> out;
+  out.reserve(map.cells.size());
+  for (const auto& c : map.cells) out.push_back(field(c));
+  return out;
+}
+
+}  // namespace
+
+int run_landscape_chambers(const LandscapeOptions& o) {
+  if (!(o.A_max > o.A_min) || o.A_min < 0) {
+    std::cerr << "error: --A-min, --A-max: need 0 <= A-min < A-max (got " << o.A_min << ", " << o.A_max
+              << ")\n";
+    return 2;
+  }
+  const landscape::ChamberGrid grid{o.A_min, o.A_max, o.A_cells, o.tau_cells};
+  const std::size_t cells = std::size_t(grid.A_cells) * grid.tau_cells;
+  const int min_cells =
+      o.min_zone_cells > 0 ? o.min_zone_cells : int(std::max<std::size_t>(10, cells / 10000));
+  return write_landscape_file(o.output, "chambers", [&](const io::Hdf5Location& file) {
+    ProgressLine progress(std::size_t(grid.A_cells), !o.quiet, "A rows");
+    const auto map = landscape::chamber_map(grid, [&](int rows) { progress.update(std::size_t(rows)); });
+    progress.finish();
+    const std::vector<hsize_t> dims{hsize_t(grid.A_cells), hsize_t(grid.tau_cells)};
+    const std::string per_cell = " (A cells × τ cells; critical points on the torus)";
+    file.write("A", map.A, {}, "A at the cell centres");
+    file.write("tau", map.tau, {}, "drive phase τ at the cell centres, in [0, π/2]");
+    file.write("minima", cell_field(map, [](const auto& c) { return c.minima; }), dims, "minima" + per_cell);
+    file.write("saddles", cell_field(map, [](const auto& c) { return c.saddles; }), dims,
+               "saddles" + per_cell);
+    file.write("maxima", cell_field(map, [](const auto& c) { return c.maxima; }), dims, "maxima" + per_cell);
+    file.write("degenerate", cell_field(map, [](const auto& c) { return c.degenerate; }), dims,
+               "critical points with a singular Hessian" + per_cell);
+    constexpr const char* classes[] = {"strict_fm", "fm_like", "afm_like"};
+    for (int k = 0; k < 3; ++k)
+      file.write(std::string("minima_") + classes[k],
+                 cell_field(map, [k](const auto& c) { return c.by_type_and_class[0][k]; }), dims,
+                 std::string("minima of alignment class ") + classes[k] + per_cell);
+    std::vector<std::int64_t> counts;
+    for (const auto& c : map.cells)
+      for (const auto& row : c.by_type_and_class) counts.insert(counts.end(), row.begin(), row.end());
+    file.write("counts", counts, {dims[0], dims[1], 3, 3},
+               "critical points by Morse type (minimum, saddle, maximum) × alignment class (strict FM, "
+               "FM-like, AFM-like)" +
+                   per_cell);
+    file.write("zone", std::vector<std::int64_t>(map.zone.begin(), map.zone.end()), dims,
+               "connected component of equal Morse signature; -1: degenerate cell");
+    file.write("chamber", std::vector<std::int64_t>(map.chamber.begin(), map.chamber.end()), dims,
+               "connected component of equal Morse signature and alignment classes; -1: degenerate cell");
+    file.set_attribute("zones", std::int64_t(map.zones_at_least(min_cells)));
+    file.set_attribute("chambers", std::int64_t(map.chambers_at_least(min_cells)));
+    file.set_attribute("components_min_cells", std::int64_t(min_cells));
+    file.set_attribute("zone_components_all", std::int64_t(map.zones));
+    file.set_attribute("chamber_components_all", std::int64_t(map.chambers));
+    write_closed_forms(file);
+    std::printf(
+        "%d zones of constant Morse signature, %d chambers (components of >= %d cells; %d and %d "
+        "counting slivers along the curves)\n",
+        map.zones_at_least(min_cells), map.chambers_at_least(min_cells), min_cells, map.zones, map.chambers);
+  });
+}
+
+int run_landscape_curves(const LandscapeOptions& o) {
+  return write_landscape_file(o.output, "curves", [&](const io::Hdf5Location& file) {
+    for (auto curve : landscape::all_curves) {
+      const auto points = landscape::sample_curve(curve, o.samples, o.A_max);
+      std::vector<double> A, tau, parameter;
+      for (const auto& p : points) A.push_back(p.A), tau.push_back(p.tau), parameter.push_back(p.parameter);
+      const auto group = file.create_group(std::string(landscape::curve_name(curve)));
+      group.write("A", A, {}, "A along the curve");
+      group.write("tau", tau, {}, "drive phase τ folded into [0, π/2]");
+      group.write("parameter", parameter, {},
+                  curve == landscape::Curve::alignment ? "τ"
+                  : (curve == landscape::Curve::fm_tangential || curve == landscape::Curve::fm_transverse)
+                      ? "strict-FM angle χ in [0, π/2]"
+                      : "ζ = cos((θe − θo)/2) of the degenerate point");
+    }
+    write_closed_forms(file);
+  });
+}
+
+int run_landscape_jump_friction(const LandscapeOptions& o) {
+  return write_landscape_file(o.output, "jump-friction", [&](const io::Hdf5Location& file) {
+    const double lo = landscape::A_minus(), hi = landscape::A_star();
+    std::vector<double> A, J, drop_transverse, drop_low, zeta_low, zeta_landing, tau_transverse, tau_low;
+    for (int i = 0; i < o.count; ++i) {
+      const auto e = landscape::jump_events(o.count > 1 ? lo + (hi - lo) * i / (o.count - 1) : lo);
+      A.push_back(e.A);
+      J.push_back(e.J);
+      drop_transverse.push_back(e.energy_fm_transverse - e.landing_transverse);
+      drop_low.push_back(e.energy_low - e.landing_low);
+      zeta_low.push_back(e.zeta_low);
+      zeta_landing.push_back(e.zeta_landing);
+      tau_transverse.push_back(landscape::fundamental_phase(e.tau_transverse));
+      tau_low.push_back(landscape::fundamental_phase(e.tau_low));
+    }
+    file.write("A", A, {}, "A, uniform on [A_-, A_*]");
+    file.write("J", J, {}, "quasi-static CP friction J(A): D/N → J as g → 0");
+    file.write("drop_transverse", drop_transverse, {},
+               "energy drop when strict FM loses transverse stability");
+    file.write("drop_low", drop_low, {}, "energy drop when the off-diagonal minimum ends on B_off^-");
+    file.write("zeta_low", zeta_low, {},
+               "ζ of the off-diagonal minimum where it ends (larger root of A_L = A)");
+    file.write("zeta_landing", zeta_landing, {}, "ζ of the off-diagonal minimum reached from strict FM");
+    file.write("tau_transverse", tau_transverse, {}, "phase of the transverse jump, folded into [0, π/2]");
+    file.write("tau_low", tau_low, {}, "phase of the jump from B_off^-, folded into [0, π/2]");
+    write_closed_forms(file);
+    file.set_attribute("J_at_A_minus", landscape::jump_friction(lo));
+  });
+}
+
+}  // namespace rotorsweep::apps

@@ -1,0 +1,67 @@
+// The paper's recipe for J(A): transverse event in closed form, post-jump states selected as the
+// lowest minima among all critical points (chamber selection), lower event by inverting A_L(ζ).
+#include "landscape/jump_friction.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "landscape/bifurcation_curves.hpp"
+#include "landscape/critical_points.hpp"
+#include "landscape/trig_roots.hpp"
+
+namespace rotorsweep::landscape {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+/// H_r on the strict-FM set θe = θo = χ.
+double strict_fm_energy(double chi, double A, double tau) {
+  return 2 - 3 * std::cos(2 * chi) + 2 * A * std::cos(chi - tau);
+}
+
+}  // namespace
+
+double lower_curve_zeta(double A) {
+  double lo = lower_curve_zeta0(), hi = 1;
+  if (!(A >= A_minus() && A <= A_star())) return nan;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (off_diagonal_degenerate_point(mid, -1).A < A ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+JumpEvents jump_events(double A) {
+  JumpEvents e{A, nan, nan, nan, nan, nan, nan, nan, nan, nan};
+  if (!(A >= A_minus() && A <= A_star())) return e;
+
+  const double root = std::sqrt(3 * A * A - 11);
+  const double cT = (8 - root) / 9, chi_T = 0.5 * std::acos(cT);
+  e.tau_transverse = chi_T - std::atan2(3 * std::sin(2 * chi_T), 2 * (3 * cT - 2));
+  e.energy_fm_transverse = 2 - root;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const auto& p : critical_points({A, e.tau_transverse}).points)
+    if (p.alignment != AlignmentClass::strict_fm && p.type != MorseType::saddle &&
+        p.type != MorseType::maximum && p.energy < lowest) {
+      lowest = p.energy;
+      e.zeta_landing = std::sqrt(p.rho);
+    }
+  e.landing_transverse = lowest;
+
+  e.zeta_low = lower_curve_zeta(A);
+  const auto lower = off_diagonal_degenerate_point(e.zeta_low, -1);
+  e.tau_low = lower.tau;
+  e.energy_low = (3 * std::cos(2 * lower.chi) - 2) * (1 + 2 * e.zeta_low * e.zeta_low);
+  lowest = std::numeric_limits<double>::infinity();
+  const auto fm_stationarity = [&](double x) { return 3 * std::sin(2 * x) - A * std::sin(x - e.tau_low); };
+  for (double chi : trig_polynomial_roots(fm_stationarity, 2))
+    lowest = std::min(lowest, strict_fm_energy(chi, A, e.tau_low));
+  e.landing_low = lowest;
+
+  e.J = (e.energy_fm_transverse - e.landing_transverse) + (e.energy_low - e.landing_low);
+  return e;
+}
+
+}  // namespace rotorsweep::landscape

@@ -1,0 +1,67 @@
+// `rotorsweep landscape chambers|curves|jump-friction`: complete HDF5 files with the documented
+// datasets and values, and exit code 2 for bad options.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "io/hdf5_file.hpp"
+#include "support/cli.hpp"
+#include "support/scene_text.hpp"
+
+using namespace rotorsweep::testing;
+using rotorsweep::io::Hdf5Location;
+
+TEST_CASE("landscape chambers writes the raster and counts the seven zones", "[apps][landscape]") {
+  const auto dir = scratch_directory("landscape-chambers");
+  const auto path = (dir / "c.h5").string();
+  const auto run = run_cli("landscape chambers --A-cells 120 --tau-cells 90 -q -o '" + path + "'", dir);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("7 zones"));
+  const auto file = Hdf5Location::open_file(path);
+  CHECK(file.attribute_flag("complete"));
+  CHECK(file.attribute_double("zones") == 7);
+  std::vector<hsize_t> dims;
+  file.read_doubles("A", &dims);
+  CHECK(dims == std::vector<hsize_t>{120});
+  const auto minima = file.read_integers("minima"), saddles = file.read_integers("saddles"),
+             maxima = file.read_integers("maxima");
+  REQUIRE(minima.size() == 120 * 90);
+  for (std::size_t k = 0; k < minima.size(); ++k) REQUIRE(minima[k] - saddles[k] + maxima[k] == 0);
+  CHECK(file.read_integers("counts").size() == 120 * 90 * 9);
+}
+
+TEST_CASE("landscape curves and jump-friction write their closed forms", "[apps][landscape]") {
+  const auto dir = scratch_directory("landscape-curves");
+  const auto curves = (dir / "curves.h5").string(), jump = (dir / "jump.h5").string();
+  REQUIRE(run_cli("landscape curves --samples 500 -o '" + curves + "'", dir).exit_code == 0);
+  const auto c = Hdf5Location::open_file(curves);
+  for (const char* name :
+       {"fm_tangential", "fm_transverse", "off_diagonal_plus", "off_diagonal_minus", "alignment"}) {
+    INFO(name);
+    const auto tau = c.open_group(name).read_doubles("tau");
+    CHECK(tau.size() > 100);
+    for (double t : tau) REQUIRE((t >= 0 && t <= std::acos(0.0)));
+  }
+  CHECK(c.attribute_double("A_star") == Approx(8.778365775883558));
+
+  REQUIRE(run_cli("landscape jump-friction --count 101 -o '" + jump + "'", dir).exit_code == 0);
+  const auto j = Hdf5Location::open_file(jump);
+  CHECK(j.attribute_flag("complete"));
+  const auto A = j.read_doubles("A"), J = j.read_doubles("J");
+  REQUIRE(A.size() == 101);
+  CHECK(A.front() == Approx(4.634583466980286));
+  CHECK(J.front() == Approx(4.975766521411717));
+  CHECK(J.back() == Approx(0).margin(1e-12));
+  for (std::size_t i = 1; i < J.size(); ++i) CHECK(J[i] < J[i - 1]);
+}
+
+TEST_CASE("landscape rejects bad options with exit code 2", "[apps][landscape]") {
+  const auto dir = scratch_directory("landscape-bad");
+  const auto out = " -o '" + (dir / "x.h5").string() + "'";
+  CHECK(run_cli("landscape chambers --A-min 5 --A-max 2" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape chambers --A-cells 1" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape jump-friction --count 0" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape curves", dir).exit_code == 2);  // -o is required
+  CHECK(run_cli("landscape bifurcations" + out, dir).exit_code == 2);
+  CHECK(!std::filesystem::exists(dir / "x.h5"));
+}
