@@ -131,12 +131,19 @@ void ResultFile::write_members(const ensemble::Scene& scene, const std::vector<e
   group.write("steps_rejected", integer_column(results, [](auto& r) { return r.steps_rejected; }),
               "rejected steps");
   const std::size_t width = scene.max_rows();
-  std::vector<double> theta(results.size() * width, std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t m = 0; m < results.size(); ++m)
-    std::copy(results[m].theta_final.begin(), results[m].theta_final.end(),
-              theta.begin() + std::ptrdiff_t(m * width));
-  group.write("theta_final", theta, {results.size(), width},
-              "θ_j at the end, in [0, 2π) (members × largest N; NaN beyond a member's rows)");
+  const auto write_angles = [&](const std::string& name, const std::string& what, const auto& angles_of) {
+    std::vector<double> theta(results.size() * width, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t m = 0; m < results.size(); ++m) {
+      const std::vector<double>& angles = angles_of(m);
+      std::copy(angles.begin(), angles.end(), theta.begin() + std::ptrdiff_t(m * width));
+    }
+    group.write(name, theta, {results.size(), width},
+                what + " (members × largest N; NaN beyond a member's rows)");
+  };
+  write_angles("theta_initial", "θ_j at t = 0, as drawn from the member's stream",
+               [&](std::size_t m) { return ensemble::member_initial_angles(scene, members[m]); });
+  write_angles("theta_final", "θ_j at the end, in [0, 2π)",
+               [&](std::size_t m) -> const std::vector<double>& { return results[m].theta_final; });
   if (scene.period_series) write_period_series(group, scene, results);
 }
 

@@ -1,6 +1,7 @@
 // `rotorsweep run` end to end: the paper's table and regime labels read back from the HDF5
 // file, identical dataset bytes for 1 and 2 threads, and exit code 2 for every bad scene.
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
@@ -62,6 +63,11 @@ TEST_CASE("the paper's table read back from the result file", "[apps][run]") {
   CHECK(regime[8] == "FM");
   CHECK(regime[9] == "FM");
   CHECK(members.read_strings("status") == std::vector<std::string>(10, "ok"));
+  // the drawn starts: member 1 is A = 1 with an AFM start of noise 0.01 around (0, π, 0, π, …)
+  std::vector<hsize_t> dims;
+  const auto start = members.read_doubles("theta_initial", &dims);
+  REQUIRE(dims == std::vector<hsize_t>{10, 20});
+  for (int j = 0; j < 20; ++j) CHECK(std::fabs(start[20 + j] - (j % 2) * M_PI) <= 0.01);
 
   const auto curves = file.open_group("curves");
   CHECK(curves.read_doubles("dissipation_mean") == D);  // one replica per point
