@@ -2,6 +2,7 @@
 # Defaults give a native, optimised build with tests.
 option(ROTORSWEEP_NATIVE "Compile for the host CPU (-march=native): widest SIMD lanes" ON)
 option(ROTORSWEEP_BUILD_TESTS "Build the Catch2 test suite" ON)
+option(ROTORSWEEP_BUILD_BENCH "Build the peer benchmarks in bench/ (needs libsundials-dev)" OFF)
 
 if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
   set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian packages rotorsweep needs to build, test, run and plot (idempotent).
-# Skips what is present; needs root (or sudo) only when something is missing.
+# Skips what is present; needs root (or sudo) only when something is missing. Extra packages
+# (e.g. libsundials-dev for the benchmarks) may be given as arguments.
 set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libxsimd-dev xtl-dev libhdf5-dev catch2 libtomlplusplus-dev libcli11-dev
   python3 python3-numpy python3-h5py python3-matplotlib python3-scipy
+  "$@"
 )
 
 missing=()
