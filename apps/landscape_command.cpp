@@ -44,7 +44,7 @@ int write_landscape_file(const std::string& path, const std::string& kind,
     const auto start = Clock::now();
     fill(*file);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-    file->set_attribute("wall_time_s", wall);
+    file->set_attribute("wall_seconds", wall);
     file->set_flag("complete", true);
     file->flush();
     std::printf("wrote %s (%s) in %s\n", path.c_str(), kind.c_str(), format_duration(wall).c_str());

@@ -17,6 +17,8 @@ SweepOutcome run_variant(const Scene& scene, const std::vector<Member>& members,
       return run_sweep_with<kernels::StepperKind::ros2>(scene, members, threads, progress);
     case kernels::StepperKind::dopri5:
       return run_sweep_with<kernels::StepperKind::dopri5>(scene, members, threads, progress);
+    case kernels::StepperKind::rodas4p2:
+      return run_sweep_with<kernels::StepperKind::rodas4p2>(scene, members, threads, progress);
     case kernels::StepperKind::rodas4: break;
   }
   return run_sweep_with<kernels::StepperKind::rodas4>(scene, members, threads, progress);

@@ -115,6 +115,8 @@ class RosenbrockStepper {
 template <class System>
 using Rodas4 = RosenbrockStepper<System, rodas4_tableau>;
 template <class System>
+using Rodas4P2 = RosenbrockStepper<System, rodas4p2_tableau>;
+template <class System>
 using Ros2 = RosenbrockStepper<System, ros2_tableau>;
 
 }  // namespace rotorsweep::kernels

@@ -11,9 +11,9 @@
 
 namespace rotorsweep::kernels {
 
-enum class StepperKind { rodas4, ros2, dopri5 };
+enum class StepperKind { rodas4, ros2, dopri5, rodas4p2 };
 
-inline constexpr std::array<std::string_view, 3> stepper_names{"rodas4", "ros2", "dopri5"};
+inline constexpr std::array<std::string_view, 4> stepper_names{"rodas4", "ros2", "dopri5", "rodas4p2"};
 
 inline std::optional<StepperKind> parse_stepper(std::string_view name) {
   for (std::size_t i = 0; i < stepper_names.size(); ++i)
@@ -34,6 +34,10 @@ template <class System>
 struct stepper_of<StepperKind::dopri5, System> {
   using type = DormandPrince5<System>;
 };
+template <class System>
+struct stepper_of<StepperKind::rodas4p2, System> {
+  using type = Rodas4P2<System>;
+};
 
 /// Calls f.template operator()<Stepper>() with the stepper type for `kind` on `System`.
 template <class System, class F>
@@ -43,6 +47,8 @@ decltype(auto) with_stepper(StepperKind kind, F&& f) {
       return f.template operator()<typename stepper_of<StepperKind::ros2, System>::type>();
     case StepperKind::dopri5:
       return f.template operator()<typename stepper_of<StepperKind::dopri5, System>::type>();
+    case StepperKind::rodas4p2:
+      return f.template operator()<typename stepper_of<StepperKind::rodas4p2, System>::type>();
     case StepperKind::rodas4: break;
   }
   return f.template operator()<typename stepper_of<StepperKind::rodas4, System>::type>();

@@ -100,6 +100,7 @@ TEST_CASE("SIMD right-hand side and Jacobian equal the scalar ones lane by lane"
 
 TEST_CASE("one SIMD step equals one scalar step for every stepper", "[kernels][simd]") {
   check_one_step<Rodas4>();
+  check_one_step<Rodas4P2>();
   check_one_step<Ros2>();
   check_one_step<DormandPrince5>();
 }
