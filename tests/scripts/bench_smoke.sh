@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The benchmark harness end to end on a few members (no timing is checked): our steppers and
+# scipy's Radau from the same starts both land near the stored reference, and the report is written.
+# Usage: bench_smoke.sh ROTORSWEEP SOURCE_DIR SCRATCH_DIR
+set -euo pipefail
+rs=$1 src=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+py=/usr/bin/python3
+$py "$src/scripts/bench/ours.py" "$rs" "$src/scripts/bench/reference.toml" "$work/ours.csv" \
+  --ladder rodas4p2:1e-7 rodas4:1e-7 --repeats 1 --workdir "$work/ours" > /dev/null
+$py "$src/scripts/bench/peers.py" "$work/ours/rodas4p2_1e-07.h5" "$work/radau.csv" --methods Radau \
+  --rtols 1e-7 --members 0,1,32,33 > /dev/null
+$py "$src/scripts/bench/work_precision.py" "$src/scripts/bench/reference.csv" "$work/report" \
+  "$work/ours.csv" "$work/radau.csv" > /dev/null
+test -s "$work/report/work_precision.png"
+$py - "$work/report/work_precision.csv" <<'CHECK'
+import csv, sys
+rows = {r["method"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert set(rows) == {"rodas4", "rodas4p2", "Radau"}, rows.keys()
+for method, bound in (("rodas4", 1e-3), ("rodas4p2", 1e-3), ("Radau", 3e-6)):
+    error = float(rows[method]["median_error"])
+    assert error < bound, f"{method}: median error {error} against the reference"
+print("bench harness ok:", {m: float(r["median_error"]) for m, r in rows.items()})
+CHECK
