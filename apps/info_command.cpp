@@ -1,5 +1,5 @@
-// `rotorsweep info OUT.h5`: a human summary of a result file: provenance, completeness,
-// the grid, status and regime counts, and the range of the dissipation.
+// `rotorsweep info OUT.h5`: a human summary of a result file (provenance, completeness, the grid,
+// status and regime counts, the range of the dissipation) or of a `landscape` file.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -32,6 +32,18 @@ void print_range(const char* title, const std::vector<double>& values) {
                 *distinct.rbegin());
 }
 
+/// A file of `rotorsweep landscape …`: its kind, closed forms and counts, and its datasets.
+void print_landscape(const io::Hdf5Location& file) {
+  std::printf("%-12s %s\n", "kind", file.attribute_string("kind").c_str());
+  if (file.has_attribute("wall_seconds"))
+    std::printf("%-12s %.2f s\n", "wall time", file.attribute_double("wall_seconds"));
+  for (const char* name : {"A_minus", "A_star", "J_at_A_minus", "zones", "chambers"})
+    if (file.has_attribute(name)) std::printf("%-12s %.16g\n", name, file.attribute_double(name));
+  std::printf("%-12s", "datasets");
+  for (const auto& name : file.members()) std::printf(" %s", name.c_str());
+  std::printf("\n");
+}
+
 }  // namespace
 
 int run_info(const InfoOptions& options) {
@@ -45,6 +57,10 @@ int run_info(const InfoOptions& options) {
                   file.attribute_string("version").c_str(), file.attribute_string("revision").c_str());
     if (file.has_attribute("scene_path"))
       std::printf("%-12s %s\n", "scene", file.attribute_string("scene_path").c_str());
+    if (file.has_attribute("kind")) {
+      print_landscape(file);
+      return complete ? 0 : 1;
+    }
     if (!file.has("members")) return complete ? 0 : 1;
     const auto members = file.open_group("members");
     const auto A = members.read_doubles("A");

@@ -53,6 +53,12 @@ TEST_CASE("landscape curves and jump-friction write their closed forms", "[apps]
   CHECK(J.front() == Approx(4.975766521411717));
   CHECK(J.back() == Approx(0).margin(1e-12));
   for (std::size_t i = 1; i < J.size(); ++i) CHECK(J[i] < J[i - 1]);
+
+  const auto info = run_cli("info '" + jump + "'", dir);
+  INFO(info.output);
+  CHECK(info.exit_code == 0);
+  CHECK_THAT(info.output, Catch::Contains("landscape jump-friction"));
+  CHECK_THAT(info.output, Catch::Contains("A_star       8.77836577588355"));
 }
 
 TEST_CASE("landscape rejects bad options with exit code 2", "[apps][landscape]") {
