@@ -8,17 +8,13 @@
 #include "landscape/bifurcation_curves.hpp"
 #include "landscape/critical_points.hpp"
 #include "landscape/trig_roots.hpp"
+#include "landscape/two_angle_energy.hpp"
 
 namespace rotorsweep::landscape {
 
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-/// H_r on the strict-FM set θe = θo = χ.
-double strict_fm_energy(double chi, double A, double tau) {
-  return 2 - 3 * std::cos(2 * chi) + 2 * A * std::cos(chi - tau);
-}
 
 }  // namespace
 
@@ -57,7 +53,7 @@ JumpEvents jump_events(double A) {
   lowest = std::numeric_limits<double>::infinity();
   const auto fm_stationarity = [&](double x) { return 3 * std::sin(2 * x) - A * std::sin(x - e.tau_low); };
   for (double chi : trig_polynomial_roots(fm_stationarity, 2))
-    lowest = std::min(lowest, strict_fm_energy(chi, A, e.tau_low));
+    lowest = std::min(lowest, TwoAngleEnergy{A, e.tau_low}.energy(chi, chi));
   e.landing_low = lowest;
 
   e.J = (e.energy_fm_transverse - e.landing_transverse) + (e.energy_low - e.landing_low);

@@ -8,10 +8,9 @@ import argparse
 import csv
 import os
 import re
-import statistics
-import subprocess
 
 import h5py
+from timed_run import timed_run
 
 
 def scene_with(scene_text, stepper, rtol):
@@ -42,21 +41,12 @@ def main():
                 result = scene[:-5] + ".h5"
                 with open(scene, "w") as f:
                     f.write(scene_with(scene_text, stepper, rtol))
-                walls = []
-                for _ in range(args.repeats):
-                    if walls and walls[0] > 5:  # long runs once: their noise is small against their length
-                        break
-                    run = subprocess.run([args.rotorsweep, "run", scene, "-o", result, "-q", "--threads",
-                                          str(args.threads)], capture_output=True, text=True)
-                    if run.returncode != 0:
-                        raise SystemExit(f"error: {scene}: {run.stderr}")
-                    with h5py.File(result, "r") as f:
-                        walls.append(f.attrs["wall_seconds"])
+                wall, _ = timed_run(args.rotorsweep, scene, result, args.threads, args.repeats, once_above=5)
                 with h5py.File(result, "r") as f:
                     m = f["members"]
                     A, g, D = m["A"][:], m["g"][:], m["dissipation"][:]
                     steps = m["steps_accepted"][:] + m["steps_rejected"][:]
-                per_member = statistics.median(walls) / len(A)
+                per_member = wall / len(A)
                 for i in range(len(A)):
                     writer.writerow([stepper, rtol, rtol * 1e-3, i, A[i], g[i], repr(D[i]), f"{per_member:.6g}",
                                      steps[i]])

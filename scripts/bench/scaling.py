@@ -5,10 +5,8 @@ occupancy; and the demo scene's wall time. Medians of --repeats runs (one run ab
 Usage: scaling.py ROTORSWEEP OUT_DIR [--repeats 3]"""
 import argparse
 import os
-import statistics
-import subprocess
 
-import h5py
+from timed_run import timed_run
 
 SCENE = """[model]
 rows = {rows}
@@ -25,23 +23,12 @@ rtol = 1e-6
 """
 
 
-def run(rotorsweep, scene_path, out, threads, repeats):
-    walls, occupancy = [], []
-    for _ in range(repeats):
-        subprocess.run([rotorsweep, "run", scene_path, "-o", out, "-q", "--threads", str(threads)], check=True,
-                       capture_output=True)
-        with h5py.File(out, "r") as f:
-            walls.append(f.attrs["wall_seconds"])
-            occupancy.append(f.attrs["lane_occupancy"])
-    return statistics.median(walls), statistics.median(occupancy)
-
-
 def case(args, name, rows, count, refill, threads):
     path = os.path.join(args.out_dir, "scenes", f"{name}.toml")
     with open(path, "w") as f:
         f.write(SCENE.format(rows=rows, count=count, refill=str(refill).lower()))
     repeats = args.repeats if count <= 4096 else 1
-    wall, occupancy = run(args.rotorsweep, path, path[:-5] + ".h5", threads, repeats)
+    wall, occupancy = timed_run(args.rotorsweep, path, path[:-5] + ".h5", threads, repeats)
     row = dict(case=name, rows=rows, members=count, refill=refill, threads=threads, wall_s=wall,
                ms_per_member=1e3 * wall / count, lane_occupancy=occupancy)
     print(f"{name}: {row['ms_per_member']:.3g} ms/member, occupancy {occupancy:.1%}", flush=True)
@@ -64,7 +51,7 @@ def main():
     for threads in (1, 2):
         rows.append(case(args, f"threads_{threads}", 20, 4096, True, threads))
     demo = os.path.join(args.out_dir, "scenes", "demo.h5")
-    wall, occupancy = run(args.rotorsweep, "examples/friction_curve.toml", demo, 2, max(args.repeats, 5))
+    wall, occupancy = timed_run(args.rotorsweep, "examples/friction_curve.toml", demo, 2, max(args.repeats, 5))
     rows.append(dict(case="demo", rows=20, members=281, refill=True, threads=2, wall_s=wall,
                      ms_per_member=1e3 * wall / 281, lane_occupancy=occupancy))
     print(f"demo: {wall:.3g} s, occupancy {occupancy:.1%}")
