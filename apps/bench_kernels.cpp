@@ -8,8 +8,9 @@
 #include "commands.hpp"
 #include "ensemble/initial_conditions.hpp"
 #include "kernels/adaptive_integrator.hpp"
+#include "kernels/lane_math.hpp"
 #include "kernels/row_model.hpp"
-#include "kernels/stepper_choice.hpp"
+#include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::apps {
 
@@ -54,8 +55,10 @@ lane_vector<V> afm_angles(std::size_t rows) {
 template <class V>
 double rhs_rate(std::size_t rows, int repeats) {
   using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
-  const Model model(rows, V(4.0), V(0.0011));
-  auto work = model.make_workspace();
+  const Model model(rows, {4.0, 0.0011});
+  lane_vector<V> storage(Model::Workspace::storage_size(rows));
+  kernels::LaneArena<V> arena(storage.data(), storage.size());
+  typename Model::Workspace work(rows, arena);
   auto theta = afm_angles<V>(rows);
   lane_vector<V> f(rows), q(2);
   return median_rate(repeats, double(kernels::lane_width<V>), [&] {
@@ -74,13 +77,18 @@ double sincos_rate(std::size_t rows, int repeats) {
 }
 
 template <class V>
-double step_rate(kernels::StepperKind kind, std::size_t rows, int repeats) {
+double step_rate(kernels::StepperId id, std::size_t rows, int repeats) {
   using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
-  const Model model(rows, V(4.0), V(0.0011));
-  return kernels::with_stepper<Model>(kind, [&]<class Stepper>() {
-    kernels::AdaptiveIntegrator<Model, Stepper> integrator(model, {1e-6, 1e-9});
-    kernels::LaneState<V> state(rows, Model::quadrature_count);
-    state.theta = afm_angles<V>(rows);
+  const Model model(rows, {4.0, 0.0011});
+  return kernels::with_stepper<Model>(id, [&]<class Stepper>() {
+    using Integrator = kernels::AdaptiveIntegrator<Model, Stepper>;
+    lane_vector<V> storage(Integrator::storage_size(rows) +
+                           kernels::LaneState<V>::storage_size(rows, Model::quadrature_count));
+    kernels::LaneArena<V> arena(storage.data(), storage.size());
+    Integrator integrator(model, {1e-6, 1e-9}, {}, arena);
+    kernels::LaneState<V> state(rows, Model::quadrature_count, arena);
+    const auto theta = afm_angles<V>(rows);
+    std::copy(theta.begin(), theta.end(), state.theta);
     state.t_stop = V(1e300);
     return median_rate(repeats, double(kernels::lane_width<V>), [&] { integrator.attempt(model, state); });
   });
@@ -103,9 +111,8 @@ int run_bench_kernels(const BenchKernelOptions& options) {
   std::printf("  RHS SIMD                    %12.4g evaluations/s (%.2f of bound, %.1fx scalar)\n", simd,
               simd / bound, simd / scalar);
   for (std::size_t k = 0; k < kernels::stepper_names.size(); ++k) {
-    const auto kind = kernels::StepperKind(k);
-    const double s = step_rate<double>(kind, rows, options.repeats);
-    const double v = step_rate<simd_lane>(kind, rows, options.repeats);
+    const double s = step_rate<double>(k, rows, options.repeats);
+    const double v = step_rate<simd_lane>(k, rows, options.repeats);
     std::printf("  steps %-8s scalar %10.4g /s   SIMD %10.4g member-steps/s (%.1fx)\n",
                 kernels::stepper_names[k].data(), s, v, v / s);
   }

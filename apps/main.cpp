@@ -3,7 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
-#include "kernels/stepper_choice.hpp"
+#include "kernels/stepper_list.hpp"
 
 int main(int argc, char** argv) {
   using namespace rotorsweep::apps;

@@ -14,6 +14,8 @@
 #include "ensemble/sweep.hpp"
 #include "io/result_file.hpp"
 #include "io/scene_parser.hpp"
+#include "kernels/lane.hpp"
+#include "kernels/stepper_list.hpp"
 #include "progress_line.hpp"
 
 namespace rotorsweep::apps {

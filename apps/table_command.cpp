@@ -8,56 +8,37 @@
 #include <string>
 
 #include "commands.hpp"
-#include "ensemble/initial_conditions.hpp"
-#include "kernels/adaptive_integrator.hpp"
-#include "kernels/period_driver.hpp"
-#include "kernels/row_model.hpp"
-#include "kernels/stepper_choice.hpp"
+#include "ensemble/member_plan.hpp"
+#include "ensemble/paper_table.hpp"
+#include "ensemble/scene.hpp"
+#include "ensemble/sweep.hpp"
+#include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::apps {
 
 namespace {
 
-constexpr kernels::Integrals estimators{true, true, true, false, false};
-using Model = kernels::NearestNeighbourRows<double, estimators>;
+namespace paper = ensemble::paper_table;
 
-struct Reference {
-  double A;
-  ensemble::InitialKind kind;
-  double paper_R;  ///< the paper's table, column A ∫ Σ sin(θ_j - t) dt
-};
-
-constexpr Reference references[] = {
-    {1, ensemble::InitialKind::fm, 2.018948e-3},  {1, ensemble::InitialKind::afm, 7.184589e-4},
-    {4, ensemble::InitialKind::fm, 2.296052e-2},  {4, ensemble::InitialKind::afm, 2.296052e-2},
-    {6, ensemble::InitialKind::fm, 3.407353e1},   {6, ensemble::InitialKind::afm, 3.410911e1},
-    {8, ensemble::InitialKind::fm, 5.728856},     {8, ensemble::InitialKind::afm, 5.697104},
-    {11, ensemble::InitialKind::fm, 1.654868e-1}, {11, ensemble::InitialKind::afm, 1.654868e-1},
-};
-
-struct Row {
-  double W = 0, S = 0, R = 0, steps_per_period = 0;
-};
-
-Row integrate(const Reference& ref, kernels::StepperKind stepper, double rtol) {
-  constexpr std::size_t rows = 20;
-  constexpr int relax = 2, average = 2;
-  const Model model(rows, ref.A, 0.0011);
-  return kernels::with_stepper<Model>(stepper, [&]<class Stepper>() {
-    kernels::AdaptiveIntegrator<Model, Stepper> integrator(model, {rtol, rtol * 1e-3});
-    kernels::LaneState<double> state(rows, Model::quadrature_count);
-    const auto theta = ensemble::initial_angles({ref.kind, 0.01, 0.0, {}}, rows, 1, 0);
-    for (std::size_t j = 0; j < rows; ++j) state.theta[j] = theta[j];
-    Row row;
-    kernels::run_periods(model, integrator, state, relax + average, [&](int k, const auto& s) {
-      if (k < relax) return;
-      row.R += s.quad[estimators.drive_index()] / average;
-      row.W += s.quad[estimators.work_index()] / average;
-      row.S += s.quad[estimators.stokes_index()] / average;
-    });
-    row.steps_per_period = state.steps_accepted / (relax + average);
-    return row;
-  });
+/// The paper's members as a sweep of the scalar lane with the W, S, R estimators; every member
+/// draws stream 0 of seed 1, whatever its place in the table.
+ensemble::SweepOutcome integrate(kernels::StepperId stepper, double rtol) {
+  ensemble::Scene scene;
+  scene.row_counts = {paper::rows};
+  scene.rtol_values = {rtol};
+  scene.atol_values = {rtol * 1e-3};
+  scene.g_values = {paper::g};
+  scene.relax_periods = paper::relax_periods;
+  scene.average_periods = paper::average_periods;
+  scene.observables = {};
+  scene.observables.set(ensemble::Observable::dissipation, true);
+  scene.observables.set(ensemble::Observable::estimators, true);
+  scene.stepper = stepper;
+  scene.lanes = ensemble::LaneKind::scalar;
+  std::vector<ensemble::Member> members;
+  for (const auto& entry : paper::entries)
+    members.push_back({members.size(), 0, entry.A, paper::g, entry.kind, 0, 0, paper::rows, rtol, rtol * 1e-3});
+  return ensemble::run_sweep(scene, members, 1, {});
 }
 
 }  // namespace
@@ -76,16 +57,21 @@ int run_table(const TableOptions& options) {
   std::printf("%5s %4s %14s %14s %14s %14s %10s %8s\n", "A", "IC", "W (work)", "S (Stokes)", "R (drive)",
               "paper R", "R/paper-1", "steps/T");
   const auto start = std::chrono::steady_clock::now();
-  for (const auto& ref : references) {
-    const Row row = integrate(ref, stepper, options.rtol);
-    const double deviation = row.R / ref.paper_R - 1;
+  const auto outcome = integrate(stepper, options.rtol);
+  for (std::size_t i = 0; i < paper::entries.size(); ++i) {
+    const auto& ref = paper::entries[i];
+    const auto& result = outcome.results[i];
+    const double W = result.mean(ensemble::Channel::work), S = result.mean(ensemble::Channel::stokes);
+    const double R = result.dissipation();
+    const double steps_per_period = result.steps_accepted / (paper::relax_periods + paper::average_periods);
+    const double deviation = R / ref.paper_R - 1;
     const auto ic = ensemble::kind_name(ref.kind);
-    std::printf("%5.0f %4s %14.7e %14.7e %14.7e %14.7e %10.2e %8.0f\n", ref.A, ic.data(), row.W, row.S, row.R,
-                ref.paper_R, deviation, row.steps_per_period);
+    std::printf("%5.0f %4s %14.7e %14.7e %14.7e %14.7e %10.2e %8.0f\n", ref.A, ic.data(), W, S, R, ref.paper_R,
+                deviation, steps_per_period);
     if (csv) {
       char line[256];
-      std::snprintf(line, sizeof line, "%g,%s,%.10e,%.10e,%.10e,%.7e,%.3e,%.1f\n", ref.A, ic.data(), row.W,
-                    row.S, row.R, ref.paper_R, deviation, row.steps_per_period);
+      std::snprintf(line, sizeof line, "%g,%s,%.10e,%.10e,%.10e,%.7e,%.3e,%.1f\n", ref.A, ic.data(), W, S, R,
+                    ref.paper_R, deviation, steps_per_period);
       csv << line;
     }
   }

@@ -23,9 +23,9 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
       point.regime_fraction[std::size_t(r.regime)] += 1.0 / double(group);
       if (r.status != kernels::LaneStatus::ok) continue;
       ++point.count;
-      sum += r.dissipation;
-      point.dissipation_min = std::min(point.dissipation_min, r.dissipation);
-      point.dissipation_max = std::max(point.dissipation_max, r.dissipation);
+      sum += r.dissipation();
+      point.dissipation_min = std::min(point.dissipation_min, r.dissipation());
+      point.dissipation_max = std::max(point.dissipation_max, r.dissipation());
     }
     if (point.count == 0) {
       const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -35,7 +35,7 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
       double spread = 0;
       for (std::size_t i = first; i < first + group; ++i)
         if (results[i].status == kernels::LaneStatus::ok)
-          spread += std::pow(results[i].dissipation - point.dissipation_mean, 2) / double(point.count);
+          spread += std::pow(results[i].dissipation() - point.dissipation_mean, 2) / double(point.count);
       point.dissipation_std = std::sqrt(spread);
     }
     curves.push_back(point);

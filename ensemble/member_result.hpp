@@ -1,25 +1,27 @@
-// What one member leaves behind: its per-period observables (model.md §3) and the summary
-// over the averaged periods that goes into /members of the output file.
+// What one member leaves behind: its per-period channels (docs/model.md §3, declared in
+// ensemble/observables.hpp) and their summaries over the averaged periods for /members.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string_view>
 #include <vector>
 
+#include "ensemble/observables.hpp"
 #include "kernels/lane_status.hpp"
 
 namespace rotorsweep::ensemble {
 
-/// Observables of one drive period [t_k, t_k + 2π].
+/// The channels of one drive period [t_k, t_k + 2π] (see Channel; unused channels stay 0).
 struct PeriodRecord {
-  double dissipation = 0;     ///< R_k = A Σ ∫ sin(θ_j - t) dt
-  double work = 0;            ///< W_k = A Σ ∫ sin(θ_j - t) θ̇_j dt
-  double stokes = 0;          ///< S_k = g Σ ∫ θ̇_j² dt
-  double alignment_mean = 0;  ///< (1/2π) ∫ ρ̄ dt
-  double alignment_min = 0;   ///< min of ρ̄ over the period's step points
-  double alignment_max = 0;   ///< max of ρ̄ over the period's step points
-  double energy_mean = 0;     ///< (1/2π) ∫ H dt
-  double slips = 0;           ///< slip events that began in the period
+  std::array<double, channel_count> values{};
+
+  double& operator[](Channel c) { return values[std::size_t(c)]; }
+  double operator[](Channel c) const { return values[std::size_t(c)]; }
+  double dissipation() const { return (*this)[Channel::dissipation]; }
+  double alignment_min() const { return (*this)[Channel::alignment_min]; }
+  double alignment_max() const { return (*this)[Channel::alignment_max]; }
+  double slips() const { return (*this)[Channel::slips]; }
 };
 
 enum class Regime { fm, afm, cp, unsettled };
@@ -38,10 +40,8 @@ inline constexpr Regime all_regimes[] = {Regime::fm, Regime::afm, Regime::cp, Re
 
 struct MemberResult {
   std::size_t index = 0;
-  // Means over the averaged periods (NaN when the member failed: see status).
-  double dissipation = 0, dissipation_work = 0, dissipation_stokes = 0, dissipation_std = 0;
-  double alignment_mean = 0, alignment_min = 0, alignment_max = 0;
-  double energy_mean = 0, slips_per_period = 0;
+  /// Summaries of each channel over the averaged periods (NaN when the member failed: see status).
+  std::array<std::array<double, 4>, channel_count> summaries{};
   Regime regime = Regime::unsettled;
   kernels::LaneStatus status = kernels::LaneStatus::ok;
   bool settled = true;  ///< false: steady_tol > 0 and max_periods ran out first
@@ -49,6 +49,16 @@ struct MemberResult {
   double steps_accepted = 0, steps_rejected = 0;
   std::vector<double> theta_final;    ///< θ_j at the end, wrapped to [0, 2π)
   std::vector<PeriodRecord> periods;  ///< every period, kept only for period_series
+
+  double& summary(Summary s, Channel c) { return summaries[std::size_t(c)][std::size_t(s)]; }
+  double summary(Summary s, Channel c) const { return summaries[std::size_t(c)][std::size_t(s)]; }
+  double mean(Channel c) const { return summary(Summary::mean, c); }
+  double dissipation() const { return mean(Channel::dissipation); }
+  double dissipation_std() const { return summary(Summary::spread, Channel::dissipation); }
+  double alignment_mean() const { return mean(Channel::alignment_mean); }
+  double alignment_min() const { return summary(Summary::minimum, Channel::alignment_min); }
+  double alignment_max() const { return summary(Summary::maximum, Channel::alignment_max); }
+  double slips_per_period() const { return mean(Channel::slips); }
 };
 
 }  // namespace rotorsweep::ensemble

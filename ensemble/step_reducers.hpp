@@ -1,11 +1,12 @@
-// Reducers that watch every accepted step of a lane block (architecture.md principle 4):
-// the extremes of the alignment ρ̄ and the count of slip events (model.md §3).
+// Reducers that watch every accepted step of a lane block (docs/architecture.md "Observers"): the
+// extremes of the alignment ρ̄ and the count of slip events (docs/model.md §3).
 #pragma once
 
 #include <cstddef>
 
 #include "ensemble/member_result.hpp"
 #include "kernels/lane.hpp"
+#include "kernels/lane_state.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -29,8 +30,8 @@ struct AlignmentExtrema {
 
   /// Writes the lane's extremes into the period record; the next period starts where this ends.
   void end_period(std::size_t lane, PeriodRecord& record) {
-    record.alignment_min = kernels::lane_get(min, lane);
-    record.alignment_max = kernels::lane_get(max, lane);
+    record[Channel::alignment_min] = kernels::lane_get(min, lane);
+    record[Channel::alignment_max] = kernels::lane_get(max, lane);
     start_lane(lane, kernels::lane_get(current, lane));
   }
 };
@@ -64,7 +65,7 @@ struct SlipCounter {
   }
 
   void end_period(std::size_t lane, PeriodRecord& record) {
-    record.slips = kernels::lane_get(count, lane);
+    record[Channel::slips] = kernels::lane_get(count, lane);
     kernels::lane_set(count, lane, 0.0);
   }
 };

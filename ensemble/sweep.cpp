@@ -1,30 +1,16 @@
-// run_sweep: dispatch from the scene's stepper name to its instantiation (sweep_<stepper>.cpp).
+// run_sweep: variant by variant, dispatch from the scene's stepper to its instantiation
+// (one generated translation unit per entry of kernels::steppers).
 #include "ensemble/sweep.hpp"
 
-#include "kernels/stepper_choice.hpp"
+#include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
-template <kernels::StepperKind kind>
-SweepOutcome run_sweep_with(const Scene&, const std::vector<Member>&, int, const ProgressCallback&);
+template <kernels::StepperId id>
+SweepOutcome run_row_sweep(const Scene&, const std::vector<Member>&, int, const ProgressCallback&);
 
-namespace {
-
-SweepOutcome run_variant(const Scene& scene, const std::vector<Member>& members, int threads,
-                         const ProgressCallback& progress) {
-  switch (scene.stepper) {
-    case kernels::StepperKind::ros2:
-      return run_sweep_with<kernels::StepperKind::ros2>(scene, members, threads, progress);
-    case kernels::StepperKind::dopri5:
-      return run_sweep_with<kernels::StepperKind::dopri5>(scene, members, threads, progress);
-    case kernels::StepperKind::rodas4p2:
-      return run_sweep_with<kernels::StepperKind::rodas4p2>(scene, members, threads, progress);
-    case kernels::StepperKind::rodas4: break;
-  }
-  return run_sweep_with<kernels::StepperKind::rodas4>(scene, members, threads, progress);
-}
-
-}  // namespace
+static_assert(ROTORSWEEP_STEPPER_COUNT == kernels::steppers::size,
+              "the build generated one translation unit per entry of kernels::steppers");
 
 void SweepOutcome::append(SweepOutcome&& part) {
   for (auto& r : part.results) results.push_back(std::move(r));
@@ -48,7 +34,9 @@ SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, i
     const ProgressCallback part_progress = [&](std::size_t done) {
       if (progress) progress(done_before + done);
     };
-    outcome.append(run_variant(scene.for_variant(variants[v]), part, threads, part_progress));
+    outcome.append(kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
+      return run_row_sweep<id>(scene, part, threads, part_progress);
+    }));
     done_before += part.size();
   }
   return outcome;

@@ -1,5 +1,5 @@
-// The compile-time side of run_sweep: picks the quadratures (Integrals) and lane type a scene
-// needs, and runs lane blocks of that instantiation on OpenMP threads.
+// The compile-time side of run_sweep: picks the lane type and the quadratures the scene's
+// observables need, and runs lane schedulers of that instantiation on OpenMP threads.
 #pragma once
 
 #include <omp.h>
@@ -9,16 +9,18 @@
 #include <chrono>
 #include <mutex>
 
-#include "ensemble/lane_block.hpp"
+#include "ensemble/lane_scheduler.hpp"
+#include "ensemble/row_setup.hpp"
 #include "ensemble/sweep.hpp"
 #include "kernels/row_model.hpp"
-#include "kernels/stepper_choice.hpp"
+#include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
-template <class Model, class Stepper>
-SweepOutcome run_lane_blocks(const Scene& scene, const std::vector<Member>& members, int threads,
-                             const ProgressCallback& progress) {
+/// Runs `members` (one variant) on `threads` lane schedulers that share one counter.
+template <class Model, class Stepper, class Setup>
+SweepOutcome run_lane_schedulers(const Scene& scene, const std::vector<Member>& members, const Setup& setup,
+                                 int threads, const ProgressCallback& progress) {
   SweepOutcome outcome;
   outcome.results.resize(members.size());
   auto& stats = outcome.statistics;
@@ -30,7 +32,7 @@ SweepOutcome run_lane_blocks(const Scene& scene, const std::vector<Member>& memb
 
 #pragma omp parallel num_threads(threads)
   {
-    LaneBlock<Model, Stepper> block(scene);
+    LaneScheduler<Model, Stepper, Setup> scheduler(scene, members.front(), setup);
     const auto next_member = [&]() -> std::optional<Member> {
       const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
       if (i >= members.size()) return std::nullopt;
@@ -47,10 +49,10 @@ SweepOutcome run_lane_blocks(const Scene& scene, const std::vector<Member>& memb
         progress_lock.unlock();
       }
     };
-    block.run(next_member, retire);
+    scheduler.run(next_member, retire);
     const std::lock_guard guard(statistics_lock);
-    stats.lane_steps_busy += block.lane_steps_busy();
-    stats.lane_steps_total += block.lane_steps_total();
+    stats.lane_steps_busy += scheduler.lane_steps_busy();
+    stats.lane_steps_total += scheduler.lane_steps_total();
   }
   stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return outcome;
@@ -62,23 +64,32 @@ decltype(auto) with_flag(bool b, F&& f) {
   return b ? f.template operator()<true>() : f.template operator()<false>();
 }
 
-/// run_lane_blocks for the stepper `kind`, the scene's lane type and its quadratures.
-template <kernels::StepperKind kind>
-SweepOutcome run_sweep_with(const Scene& scene, const std::vector<Member>& members, int threads,
-                            const ProgressCallback& progress) {
-  return with_flag(scene.lanes == LaneKind::simd, [&]<bool simd>() {
-    using V = std::conditional_t<simd, kernels::simd_lane, double>;
-    return with_flag(scene.dissipation, [&]<bool drive>() {
-      return with_flag(scene.estimators, [&]<bool estimators>() {
-        return with_flag(scene.alignment, [&]<bool alignment>() {
-          return with_flag(scene.energy, [&]<bool energy>() {
-            constexpr kernels::Integrals Q{drive, estimators, estimators, alignment, energy};
-            using Model = kernels::NearestNeighbourRows<V, Q>;
-            using Stepper = typename kernels::stepper_of<kind, Model>::type;
-            return run_lane_blocks<Model, Stepper>(scene, members, threads, progress);
-          });
+/// Calls f.template operator()<Q>() with the quadratures `needed` as a compile-time Integrals,
+/// one instantiation per combination of the observables that carry quadratures.
+template <class F>
+decltype(auto) with_integrals(kernels::Integrals needed, F&& f) {
+  return with_flag(needed.drive, [&]<bool drive>() {
+    return with_flag(needed.work, [&]<bool estimators>() {
+      return with_flag(needed.alignment, [&]<bool alignment>() {
+        return with_flag(needed.energy, [&]<bool energy>() {
+          return f.template operator()<kernels::Integrals{drive, estimators, estimators, alignment, energy}>();
         });
       });
+    });
+  });
+}
+
+/// One variant's members with stepper `id` on the row model, in the scene's lane type and with the
+/// quadratures its observables need.
+template <kernels::StepperId id>
+SweepOutcome run_row_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
+                           const ProgressCallback& progress) {
+  return with_flag(scene.lanes == LaneKind::simd, [&]<bool simd>() {
+    using V = std::conditional_t<simd, kernels::simd_lane, double>;
+    return with_integrals(scene.observables.quadratures(), [&]<kernels::Integrals Q>() {
+      using Model = kernels::NearestNeighbourRows<V, Q>;
+      using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
+      return run_lane_schedulers<Model, Stepper>(scene, members, RowSetup<Model>{&scene}, threads, progress);
     });
   });
 }

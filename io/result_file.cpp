@@ -10,7 +10,6 @@ namespace rotorsweep::io {
 namespace {
 
 using ensemble::MemberResult;
-using ensemble::PeriodRecord;
 
 template <class F>
 std::vector<double> column(const std::vector<MemberResult>& results, F&& field) {
@@ -28,32 +27,30 @@ std::vector<std::int64_t> integer_column(const std::vector<MemberResult>& result
   return out;
 }
 
+/// Calls f(channel declaration) for every channel of the observables the scene asks for.
+template <class F>
+void for_each_channel(const ensemble::Scene& scene, F&& f) {
+  for (std::size_t i = 0; i < ensemble::observable_count; ++i) {
+    if (!scene.has(ensemble::Observable(i))) continue;
+    const auto& observable = ensemble::observables[i];
+    for (std::size_t c = 0; c < observable.channel_count; ++c) f(observable.channels[c]);
+  }
+}
+
 void write_period_series(const Hdf5Location& members, const ensemble::Scene& scene,
                          const std::vector<MemberResult>& results) {
   const auto periods = members.create_group("periods");
   std::size_t width = 0;
   for (const auto& r : results) width = std::max(width, r.periods.size());
   periods.set_attribute("fill", std::string("NaN beyond a member's periods_run"));
-  const auto series = [&](const std::string& name, double PeriodRecord::*field,
-                          const std::string& description) {
+  for_each_channel(scene, [&](const ensemble::ChannelDeclaration& channel) {
     std::vector<double> data(results.size() * width, std::numeric_limits<double>::quiet_NaN());
     for (std::size_t m = 0; m < results.size(); ++m)
       for (std::size_t k = 0; k < results[m].periods.size(); ++k)
-        data[m * width + k] = results[m].periods[k].*field;
-    periods.write(name, data, {results.size(), width}, description + " (members × periods)");
-  };
-  if (scene.dissipation) series("dissipation", &PeriodRecord::dissipation, "R_k = A Σ∫ sin(θ_j - t) dt");
-  if (scene.estimators) {
-    series("dissipation_work", &PeriodRecord::work, "W_k = A Σ∫ sin(θ_j - t) θ̇_j dt");
-    series("dissipation_stokes", &PeriodRecord::stokes, "S_k = g Σ∫ θ̇_j² dt");
-  }
-  if (scene.alignment) {
-    series("alignment_mean", &PeriodRecord::alignment_mean, "period mean of ρ̄");
-    series("alignment_min", &PeriodRecord::alignment_min, "min of ρ̄ at the period's step points");
-    series("alignment_max", &PeriodRecord::alignment_max, "max of ρ̄ at the period's step points");
-  }
-  if (scene.energy) series("energy_mean", &PeriodRecord::energy_mean, "period mean of H");
-  if (scene.slips) series("slips", &PeriodRecord::slips, "slip events begun in the period");
+        data[m * width + k] = results[m].periods[k][channel.channel];
+    periods.write(std::string(channel.column), data, {results.size(), width},
+                  std::string(channel.description) + " (members × periods)");
+  });
 }
 
 }  // namespace
@@ -93,32 +90,14 @@ void ResultFile::write_members(const ensemble::Scene& scene, const std::vector<e
   group.write("ic", ic, "initial condition kind: FM, AFM, random, exact");
   group.write("replica", replica, "replica index at this (A, g, ic)");
   const std::string averaged = " over the averaged periods; NaN when status is not ok";
-  if (scene.dissipation) {
-    group.write("dissipation", column(results, [](auto& r) { return r.dissipation; }), {},
-                "D per period, R estimator A Σ∫ sin(θ_j - t) dt, mean" + averaged);
-    group.write("dissipation_std", column(results, [](auto& r) { return r.dissipation_std; }), {},
-                "population spread of D" + averaged);
-  }
-  if (scene.estimators) {
-    group.write("dissipation_work", column(results, [](auto& r) { return r.dissipation_work; }), {},
-                "D per period, work estimator W, mean" + averaged);
-    group.write("dissipation_stokes", column(results, [](auto& r) { return r.dissipation_stokes; }), {},
-                "D per period, Stokes estimator S, mean" + averaged);
-  }
-  if (scene.alignment) {
-    group.write("alignment_mean", column(results, [](auto& r) { return r.alignment_mean; }), {},
-                "time mean of ρ̄" + averaged);
-    group.write("alignment_min", column(results, [](auto& r) { return r.alignment_min; }), {},
-                "min of ρ̄ at step points" + averaged);
-    group.write("alignment_max", column(results, [](auto& r) { return r.alignment_max; }), {},
-                "max of ρ̄ at step points" + averaged);
-  }
-  if (scene.energy)
-    group.write("energy_mean", column(results, [](auto& r) { return r.energy_mean; }), {},
-                "time mean of H" + averaged);
-  if (scene.slips)
-    group.write("slips_per_period", column(results, [](auto& r) { return r.slips_per_period; }), {},
-                "slip events per period" + averaged);
+  for_each_channel(scene, [&](const ensemble::ChannelDeclaration& channel) {
+    for (std::size_t k = 0; k < channel.summary_count; ++k) {
+      const auto& summary = channel.summaries[k];
+      group.write(std::string(summary.column),
+                  column(results, [&](const MemberResult& r) { return r.summary(summary.summary, channel.channel); }),
+                  {}, std::string(summary.description) + averaged);
+    }
+  });
   if (scene.classifies_regimes())
     group.write("regime", regime, "FM, AFM, CP or unsettled (README: regime rule)");
   group.write("status", status, "ok, non_finite, step_underflow or step_budget");
@@ -170,7 +149,7 @@ void ResultFile::write_curves(const ensemble::Scene& scene,
   group.write("ic", ic, "initial condition kind");
   group.write("members", members, "replicas at this point");
   group.write("count", count, "members with status ok (the statistics use these)");
-  if (scene.dissipation) {
+  if (scene.has(ensemble::Observable::dissipation)) {
     group.write("dissipation_mean", values([](auto& p) { return p.dissipation_mean; }), {}, "mean of D");
     group.write("dissipation_std", values([](auto& p) { return p.dissipation_std; }), {},
                 "population spread of D over replicas");

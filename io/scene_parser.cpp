@@ -12,6 +12,8 @@
 #include <set>
 #include <sstream>
 
+#include "kernels/stepper_list.hpp"
+
 namespace rotorsweep::io {
 
 namespace {
@@ -25,7 +27,11 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
     {"initial", {"kinds", "noise", "offset", "angles", "replicas", "seed"}},
     {"schedule", {"relax_periods", "average_periods", "steady_tol", "max_periods", "refill"}},
     {"observables",
-     {"dissipation", "estimators", "alignment", "energy", "slips", "period_series", "slip_rate"}},
+     [] {
+       std::set<std::string> keys{"period_series", "slip_rate"};
+       for (const auto& observable : ensemble::observables) keys.insert(std::string(observable.key));
+       return keys;
+     }()},
     {"numerics", {"stepper", "rtol", "atol", "h_max", "max_steps", "lanes", "wrap_angles"}},
     {"output", {"path"}},
 };
@@ -210,7 +216,6 @@ Scene read_scene(const toml::table& root) {
   for (long long n : model.integers("rows", "an even integer from 2 to 100000",
                                     [](long long n) { return n >= 2 && n <= 100000 && n % 2 == 0; }))
     scene.row_counts.push_back(std::size_t(n));
-  scene.rows = scene.row_counts.front();
 
   scene.g_values = grid(section(root, "drive"), "g", "> 0", [](double g) { return g > 0; });
   scene.A_values = grid(section(root, "sweep"), "A", ">= 0", [](double A) { return A >= 0; });
@@ -277,15 +282,15 @@ Scene read_scene(const toml::table& root) {
   scene.refill = schedule.boolean("refill", scene.refill);
 
   const Section observables = section(root, "observables");
-  scene.dissipation = observables.boolean("dissipation", scene.dissipation);
-  scene.estimators = observables.boolean("estimators", scene.estimators);
-  scene.alignment = observables.boolean("alignment", scene.alignment);
-  scene.energy = observables.boolean("energy", scene.energy);
-  scene.slips = observables.boolean("slips", scene.slips);
+  for (std::size_t i = 0; i < ensemble::observable_count; ++i) {
+    const auto observable = ensemble::Observable(i);
+    scene.observables.set(observable,
+                          observables.boolean(ensemble::declaration(observable).key, scene.has(observable)));
+  }
   scene.period_series = observables.boolean("period_series", scene.period_series);
   scene.slip_rate = observables.number("slip_rate", scene.slip_rate, "a number > 0 (rows' angular velocity)",
                                        [](double x) { return x > 0; });
-  if (scene.steady_tol > 0 && !scene.dissipation)
+  if (scene.steady_tol > 0 && !scene.has(ensemble::Observable::dissipation))
     fail(schedule.key("steady_tol"),
          "needs observables.dissipation = true (it compares D of successive periods)");
 
@@ -301,8 +306,6 @@ Scene read_scene(const toml::table& root) {
   if (scene.atol_values.size() != scene.rtol_values.size())
     fail(numerics.key("atol"), "must be one number, or a list as long as numerics.rtol (" +
                                    std::to_string(scene.rtol_values.size()) + " values, paired with them)");
-  scene.rtol = scene.rtol_values.front();
-  scene.atol = scene.atol_values.front();
   scene.h_max = numerics.number("h_max", scene.h_max, "a number > 0 and <= 2π (the drive period)",
                                 [](double x) { return x > 0 && x <= 6.283185307179586; });
   scene.max_steps =

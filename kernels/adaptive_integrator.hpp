@@ -6,33 +6,41 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 
+#include "kernels/host_device.hpp"
 #include "kernels/lane.hpp"
+#include "kernels/lane_arena.hpp"
+#include "kernels/lane_math.hpp"
 #include "kernels/lane_state.hpp"
+#include "kernels/model_concept.hpp"
 #include "kernels/step_control.hpp"
 
 namespace rotorsweep::kernels {
 
-template <class System, class Stepper>
+template <LaneModel System, class Stepper>
 class AdaptiveIntegrator {
  public:
   using V = typename System::lane_type;
   static constexpr std::size_t nq = System::quadrature_count;
 
-  AdaptiveIntegrator(const System& system, Tolerances tol, StepLimits limits = {})
+  /// Lane values of scratch for a model of dimension n (the stepper's included).
+  static constexpr std::size_t storage_size(std::size_t n) {
+    return Stepper::storage_size(n) + System::Workspace::storage_size(n) + 2 * n + 2 * (nq + 1);
+  }
+
+  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Tolerances tol, StepLimits limits, LaneArena<V>& arena)
       : tol_(tol),
         limits_(limits),
-        stepper_(system),
-        work_(system.make_workspace()),
-        y_new_(system.dimension()),
-        y_error_(system.dimension()),
-        q_new_(nq + 1),
-        q_error_(nq + 1) {}
+        stepper_(system, arena),
+        work_(system.dimension(), arena),
+        y_new_(arena.take(system.dimension())),
+        y_error_(arena.take(system.dimension())),
+        q_new_(arena.take(nq + 1)),
+        q_error_(arena.take(nq + 1)) {}
 
   /// One step attempt for every lane that is ok and short of its t_stop; the step is clipped
   /// to land exactly on t_stop. Returns the lanes that accepted a step.
-  lane_mask<V> attempt(const System& system, LaneState<V>& s) {
+  ROTORSWEEP_HD lane_mask<V> attempt(const System& system, LaneState<V>& s) {
     const lane_mask<V> active = s.running() & (s.t < s.t_stop);
     if (!lane_any(active)) return active;
     propose_first_steps(system, s, active);
@@ -42,10 +50,9 @@ class AdaptiveIntegrator {
     const lane_mask<V> clipped = s.h >= remaining;
     const V h = lane_select(active, lane_min(s.h, remaining), V(1.0));
     const lane_mask<V> resolved =
-        stepper_.attempt(system, s.t, h, s.theta.data(), s.quad.data(), y_new_.data(), q_new_.data(),
-                         y_error_.data(), q_error_.data());
-    const V err = error_norm(tol_, n, y_error_.data(), nq, System::error_controlled.data(), s.quad.data(),
-                             q_new_.data(), q_error_.data());
+        stepper_.attempt(system, s.t, h, s.theta, s.quad, y_new_, q_new_, y_error_, q_error_);
+    const V err = error_norm(system, tol_, s.theta, y_new_, y_error_, System::error_controlled.data(), s.quad,
+                             q_new_, q_error_);
 
     V checksum(0.0);
     for (std::size_t k = 0; k < n; ++k) checksum += y_new_[k];
@@ -65,7 +72,7 @@ class AdaptiveIntegrator {
     s.steps_accepted += lane_select(accept, V(1.0), V(0.0));
     s.steps_rejected += lane_select(active & !accept, V(1.0), V(0.0));
 
-    const V h_floor = V(16.0 * std::numeric_limits<double>::epsilon()) * lane_max(V(1.0), lane_abs(s.t));
+    const V h_floor = V(16.0 * 0x1p-52) * lane_max(V(1.0), lane_abs(s.t));
     const lane_mask<V> trouble =
         active & ((s.h < h_floor) | (s.steps_accepted + s.steps_rejected >= V(limits_.max_steps)));
     if (lane_any(trouble)) flag_failures(s, trouble, finite, h_floor);
@@ -73,16 +80,16 @@ class AdaptiveIntegrator {
   }
 
   /// Attempts steps until every lane has reached its t_stop or failed.
-  void advance(const System& system, LaneState<V>& s) {
+  ROTORSWEEP_HD void advance(const System& system, LaneState<V>& s) {
     while (lane_any(s.running() & (s.t < s.t_stop))) attempt(system, s);
   }
 
  private:
   // Lanes with h <= 0 get h = min(h_max, 0.01 (atol + rtol)^(1/(p+1)) / max_j |f_j|).
-  void propose_first_steps(const System& system, LaneState<V>& s, lane_mask<V> active) {
+  ROTORSWEEP_HD void propose_first_steps(const System& system, LaneState<V>& s, lane_mask<V> active) {
     const lane_mask<V> fresh = active & (s.h <= V(0.0));
     if (!lane_any(fresh)) return;
-    system.evaluate(work_, s.theta.data(), s.t, y_new_.data(), q_new_.data());
+    system.evaluate(work_, s.theta, s.t, y_new_, q_new_);
     V rate(1e-300);
     for (std::size_t k = 0; k < s.rows(); ++k) rate = lane_max(rate, lane_abs(y_new_[k]));
     const double scale = 0.01 * std::pow(tol_.atol + tol_.rtol, 1.0 / (Stepper::order() + 1));
@@ -90,7 +97,7 @@ class AdaptiveIntegrator {
     s.h = lane_select(fresh, lane_select(lane_isfinite(h0), h0, V(limits_.h_max)), s.h);
   }
 
-  void flag_failures(LaneState<V>& s, lane_mask<V> trouble, lane_mask<V> finite, V h_floor) const {
+  ROTORSWEEP_HD void flag_failures(LaneState<V>& s, lane_mask<V> trouble, lane_mask<V> finite, V h_floor) const {
     for (std::size_t l = 0; l < lane_width<V>; ++l) {
       if (!mask_get(trouble, l)) continue;
       if (lane_get(s.steps_accepted, l) + lane_get(s.steps_rejected, l) >= limits_.max_steps)
@@ -104,7 +111,7 @@ class AdaptiveIntegrator {
   StepLimits limits_;
   Stepper stepper_;
   typename System::Workspace work_;
-  lane_vector<V> y_new_, y_error_, q_new_, q_error_;
+  V *y_new_, *y_error_, *q_new_, *q_error_;
 };
 
 }  // namespace rotorsweep::kernels

@@ -1,10 +1,12 @@
-// Cyclic tridiagonal Jacobian of the row model (model.md §1) and the O(N) solve of the
+// Cyclic tridiagonal Jacobian of the row model (docs/model.md §1) and the O(N) solve of the
 // Rosenbrock stage matrix M = shift·I - J, eliminated lane by lane without pivoting.
 #pragma once
 
 #include <cstddef>
 
+#include "kernels/host_device.hpp"
 #include "kernels/lane.hpp"
+#include "kernels/lane_arena.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -22,22 +24,31 @@ namespace rotorsweep::kernels {
 /// (a circulant M and a constant right-hand side) the solution is the constant
 /// r / (shift - diag - 2 off), taken in closed form. Elimination would break that symmetry at
 /// rounding level, and the transverse instability of strict-FM states in the CP regime would
-/// amplify it (model.md §5); marked lanes keep the strict-FM set invariant in floating point
+/// amplify it (docs/model.md §5); marked lanes keep the strict-FM set invariant in floating point
 /// as it is in exact arithmetic.
 template <class V>
 class CyclicTridiagonal {
  public:
-  explicit CyclicTridiagonal(std::size_t n)
-      : n_(n), diag_(n), off_(n), inv_pivot_(n), upper_(n), spike_(n), corner_(n) {}
+  using lane_type = V;
+  static constexpr std::size_t storage_size(std::size_t n) { return 6 * n; }
 
-  std::size_t size() const { return n_; }
-  V& diag(std::size_t i) { return diag_[i]; }
-  V& off(std::size_t k) { return off_[k]; }
-  const V& diag(std::size_t i) const { return diag_[i]; }
-  const V& off(std::size_t k) const { return off_[k]; }
+  ROTORSWEEP_HD CyclicTridiagonal(std::size_t n, LaneArena<V>& arena)
+      : n_(n),
+        diag_(arena.take(n)),
+        off_(arena.take(n)),
+        inv_pivot_(arena.take(n)),
+        upper_(arena.take(n)),
+        spike_(arena.take(n)),
+        corner_(arena.take(n)) {}
+
+  ROTORSWEEP_HD std::size_t size() const { return n_; }
+  ROTORSWEEP_HD V& diag(std::size_t i) { return diag_[i]; }
+  ROTORSWEEP_HD V& off(std::size_t k) { return off_[k]; }
+  ROTORSWEEP_HD const V& diag(std::size_t i) const { return diag_[i]; }
+  ROTORSWEEP_HD const V& off(std::size_t k) const { return off_[k]; }
 
   /// y += J x
-  void multiply_add(const V* x, V* y) const {
+  ROTORSWEEP_HD void multiply_add(const V* x, V* y) const {
     const std::size_t n = n_;
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t k1 = (k + 1 == n) ? 0 : k + 1;
@@ -50,13 +61,13 @@ class CyclicTridiagonal {
   /// positive. By Sylvester's law of inertia the number of negative pivots is the number of
   /// eigenvalues of J above `shift`, so a lane outside this mask has an unstable direction
   /// growing faster than the step can follow (see RosenbrockStepper::attempt).
-  lane_mask<V> positive_definite() const { return positive_definite_; }
+  ROTORSWEEP_HD lane_mask<V> positive_definite() const { return positive_definite_; }
 
   /// Lanes whose all-equal solutions are taken in closed form (see the class comment).
-  void keep_constant_solutions(lane_mask<V> lanes) { keep_constant_ = lanes; }
+  ROTORSWEEP_HD void keep_constant_solutions(lane_mask<V> lanes) { keep_constant_ = lanes; }
 
   /// Factorises M = shift·I - J for the following solve() calls.
-  void factor(V shift) {
+  ROTORSWEEP_HD void factor(V shift) {
     const std::size_t m = n_ - 1;  // index of the last row
     // rows 0 .. m-1:  x_i + upper_i x_{i+1} + spike_i x_m = y_i
     V d = shift - diag_[0];
@@ -89,7 +100,7 @@ class CyclicTridiagonal {
   }
 
   /// Solves M x = r in place (r becomes x), with M from the last factor().
-  void solve(V* r) const {
+  ROTORSWEEP_HD void solve(V* r) const {
     const std::size_t m = n_ - 1;
     const V r0 = r[0];
     lane_mask<V> constant = circulant_;
@@ -110,8 +121,8 @@ class CyclicTridiagonal {
 
  private:
   std::size_t n_;
-  lane_vector<V> diag_, off_;
-  lane_vector<V> inv_pivot_, upper_, spike_, corner_;
+  V *diag_, *off_;
+  V *inv_pivot_, *upper_, *spike_, *corner_;
   lane_mask<V> positive_definite_{};
   lane_mask<V> keep_constant_{};  ///< lanes marked by keep_constant_solutions()
   lane_mask<V> circulant_{};      ///< marked lanes whose rows are all equal

@@ -5,32 +5,40 @@
 #include <cstddef>
 
 #include "kernels/dormand_prince_tableau.hpp"
+#include "kernels/host_device.hpp"
 #include "kernels/lane.hpp"
+#include "kernels/lane_arena.hpp"
+#include "kernels/model_concept.hpp"
 
 namespace rotorsweep::kernels {
 
 /// One attempted step of size h per lane. The first stage is evaluated afresh on every
 /// attempt (no first-same-as-last reuse), since lanes accept and reject independently.
-template <class System>
+template <LaneModel System>
 class DormandPrince5 {
  public:
   using V = typename System::lane_type;
   static constexpr const ExplicitTableau& tableau = dormand_prince5_tableau;
   static constexpr std::size_t nq = System::quadrature_count;
 
-  explicit DormandPrince5(const System& system)
-      : n_(system.dimension()),
-        work_(system.make_workspace()),
-        argument_(n_),
-        slopes_(std::size_t(tableau.stages) * n_),
-        quad_slopes_(std::size_t(tableau.stages) * nq + 1) {}
+  static constexpr std::size_t storage_size(std::size_t n) {
+    return System::Workspace::storage_size(n) + (1 + std::size_t(tableau.stages)) * n +
+           std::size_t(tableau.stages) * nq + 1;
+  }
 
-  static constexpr int order() { return tableau.order; }
-  static constexpr int embedded_order() { return tableau.embedded_order; }
+  ROTORSWEEP_HD DormandPrince5(const System& system, LaneArena<V>& arena)
+      : n_(system.dimension()),
+        work_(n_, arena),
+        argument_(arena.take(n_)),
+        slopes_(arena.take(std::size_t(tableau.stages) * n_)),
+        quad_slopes_(arena.take(std::size_t(tableau.stages) * nq + 1)) {}
+
+  ROTORSWEEP_HD static constexpr int order() { return tableau.order; }
+  ROTORSWEEP_HD static constexpr int embedded_order() { return tableau.embedded_order; }
 
   /// One step of size h. Returns every lane: an explicit method follows unstable directions
   /// (its error estimate sees them), so no lane needs the implicit steppers' extra check.
-  lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
+  ROTORSWEEP_HD lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
                        V* q_error) {
     const std::size_t n = n_;
     constexpr const ExplicitTableau& T = tableau;
@@ -39,19 +47,19 @@ class DormandPrince5 {
       for (int j = 0; j < i; ++j) {
         if (T.a[i][j] == 0.0) continue;
         const V ha = h * V(T.a[i][j]);
-        const V* kj = slopes_.data() + std::size_t(j) * n;
+        const V* kj = slopes_ + std::size_t(j) * n;
         for (std::size_t k = 0; k < n; ++k) argument_[k] += ha * kj[k];
       }
-      system.evaluate(work_, argument_.data(), t + V(T.c[i]) * h, slopes_.data() + std::size_t(i) * n,
-                      quad_slopes_.data() + std::size_t(i) * nq);
+      system.evaluate(work_, argument_, t + V(T.c[i]) * h, slopes_ + std::size_t(i) * n,
+                      quad_slopes_ + std::size_t(i) * nq);
     }
-    combine(h, y, n, slopes_.data(), y_new, y_error);
-    combine(h, q, nq, quad_slopes_.data(), q_new, q_error);
+    combine(h, y, n, slopes_, y_new, y_error);
+    combine(h, q, nq, quad_slopes_, q_new, q_error);
     return h == h;
   }
 
  private:
-  static void combine(V h, const V* start, std::size_t count, const V* slopes, V* result, V* error) {
+  ROTORSWEEP_HD static void combine(V h, const V* start, std::size_t count, const V* slopes, V* result, V* error) {
     constexpr const ExplicitTableau& T = tableau;
     for (std::size_t k = 0; k < count; ++k) {
       V sum(0.0), err(0.0);
@@ -67,7 +75,7 @@ class DormandPrince5 {
 
   std::size_t n_;
   typename System::Workspace work_;
-  lane_vector<V> argument_, slopes_, quad_slopes_;
+  V *argument_, *slopes_, *quad_slopes_;
 };
 
 }  // namespace rotorsweep::kernels

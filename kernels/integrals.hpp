@@ -1,10 +1,13 @@
 // Which per-period integrals ride along with the integration as quadrature states
-// (model.md §3: work W, Stokes S, drive R, time integrals of alignment ρ̄ and energy H).
+// (docs/model.md §3: work W, Stokes S, drive R, time integrals of alignment ρ̄ and energy H).
 #pragma once
 
 #include <cstddef>
 
 namespace rotorsweep::kernels {
+
+/// The quadratures a model can carry.
+enum class Quadrature { drive, work, stokes, alignment, energy };
 
 /// The quadrature states a model carries; a compile-time choice, so that what a scene does
 /// not ask for costs nothing in the hot loop.
@@ -22,6 +25,31 @@ struct Integrals {
   constexpr std::size_t stokes_index() const { return work_index() + work; }
   constexpr std::size_t alignment_index() const { return stokes_index() + stokes; }
   constexpr std::size_t energy_index() const { return alignment_index() + alignment; }
+
+  constexpr bool carries(Quadrature q) const {
+    switch (q) {
+      case Quadrature::drive: return drive;
+      case Quadrature::work: return work;
+      case Quadrature::stokes: return stokes;
+      case Quadrature::alignment: return alignment;
+      case Quadrature::energy: return energy;
+    }
+    return false;
+  }
+  constexpr std::size_t index(Quadrature q) const {
+    switch (q) {
+      case Quadrature::drive: return drive_index();
+      case Quadrature::work: return work_index();
+      case Quadrature::stokes: return stokes_index();
+      case Quadrature::alignment: return alignment_index();
+      case Quadrature::energy: return energy_index();
+    }
+    return 0;
+  }
+  constexpr Integrals operator|(const Integrals& o) const {
+    return {drive || o.drive, work || o.work, stokes || o.stokes, alignment || o.alignment, energy || o.energy};
+  }
+  constexpr bool operator==(const Integrals&) const = default;
 };
 
 inline constexpr Integrals all_integrals{true, true, true, true, true};

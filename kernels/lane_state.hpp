@@ -1,38 +1,48 @@
-// State of one block of lanes (structure of arrays): angles θ[row][lane], quadrature states,
-// and each lane's own time, step size, stopping time, step counters and status.
+// State of one block of lanes (structure of arrays over caller-owned storage): the state y[k][lane],
+// quadrature states, and each lane's own time, step size, stopping time, step counters and status.
 #pragma once
 
 #include <array>
 #include <cstddef>
 
+#include "kernels/host_device.hpp"
 #include "kernels/lane.hpp"
+#include "kernels/lane_arena.hpp"
 #include "kernels/lane_status.hpp"
 
 namespace rotorsweep::kernels {
 
 template <class V>
 struct LaneState {
-  static constexpr std::size_t width = lane_width<V>;
-
-  LaneState(std::size_t rows, std::size_t quadratures) : theta(rows, V(0.0)), quad(quadratures + 1, V(0.0)) {
-    status.fill(LaneStatus::ok);
+  /// Lane values a state of `dimension` components and `quadratures` quadratures takes (one spare
+  /// quadrature slot, so that zero quadratures work).
+  static constexpr std::size_t storage_size(std::size_t dimension, std::size_t quadratures) {
+    return dimension + quadratures + 1;
   }
 
-  std::size_t rows() const { return theta.size(); }
+  ROTORSWEEP_HD LaneState(std::size_t dimension, std::size_t quadratures, LaneArena<V>& arena)
+      : theta(arena.take(dimension)), quad(arena.take(quadratures + 1)), dimension_(dimension) {
+    for (auto& s : status) s = LaneStatus::ok;
+  }
 
-  lane_vector<V> theta;  ///< θ_j per lane, unwrapped
-  lane_vector<V> quad;   ///< quadrature states (one spare slot so that zero quadratures work)
-  V t = V(0.0);          ///< each lane's time
-  V h = V(0.0);          ///< each lane's next step size; 0 asks for an automatic first step
-  V t_stop = V(0.0);     ///< each lane integrates up to here
+  ROTORSWEEP_HD std::size_t rows() const { return dimension_; }
+
+  V* theta;               ///< state components per lane (for rotor models θ_j, unwrapped)
+  V* quad;                ///< quadrature states
+  V t = V(0.0);           ///< each lane's time
+  V h = V(0.0);           ///< each lane's next step size; 0 asks for an automatic first step
+  V t_stop = V(0.0);      ///< each lane integrates up to here
   V steps_accepted = V(0.0);
   V steps_rejected = V(0.0);
-  std::array<LaneStatus, width> status;
+  std::array<LaneStatus, lane_width<V>> status;
 
   /// Lanes that still integrate (status ok).
-  lane_mask<V> running() const {
+  ROTORSWEEP_HD lane_mask<V> running() const {
     return lane_from<V>([&](std::size_t l) { return status[l] == LaneStatus::ok ? 1.0 : 0.0; }) != V(0.0);
   }
+
+ private:
+  std::size_t dimension_;
 };
 
 }  // namespace rotorsweep::kernels

@@ -1,10 +1,13 @@
 // Lane-parallel Rosenbrock stepper (linearly implicit, transformed form, Hairer & Wanner
-// Eq. IV.7.25) for an ODE with quadrature states: y' = f(y, t), q' = p(y, t) (model.md §3).
+// Eq. IV.7.25) for an ODE with quadrature states: y' = f(y, t), q' = p(y, t) (docs/model.md §3).
 #pragma once
 
 #include <cstddef>
 
+#include "kernels/host_device.hpp"
 #include "kernels/lane.hpp"
+#include "kernels/lane_arena.hpp"
+#include "kernels/model_concept.hpp"
 #include "kernels/rosenbrock_tableaus.hpp"
 
 namespace rotorsweep::kernels {
@@ -14,40 +17,43 @@ namespace rotorsweep::kernels {
 /// triangular, so its stage solve is the model's own solve plus one dot product per
 /// quadrature), which keeps them at the method's full order.
 ///
-/// System requirements: lane_type, Jacobian (with factor(shift), solve(r)), Workspace,
-/// quadrature_count, dimension(), make_workspace(), evaluate(), linearize().
-template <class System, const RosenbrockTableau& T>
+/// Scratch: views over caller-owned storage of storage_size(n) lane values.
+template <LaneModel System, const RosenbrockTableau& T>
 class RosenbrockStepper {
  public:
   using V = typename System::lane_type;
   static constexpr const RosenbrockTableau& tableau = T;
   static constexpr std::size_t nq = System::quadrature_count;
 
-  explicit RosenbrockStepper(const System& system)
-      : n_(system.dimension()),
-        work_(system.make_workspace()),
-        jacobian_(n_),
-        f_(n_),
-        df_dt_(n_),
-        argument_(n_),
-        stages_(std::size_t(T.stages) * n_),
-        dq_dy_(nq * n_ + 1),
-        qdot_(nq + 1),
-        dq_dt_(nq + 1),
-        quad_stages_(std::size_t(T.stages) * nq + 1) {}
+  static constexpr std::size_t storage_size(std::size_t n) {
+    return System::Workspace::storage_size(n) + System::Jacobian::storage_size(n) +
+           (3 + std::size_t(T.stages) + nq) * n + 1 + 2 * (nq + 1) + std::size_t(T.stages) * nq + 1;
+  }
 
-  static constexpr int order() { return T.order; }
-  static constexpr int embedded_order() { return T.embedded_order; }
+  ROTORSWEEP_HD RosenbrockStepper(const System& system, LaneArena<V>& arena)
+      : n_(system.dimension()),
+        work_(n_, arena),
+        jacobian_(n_, arena),
+        f_(arena.take(n_)),
+        df_dt_(arena.take(n_)),
+        argument_(arena.take(n_)),
+        stages_(arena.take(std::size_t(T.stages) * n_)),
+        dq_dy_(arena.take(nq * n_ + 1)),
+        qdot_(arena.take(nq + 1)),
+        dq_dt_(arena.take(nq + 1)),
+        quad_stages_(arena.take(std::size_t(T.stages) * nq + 1)) {}
+
+  ROTORSWEEP_HD static constexpr int order() { return T.order; }
+  ROTORSWEEP_HD static constexpr int embedded_order() { return T.embedded_order; }
 
   /// One step of size h from (t, y, q). Returns the lanes where the step resolves every
   /// unstable direction of J: where J has an eigenvalue λ > 1/(hγ), the stage solves damp a
   /// mode that grows like exp(λt) (an L-stable method turns a saddle into a false attractor,
   /// and the embedded estimate shares the error); such a lane must retry with a smaller h.
-  lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
+  ROTORSWEEP_HD lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
                        V* q_error) {
     const std::size_t n = n_;
-    system.linearize(work_, y, t, f_.data(), qdot_.data(), jacobian_, df_dt_.data(), dq_dy_.data(),
-                     dq_dt_.data());
+    system.linearize(work_, y, t, f_, qdot_, jacobian_, df_dt_, dq_dy_, dq_dt_);
     const V h_gamma = h * V(T.gamma);
     const V inv_h = V(1.0) / h;
     jacobian_.factor(V(1.0) / h_gamma);
@@ -61,7 +67,7 @@ class RosenbrockStepper {
           const V a(T.a[i][j]);
           for (std::size_t k = 0; k < n; ++k) argument_[k] += a * u[k];
         }
-        system.evaluate(work_, argument_.data(), t + V(T.alpha[i]) * h, f_.data(), qdot_.data());
+        system.evaluate(work_, argument_, t + V(T.alpha[i]) * h, f_, qdot_);
       }
       V* u = stage(i);
       const V time_weight = V(T.gamma_sum[i]) * h;
@@ -74,7 +80,7 @@ class RosenbrockStepper {
       jacobian_.solve(u);
 
       for (std::size_t p = 0; p < nq; ++p) {
-        const V* grad = dq_dy_.data() + p * n;
+        const V* grad = dq_dy_ + p * n;
         V sum = qdot_[p] + time_weight * dq_dt_[p];
         for (std::size_t k = 0; k < n; ++k) sum += grad[k] * u[k];
         for (int j = 0; j < i; ++j) sum += V(T.c[i][j]) * inv_h * quad_stages_[std::size_t(j) * nq + p];
@@ -82,15 +88,18 @@ class RosenbrockStepper {
       }
     }
 
-    combine(y, n, stages_.data(), n, y_new, y_error);
-    combine(q, nq, quad_stages_.data(), nq, q_new, q_error);
-    return jacobian_.positive_definite();
+    combine(y, n, stages_, n, y_new, y_error);
+    combine(q, nq, quad_stages_, nq, q_new, q_error);
+    if constexpr (JacobianWithInertia<typename System::Jacobian>)
+      return jacobian_.positive_definite();
+    else
+      return h == h;
   }
 
  private:
-  V* stage(int i) { return stages_.data() + std::size_t(i) * n_; }
+  ROTORSWEEP_HD V* stage(int i) { return stages_ + std::size_t(i) * n_; }
 
-  static void combine(const V* start, std::size_t count, const V* stages, std::size_t stride, V* result,
+  ROTORSWEEP_HD static void combine(const V* start, std::size_t count, const V* stages, std::size_t stride, V* result,
                       V* error) {
     for (std::size_t k = 0; k < count; ++k) {
       V sum = start[k];
@@ -108,8 +117,8 @@ class RosenbrockStepper {
   std::size_t n_;
   typename System::Workspace work_;
   typename System::Jacobian jacobian_;
-  lane_vector<V> f_, df_dt_, argument_, stages_;
-  lane_vector<V> dq_dy_, qdot_, dq_dt_, quad_stages_;
+  V *f_, *df_dt_, *argument_, *stages_;
+  V *dq_dy_, *qdot_, *dq_dt_, *quad_stages_;
 };
 
 template <class System>

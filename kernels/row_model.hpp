@@ -1,13 +1,18 @@
-// The nearest-neighbour periodic row model (model.md §1, paper Eq. EOMFULL): right-hand side,
-// cyclic tridiagonal Jacobian, ∂f/∂t, energy, and the quadrature integrands of model.md §3.
+// The nearest-neighbour periodic row model (docs/model.md §1, paper Eq. EOMFULL): right-hand side,
+// cyclic tridiagonal Jacobian, ∂f/∂t, energy, and the quadrature integrands of docs/model.md §3.
 #pragma once
 
 #include <array>
 #include <cstddef>
 
+#include "kernels/angles.hpp"
 #include "kernels/cyclic_tridiagonal.hpp"
+#include "kernels/host_device.hpp"
 #include "kernels/integrals.hpp"
 #include "kernels/lane.hpp"
+#include "kernels/lane_arena.hpp"
+#include "kernels/lane_math.hpp"
+#include "kernels/model_concept.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -16,12 +21,14 @@ namespace rotorsweep::kernels {
 /// sincos per row and one for the drive phase; all other trigonometry follows from sums
 /// and products of those.
 ///
-/// The model keeps no mutable state: scratch lives in a Workspace owned by the caller.
+/// The model keeps no mutable state: scratch lives in a Workspace over caller-owned storage.
+/// It satisfies LaneModel (kernels/model_concept.hpp).
 template <class V, Integrals Q>
 class NearestNeighbourRows {
  public:
   using lane_type = V;
   using Jacobian = CyclicTridiagonal<V>;
+  static constexpr double period = two_pi;  ///< the drive period
   static constexpr Integrals integrals = Q;
   static constexpr std::size_t quadrature_count = Q.count();
   /// Which quadratures steer the step size. W and S integrate θ̇ = f(θ, t), which the stages
@@ -35,35 +42,52 @@ class NearestNeighbourRows {
     return c;
   }();
 
-  struct Workspace {
-    explicit Workspace(std::size_t n)
-        : sin_row(n), cos_row(n), sin_lag(n), cos_lag(n), sin_link(n), cos_link(n), product(n) {}
-    lane_vector<V> sin_row, cos_row;    // sin θ_j, cos θ_j
-    lane_vector<V> sin_lag, cos_lag;    // sin(θ_j - t), cos(θ_j - t)
-    lane_vector<V> sin_link, cos_link;  // sin(θ_j - θ_{j+1}), cos(θ_j - θ_{j+1})
-    lane_vector<V> product;             // J·v products for the integrand gradients
+  /// One lane's parameters. `strict_fm` marks a member that starts exactly in the strict-FM set
+  /// (all rows equal): its stage solves keep all-equal rows exactly equal (CyclicTridiagonal),
+  /// so that the symmetry-protected state stays strict FM in floating point.
+  struct Parameters {
+    double A = 1.0;
+    double g = 1.0;
+    bool strict_fm = false;
   };
 
-  NearestNeighbourRows(std::size_t rows, V A, V g) : rows_(rows), A_(A), g_(g), inv_g_(V(1.0) / g) {}
+  struct Workspace {
+    static constexpr std::size_t storage_size(std::size_t n) { return 7 * n; }
+    ROTORSWEEP_HD Workspace(std::size_t n, LaneArena<V>& arena)
+        : sin_row(arena.take(n)),
+          cos_row(arena.take(n)),
+          sin_lag(arena.take(n)),
+          cos_lag(arena.take(n)),
+          sin_link(arena.take(n)),
+          cos_link(arena.take(n)),
+          product(arena.take(n)) {}
+    V *sin_row, *cos_row;    // sin θ_j, cos θ_j
+    V *sin_lag, *cos_lag;    // sin(θ_j - t), cos(θ_j - t)
+    V *sin_link, *cos_link;  // sin(θ_j - θ_{j+1}), cos(θ_j - θ_{j+1})
+    V* product;              // J·v products for the integrand gradients
+  };
+
+  ROTORSWEEP_HD explicit NearestNeighbourRows(std::size_t rows) : rows_(rows) {}
+  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, const Parameters& p) : rows_(rows) {
+    for (std::size_t l = 0; l < lane_width<V>; ++l) set_lane(l, p);
+  }
+  /// A and g per lane, no lane symmetry protected.
+  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, V A, V g) : rows_(rows), A_(A), g_(g), inv_g_(V(1.0) / g) {}
 
   /// Gives one lane new parameters (a lane block refilled with another member).
-  /// `strict_fm` marks a member that starts exactly in the strict-FM set (all rows equal):
-  /// its stage solves keep all-equal rows exactly equal (CyclicTridiagonal), so that the
-  /// symmetry-protected state stays strict FM in floating point.
-  void set_lane_parameters(std::size_t lane, double A, double g, bool strict_fm = false) {
-    lane_set(A_, lane, A);
-    lane_set(g_, lane, g);
-    lane_set(inv_g_, lane, 1.0 / g);
-    lane_set(strict_fm_, lane, strict_fm ? 1.0 : 0.0);
+  ROTORSWEEP_HD void set_lane(std::size_t lane, const Parameters& p) {
+    lane_set(A_, lane, p.A);
+    lane_set(g_, lane, p.g);
+    lane_set(inv_g_, lane, 1.0 / p.g);
+    lane_set(strict_fm_, lane, p.strict_fm ? 1.0 : 0.0);
   }
 
-  std::size_t dimension() const { return rows_; }
-  Workspace make_workspace() const { return Workspace(rows_); }
-  const V& A() const { return A_; }
-  const V& g() const { return g_; }
+  ROTORSWEEP_HD std::size_t dimension() const { return rows_; }
+  /// Every state component is an angle: its error is measured absolutely.
+  ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
 
   /// f = dθ/dt and the quadrature integrands qdot at (θ, t).
-  void evaluate(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
+  ROTORSWEEP_HD void evaluate(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
     trigonometry(w, theta, t);
     torques(w, f);
     integrands(w, f, qdot);
@@ -71,7 +95,7 @@ class NearestNeighbourRows {
 
   /// evaluate() plus the Jacobian J = ∂f/∂θ, ∂f/∂t, and the gradients of the integrands
   /// (dq_dtheta[q·N + k] = ∂qdot_q/∂θ_k, dq_dt[q] = ∂qdot_q/∂t) at the same point.
-  void linearize(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt, V* dq_dtheta,
+  ROTORSWEEP_HD void linearize(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt, V* dq_dtheta,
                  V* dq_dt) const {
     evaluate(w, theta, t, f, qdot);
     const std::size_t n = rows_;
@@ -86,20 +110,20 @@ class NearestNeighbourRows {
     integrand_gradients(w, f, J, df_dt, dq_dtheta, dq_dt);
   }
 
-  /// H(θ; A, t) of model.md §1.
-  V energy(Workspace& w, const V* theta, V t) const {
+  /// H(θ; A, t) of docs/model.md §1.
+  ROTORSWEEP_HD V energy(Workspace& w, const V* theta, V t) const {
     trigonometry(w, theta, t);
     return energy_from_trigonometry(w);
   }
 
   /// ρ̄(θ) = (1/N) Σ cos²((θ_j - θ_{j+1})/2).
-  V alignment(Workspace& w, const V* theta, V t) const {
+  ROTORSWEEP_HD V alignment(Workspace& w, const V* theta, V t) const {
     trigonometry(w, theta, t);
     return alignment_from_trigonometry(w);
   }
 
  private:
-  void trigonometry(Workspace& w, const V* theta, V t) const {
+  ROTORSWEEP_HD void trigonometry(Workspace& w, const V* theta, V t) const {
     const std::size_t n = rows_;
     V sin_t, cos_t;
     lane_sincos(t, sin_t, cos_t);
@@ -115,7 +139,7 @@ class NearestNeighbourRows {
     }
   }
 
-  void torques(const Workspace& w, V* f) const {
+  ROTORSWEEP_HD void torques(const Workspace& w, V* f) const {
     const std::size_t n = rows_;
     for (std::size_t j = 0; j < n; ++j) {
       const std::size_t jm = (j == 0) ? n - 1 : j - 1;
@@ -124,7 +148,7 @@ class NearestNeighbourRows {
     }
   }
 
-  V energy_from_trigonometry(const Workspace& w) const {
+  ROTORSWEEP_HD V energy_from_trigonometry(const Workspace& w) const {
     V h(0.0);
     for (std::size_t j = 0; j < rows_; ++j) {
       const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
@@ -133,13 +157,13 @@ class NearestNeighbourRows {
     return h;
   }
 
-  V alignment_from_trigonometry(const Workspace& w) const {
+  ROTORSWEEP_HD V alignment_from_trigonometry(const Workspace& w) const {
     V sum(0.0);
     for (std::size_t j = 0; j < rows_; ++j) sum += w.cos_link[j];
     return V(0.5) + V(0.5 / double(rows_)) * sum;
   }
 
-  void integrands(const Workspace& w, const V* f, V* qdot) const {
+  ROTORSWEEP_HD void integrands(const Workspace& w, const V* f, V* qdot) const {
     const std::size_t n = rows_;
     if constexpr (Q.drive) {
       V sum(0.0);
@@ -160,7 +184,7 @@ class NearestNeighbourRows {
     if constexpr (Q.energy) qdot[Q.energy_index()] = energy_from_trigonometry(w);
   }
 
-  void integrand_gradients(Workspace& w, const V* f, const Jacobian& J, const V* df_dt, V* dq_dtheta,
+  ROTORSWEEP_HD void integrand_gradients(Workspace& w, const V* f, const Jacobian& J, const V* df_dt, V* dq_dtheta,
                            V* dq_dt) const {
     const std::size_t n = rows_;
     if constexpr (Q.drive) {
@@ -175,7 +199,7 @@ class NearestNeighbourRows {
     if constexpr (Q.work) {
       V* grad = dq_dtheta + Q.work_index() * n;
       for (std::size_t k = 0; k < n; ++k) w.product[k] = V(0.0);
-      J.multiply_add(w.sin_lag.data(), w.product.data());  // J symmetric: Jᵀ sin_lag
+      J.multiply_add(w.sin_lag, w.product);  // J symmetric: Jᵀ sin_lag
       V sum(0.0);
       for (std::size_t k = 0; k < n; ++k) {
         grad[k] = A_ * (w.cos_lag[k] * f[k] + w.product[k]);
@@ -186,7 +210,7 @@ class NearestNeighbourRows {
     if constexpr (Q.stokes) {
       V* grad = dq_dtheta + Q.stokes_index() * n;
       for (std::size_t k = 0; k < n; ++k) w.product[k] = V(0.0);
-      J.multiply_add(f, w.product.data());
+      J.multiply_add(f, w.product);
       V sum(0.0);
       for (std::size_t k = 0; k < n; ++k) {
         grad[k] = V(2.0) * g_ * w.product[k];
@@ -215,7 +239,7 @@ class NearestNeighbourRows {
   }
 
   std::size_t rows_;
-  V A_, g_, inv_g_;
+  V A_ = V(1.0), g_ = V(1.0), inv_g_ = V(1.0);
   V strict_fm_ = V(0.0);  ///< 1 in lanes whose member is symmetry protected
 };
 

@@ -1,10 +1,13 @@
-// Error norm and step-size control of the adaptive steppers: weighted RMS norm with angles
-// measured absolutely (they are unwrapped) and quadratures relative to their running value.
+// Error norm and step-size control of the adaptive steppers: weighted RMS norm whose weights the
+// model chooses per component (angles absolutely) and quadratures relative to their running value.
 #pragma once
 
 #include <cstddef>
 
+#include "kernels/host_device.hpp"
 #include "kernels/lane.hpp"
+#include "kernels/lane_math.hpp"
+#include "kernels/model_concept.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -21,20 +24,26 @@ struct StepLimits {
   double max_steps = 1e8;   ///< attempted steps per member before step_budget
 };
 
-/// sqrt(mean((e_i / s_i)²)) over angles (s = atol + rtol, angle units are radians) and
-/// quadratures (s = atol + rtol·max(|q|, |q_new|)).
-/// Only the quadratures flagged in `controlled` enter the norm.
-template <class V>
-V error_norm(const Tolerances& tol, std::size_t n, const V* y_error, std::size_t nq, const bool* controlled,
-             const V* q, const V* q_new, const V* q_error) {
-  const V angle_scale_inv(1.0 / (tol.atol + tol.rtol));
+/// sqrt(mean((e_i / s_i)²)) over the state components (s by the model's scale(): absolute
+/// s = atol + rtol, relative s = atol + rtol·max(|y|, |y_new|)) and the quadratures flagged in
+/// `controlled` (s = atol + rtol·max(|q|, |q_new|)).
+template <class Model, class V>
+ROTORSWEEP_HD V error_norm(const Model& model, const Tolerances& tol, const V* y, const V* y_new,
+                           const V* y_error, const bool* controlled, const V* q, const V* q_new,
+                           const V* q_error) {
+  const std::size_t n = model.dimension();
+  const V absolute_scale_inv(1.0 / (tol.atol + tol.rtol));
   V sum(0.0);
   for (std::size_t k = 0; k < n; ++k) {
-    const V r = y_error[k] * angle_scale_inv;
+    V r;
+    if (model.scale(k) == StateScale::absolute)
+      r = y_error[k] * absolute_scale_inv;
+    else
+      r = y_error[k] / (V(tol.atol) + V(tol.rtol) * lane_max(lane_abs(y[k]), lane_abs(y_new[k])));
     sum += r * r;
   }
   std::size_t terms = n;
-  for (std::size_t p = 0; p < nq; ++p) {
+  for (std::size_t p = 0; p < Model::quadrature_count; ++p) {
     if (!controlled[p]) continue;
     ++terms;
     const V scale = V(tol.atol) + V(tol.rtol) * lane_max(lane_abs(q[p]), lane_abs(q_new[p]));
@@ -47,9 +56,9 @@ V error_norm(const Tolerances& tol, std::size_t n, const V* y_error, std::size_t
 /// Factor by which to scale h after an attempt with this error norm (elementary controller,
 /// exponent 1/(embedded order + 1)); non-finite errors shrink as much as allowed.
 template <class V>
-V step_factor(const StepLimits& limits, int embedded_order, V err, lane_mask<V> accepted) {
-  const V tiny(1e-300);
-  V factor = V(limits.safety) * lane_pow(lane_max(err, tiny), -1.0 / double(embedded_order + 1));
+ROTORSWEEP_HD V step_factor(const StepLimits& limits, int embedded_order, V err, lane_mask<V> accepted) {
+  const V bounded = lane_min(lane_max(err, V(1e-300)), V(1e300));
+  V factor = V(limits.safety) * lane_pow(bounded, -1.0 / double(embedded_order + 1));
   factor = lane_min(factor, lane_select(accepted, V(limits.grow_max), V(1.0)));
   factor = lane_max(factor, V(limits.shrink_min));
   return lane_select(lane_isfinite(err), factor, V(limits.shrink_min));

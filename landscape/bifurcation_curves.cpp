@@ -6,6 +6,8 @@
 #include <limits>
 #include <numbers>
 
+#include "landscape/bisection.hpp"
+
 namespace rotorsweep::landscape {
 
 namespace {
@@ -13,23 +15,11 @@ namespace {
 constexpr double pi = std::numbers::pi;
 
 /// A cos(χ − τ) = C, A sin(χ − τ) = S  ⇒  A = √(C² + S²), τ = χ − atan2(S, C).
-CurvePoint from_stationarity(double chi, double C, double S, double parameter) {
+BifurcationPoint from_stationarity(double chi, double C, double S, double parameter) {
   return {std::hypot(C, S), fundamental_phase(chi - std::atan2(S, C)), parameter};
 }
 
 double quartic(double y) { return (((256 * y - 384) * y + 16) * y + 54) * y - 9; }
-
-/// Root of `f` in [a, b] with f(a) f(b) < 0, by bisection to the last bit.
-template <class F>
-double bisect(F f, double a, double b) {
-  const bool rising = f(a) < 0;
-  for (int i = 0; i < 200; ++i) {
-    const double m = 0.5 * (a + b);
-    if (m <= a || m >= b) break;
-    ((f(m) < 0) == rising ? a : b) = m;
-  }
-  return 0.5 * (a + b);
-}
 
 }  // namespace
 
@@ -61,13 +51,13 @@ DegeneratePoint off_diagonal_degenerate_point(double zeta, int sign) {
   return {std::hypot(C, S), chi - std::atan2(S, C), chi, zeta};
 }
 
-CurvePoint off_diagonal_point(double zeta, int sign) {
+BifurcationPoint off_diagonal_point(double zeta, int sign) {
   const auto p = off_diagonal_degenerate_point(zeta, sign);
   return {p.A, fundamental_phase(p.tau), zeta};
 }
 
-std::vector<CurvePoint> sample_curve(Curve curve, int count, double A_max) {
-  std::vector<CurvePoint> points;
+std::vector<BifurcationPoint> sample_curve(Curve curve, int count, double A_max) {
+  std::vector<BifurcationPoint> points;
   points.reserve(count);
   for (int i = 0; i < count; ++i) {
     const double u = count > 1 ? double(i) / (count - 1) : 0.0;
@@ -109,8 +99,9 @@ double lower_curve_zeta0() {
     constexpr int cells = 1000;
     for (int i = 0; i < cells; ++i) {
       const double a = double(i) / cells, b = double(i + 1) / cells;
-      if ((quartic(a) < 0) == (quartic(b) < 0)) continue;
-      const double y = bisect(quartic, a, b);
+      const bool rising = quartic(a) < 0;
+      if (rising == (quartic(b) < 0)) continue;
+      const double y = bisect([&](double x) { return (quartic(x) < 0) == rising; }, a, b);
       const double residual = std::fabs(unsquared(y, 1)) / (std::fabs(unsquared(y, -1)) + 1e-300);
       if (residual < best_residual) best = y, best_residual = residual;
     }

@@ -16,7 +16,8 @@ inline constexpr Curve all_curves[] = {Curve::fm_tangential, Curve::fm_transvers
                                        Curve::off_diagonal_minus, Curve::alignment};
 std::string_view curve_name(Curve curve);
 
-struct CurvePoint {
+/// A point of one of the curves in the folded (A, τ) plane.
+struct BifurcationPoint {
   double A = 0;
   double tau = 0;        ///< in [0, π/2]
   double parameter = 0;  ///< χ for the strict-FM curves, ζ off-diagonal, τ for the alignment curve
@@ -35,12 +36,12 @@ struct DegeneratePoint {
 DegeneratePoint off_diagonal_degenerate_point(double zeta, int sign);
 
 /// The same point on the folded curve.
-CurvePoint off_diagonal_point(double zeta, int sign);
+BifurcationPoint off_diagonal_point(double zeta, int sign);
 
 /// `count` points of a curve, uniform in its parameter: χ ∈ [0, π/2] (strict FM; χ → −χ and
 /// χ → χ + π give the same folded points), ζ ∈ (0, 1] (off-diagonal, only where x± ≤ 1 and
 /// A ≤ A_max), τ ∈ [0, π/2] (alignment).
-std::vector<CurvePoint> sample_curve(Curve curve, int count, double A_max = 1e300);
+std::vector<BifurcationPoint> sample_curve(Curve curve, int count, double A_max = 1e300);
 
 /// A_- = min over ζ of the lower off-diagonal curve A_L(ζ): ζ0² is the root of
 /// 256y⁴ − 384y³ + 16y² + 54y − 9 that satisfies the unsquared stationarity condition.

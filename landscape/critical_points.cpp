@@ -4,20 +4,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
+#include "kernels/angles.hpp"
 #include "landscape/trig_roots.hpp"
 
 namespace rotorsweep::landscape {
 
 namespace {
 
-constexpr double two_pi = 2 * std::numbers::pi;
-
-double wrap(double x) { return x - two_pi * std::floor(x / two_pi); }
+using kernels::two_pi;
+using kernels::wrap_2pi;
 
 double torus_distance(double a, double b) {
-  const double d = std::fabs(wrap(a - b));
+  const double d = std::fabs(wrap_2pi(a - b));
   return std::min(d, two_pi - d);
 }
 
@@ -42,8 +41,8 @@ CriticalSet critical_points(const TwoAngleEnergy& h) {
   const double A = h.A, tau = h.tau;
   CriticalSet set;
   const auto add = [&](double even, double odd, AlignmentClass alignment) {
-    even = wrap(even);
-    odd = wrap(odd);
+    even = wrap_2pi(even);
+    odd = wrap_2pi(odd);
     for (const auto& p : set.points)
       if (torus_distance(p.even, even) < 1e-7 && torus_distance(p.odd, odd) < 1e-7) return;
     CriticalPoint p{even,
@@ -56,8 +55,7 @@ CriticalSet critical_points(const TwoAngleEnergy& h) {
     set.points.push_back(p);
   };
 
-  for (double chi :
-       trig_polynomial_roots([&](double x) { return 3 * std::sin(2 * x) - A * std::sin(x - tau); }, 2))
+  for (double chi : trig_polynomial_roots([&](double x) { return h.strict_fm_stationarity(x); }, 2))
     add(chi, chi, AlignmentClass::strict_fm);
 
   const auto denominator = [](double x) { return 6 * std::cos(2 * x) - 4; };

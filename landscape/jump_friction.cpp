@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "landscape/bifurcation_curves.hpp"
+#include "landscape/bisection.hpp"
 #include "landscape/critical_points.hpp"
 #include "landscape/trig_roots.hpp"
 #include "landscape/two_angle_energy.hpp"
@@ -19,14 +20,9 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
 double lower_curve_zeta(double A) {
-  double lo = lower_curve_zeta0(), hi = 1;
   if (!(A >= A_minus() && A <= A_star())) return nan;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid <= lo || mid >= hi) break;
-    (off_diagonal_degenerate_point(mid, -1).A < A ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
+  const auto below = [&](double zeta) { return off_diagonal_degenerate_point(zeta, -1).A < A; };
+  return bisect(below, lower_curve_zeta0(), 1);
 }
 
 JumpEvents jump_events(double A) {
@@ -51,9 +47,9 @@ JumpEvents jump_events(double A) {
   e.tau_low = lower.tau;
   e.energy_low = (3 * std::cos(2 * lower.chi) - 2) * (1 + 2 * e.zeta_low * e.zeta_low);
   lowest = std::numeric_limits<double>::infinity();
-  const auto fm_stationarity = [&](double x) { return 3 * std::sin(2 * x) - A * std::sin(x - e.tau_low); };
-  for (double chi : trig_polynomial_roots(fm_stationarity, 2))
-    lowest = std::min(lowest, TwoAngleEnergy{A, e.tau_low}.energy(chi, chi));
+  const TwoAngleEnergy h{A, e.tau_low};
+  for (double chi : trig_polynomial_roots([&](double x) { return h.strict_fm_stationarity(x); }, 2))
+    lowest = std::min(lowest, h.energy(chi, chi));
   e.landing_low = lowest;
 
   e.J = (e.energy_fm_transverse - e.landing_transverse) + (e.energy_low - e.landing_low);

@@ -6,14 +6,15 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <numbers>
+
+#include "kernels/angles.hpp"
 
 namespace rotorsweep::landscape {
 
 namespace {
 
 using complex = std::complex<double>;
-constexpr double two_pi = 2 * std::numbers::pi;
+using kernels::two_pi;
 
 }  // namespace
 
@@ -63,7 +64,7 @@ std::vector<double> trig_polynomial_roots(const std::function<double(double)>& p
       x -= step;
       if (std::fabs(step) < 1e-15) break;
     }
-    x = x - two_pi * std::floor(x / two_pi);
+    x = kernels::wrap_2pi(x);
     if (std::fabs(value(x)) > tolerance * scale) continue;
     const bool known = std::any_of(roots.begin(), roots.end(), [&](double r) {
       const double d = std::fabs(r - x);

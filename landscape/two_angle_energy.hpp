@@ -25,6 +25,10 @@ struct TwoAngleEnergy {
             3 * std::sin(2 * odd) + link - A * std::sin(odd - tau)};
   }
 
+  /// ∂H/∂θe = ∂H/∂θo on the diagonal θe = θo = χ: 3 sin 2χ − A sin(χ − τ), the trigonometric
+  /// polynomial of degree 2 whose roots are the strict-FM critical points.
+  double strict_fm_stationarity(double chi) const { return 3 * std::sin(2 * chi) - A * std::sin(chi - tau); }
+
   /// (H_ee, H_eo, H_oo)
   std::array<double, 3> hessian(double even, double odd) const {
     const double link = 2 * std::cos(even - odd);

@@ -18,11 +18,11 @@ TEST_CASE("points aggregate their replicas", "[ensemble][curves]") {
   const Regime regimes[] = {Regime::fm, Regime::fm, Regime::cp, Regime::afm,
                             Regime::cp, Regime::cp, Regime::cp, Regime::unsettled};
   for (std::size_t i = 0; i < results.size(); ++i) {
-    results[i].dissipation = D[i];
+    results[i].summary(Summary::mean, Channel::dissipation) = D[i];
     results[i].regime = regimes[i];
   }
   results[7].status = rotorsweep::kernels::LaneStatus::non_finite;
-  results[7].dissipation = NAN;
+  results[7].summary(Summary::mean, Channel::dissipation) = NAN;
   const auto curves = aggregate_curves(members, results, scene.replicas);
   REQUIRE(curves.size() == 2);
   CHECK(curves[0].A == 1);

@@ -17,9 +17,9 @@ TEST_CASE("D per period is unchanged over 10^4 periods with wrapped angles", "[e
   const auto outcome = run_sweep(scene, plan_members(scene), 1, nullptr);
   const auto& periods = outcome.results[0].periods;
   REQUIRE(periods.size() == 10000);
-  const double reference = periods[10].dissipation;
+  const double reference = periods[10].dissipation();
   double worst = 0;
   for (std::size_t k = 10; k < periods.size(); ++k)
-    worst = std::max(worst, std::fabs(periods[k].dissipation / reference - 1));
+    worst = std::max(worst, std::fabs(periods[k].dissipation() / reference - 1));
   CHECK(worst < 1e-9);
 }

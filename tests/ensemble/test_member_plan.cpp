@@ -26,7 +26,7 @@ TEST_CASE("members are A × g × kinds × replicas, replicas innermost", "[ensem
 
 TEST_CASE("a member's initial angles depend on its index and the seed only", "[ensemble][plan]") {
   Scene scene;
-  scene.rows = 6;
+  scene.row_counts = {6};
   scene.A_values = {1, 2};
   scene.g_values = {0.1};
   scene.kinds = {InitialKind::random};

@@ -11,11 +11,11 @@ namespace {
 
 PeriodRecord period(double D, double rho_min, double rho_max, double slips) {
   PeriodRecord p;
-  p.dissipation = D;
-  p.alignment_min = rho_min;
-  p.alignment_max = rho_max;
-  p.alignment_mean = (rho_min + rho_max) / 2;
-  p.slips = slips;
+  p[Channel::dissipation] = D;
+  p[Channel::alignment_min] = rho_min;
+  p[Channel::alignment_max] = rho_max;
+  p[Channel::alignment_mean] = (rho_min + rho_max) / 2;
+  p[Channel::slips] = slips;
   return p;
 }
 
@@ -45,12 +45,12 @@ TEST_CASE("successive periods agree to a relative tolerance", "[ensemble][steady
 TEST_CASE("summaries average the last periods only", "[ensemble][summary]") {
   MemberResult r;
   summarize({period(100, 0.0, 1.0, 9), period(2, 0.0, 0.2, 0), period(4, 0.1, 0.3, 0)}, 2, true, r);
-  CHECK(r.dissipation == 3);
-  CHECK(r.dissipation_std == 1);  // population spread of {2, 4}
-  CHECK(r.alignment_min == 0.0);
-  CHECK(r.alignment_max == 0.3);
-  CHECK(r.alignment_mean == Approx((0.1 + 0.2) / 2));
-  CHECK(r.slips_per_period == 0);
+  CHECK(r.dissipation() == 3);
+  CHECK(r.dissipation_std() == 1);  // population spread of {2, 4}
+  CHECK(r.alignment_min() == 0.0);
+  CHECK(r.alignment_max() == 0.3);
+  CHECK(r.alignment_mean() == Approx((0.1 + 0.2) / 2));
+  CHECK(r.slips_per_period() == 0);
   CHECK(r.regime == Regime::afm);
 
   MemberResult unclassified;
@@ -64,6 +64,6 @@ TEST_CASE("summaries average the last periods only", "[ensemble][summary]") {
 
   MemberResult failed;
   summarize({}, 2, true, failed);
-  CHECK(std::isnan(failed.dissipation));
-  CHECK(std::isnan(failed.alignment_mean));
+  CHECK(std::isnan(failed.dissipation()));
+  CHECK(std::isnan(failed.alignment_mean()));
 }

@@ -28,10 +28,10 @@ TEMPLATE_TEST_CASE("a slip is a run of fast steps, counted once", "[ensemble][re
   step(-2.0, 0.01, accepted);  // a second slip (either direction)
   PeriodRecord record;
   slips.end_period(0, record);
-  CHECK(record.slips == 2);
+  CHECK(record.slips() == 2);
   step(-2.0, 0.01, accepted);  // the slip goes on across the period boundary: not a new one
   slips.end_period(0, record);
-  CHECK(record.slips == 0);
+  CHECK(record.slips() == 0);
 }
 
 TEMPLATE_TEST_CASE("alignment extremes follow accepted steps", "[ensemble][reducers]", double, simd_lane) {
@@ -46,8 +46,8 @@ TEMPLATE_TEST_CASE("alignment extremes follow accepted steps", "[ensemble][reduc
   extrema.accumulate(accepted, V(0.3));
   PeriodRecord record;
   extrema.end_period(0, record);
-  CHECK(record.alignment_min == 0.2);
-  CHECK(record.alignment_max == 0.7);
+  CHECK(record.alignment_min() == 0.2);
+  CHECK(record.alignment_max() == 0.7);
   CHECK(lane_get(extrema.min, 0) == 0.3);  // the next period starts where this one ended
   CHECK(lane_get(extrema.max, 0) == 0.3);
 }

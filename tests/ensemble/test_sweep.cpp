@@ -38,13 +38,13 @@ void require_identical(const std::vector<MemberResult>& a, const std::vector<Mem
   for (std::size_t i = 0; i < a.size(); ++i) {
     INFO("member " << i);
     CHECK(a[i].index == i);
-    CHECK(same_bits(a[i].dissipation, b[i].dissipation));
-    CHECK(same_bits(a[i].dissipation_work, b[i].dissipation_work));
-    CHECK(same_bits(a[i].dissipation_stokes, b[i].dissipation_stokes));
-    CHECK(same_bits(a[i].alignment_min, b[i].alignment_min));
-    CHECK(same_bits(a[i].alignment_mean, b[i].alignment_mean));
-    CHECK(same_bits(a[i].energy_mean, b[i].energy_mean));
-    CHECK(a[i].slips_per_period == b[i].slips_per_period);
+    CHECK(same_bits(a[i].dissipation(), b[i].dissipation()));
+    CHECK(same_bits(a[i].mean(rotorsweep::ensemble::Channel::work), b[i].mean(rotorsweep::ensemble::Channel::work)));
+    CHECK(same_bits(a[i].mean(rotorsweep::ensemble::Channel::stokes), b[i].mean(rotorsweep::ensemble::Channel::stokes)));
+    CHECK(same_bits(a[i].alignment_min(), b[i].alignment_min()));
+    CHECK(same_bits(a[i].alignment_mean(), b[i].alignment_mean()));
+    CHECK(same_bits(a[i].mean(rotorsweep::ensemble::Channel::energy_mean), b[i].mean(rotorsweep::ensemble::Channel::energy_mean)));
+    CHECK(a[i].slips_per_period() == b[i].slips_per_period());
     CHECK(a[i].regime == b[i].regime);
     CHECK(a[i].status == b[i].status);
     CHECK(a[i].steps_accepted == b[i].steps_accepted);
@@ -86,12 +86,12 @@ TEST_CASE("every member runs its schedule and reports sane observables", "[ensem
     CHECK(r.status == rotorsweep::kernels::LaneStatus::ok);
     CHECK(r.periods_run == 4);
     REQUIRE(r.periods.size() == 4);
-    CHECK(r.dissipation == Approx((r.periods[2].dissipation + r.periods[3].dissipation) / 2).epsilon(1e-14));
-    CHECK(r.dissipation > 0);
-    CHECK(r.alignment_min <= r.alignment_mean + 1e-9);
-    CHECK(r.alignment_mean <= r.alignment_max + 1e-9);
-    CHECK(r.alignment_min >= 0);
-    CHECK(r.alignment_max <= 1);
+    CHECK(r.dissipation() == Approx((r.periods[2].dissipation() + r.periods[3].dissipation()) / 2).epsilon(1e-14));
+    CHECK(r.dissipation() > 0);
+    CHECK(r.alignment_min() <= r.alignment_mean() + 1e-9);
+    CHECK(r.alignment_mean() <= r.alignment_max() + 1e-9);
+    CHECK(r.alignment_min() >= 0);
+    CHECK(r.alignment_max() <= 1);
     for (double theta : r.theta_final) CHECK((theta >= 0 && theta < 2 * M_PI));
   }
 }
@@ -107,8 +107,8 @@ TEST_CASE("steady_tol retires members once successive periods agree", "[ensemble
     CHECK(r.periods_run >= 2);
     CHECK(r.periods_run <= 12);
     if (r.settled) {
-      const double now = r.periods[r.periods.size() - 1].dissipation;
-      const double before = r.periods[r.periods.size() - 2].dissipation;
+      const double now = r.periods[r.periods.size() - 1].dissipation();
+      const double before = r.periods[r.periods.size() - 2].dissipation();
       CHECK(std::fabs(now - before) <= 1e-4 * std::max(std::fabs(now), std::fabs(before)));
       early += r.periods_run < 12;
     } else {
@@ -134,11 +134,11 @@ TEST_CASE("a failing member is isolated from its lane neighbours", "[ensemble][s
     if (steps[i] >= budget) {
       ++failed;
       CHECK(r.status == rotorsweep::kernels::LaneStatus::step_budget);
-      CHECK(std::isnan(r.dissipation));
+      CHECK(std::isnan(r.dissipation()));
       CHECK(r.regime == Regime::unsettled);
     } else {
       CHECK(r.status == rotorsweep::kernels::LaneStatus::ok);
-      CHECK(same_bits(r.dissipation, free.results[i].dissipation));
+      CHECK(same_bits(r.dissipation(), free.results[i].dissipation()));
     }
   }
   CHECK(failed >= int(steps.size()) / 2);
@@ -161,7 +161,7 @@ TEST_CASE("a subset of the plan gives the same bits as the whole plan", "[ensemb
     INFO("member " << every_third[i].index);
     CHECK(part.results[i].index == every_third[i].index);
     CHECK(part.results[i].theta_final.size() == every_third[i].rows);
-    CHECK(same_bits(part.results[i].dissipation, expected[i].dissipation));
+    CHECK(same_bits(part.results[i].dissipation(), expected[i].dissipation()));
     CHECK(part.results[i].theta_final == expected[i].theta_final);
   }
 }

@@ -30,12 +30,12 @@ TEST_CASE("an exact strict-FM start stays strict FM in every stepper", "[ensembl
       INFO(stepper << " A = " << A);
       REQUIRE(r.status == rotorsweep::kernels::LaneStatus::ok);
       for (double theta : r.theta_final) CHECK(theta == r.theta_final[0]);
-      CHECK(r.alignment_min == Approx(1.0).margin(1e-14));  // cos²+sin² to rounding
+      CHECK(r.alignment_min() == Approx(1.0).margin(1e-14));  // cos²+sin² to rounding
       // Jumps of the single-rotor landscape exist for 3 <= A <= 6. Above 6 the state turns
       // smoothly, at most A/(A - 6) times the drive's rate, which the slip threshold of 10
       // counts as a slip only up to A = 6⅔.
-      if (A < 3 || A > 6.0 + 6.0 / 9.0) CHECK(r.slips_per_period == 0);
-      if (A > 3 && A <= 6) CHECK(r.slips_per_period > 0);
+      if (A < 3 || A > 6.0 + 6.0 / 9.0) CHECK(r.slips_per_period() == 0);
+      if (A > 3 && A <= 6) CHECK(r.slips_per_period() > 0);
     }
   }
 }
@@ -47,7 +47,7 @@ TEST_CASE("with noise the CP regime leaves the strict-FM set", "[ensemble][symme
     INFO("A = " << 0.25 * double(r.index + 1));
     if (r.regime != Regime::cp) continue;
     ++cp;
-    CHECK(r.alignment_min < 0.99);
+    CHECK(r.alignment_min() < 0.99);
   }
   CHECK(cp >= 10);
 }

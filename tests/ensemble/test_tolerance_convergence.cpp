@@ -17,10 +17,10 @@ TEST_CASE("D converges as the tolerance tightens outside CP", "[ensemble][tolera
   const auto outcome = run_sweep(scene, members, 2, nullptr);
   for (std::size_t a = 0; a < 2; ++a) {
     // members are variant-major: the same A (and noise draw) at rtol 1e-6, 1e-8, 1e-10, 1e-12
-    const double reference = outcome.results[6 + a].dissipation;
+    const double reference = outcome.results[6 + a].dissipation();
     double previous = INFINITY;
     for (std::size_t v = 0; v < 3; ++v) {
-      const double deviation = std::fabs(outcome.results[2 * v + a].dissipation / reference - 1);
+      const double deviation = std::fabs(outcome.results[2 * v + a].dissipation() / reference - 1);
       INFO("A = " << members[a].A << " rtol " << members[2 * v + a].rtol << " deviation " << deviation);
       CHECK(deviation < previous);
       previous = deviation;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "io/scene_parser.hpp"
+#include "kernels/stepper_list.hpp"
 #include "support/scene_text.hpp"
 
 using rotorsweep::io::parse_scene_file;
@@ -28,7 +29,7 @@ std::string error_of(const std::string& text) {
 
 TEST_CASE("a minimal scene gets the documented defaults", "[io][scene]") {
   const auto scene = parse_scene_text(minimal, "test.toml");
-  CHECK(scene.rows == 20);
+  CHECK(scene.row_counts.front() == 20);
   CHECK(scene.A_values == std::vector<double>{1.0, 2.0});
   CHECK(scene.g_values == std::vector<double>{0.001});
   CHECK(scene.kinds == std::vector{rotorsweep::ensemble::InitialKind::afm});
@@ -37,13 +38,13 @@ TEST_CASE("a minimal scene gets the documented defaults", "[io][scene]") {
   CHECK(scene.relax_periods == 2);
   CHECK(scene.average_periods == 2);
   CHECK(scene.steady_tol == 0);
-  CHECK(scene.rtol == 1e-6);
-  CHECK(scene.atol == 1e-9);
-  CHECK(scene.stepper == rotorsweep::kernels::StepperKind::rodas4);
-  CHECK(scene.dissipation);
-  CHECK(scene.alignment);
-  CHECK(scene.slips);
-  CHECK_FALSE(scene.energy);
+  CHECK(scene.rtol_values.front() == 1e-6);
+  CHECK(scene.atol_values.front() == 1e-9);
+  CHECK(rotorsweep::kernels::stepper_names[scene.stepper] == "rodas4");
+  CHECK(scene.has(rotorsweep::ensemble::Observable::dissipation));
+  CHECK(scene.has(rotorsweep::ensemble::Observable::alignment));
+  CHECK(scene.has(rotorsweep::ensemble::Observable::slips));
+  CHECK_FALSE(scene.has(rotorsweep::ensemble::Observable::energy));
   CHECK_FALSE(scene.period_series);
   CHECK(scene.text == minimal);
   CHECK(scene.member_count() == 2);
@@ -81,10 +82,10 @@ TEST_CASE("every option is read from its key", "[io][scene]") {
   CHECK(scene.steady_tol == 1e-5);
   CHECK(scene.max_periods == 9);
   CHECK_FALSE(scene.refill);
-  CHECK(scene.energy);
-  CHECK(scene.estimators);
+  CHECK(scene.has(rotorsweep::ensemble::Observable::energy));
+  CHECK(scene.has(rotorsweep::ensemble::Observable::estimators));
   CHECK(scene.slip_rate == 4);
-  CHECK(scene.stepper == rotorsweep::kernels::StepperKind::ros2);
+  CHECK(rotorsweep::kernels::stepper_names[scene.stepper] == "ros2");
   CHECK(scene.lanes == rotorsweep::ensemble::LaneKind::scalar);
   CHECK(scene.h_max == 0.25);
   CHECK(scene.output_path == "x.h5");

@@ -2,6 +2,8 @@
 // angles and in all quadrature states, from fixed-step runs on a smooth, mildly stiff case.
 #include <algorithm>
 #include <catch2/catch.hpp>
+
+#include "support/kernel_scratch.hpp"
 #include <cmath>
 #include <vector>
 
@@ -20,7 +22,8 @@ constexpr std::size_t nq = Model::quadrature_count;
 // Fixed-step integration over [0.3, 1.3]; returns the angles followed by the quadratures.
 template <class Stepper>
 std::vector<double> fixed_steps(const Model& m, int steps) {
-  Stepper stepper(m);
+  auto arena = rotorsweep::testing::scratch<double>(Stepper::storage_size(m.dimension()));
+  Stepper stepper(m, arena);
   const std::size_t n = m.dimension();
   auto y = rotorsweep::testing::initial_angles(n, rotorsweep::testing::Start::afm, 0.4);
   std::vector<double> q(nq, 0.0), y_new(n), q_new(nq), y_err(n), q_err(nq);

@@ -2,6 +2,8 @@
 // Eigen LU on the same matrix, for every size down to the two-row case.
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
+
+#include "support/kernel_scratch.hpp"
 #include <random>
 
 #include "kernels/cyclic_tridiagonal.hpp"
@@ -29,7 +31,7 @@ TEST_CASE("cyclic tridiagonal solve matches a dense LU", "[kernels][linear]") {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (std::size_t n : {2u, 3u, 4u, 5u, 8u, 20u, 64u}) {
     for (double shift : {3.0, 40.0, 1e4}) {
-      CyclicTridiagonal<double> J(n);
+      auto J = rotorsweep::testing::jacobian<CyclicTridiagonal<double>>(n);
       for (std::size_t k = 0; k < n; ++k) {
         J.diag(k) = -2.0 + u(rng);  // negative definite-ish, as near stable states
         J.off(k) = 0.9 * u(rng);
@@ -55,7 +57,7 @@ TEST_CASE("cyclic tridiagonal product matches the dense matrix", "[kernels][line
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (std::size_t n : {2u, 3u, 6u}) {
-    CyclicTridiagonal<double> J(n);
+    auto J = rotorsweep::testing::jacobian<CyclicTridiagonal<double>>(n);
     for (std::size_t k = 0; k < n; ++k) {
       J.diag(k) = u(rng);
       J.off(k) = u(rng);
@@ -71,7 +73,7 @@ TEST_CASE("cyclic tridiagonal product matches the dense matrix", "[kernels][line
 
 TEST_CASE("marked lanes keep all-equal solutions exactly equal", "[kernels][linear][symmetry]") {
   for (std::size_t n : {2u, 3u, 20u, 1024u}) {
-    CyclicTridiagonal<double> J(n);
+    auto J = rotorsweep::testing::jacobian<CyclicTridiagonal<double>>(n);
     for (std::size_t k = 0; k < n; ++k) {
       J.diag(k) = -2.7;
       J.off(k) = 0.3;
@@ -107,7 +109,7 @@ TEST_CASE("negative pivots flag eigenvalues of J above the shift (Sylvester iner
   int indefinite = 0, definite = 0;
   for (std::size_t n : {2u, 3u, 8u, 33u}) {
     for (int trial = 0; trial < 40; ++trial) {
-      CyclicTridiagonal<double> J(n);
+      auto J = rotorsweep::testing::jacobian<CyclicTridiagonal<double>>(n);
       for (std::size_t k = 0; k < n; ++k) {
         J.diag(k) = 2.0 * u(rng);
         J.off(k) = u(rng);

@@ -2,6 +2,8 @@
 // monotonically along every accepted step, for each stepper.
 #include <catch2/catch.hpp>
 
+#include "support/kernel_scratch.hpp"
+
 #include "kernels/adaptive_integrator.hpp"
 #include "kernels/dormand_prince.hpp"
 #include "kernels/rosenbrock.hpp"
@@ -19,6 +21,9 @@ struct FrozenDrive {
   using lane_type = double;
   using Jacobian = Model::Jacobian;
   using Workspace = Model::Workspace;
+  using Parameters = Model::Parameters;
+  static constexpr double period = Model::period;
+  static constexpr Integrals integrals = Model::integrals;
   static constexpr std::size_t quadrature_count = Model::quadrature_count;
   static constexpr auto error_controlled = Model::error_controlled;
 
@@ -26,7 +31,8 @@ struct FrozenDrive {
   double phase;
 
   std::size_t dimension() const { return model.dimension(); }
-  Workspace make_workspace() const { return model.make_workspace(); }
+  static constexpr StateScale scale(std::size_t k) { return Model::scale(k); }
+  void set_lane(std::size_t lane, const Parameters& p) { model.set_lane(lane, p); }
   void evaluate(Workspace& w, const double* y, double, double* f, double* q) const {
     model.evaluate(w, y, phase, f, q);
   }
@@ -42,18 +48,18 @@ template <class Stepper>
 void check_energy_descent(double A, double g) {
   const std::size_t rows = 12;
   const FrozenDrive system{Model(rows, A, g), 0.9};
-  AdaptiveIntegrator<FrozenDrive, Stepper> integrator(system, {1e-8, 1e-11});
-  LaneState<double> s(rows, FrozenDrive::quadrature_count);
+  auto integrator = rotorsweep::testing::integrator<AdaptiveIntegrator<FrozenDrive, Stepper>>(system, {1e-8, 1e-11});
+  auto s = rotorsweep::testing::lane_state<double>(rows, FrozenDrive::quadrature_count);
   const auto theta = rotorsweep::testing::initial_angles(rows, rotorsweep::testing::Start::afm, 1.0, 17);
   for (std::size_t j = 0; j < rows; ++j) s.theta[j] = theta[j];
   s.t_stop = 5.0;
-  auto w = system.make_workspace();
-  double previous = system.model.energy(w, s.theta.data(), system.phase);
+  auto w = rotorsweep::testing::workspace(system.model);
+  double previous = system.model.energy(w, s.theta, system.phase);
   const double start = previous;
   int steps = 0;
   while (s.t < s.t_stop) {
     if (!integrator.attempt(system, s)) continue;
-    const double now = system.model.energy(w, s.theta.data(), system.phase);
+    const double now = system.model.energy(w, s.theta, system.phase);
     CHECK(now <= previous + 1e-12 * std::fabs(previous));
     previous = now;
     ++steps;

@@ -1,6 +1,8 @@
-// Tests of the row model (kernels/row_model.hpp, model.md §1 and §3): the Jacobian, ∂f/∂t and
+// Tests of the row model (kernels/row_model.hpp, docs/model.md §1 and §3): the Jacobian, ∂f/∂t and
 // the integrand gradients against central differences; f = -∇H/g; N = 2 is the two-angle H_r.
 #include <catch2/catch.hpp>
+
+#include "support/kernel_scratch.hpp"
 #include <cmath>
 #include <random>
 #include <vector>
@@ -28,7 +30,7 @@ struct Evaluation {
 };
 
 Evaluation evaluate(const Model& m, std::vector<double> theta, double t) {
-  auto w = m.make_workspace();
+  auto w = rotorsweep::testing::workspace(m);
   Evaluation e{std::vector<double>(theta.size()), std::vector<double>(nq)};
   m.evaluate(w, theta.data(), t, e.f.data(), e.q.data());
   return e;
@@ -42,9 +44,9 @@ TEST_CASE("Jacobian, df/dt and integrand gradients match central differences", "
     const auto theta = random_angles(n, unsigned(n));
     const double t = 1.9, eps = 1e-6;
 
-    auto w = m.make_workspace();
+    auto w = rotorsweep::testing::workspace(m);
     std::vector<double> f(n), q(nq), df_dt(n), dq_dy(nq * n), dq_dt(nq);
-    Model::Jacobian J(n);
+    auto J = rotorsweep::testing::jacobian<Model::Jacobian>(n);
     m.linearize(w, theta.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
 
     for (std::size_t k = 0; k < n; ++k) {
@@ -78,7 +80,7 @@ TEST_CASE("the flow is the gradient of the energy: g f = -dH/dtheta", "[kernels]
   const Model m(n, 2.0, g);
   const auto theta = random_angles(n, 3);
   const auto e = evaluate(m, theta, t);
-  auto w = m.make_workspace();
+  auto w = rotorsweep::testing::workspace(m);
   for (std::size_t k = 0; k < n; ++k) {
     auto plus = theta, minus = theta;
     plus[k] += eps;
@@ -91,7 +93,7 @@ TEST_CASE("the flow is the gradient of the energy: g f = -dH/dtheta", "[kernels]
 TEST_CASE("two rows reduce to the two-angle landscape H_r and its alignment", "[kernels][model]") {
   const double A = 5.5, te = 0.8, to = 2.9, tau = 1.3;
   const Model m(2, A, 1.0);
-  auto w = m.make_workspace();
+  auto w = rotorsweep::testing::workspace(m);
   const double theta[2] = {te, to};
   const double H_r = -1.5 * (std::cos(2 * te) + std::cos(2 * to)) + 2 * std::cos(te - to) +
                      A * (std::cos(te - tau) + std::cos(to - tau));

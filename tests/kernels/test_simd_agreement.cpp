@@ -1,11 +1,14 @@
 // Scalar and SIMD instantiations of the same kernel source agree: right-hand side, Jacobian,
 // one step of every stepper, and whole adaptive runs with different parameters in each lane.
 #include <catch2/catch.hpp>
+
+#include "support/kernel_scratch.hpp"
 #include <cmath>
 #include <vector>
 
 #include "kernels/dormand_prince.hpp"
 #include "kernels/rosenbrock.hpp"
+#include "kernels/angles.hpp"
 #include "kernels/row_model.hpp"
 #include "support/member_run.hpp"
 
@@ -47,14 +50,16 @@ void check_close(double simd, double scalar, double tol) {
 template <template <class> class Stepper>
 void check_one_step() {
   const Simd vm = simd_model();
-  Stepper<Simd> vs(vm);
+  auto simd_arena = rotorsweep::testing::scratch<simd_lane>(Stepper<Simd>::storage_size(rows));
+  Stepper<Simd> vs(vm, simd_arena);
   auto theta = gather_theta();
   lane_vector<simd_lane> q(nq, simd_lane(0.1)), y_new(rows), q_new(nq), y_err(rows), q_err(nq);
   const simd_lane t = lane_from<simd_lane>(lane_t), h(0.05);
   vs.attempt(vm, t, h, theta.data(), q.data(), y_new.data(), q_new.data(), y_err.data(), q_err.data());
   for (std::size_t l = 0; l < W; ++l) {
     const Scalar sm(rows, lane_A(l), lane_g(l));
-    Stepper<Scalar> ss(sm);
+    auto scalar_arena = rotorsweep::testing::scratch<double>(Stepper<Scalar>::storage_size(rows));
+    Stepper<Scalar> ss(sm, scalar_arena);
     auto y = lane_theta(l);
     std::vector<double> sq(nq, 0.1), sy_new(rows), sq_new(nq), sy_err(rows), sq_err(nq);
     ss.attempt(sm, lane_t(l), 0.05, y.data(), sq.data(), sy_new.data(), sq_new.data(), sy_err.data(),
@@ -71,20 +76,20 @@ void check_one_step() {
 
 TEST_CASE("SIMD right-hand side and Jacobian equal the scalar ones lane by lane", "[kernels][simd]") {
   const Simd vm = simd_model();
-  auto vw = vm.make_workspace();
+  auto vw = rotorsweep::testing::workspace(vm);
   auto theta = gather_theta();
   lane_vector<simd_lane> f(rows), q(nq), df_dt(rows), dq_dy(nq * rows), dq_dt(nq);
-  Simd::Jacobian J(rows);
+  auto J = rotorsweep::testing::jacobian<Simd::Jacobian>(rows);
   const simd_lane t = lane_from<simd_lane>(lane_t);
   vm.linearize(vw, theta.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
   const simd_lane energy = vm.energy(vw, theta.data(), t);
 
   for (std::size_t l = 0; l < W; ++l) {
     const Scalar sm(rows, lane_A(l), lane_g(l));
-    auto sw = sm.make_workspace();
+    auto sw = rotorsweep::testing::workspace(sm);
     const auto y = lane_theta(l);
     std::vector<double> sf(rows), sq(nq), sdf(rows), sdq(nq * rows), sdqt(nq);
-    Scalar::Jacobian sJ(rows);
+    auto sJ = rotorsweep::testing::jacobian<Scalar::Jacobian>(rows);
     sm.linearize(sw, y.data(), lane_t(l), sf.data(), sq.data(), sJ, sdf.data(), sdq.data(), sdqt.data());
     for (std::size_t j = 0; j < rows; ++j) {
       check_close(lane_get(f[j], l), sf[j], 1e-13);
@@ -107,18 +112,19 @@ TEST_CASE("one SIMD step equals one scalar step for every stepper", "[kernels][s
 
 TEST_CASE("adaptive SIMD runs reproduce scalar runs member by member", "[kernels][simd]") {
   const Simd vm = simd_model();
-  AdaptiveIntegrator<Simd, Rodas4<Simd>> vi(vm, {1e-7, 1e-10});
-  LaneState<simd_lane> vs(rows, nq);
-  vs.theta = gather_theta();
-  vs.t_stop = simd_lane(2 * drive_period);
+  auto vi = rotorsweep::testing::integrator<AdaptiveIntegrator<Simd, Rodas4<Simd>>>(vm, {1e-7, 1e-10});
+  auto vs = rotorsweep::testing::lane_state<simd_lane>(rows, nq);
+  const auto theta = gather_theta();
+  std::copy(theta.begin(), theta.end(), vs.theta);
+  vs.t_stop = simd_lane(2 * two_pi);
   vi.advance(vm, vs);
   for (std::size_t l = 0; l < W; ++l) {
     const Scalar sm(rows, lane_A(l), lane_g(l));
-    AdaptiveIntegrator<Scalar, Rodas4<Scalar>> si(sm, {1e-7, 1e-10});
-    LaneState<double> ss(rows, nq);
+    auto si = rotorsweep::testing::integrator<AdaptiveIntegrator<Scalar, Rodas4<Scalar>>>(sm, {1e-7, 1e-10});
+    auto ss = rotorsweep::testing::lane_state<double>(rows, nq);
     const auto y = lane_theta(l);
     for (std::size_t j = 0; j < rows; ++j) ss.theta[j] = y[j];
-    ss.t_stop = 2 * drive_period;
+    ss.t_stop = 2 * two_pi;
     si.advance(sm, ss);
     INFO("lane " << l);
     CHECK(lane_get(vs.steps_accepted, l) == ss.steps_accepted);

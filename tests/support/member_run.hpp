@@ -1,15 +1,15 @@
 // Test support: one rotor array (a scalar member) set up with FM/AFM initial conditions
-// (model.md §2) and run period by period, returning per-period integrals averaged.
+// (docs/model.md §2) and run through the sweep driver, returning its period means.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <vector>
 
 #include "ensemble/initial_conditions.hpp"
-#include "kernels/adaptive_integrator.hpp"
-#include "kernels/period_driver.hpp"
-#include "kernels/row_model.hpp"
+#include "ensemble/member_plan.hpp"
+#include "ensemble/scene.hpp"
+#include "ensemble/sweep.hpp"
+#include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::testing {
 
@@ -23,22 +23,27 @@ inline std::vector<double> initial_angles(std::size_t rows, Start start, double 
   return ensemble::initial_angles(ic, rows, 7, member);
 }
 
-/// Per-period integrals averaged over `average` periods after `relax` periods, per quadrature.
-template <kernels::Integrals Q, template <class> class Stepper>
-std::array<double, Q.count()> mean_period_integrals(std::size_t rows, double A, double g, Start start,
-                                                    int relax, int average, double rtol, double atol) {
-  using Model = kernels::NearestNeighbourRows<double, Q>;
-  const Model model(rows, A, g);
-  kernels::AdaptiveIntegrator<Model, Stepper<Model>> integrator(model, {rtol, atol});
-  kernels::LaneState<double> state(rows, Q.count());
-  const auto theta = initial_angles(rows, start);
-  for (std::size_t j = 0; j < rows; ++j) state.theta[j] = theta[j];
-  std::array<double, Q.count()> mean{};
-  kernels::run_periods(model, integrator, state, relax + average, [&](int k, const auto& s) {
-    if (k < relax) return;
-    for (std::size_t p = 0; p < Q.count(); ++p) mean[p] += s.quad[p] / average;
-  });
-  return mean;
+/// One member (stream 0 of seed 7) of the row model on the scalar lane with the W, S, R
+/// estimators, averaged over `average` periods after `relax`; the stepper by name.
+inline ensemble::MemberResult run_member(std::size_t rows, double A, double g, Start start, int relax,
+                                         int average, double rtol, double atol, const char* stepper = "rodas4") {
+  ensemble::Scene scene;
+  scene.row_counts = {rows};
+  scene.rtol_values = {rtol};
+  scene.atol_values = {atol};
+  scene.g_values = {g};
+  scene.A_values = {A};
+  scene.seed = 7;
+  scene.relax_periods = relax;
+  scene.average_periods = average;
+  scene.observables = {};
+  scene.observables.set(ensemble::Observable::dissipation, true);
+  scene.observables.set(ensemble::Observable::estimators, true);
+  scene.stepper = *kernels::parse_stepper(stepper);
+  scene.lanes = ensemble::LaneKind::scalar;
+  const auto kind = start == Start::afm ? ensemble::InitialKind::afm : ensemble::InitialKind::fm;
+  const std::vector<ensemble::Member> members{{0, 0, A, g, kind, 0, 0, rows, rtol, atol}};
+  return ensemble::run_sweep(scene, members, 1, {}).results.front();
 }
 
 }  // namespace rotorsweep::testing

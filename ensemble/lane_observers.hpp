@@ -1,0 +1,62 @@
+// The step reducers bound to an integration loop's hooks (docs/architecture.md "Observers"): each
+// sees a lane start, every step, and a period's end, where it writes its channels.
+#pragma once
+
+#include <cstddef>
+
+#include "ensemble/member_result.hpp"
+#include "ensemble/step_reducers.hpp"
+#include "kernels/lane.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// Extremes of ρ̄ at the step points (channels alignment_min, alignment_max).
+template <class Loop>
+class AlignmentObserver {
+ public:
+  using V = typename Loop::V;
+  void start(Loop& loop, std::size_t lane) {
+    extrema_.start_lane(lane, kernels::lane_get(alignment(loop), lane));
+  }
+  void before_step(Loop&) {}
+  void after_step(Loop& loop, kernels::lane_mask<V> accepted) { extrema_.accumulate(accepted, alignment(loop)); }
+  void end_period(std::size_t lane, PeriodRecord& record) { extrema_.end_period(lane, record); }
+
+ private:
+  static V alignment(Loop& loop) {
+    return loop.model().alignment(loop.workspace(), loop.state().theta, loop.state().t);
+  }
+  AlignmentExtrema<V> extrema_;
+};
+
+/// Slip events (channel slips); switched off, it costs one branch per step.
+template <class Loop>
+class SlipObserver {
+ public:
+  using V = typename Loop::V;
+  SlipObserver(std::size_t dimension, double slip_rate, bool enabled)
+      : slips_(slip_rate), theta_before_(enabled ? dimension : 0), enabled_(enabled) {}
+
+  void start(Loop&, std::size_t lane) { slips_.start_lane(lane); }
+  void before_step(Loop& loop) {
+    if (!enabled_) return;
+    for (std::size_t j = 0; j < theta_before_.size(); ++j) theta_before_[j] = loop.state().theta[j];
+    t_before_ = loop.state().t;
+  }
+  void after_step(Loop& loop, kernels::lane_mask<V> accepted) {
+    if (enabled_)
+      slips_.accumulate(accepted, theta_before_.size(), theta_before_.data(), loop.state().theta,
+                        loop.state().t - t_before_);
+  }
+  void end_period(std::size_t lane, PeriodRecord& record) {
+    if (enabled_) slips_.end_period(lane, record);
+  }
+
+ private:
+  SlipCounter<V> slips_;
+  kernels::lane_vector<V> theta_before_;
+  V t_before_ = V(0.0);
+  bool enabled_;
+};
+
+}  // namespace rotorsweep::ensemble

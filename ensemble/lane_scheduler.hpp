@@ -1,0 +1,162 @@
+// The lane scheduler (docs/architecture.md "Driver"): takes members from the plan into the lanes
+// of an integration loop, closes their periods into records, and retires and refills lanes.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <tuple>
+#include <vector>
+
+#include "ensemble/integration_loop.hpp"
+#include "ensemble/lane_observers.hpp"
+#include "ensemble/member_plan.hpp"
+#include "ensemble/member_result.hpp"
+#include "ensemble/member_summary.hpp"
+#include "ensemble/observables.hpp"
+#include "ensemble/scene.hpp"
+#include "kernels/angles.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// Runs members of one variant (one dimension and tolerances) through the lanes of an
+/// IntegrationLoop<Model, Stepper>. `Setup` turns a member into the model's parameters and its
+/// initial state: initial_state(member) and parameters(member, y0). Each lane owns its member; a
+/// member that finishes or fails retires at once and (with scene.refill) its lane takes the next.
+template <kernels::LaneModel Model, class Stepper, class Setup>
+class LaneScheduler {
+ public:
+  using Loop = IntegrationLoop<Model, Stepper>;
+  static constexpr std::size_t width = Loop::width;
+  static constexpr kernels::Integrals Q = Model::integrals;
+
+  LaneScheduler(const Scene& scene, const Member& variant, Setup setup)
+      : scene_(scene),
+        setup_(std::move(setup)),
+        loop_(variant.rows, {variant.rtol, variant.atol}, {.h_max = scene.h_max, .max_steps = scene.max_steps}),
+        slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
+        lanes_(width) {}
+
+  /// Takes members from next_member() (a std::optional<Member>; empty when the plan is
+  /// exhausted) until none is left and every lane has retired; hands each result to retire().
+  template <class NextMember, class Retire>
+  void run(NextMember&& next_member, Retire&& retire) {
+    for (;;) {
+      if (scene_.refill || occupied_ == 0) fill_idle_lanes(next_member);
+      if (occupied_ == 0) return;
+      step();
+      const bool period_ends = loop_.any_period_ended();
+      for (std::size_t l = 0; l < width; ++l) {
+        if (!lanes_[l].occupied) continue;
+        if (loop_.failed(l))
+          retire(finish(l, false));
+        else if (period_ends && loop_.period_ended(l))
+          close_period(l, retire);
+      }
+    }
+  }
+
+  double lane_steps_busy() const { return busy_; }    ///< Σ over attempts of lanes holding a member
+  double lane_steps_total() const { return total_; }  ///< Σ over attempts of all lanes
+
+ private:
+  struct Lane {
+    bool occupied = false;
+    Member member;
+    std::vector<PeriodRecord> history;
+  };
+
+  template <class Observer>
+  using observer_if_alignment = std::conditional_t<Q.alignment, std::tuple<Observer>, std::tuple<>>;
+
+  template <class F>
+  void for_each_observer(F&& f) {
+    std::apply([&](auto&... observer) { (f(observer), ...); }, alignment_);
+    f(slips_);
+  }
+
+  template <class NextMember>
+  void fill_idle_lanes(NextMember& next_member) {
+    for (std::size_t l = 0; l < width && occupied_ < width && !plan_exhausted_; ++l) {
+      if (lanes_[l].occupied) continue;
+      const std::optional<Member> member = next_member();
+      plan_exhausted_ = !member;
+      if (plan_exhausted_) break;
+      start(l, *member);
+    }
+  }
+
+  void start(std::size_t l, const Member& member) {
+    const std::vector<double> y0 = setup_.initial_state(member);
+    loop_.start(l, setup_.parameters(member, y0), y0);
+    for_each_observer([&](auto& observer) { observer.start(loop_, l); });
+    lanes_[l].occupied = true;
+    lanes_[l].member = member;
+    lanes_[l].history.clear();
+    ++occupied_;
+  }
+
+  void step() {
+    std::apply([&](auto&... observer) { loop_.step(observer..., slips_); }, alignment_);
+    busy_ += double(occupied_);
+    total_ += double(width);
+  }
+
+  template <class Retire>
+  void close_period(std::size_t l, Retire& retire) {
+    PeriodRecord record;
+    for (const auto& observable : observables)
+      for (std::size_t c = 0; c < observable.channel_count; ++c) {
+        const ChannelDeclaration& channel = observable.channels[c];
+        if (channel.source == Source::step_reducer || !Q.carries(channel.quadrature)) continue;
+        const double integral = loop_.quadrature(l, Q.index(channel.quadrature));
+        record[channel.channel] = channel.source == Source::quadrature_mean ? integral / Loop::period : integral;
+      }
+    for_each_observer([&](auto& observer) { observer.end_period(l, record); });
+
+    auto& history = lanes_[l].history;
+    history.push_back(record);
+    const int periods = int(history.size());
+    const bool long_enough = periods >= scene_.relax_periods + scene_.average_periods;
+    bool settled = long_enough;
+    if (scene_.steady_tol > 0) settled = long_enough && periods_agree(history, scene_.steady_tol);
+    if (settled || (scene_.steady_tol > 0 && periods >= scene_.max_periods)) {
+      retire(finish(l, settled));
+      return;
+    }
+    loop_.next_period(l, scene_.wrap_angles);
+  }
+
+  MemberResult finish(std::size_t l, bool settled) {
+    Lane& lane = lanes_[l];
+    MemberResult result;
+    result.index = lane.member.index;
+    result.status = loop_.status(l);
+    result.settled = settled;
+    result.periods_run = int(lane.history.size());
+    result.steps_accepted = loop_.steps_accepted(l);
+    result.steps_rejected = loop_.steps_rejected(l);
+    result.theta_final.resize(loop_.dimension());
+    for (std::size_t k = 0; k < loop_.dimension(); ++k) result.theta_final[k] = kernels::wrap_2pi(loop_.component(l, k));
+    const bool ok = result.status == kernels::LaneStatus::ok;
+    summarize(ok ? lane.history : std::vector<PeriodRecord>{}, scene_.average_periods, scene_.classifies_regimes(),
+              result);
+    if (scene_.period_series) result.periods = std::move(lane.history);
+    lane.occupied = false;
+    lane.history.clear();
+    loop_.release(l);
+    --occupied_;
+    return result;
+  }
+
+  const Scene& scene_;
+  Setup setup_;
+  Loop loop_;
+  observer_if_alignment<AlignmentObserver<Loop>> alignment_;
+  SlipObserver<Loop> slips_;
+  std::vector<Lane> lanes_;
+  std::size_t occupied_ = 0;
+  bool plan_exhausted_ = false;
+  double busy_ = 0, total_ = 0;
+};
+
+}  // namespace rotorsweep::ensemble

@@ -1,9 +1,0 @@
-// run_sweep_with for the rodas4 stepper (one translation unit per stepper keeps builds parallel).
-#include "ensemble/sweep_runner.hpp"
-
-namespace rotorsweep::ensemble {
-
-template SweepOutcome run_sweep_with<kernels::StepperKind::rodas4>(const Scene&, const std::vector<Member>&,
-                                                                   int, const ProgressCallback&);
-
-}  // namespace rotorsweep::ensemble

@@ -1,0 +1,78 @@
+// What the steppers and the driver need of a model (docs/architecture.md "Models"): the LaneModel
+// and LaneJacobian concepts, and how a state component's error is weighted.
+#pragma once
+
+#include <concepts>
+#include <cstddef>
+
+#include "kernels/integrals.hpp"
+#include "kernels/lane.hpp"
+#include "kernels/lane_arena.hpp"
+
+namespace rotorsweep::kernels {
+
+/// How the error of one state component is measured against the tolerances: angles (and other
+/// quantities that live on a fixed scale) absolutely, s = atol + rtol; velocities and other
+/// components that can be large relatively, s = atol + rtol·max(|y|, |y_new|).
+enum class StateScale { absolute, relative };
+
+/// The Jacobian of a model, one per lane, and the solve of the stage matrix M = shift·I - J.
+template <class J>
+concept LaneJacobian = requires(J& jacobian, const J& factored, typename J::lane_type shift,
+                                typename J::lane_type* r, std::size_t n, LaneArena<typename J::lane_type>& arena) {
+  typename J::lane_type;
+  { J::storage_size(n) } -> std::convertible_to<std::size_t>;
+  requires std::constructible_from<J, std::size_t, LaneArena<typename J::lane_type>&>;
+  jacobian.factor(shift);
+  factored.solve(r);
+};
+
+/// A Jacobian that also reports the inertia of M after factor(): the lanes where M is positive
+/// definite, i.e. no eigenvalue of J exceeds the shift (only a symmetric J can tell).
+template <class J>
+concept JacobianWithInertia = LaneJacobian<J> && requires(const J& factored) {
+  { factored.positive_definite() } -> std::convertible_to<lane_mask<typename J::lane_type>>;
+};
+
+/// A model of lanes: y' = f(y, t) with quadratures q' = p(y, t), parameters per lane.
+///   Parameters      one lane's parameters (plain doubles), given with set_lane()
+///   Workspace       scratch over caller-owned storage (storage_size(n) values)
+///   Jacobian        a LaneJacobian of f with respect to y
+///   period          the drive period (periods are the unit of the schedule)
+///   integrals       the quadratures it carries (quadrature_count of them, in Integrals order)
+///   error_controlled[p]: which quadratures steer the step
+///   scale(k)        how component k's error is weighted
+///   evaluate        f and the quadrature integrands at (y, t)
+///   linearize       evaluate() plus J, ∂f/∂t and the integrands' gradients
+template <class M>
+concept LaneModel = requires(const M& model, M& mutable_model, typename M::Workspace& work,
+                             typename M::Jacobian& jacobian, const typename M::lane_type* y,
+                             typename M::lane_type* out, typename M::lane_type t,
+                             const typename M::Parameters& parameters, std::size_t k,
+                             LaneArena<typename M::lane_type>& arena) {
+  typename M::lane_type;
+  typename M::Parameters;
+  requires LaneJacobian<typename M::Jacobian>;
+  { M::period } -> std::convertible_to<double>;
+  { M::integrals } -> std::convertible_to<Integrals>;
+  requires M::quadrature_count == M::integrals.count();
+  { M::error_controlled[k] } -> std::convertible_to<bool>;
+  { M::Workspace::storage_size(k) } -> std::convertible_to<std::size_t>;
+  requires std::constructible_from<typename M::Workspace, std::size_t, LaneArena<typename M::lane_type>&>;
+  { model.dimension() } -> std::same_as<std::size_t>;
+  { model.scale(k) } -> std::same_as<StateScale>;
+  mutable_model.set_lane(k, parameters);
+  model.evaluate(work, y, t, out, out);
+  model.linearize(work, y, t, out, out, jacobian, out, out, out);
+};
+
+/// A model that reports the alignment ρ̄ and the energy H of a state (docs/model.md §3).
+template <class M>
+concept ReportsAlignmentAndEnergy = LaneModel<M> && requires(const M& model, typename M::Workspace& work,
+                                                             const typename M::lane_type* y,
+                                                             typename M::lane_type t) {
+  { model.alignment(work, y, t) } -> std::convertible_to<typename M::lane_type>;
+  { model.energy(work, y, t) } -> std::convertible_to<typename M::lane_type>;
+};
+
+}  // namespace rotorsweep::kernels
