@@ -37,7 +37,8 @@ ensemble::SweepOutcome integrate(kernels::StepperId stepper, double rtol) {
   scene.lanes = ensemble::LaneKind::scalar;
   std::vector<ensemble::Member> members;
   for (const auto& entry : paper::entries)
-    members.push_back({members.size(), 0, entry.A, paper::g, entry.kind, 0, 0, paper::rows, rtol, rtol * 1e-3});
+    members.push_back(
+        {members.size(), 0, entry.A, paper::g, entry.kind, 0, 0, paper::rows, rtol, rtol * 1e-3});
   return ensemble::run_sweep(scene, members, 1, {});
 }
 
@@ -66,8 +67,8 @@ int run_table(const TableOptions& options) {
     const double steps_per_period = result.steps_accepted / (paper::relax_periods + paper::average_periods);
     const double deviation = R / ref.paper_R - 1;
     const auto ic = ensemble::kind_name(ref.kind);
-    std::printf("%5.0f %4s %14.7e %14.7e %14.7e %14.7e %10.2e %8.0f\n", ref.A, ic.data(), W, S, R, ref.paper_R,
-                deviation, steps_per_period);
+    std::printf("%5.0f %4s %14.7e %14.7e %14.7e %14.7e %10.2e %8.0f\n", ref.A, ic.data(), W, S, R,
+                ref.paper_R, deviation, steps_per_period);
     if (csv) {
       char line[256];
       std::snprintf(line, sizeof line, "%g,%s,%.10e,%.10e,%.10e,%.7e,%.3e,%.1f\n", ref.A, ic.data(), W, S, R,

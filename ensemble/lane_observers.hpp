@@ -19,7 +19,9 @@ class AlignmentObserver {
     extrema_.start_lane(lane, kernels::lane_get(alignment(loop), lane));
   }
   void before_step(Loop&) {}
-  void after_step(Loop& loop, kernels::lane_mask<V> accepted) { extrema_.accumulate(accepted, alignment(loop)); }
+  void after_step(Loop& loop, kernels::lane_mask<V> accepted) {
+    extrema_.accumulate(accepted, alignment(loop));
+  }
   void end_period(std::size_t lane, PeriodRecord& record) { extrema_.end_period(lane, record); }
 
  private:

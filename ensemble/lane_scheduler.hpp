@@ -32,7 +32,8 @@ class LaneScheduler {
   LaneScheduler(const Scene& scene, const Member& variant, Setup setup)
       : scene_(scene),
         setup_(std::move(setup)),
-        loop_(variant.rows, {variant.rtol, variant.atol}, {.h_max = scene.h_max, .max_steps = scene.max_steps}),
+        loop_(variant.rows, {variant.rtol, variant.atol},
+              {.h_max = scene.h_max, .max_steps = scene.max_steps}),
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
         lanes_(width) {}
 
@@ -109,7 +110,8 @@ class LaneScheduler {
         const ChannelDeclaration& channel = observable.channels[c];
         if (channel.source == Source::step_reducer || !Q.carries(channel.quadrature)) continue;
         const double integral = loop_.quadrature(l, Q.index(channel.quadrature));
-        record[channel.channel] = channel.source == Source::quadrature_mean ? integral / Loop::period : integral;
+        record[channel.channel] =
+            channel.source == Source::quadrature_mean ? integral / Loop::period : integral;
       }
     for_each_observer([&](auto& observer) { observer.end_period(l, record); });
 
@@ -136,10 +138,11 @@ class LaneScheduler {
     result.steps_accepted = loop_.steps_accepted(l);
     result.steps_rejected = loop_.steps_rejected(l);
     result.theta_final.resize(loop_.dimension());
-    for (std::size_t k = 0; k < loop_.dimension(); ++k) result.theta_final[k] = kernels::wrap_2pi(loop_.component(l, k));
+    for (std::size_t k = 0; k < loop_.dimension(); ++k)
+      result.theta_final[k] = kernels::wrap_2pi(loop_.component(l, k));
     const bool ok = result.status == kernels::LaneStatus::ok;
-    summarize(ok ? lane.history : std::vector<PeriodRecord>{}, scene_.average_periods, scene_.classifies_regimes(),
-              result);
+    summarize(ok ? lane.history : std::vector<PeriodRecord>{}, scene_.average_periods,
+              scene_.classifies_regimes(), result);
     if (scene_.period_series) result.periods = std::move(lane.history);
     lane.occupied = false;
     lane.history.clear();

@@ -25,9 +25,9 @@ inline constexpr std::size_t channel_count = 8;
 
 /// Where a channel's value for a period comes from.
 enum class Source {
-  quadrature,      ///< the quadrature state at the period's end (the integral over the period)
-  quadrature_mean, ///< that integral divided by the period: the time mean
-  step_reducer,    ///< a reducer watching every accepted step (ensemble/step_reducers.hpp)
+  quadrature,       ///< the quadrature state at the period's end (the integral over the period)
+  quadrature_mean,  ///< that integral divided by the period: the time mean
+  step_reducer,     ///< a reducer watching every accepted step (ensemble/step_reducers.hpp)
 };
 
 /// How a member's averaged periods reduce to one number of /members.
@@ -80,16 +80,17 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
     {"dissipation",
      true,
      {true, false, false, false, false},
-     {{declare::channel(Channel::dissipation, "dissipation", "R_k = A Σ∫ sin(θ_j - t) dt", Source::quadrature,
-                        kernels::Quadrature::drive,
-                        {Summary::mean, "dissipation", "D per period, R estimator A Σ∫ sin(θ_j - t) dt, mean"},
-                        {Summary::spread, "dissipation_std", "population spread of D"})}},
+     {{declare::channel(
+         Channel::dissipation, "dissipation", "R_k = A Σ∫ sin(θ_j - t) dt", Source::quadrature,
+         kernels::Quadrature::drive,
+         {Summary::mean, "dissipation", "D per period, R estimator A Σ∫ sin(θ_j - t) dt, mean"},
+         {Summary::spread, "dissipation_std", "population spread of D"})}},
      1},
     {"estimators",
      false,
      {false, true, true, false, false},
-     {{declare::channel(Channel::work, "dissipation_work", "W_k = A Σ∫ sin(θ_j - t) θ̇_j dt", Source::quadrature,
-                        kernels::Quadrature::work,
+     {{declare::channel(Channel::work, "dissipation_work", "W_k = A Σ∫ sin(θ_j - t) θ̇_j dt",
+                        Source::quadrature, kernels::Quadrature::work,
                         {Summary::mean, "dissipation_work", "D per period, work estimator W, mean"}),
        declare::channel(Channel::stokes, "dissipation_stokes", "S_k = g Σ∫ θ̇_j² dt", Source::quadrature,
                         kernels::Quadrature::stokes,
@@ -98,8 +99,9 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
     {"alignment",
      true,
      {false, false, false, true, false},
-     {{declare::channel(Channel::alignment_mean, "alignment_mean", "period mean of ρ̄", Source::quadrature_mean,
-                        kernels::Quadrature::alignment, {Summary::mean, "alignment_mean", "time mean of ρ̄"}),
+     {{declare::channel(Channel::alignment_mean, "alignment_mean", "period mean of ρ̄",
+                        Source::quadrature_mean, kernels::Quadrature::alignment,
+                        {Summary::mean, "alignment_mean", "time mean of ρ̄"}),
        declare::channel(Channel::alignment_min, "alignment_min", "min of ρ̄ at the period's step points",
                         Source::step_reducer, kernels::Quadrature::alignment,
                         {Summary::minimum, "alignment_min", "min of ρ̄ at step points"}),
@@ -117,7 +119,8 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
      true,
      declare::none,
      {{declare::channel(Channel::slips, "slips", "slip events begun in the period", Source::step_reducer,
-                        kernels::Quadrature::drive, {Summary::mean, "slips_per_period", "slip events per period"})}},
+                        kernels::Quadrature::drive,
+                        {Summary::mean, "slips_per_period", "slip events per period"})}},
      1},
 }};
 
@@ -137,7 +140,9 @@ struct ObservableSet {
     return q;
   }
   /// Whether the regime rule has its inputs (alignment extremes and slip counts).
-  constexpr bool classifies_regimes() const { return (*this)[Observable::alignment] && (*this)[Observable::slips]; }
+  constexpr bool classifies_regimes() const {
+    return (*this)[Observable::alignment] && (*this)[Observable::slips];
+  }
 
   static constexpr ObservableSet defaults() {
     ObservableSet set;

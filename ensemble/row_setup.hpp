@@ -14,7 +14,9 @@ template <class Model>
 struct RowSetup {
   const Scene* scene;
 
-  std::vector<double> initial_state(const Member& member) const { return member_initial_angles(*scene, member); }
+  std::vector<double> initial_state(const Member& member) const {
+    return member_initial_angles(*scene, member);
+  }
 
   /// A member that starts with all rows equal is marked strict FM (symmetry protection).
   typename Model::Parameters parameters(const Member& member, const std::vector<double>& theta) const {

@@ -72,7 +72,8 @@ decltype(auto) with_integrals(kernels::Integrals needed, F&& f) {
     return with_flag(needed.work, [&]<bool estimators>() {
       return with_flag(needed.alignment, [&]<bool alignment>() {
         return with_flag(needed.energy, [&]<bool energy>() {
-          return f.template operator()<kernels::Integrals{drive, estimators, estimators, alignment, energy}>();
+          return f
+              .template operator()<kernels::Integrals{drive, estimators, estimators, alignment, energy}>();
         });
       });
     });

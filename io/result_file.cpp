@@ -93,9 +93,10 @@ void ResultFile::write_members(const ensemble::Scene& scene, const std::vector<e
   for_each_channel(scene, [&](const ensemble::ChannelDeclaration& channel) {
     for (std::size_t k = 0; k < channel.summary_count; ++k) {
       const auto& summary = channel.summaries[k];
-      group.write(std::string(summary.column),
-                  column(results, [&](const MemberResult& r) { return r.summary(summary.summary, channel.channel); }),
-                  {}, std::string(summary.description) + averaged);
+      group.write(
+          std::string(summary.column),
+          column(results, [&](const MemberResult& r) { return r.summary(summary.summary, channel.channel); }),
+          {}, std::string(summary.description) + averaged);
     }
   });
   if (scene.classifies_regimes())

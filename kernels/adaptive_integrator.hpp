@@ -28,7 +28,8 @@ class AdaptiveIntegrator {
     return Stepper::storage_size(n) + System::Workspace::storage_size(n) + 2 * n + 2 * (nq + 1);
   }
 
-  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Tolerances tol, StepLimits limits, LaneArena<V>& arena)
+  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Tolerances tol, StepLimits limits,
+                                   LaneArena<V>& arena)
       : tol_(tol),
         limits_(limits),
         stepper_(system, arena),
@@ -51,8 +52,9 @@ class AdaptiveIntegrator {
     const V h = lane_select(active, lane_min(s.h, remaining), V(1.0));
     const lane_mask<V> resolved =
         stepper_.attempt(system, s.t, h, s.theta, s.quad, y_new_, q_new_, y_error_, q_error_);
-    const V err = error_norm(system, tol_, s.theta, y_new_, y_error_, System::error_controlled.data(), s.quad,
-                             q_new_, q_error_);
+    constexpr auto controlled = System::error_controlled;
+    const V err =
+        error_norm(system, tol_, s.theta, y_new_, y_error_, controlled.data(), s.quad, q_new_, q_error_);
 
     V checksum(0.0);
     for (std::size_t k = 0; k < n; ++k) checksum += y_new_[k];
@@ -97,7 +99,8 @@ class AdaptiveIntegrator {
     s.h = lane_select(fresh, lane_select(lane_isfinite(h0), h0, V(limits_.h_max)), s.h);
   }
 
-  ROTORSWEEP_HD void flag_failures(LaneState<V>& s, lane_mask<V> trouble, lane_mask<V> finite, V h_floor) const {
+  ROTORSWEEP_HD void flag_failures(LaneState<V>& s, lane_mask<V> trouble, lane_mask<V> finite,
+                                   V h_floor) const {
     for (std::size_t l = 0; l < lane_width<V>; ++l) {
       if (!mask_get(trouble, l)) continue;
       if (lane_get(s.steps_accepted, l) + lane_get(s.steps_rejected, l) >= limits_.max_steps)

@@ -18,30 +18,30 @@ template <LaneModel System>
 class DormandPrince5 {
  public:
   using V = typename System::lane_type;
-  static constexpr const ExplicitTableau& tableau = dormand_prince5_tableau;
   static constexpr std::size_t nq = System::quadrature_count;
 
   static constexpr std::size_t storage_size(std::size_t n) {
-    return System::Workspace::storage_size(n) + (1 + std::size_t(tableau.stages)) * n +
-           std::size_t(tableau.stages) * nq + 1;
+    return System::Workspace::storage_size(n) + (1 + std::size_t(dormand_prince5_tableau.stages)) * n +
+           std::size_t(dormand_prince5_tableau.stages) * nq + 1;
   }
 
   ROTORSWEEP_HD DormandPrince5(const System& system, LaneArena<V>& arena)
       : n_(system.dimension()),
         work_(n_, arena),
         argument_(arena.take(n_)),
-        slopes_(arena.take(std::size_t(tableau.stages) * n_)),
-        quad_slopes_(arena.take(std::size_t(tableau.stages) * nq + 1)) {}
+        slopes_(arena.take(std::size_t(dormand_prince5_tableau.stages) * n_)),
+        quad_slopes_(arena.take(std::size_t(dormand_prince5_tableau.stages) * nq + 1)) {}
 
-  ROTORSWEEP_HD static constexpr int order() { return tableau.order; }
-  ROTORSWEEP_HD static constexpr int embedded_order() { return tableau.embedded_order; }
+  static constexpr const char* name() { return dormand_prince5_tableau.name; }
+  ROTORSWEEP_HD static constexpr int order() { return dormand_prince5_tableau.order; }
+  ROTORSWEEP_HD static constexpr int embedded_order() { return dormand_prince5_tableau.embedded_order; }
 
   /// One step of size h. Returns every lane: an explicit method follows unstable directions
   /// (its error estimate sees them), so no lane needs the implicit steppers' extra check.
-  ROTORSWEEP_HD lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
-                       V* q_error) {
+  ROTORSWEEP_HD lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new,
+                                     V* q_new, V* y_error, V* q_error) {
     const std::size_t n = n_;
-    constexpr const ExplicitTableau& T = tableau;
+    constexpr ExplicitTableau T = dormand_prince5_tableau;  // a local copy for device code
     for (int i = 0; i < T.stages; ++i) {
       for (std::size_t k = 0; k < n; ++k) argument_[k] = y[k];
       for (int j = 0; j < i; ++j) {
@@ -59,8 +59,9 @@ class DormandPrince5 {
   }
 
  private:
-  ROTORSWEEP_HD static void combine(V h, const V* start, std::size_t count, const V* slopes, V* result, V* error) {
-    constexpr const ExplicitTableau& T = tableau;
+  ROTORSWEEP_HD static void combine(V h, const V* start, std::size_t count, const V* slopes, V* result,
+                                    V* error) {
+    constexpr ExplicitTableau T = dormand_prince5_tableau;  // a local copy for device code
     for (std::size_t k = 0; k < count; ++k) {
       V sum(0.0), err(0.0);
       for (int i = 0; i < T.stages; ++i) {

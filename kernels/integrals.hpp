@@ -47,7 +47,8 @@ struct Integrals {
     return 0;
   }
   constexpr Integrals operator|(const Integrals& o) const {
-    return {drive || o.drive, work || o.work, stokes || o.stokes, alignment || o.alignment, energy || o.energy};
+    return {drive || o.drive, work || o.work, stokes || o.stokes, alignment || o.alignment,
+            energy || o.energy};
   }
   constexpr bool operator==(const Integrals&) const = default;
 };

@@ -2,6 +2,7 @@
 // only, so that a lane's bits depend on its own argument alone: scalar, SIMD and GPU lanes agree.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 
@@ -26,30 +27,33 @@ inline constexpr double medium_pi = 0x1.921fb54442d18p+19;  ///< 2^19 π: limit 
 /// c0 + x (c1 + x (c2 + ...)), every product and sum rounded on its own (no fused multiply-add:
 /// the host build turns contraction off, a CUDA build must pass --fmad=false).
 template <class V, std::size_t n>
-ROTORSWEEP_HD inline V horner(const V& x, const double (&c)[n]) {
+ROTORSWEEP_HD inline V horner(const V& x, const std::array<double, n>& c) {
   V sum(c[n - 1]);
   for (std::size_t i = n - 1; i-- > 0;) sum = x * sum + V(c[i]);
   return sum;
 }
 
-inline constexpr double sin_c[6] = {-0x1.5555555555548p-3, 0x1.111111110f7dp-7,  -0x1.a01a019bfdf03p-13,
-                                    0x1.71de3567d4896p-19, -0x1.ae5e5a9291691p-26, 0x1.5d8fd1fcf0ec1p-33};
-inline constexpr double cos_c[7] = {0x1p-1,
-                                    -0x1.5555555555551p-5,
-                                    0x1.6c16c16c15d47p-10,
-                                    -0x1.a01a019ddbcd9p-16,
-                                    0x1.27e4f8e06d9a5p-22,
-                                    -0x1.1eea7c1e514d4p-29,
-                                    0x1.8ff831ad9b219p-37};
+inline constexpr std::array<double, 6> sin_c{-0x1.5555555555548p-3,  0x1.111111110f7dp-7,
+                                             -0x1.a01a019bfdf03p-13, 0x1.71de3567d4896p-19,
+                                             -0x1.ae5e5a9291691p-26, 0x1.5d8fd1fcf0ec1p-33};
+inline constexpr std::array<double, 7> cos_c{0x1p-1,
+                                             -0x1.5555555555551p-5,
+                                             0x1.6c16c16c15d47p-10,
+                                             -0x1.a01a019ddbcd9p-16,
+                                             0x1.27e4f8e06d9a5p-22,
+                                             -0x1.1eea7c1e514d4p-29,
+                                             0x1.8ff831ad9b219p-37};
 
 inline constexpr double ln2_hi = 0x1.62e42feep-1, ln2_lo = 0x1.a39ef35793c76p-33;
 inline constexpr double inv_ln2 = 1.442695040888963407359924681001892137426645954152986;
 inline constexpr double max_log = 709.78271289338400, min_log = -708.3964185322641;
-inline constexpr double exp_c[5] = {0x1.555555555553ep-3, -0x1.6c16c16bebd93p-9, 0x1.1566aaf25de2cp-14,
-                                    -0x1.bbd41c5d26bf1p-20, 0x1.6376972bea4dp-25};
-inline constexpr double log_c_odd[3] = {0x1.999999997fa04p-2, 0x1.c71c51d8e78afp-3, 0x1.39a09d078c69fp-3};
-inline constexpr double log_c_even[4] = {0x1.5555555555593p-1, 0x1.2492494229359p-2, 0x1.7466496cb03dep-3,
-                                         0x1.2f112df3e5244p-3};
+inline constexpr std::array<double, 5> exp_c{0x1.555555555553ep-3, -0x1.6c16c16bebd93p-9,
+                                             0x1.1566aaf25de2cp-14, -0x1.bbd41c5d26bf1p-20,
+                                             0x1.6376972bea4dp-25};
+inline constexpr std::array<double, 3> log_c_odd{0x1.999999997fa04p-2, 0x1.c71c51d8e78afp-3,
+                                                 0x1.39a09d078c69fp-3};
+inline constexpr std::array<double, 4> log_c_even{0x1.5555555555593p-1, 0x1.2492494229359p-2,
+                                                  0x1.7466496cb03dep-3, 0x1.2f112df3e5244p-3};
 
 /// Lanes beyond 2^19 π: the platform's sin and cos, lane by lane (the same call for a scalar and
 /// a SIMD lane, so they still agree; a physical run never gets there).
@@ -88,8 +92,10 @@ ROTORSWEEP_HD inline void lane_sincos(const V& self, V& s, V& c) {
   const V upper = lane_select(quadrant >= V(2.0), V(1.0), V(0.0));
   const V swap = V(-2.0) * upper + quadrant;
   const V z = r * r;
-  const V sin_r = (horner(z, sin_c) * z) * r + r;
-  const V cos_r = V(1.0) - horner(z, cos_c) * z;
+  constexpr auto sin_k = sin_c;  // local copies: device code never reads the host tables
+  constexpr auto cos_k = cos_c;
+  const V sin_r = (horner(z, sin_k) * z) * r + r;
+  const V cos_r = V(1.0) - horner(z, cos_k) * z;
   const V sin_x = lane_select(swap == V(0.0), sin_r, cos_r);
   const V cos_x = lane_select(swap != V(0.0), sin_r, cos_r);
   s = lane_select(lane_signbit(self) != (upper != V(0.0)), -sin_x, sin_x);
@@ -116,7 +122,8 @@ ROTORSWEEP_HD inline V lane_exp(const V& self) {
   const V lo = k * V(ln2_lo);
   const V x = hi - lo;
   const V t = x * x;
-  const V c = x - t * horner(t, exp_c);
+  constexpr auto exp_k = exp_c;
+  const V c = x - t * horner(t, exp_k);
   const V y = V(1.0) - ((lo - (x * c) / (V(2.0) - c)) - hi);
   const V result = lane_select(self <= V(min_log), V(0.0), lane_ldexp(y, k));
   return lane_select(self >= V(max_log), V(INFINITY), result);
@@ -135,8 +142,10 @@ ROTORSWEEP_HD inline V lane_log(const V& self) {
   const V half_f2 = V(0.5) * f * f;
   const V s = f / (V(2.0) + f);
   const V z = s * s, w = z * z;
-  const V t1 = w * horner(w, log_c_odd);
-  const V t2 = z * horner(w, log_c_even);
+  constexpr auto odd = log_c_odd;
+  constexpr auto even = log_c_even;
+  const V t1 = w * horner(w, odd);
+  const V t2 = z * horner(w, even);
   const V R = t2 + t1;
   return k * V(ln2_hi) + ((s * (half_f2 + R) + k * V(ln2_lo)) - half_f2 + f);
 }

@@ -27,11 +27,11 @@ struct LaneState {
 
   ROTORSWEEP_HD std::size_t rows() const { return dimension_; }
 
-  V* theta;               ///< state components per lane (for rotor models θ_j, unwrapped)
-  V* quad;                ///< quadrature states
-  V t = V(0.0);           ///< each lane's time
-  V h = V(0.0);           ///< each lane's next step size; 0 asks for an automatic first step
-  V t_stop = V(0.0);      ///< each lane integrates up to here
+  V* theta;           ///< state components per lane (for rotor models θ_j, unwrapped)
+  V* quad;            ///< quadrature states
+  V t = V(0.0);       ///< each lane's time
+  V h = V(0.0);       ///< each lane's next step size; 0 asks for an automatic first step
+  V t_stop = V(0.0);  ///< each lane integrates up to here
   V steps_accepted = V(0.0);
   V steps_rejected = V(0.0);
   std::array<LaneStatus, lane_width<V>> status;

@@ -19,10 +19,12 @@ enum class StateScale { absolute, relative };
 /// The Jacobian of a model, one per lane, and the solve of the stage matrix M = shift·I - J.
 template <class J>
 concept LaneJacobian = requires(J& jacobian, const J& factored, typename J::lane_type shift,
-                                typename J::lane_type* r, std::size_t n, LaneArena<typename J::lane_type>& arena) {
+                                typename J::lane_type* r, std::size_t n,
+                                LaneArena<typename J::lane_type>& arena) {
   typename J::lane_type;
   { J::storage_size(n) } -> std::convertible_to<std::size_t>;
-  requires std::constructible_from<J, std::size_t, LaneArena<typename J::lane_type>&>;
+  requires std::constructible_from < J, std::size_t, LaneArena<typename J::lane_type>
+  & > ;
   jacobian.factor(shift);
   factored.solve(r);
 };
@@ -58,7 +60,8 @@ concept LaneModel = requires(const M& model, M& mutable_model, typename M::Works
   requires M::quadrature_count == M::integrals.count();
   { M::error_controlled[k] } -> std::convertible_to<bool>;
   { M::Workspace::storage_size(k) } -> std::convertible_to<std::size_t>;
-  requires std::constructible_from<typename M::Workspace, std::size_t, LaneArena<typename M::lane_type>&>;
+  requires std::constructible_from < typename M::Workspace, std::size_t, LaneArena<typename M::lane_type>
+  & > ;
   { model.dimension() } -> std::same_as<std::size_t>;
   { model.scale(k) } -> std::same_as<StateScale>;
   mutable_model.set_lane(k, parameters);
@@ -68,9 +71,9 @@ concept LaneModel = requires(const M& model, M& mutable_model, typename M::Works
 
 /// A model that reports the alignment ρ̄ and the energy H of a state (docs/model.md §3).
 template <class M>
-concept ReportsAlignmentAndEnergy = LaneModel<M> && requires(const M& model, typename M::Workspace& work,
-                                                             const typename M::lane_type* y,
-                                                             typename M::lane_type t) {
+concept ReportsAlignmentAndEnergy = LaneModel<M> &&
+    requires(const M& model, typename M::Workspace& work, const typename M::lane_type* y,
+             typename M::lane_type t) {
   { model.alignment(work, y, t) } -> std::convertible_to<typename M::lane_type>;
   { model.energy(work, y, t) } -> std::convertible_to<typename M::lane_type>;
 };

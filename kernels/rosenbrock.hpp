@@ -18,16 +18,15 @@ namespace rotorsweep::kernels {
 /// quadrature), which keeps them at the method's full order.
 ///
 /// Scratch: views over caller-owned storage of storage_size(n) lane values.
-template <LaneModel System, const RosenbrockTableau& T>
+template <LaneModel System, const RosenbrockTableau& Table>
 class RosenbrockStepper {
  public:
   using V = typename System::lane_type;
-  static constexpr const RosenbrockTableau& tableau = T;
   static constexpr std::size_t nq = System::quadrature_count;
 
   static constexpr std::size_t storage_size(std::size_t n) {
     return System::Workspace::storage_size(n) + System::Jacobian::storage_size(n) +
-           (3 + std::size_t(T.stages) + nq) * n + 1 + 2 * (nq + 1) + std::size_t(T.stages) * nq + 1;
+           (3 + std::size_t(Table.stages) + nq) * n + 1 + 2 * (nq + 1) + std::size_t(Table.stages) * nq + 1;
   }
 
   ROTORSWEEP_HD RosenbrockStepper(const System& system, LaneArena<V>& arena)
@@ -37,21 +36,23 @@ class RosenbrockStepper {
         f_(arena.take(n_)),
         df_dt_(arena.take(n_)),
         argument_(arena.take(n_)),
-        stages_(arena.take(std::size_t(T.stages) * n_)),
+        stages_(arena.take(std::size_t(Table.stages) * n_)),
         dq_dy_(arena.take(nq * n_ + 1)),
         qdot_(arena.take(nq + 1)),
         dq_dt_(arena.take(nq + 1)),
-        quad_stages_(arena.take(std::size_t(T.stages) * nq + 1)) {}
+        quad_stages_(arena.take(std::size_t(Table.stages) * nq + 1)) {}
 
-  ROTORSWEEP_HD static constexpr int order() { return T.order; }
-  ROTORSWEEP_HD static constexpr int embedded_order() { return T.embedded_order; }
+  static constexpr const char* name() { return Table.name; }
+  ROTORSWEEP_HD static constexpr int order() { return Table.order; }
+  ROTORSWEEP_HD static constexpr int embedded_order() { return Table.embedded_order; }
 
   /// One step of size h from (t, y, q). Returns the lanes where the step resolves every
   /// unstable direction of J: where J has an eigenvalue λ > 1/(hγ), the stage solves damp a
   /// mode that grows like exp(λt) (an L-stable method turns a saddle into a false attractor,
   /// and the embedded estimate shares the error); such a lane must retry with a smaller h.
-  ROTORSWEEP_HD lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new, V* q_new, V* y_error,
-                       V* q_error) {
+  ROTORSWEEP_HD lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new,
+                                     V* q_new, V* y_error, V* q_error) {
+    constexpr RosenbrockTableau T = Table;  // device code reads a local copy, never the host object
     const std::size_t n = n_;
     system.linearize(work_, y, t, f_, qdot_, jacobian_, df_dt_, dq_dy_, dq_dt_);
     const V h_gamma = h * V(T.gamma);
@@ -99,8 +100,9 @@ class RosenbrockStepper {
  private:
   ROTORSWEEP_HD V* stage(int i) { return stages_ + std::size_t(i) * n_; }
 
-  ROTORSWEEP_HD static void combine(const V* start, std::size_t count, const V* stages, std::size_t stride, V* result,
-                      V* error) {
+  ROTORSWEEP_HD static void combine(const V* start, std::size_t count, const V* stages, std::size_t stride,
+                                    V* result, V* error) {
+    constexpr RosenbrockTableau T = Table;
     for (std::size_t k = 0; k < count; ++k) {
       V sum = start[k];
       V err(0.0);

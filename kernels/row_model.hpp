@@ -72,7 +72,8 @@ class NearestNeighbourRows {
     for (std::size_t l = 0; l < lane_width<V>; ++l) set_lane(l, p);
   }
   /// A and g per lane, no lane symmetry protected.
-  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, V A, V g) : rows_(rows), A_(A), g_(g), inv_g_(V(1.0) / g) {}
+  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, V A, V g)
+      : rows_(rows), A_(A), g_(g), inv_g_(V(1.0) / g) {}
 
   /// Gives one lane new parameters (a lane block refilled with another member).
   ROTORSWEEP_HD void set_lane(std::size_t lane, const Parameters& p) {
@@ -95,8 +96,8 @@ class NearestNeighbourRows {
 
   /// evaluate() plus the Jacobian J = ∂f/∂θ, ∂f/∂t, and the gradients of the integrands
   /// (dq_dtheta[q·N + k] = ∂qdot_q/∂θ_k, dq_dt[q] = ∂qdot_q/∂t) at the same point.
-  ROTORSWEEP_HD void linearize(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt, V* dq_dtheta,
-                 V* dq_dt) const {
+  ROTORSWEEP_HD void linearize(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt,
+                               V* dq_dtheta, V* dq_dt) const {
     evaluate(w, theta, t, f, qdot);
     const std::size_t n = rows_;
     for (std::size_t j = 0; j < n; ++j) {
@@ -184,8 +185,8 @@ class NearestNeighbourRows {
     if constexpr (Q.energy) qdot[Q.energy_index()] = energy_from_trigonometry(w);
   }
 
-  ROTORSWEEP_HD void integrand_gradients(Workspace& w, const V* f, const Jacobian& J, const V* df_dt, V* dq_dtheta,
-                           V* dq_dt) const {
+  ROTORSWEEP_HD void integrand_gradients(Workspace& w, const V* f, const Jacobian& J, const V* df_dt,
+                                         V* dq_dtheta, V* dq_dt) const {
     const std::size_t n = rows_;
     if constexpr (Q.drive) {
       V* grad = dq_dtheta + Q.drive_index() * n;

@@ -5,9 +5,9 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string_view>
 #include <type_traits>
 #include <utility>
-#include <string_view>
 
 #include "kernels/dormand_prince.hpp"
 #include "kernels/rosenbrock.hpp"

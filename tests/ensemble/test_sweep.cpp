@@ -39,11 +39,14 @@ void require_identical(const std::vector<MemberResult>& a, const std::vector<Mem
     INFO("member " << i);
     CHECK(a[i].index == i);
     CHECK(same_bits(a[i].dissipation(), b[i].dissipation()));
-    CHECK(same_bits(a[i].mean(rotorsweep::ensemble::Channel::work), b[i].mean(rotorsweep::ensemble::Channel::work)));
-    CHECK(same_bits(a[i].mean(rotorsweep::ensemble::Channel::stokes), b[i].mean(rotorsweep::ensemble::Channel::stokes)));
+    CHECK(same_bits(a[i].mean(rotorsweep::ensemble::Channel::work),
+                    b[i].mean(rotorsweep::ensemble::Channel::work)));
+    CHECK(same_bits(a[i].mean(rotorsweep::ensemble::Channel::stokes),
+                    b[i].mean(rotorsweep::ensemble::Channel::stokes)));
     CHECK(same_bits(a[i].alignment_min(), b[i].alignment_min()));
     CHECK(same_bits(a[i].alignment_mean(), b[i].alignment_mean()));
-    CHECK(same_bits(a[i].mean(rotorsweep::ensemble::Channel::energy_mean), b[i].mean(rotorsweep::ensemble::Channel::energy_mean)));
+    CHECK(same_bits(a[i].mean(rotorsweep::ensemble::Channel::energy_mean),
+                    b[i].mean(rotorsweep::ensemble::Channel::energy_mean)));
     CHECK(a[i].slips_per_period() == b[i].slips_per_period());
     CHECK(a[i].regime == b[i].regime);
     CHECK(a[i].status == b[i].status);
@@ -86,7 +89,8 @@ TEST_CASE("every member runs its schedule and reports sane observables", "[ensem
     CHECK(r.status == rotorsweep::kernels::LaneStatus::ok);
     CHECK(r.periods_run == 4);
     REQUIRE(r.periods.size() == 4);
-    CHECK(r.dissipation() == Approx((r.periods[2].dissipation() + r.periods[3].dissipation()) / 2).epsilon(1e-14));
+    CHECK(r.dissipation() ==
+          Approx((r.periods[2].dissipation() + r.periods[3].dissipation()) / 2).epsilon(1e-14));
     CHECK(r.dissipation() > 0);
     CHECK(r.alignment_min() <= r.alignment_mean() + 1e-9);
     CHECK(r.alignment_mean() <= r.alignment_max() + 1e-9);

@@ -2,11 +2,10 @@
 // Eigen LU on the same matrix, for every size down to the two-row case.
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
-
-#include "support/kernel_scratch.hpp"
 #include <random>
 
 #include "kernels/cyclic_tridiagonal.hpp"
+#include "support/kernel_scratch.hpp"
 
 using rotorsweep::kernels::CyclicTridiagonal;
 

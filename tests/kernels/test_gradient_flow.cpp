@@ -2,12 +2,11 @@
 // monotonically along every accepted step, for each stepper.
 #include <catch2/catch.hpp>
 
-#include "support/kernel_scratch.hpp"
-
 #include "kernels/adaptive_integrator.hpp"
 #include "kernels/dormand_prince.hpp"
 #include "kernels/rosenbrock.hpp"
 #include "kernels/row_model.hpp"
+#include "support/kernel_scratch.hpp"
 #include "support/member_run.hpp"
 
 using namespace rotorsweep::kernels;
@@ -48,7 +47,8 @@ template <class Stepper>
 void check_energy_descent(double A, double g) {
   const std::size_t rows = 12;
   const FrozenDrive system{Model(rows, A, g), 0.9};
-  auto integrator = rotorsweep::testing::integrator<AdaptiveIntegrator<FrozenDrive, Stepper>>(system, {1e-8, 1e-11});
+  auto integrator =
+      rotorsweep::testing::integrator<AdaptiveIntegrator<FrozenDrive, Stepper>>(system, {1e-8, 1e-11});
   auto s = rotorsweep::testing::lane_state<double>(rows, FrozenDrive::quadrature_count);
   const auto theta = rotorsweep::testing::initial_angles(rows, rotorsweep::testing::Start::afm, 1.0, 17);
   for (std::size_t j = 0; j < rows; ++j) s.theta[j] = theta[j];

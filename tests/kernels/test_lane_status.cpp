@@ -1,8 +1,6 @@
 // Failure isolation in a SIMD block: a lane whose state turns non-finite is frozen and flagged
 // while the other lanes finish bit-identically; an exhausted step budget is flagged per lane.
 #include <catch2/catch.hpp>
-
-#include "support/kernel_scratch.hpp"
 #include <cmath>
 #include <limits>
 
@@ -10,6 +8,7 @@
 #include "kernels/angles.hpp"
 #include "kernels/rosenbrock.hpp"
 #include "kernels/row_model.hpp"
+#include "support/kernel_scratch.hpp"
 
 using namespace rotorsweep::kernels;
 
@@ -33,8 +32,10 @@ LaneState<simd_lane> make_state(bool poison_lane_zero) {
 TEST_CASE("a non-finite lane is frozen and flagged; the others are untouched", "[kernels][status]") {
   const Model model(rows, lane_from<simd_lane>([](std::size_t l) { return 1.0 + double(l); }),
                     simd_lane(0.01));
-  auto clean_run = rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-7, 1e-10});
-  auto poisoned_run = rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-7, 1e-10});
+  auto clean_run =
+      rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-7, 1e-10});
+  auto poisoned_run =
+      rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-7, 1e-10});
   auto clean = make_state(false), poisoned = make_state(true);
   clean_run.advance(model, clean);
   poisoned_run.advance(model, poisoned);
@@ -56,7 +57,8 @@ TEST_CASE("an exhausted step budget is flagged and stops the lane", "[kernels][s
   const Model model(rows, simd_lane(6.0), simd_lane(0.001));
   StepLimits limits;
   limits.max_steps = 40;
-  auto integrator = rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-8, 1e-11}, limits);
+  auto integrator =
+      rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-8, 1e-11}, limits);
   auto s = make_state(false);
   integrator.advance(model, s);
   for (std::size_t l = 0; l < W; ++l) {

@@ -2,9 +2,8 @@
 // periods, two averaged), and agreement of the three estimators W, S, R outside the CP regime.
 #include <catch2/catch.hpp>
 
-#include "support/kernel_scratch.hpp"
-
 #include "ensemble/paper_table.hpp"
+#include "support/kernel_scratch.hpp"
 #include "support/member_run.hpp"
 
 using rotorsweep::ensemble::Channel;

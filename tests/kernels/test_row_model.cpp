@@ -1,13 +1,12 @@
 // Tests of the row model (kernels/row_model.hpp, docs/model.md §1 and §3): the Jacobian, ∂f/∂t and
 // the integrand gradients against central differences; f = -∇H/g; N = 2 is the two-angle H_r.
 #include <catch2/catch.hpp>
-
-#include "support/kernel_scratch.hpp"
 #include <cmath>
 #include <random>
 #include <vector>
 
 #include "kernels/row_model.hpp"
+#include "support/kernel_scratch.hpp"
 
 using namespace rotorsweep::kernels;
 

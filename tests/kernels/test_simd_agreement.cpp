@@ -1,15 +1,14 @@
 // Scalar and SIMD instantiations of the same kernel source agree: right-hand side, Jacobian,
 // one step of every stepper, and whole adaptive runs with different parameters in each lane.
 #include <catch2/catch.hpp>
-
-#include "support/kernel_scratch.hpp"
 #include <cmath>
 #include <vector>
 
+#include "kernels/angles.hpp"
 #include "kernels/dormand_prince.hpp"
 #include "kernels/rosenbrock.hpp"
-#include "kernels/angles.hpp"
 #include "kernels/row_model.hpp"
+#include "support/kernel_scratch.hpp"
 #include "support/member_run.hpp"
 
 using namespace rotorsweep::kernels;

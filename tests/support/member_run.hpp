@@ -26,7 +26,8 @@ inline std::vector<double> initial_angles(std::size_t rows, Start start, double 
 /// One member (stream 0 of seed 7) of the row model on the scalar lane with the W, S, R
 /// estimators, averaged over `average` periods after `relax`; the stepper by name.
 inline ensemble::MemberResult run_member(std::size_t rows, double A, double g, Start start, int relax,
-                                         int average, double rtol, double atol, const char* stepper = "rodas4") {
+                                         int average, double rtol, double atol,
+                                         const char* stepper = "rodas4") {
   ensemble::Scene scene;
   scene.row_counts = {rows};
   scene.rtol_values = {rtol};

@@ -1,0 +1,32 @@
+// The kernels compiled for a GPU: the row model, both stepper families and the adaptive
+// integrator instantiated on the double lane inside a __global__ function (nvcc, no GPU needed).
+#include "kernels/adaptive_integrator.hpp"
+#include "kernels/lane_arena.hpp"
+#include "kernels/lane_math.hpp"
+#include "kernels/row_model.hpp"
+#include "kernels/stepper_list.hpp"
+
+using namespace rotorsweep::kernels;
+
+using Model = NearestNeighbourRows<double, all_integrals>;
+
+template <class Stepper>
+__global__ void advance_members(double* storage, std::size_t per_thread, std::size_t rows, const double* A,
+                                const double* g, double* dissipation) {
+  const std::size_t member = blockIdx.x * blockDim.x + threadIdx.x;
+  LaneArena<double> arena(storage + member * per_thread, per_thread);
+  const Model model(rows, {A[member], g[member], false});
+  AdaptiveIntegrator<Model, Stepper> integrator(model, {1e-6, 1e-9}, {}, arena);
+  LaneState<double> state(rows, Model::quadrature_count, arena);
+  for (std::size_t j = 0; j < rows; ++j) state.theta[j] = 3.14159 * double(j % 2) + 0.01 * double(j);
+  state.t_stop = two_pi;
+  integrator.advance(model, state);
+  double s = 0, c = 0;
+  lane_sincos(state.theta[0], s, c);
+  dissipation[member] = state.quad[0] + 0.0 * s * c;
+}
+
+template __global__ void advance_members<stepper_at<0>::type::type<Model>>(double*, std::size_t, std::size_t,
+                                                                          const double*, const double*, double*);
+template __global__ void advance_members<stepper_at<2>::type::type<Model>>(double*, std::size_t, std::size_t,
+                                                                          const double*, const double*, double*);
