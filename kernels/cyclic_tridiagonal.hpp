@@ -72,20 +72,20 @@ class CyclicTridiagonal {
     // rows 0 .. m-1:  x_i + upper_i x_{i+1} + spike_i x_m = y_i
     V d = shift - diag_[0];
     inv_pivot_[0] = V(1.0) / d;
-    upper_[0] = -off_[0] * inv_pivot_[0];
-    spike_[0] = -off_[m] * inv_pivot_[0];
+    upper_[0] = lane_neg(off_[0]) * inv_pivot_[0];
+    spike_[0] = lane_neg(off_[m]) * inv_pivot_[0];
     for (std::size_t i = 1; i < m; ++i) {
-      const V sub = -off_[i - 1];
+      const V sub = lane_neg(off_[i - 1]);
       d = shift - diag_[i] - sub * upper_[i - 1];
       inv_pivot_[i] = V(1.0) / d;
-      upper_[i] = -off_[i] * inv_pivot_[i];
-      spike_[i] = -sub * spike_[i - 1] * inv_pivot_[i];
+      upper_[i] = lane_neg(off_[i]) * inv_pivot_[i];
+      spike_[i] = lane_neg(sub) * spike_[i - 1] * inv_pivot_[i];
     }
     spike_[m - 1] += upper_[m - 1];  // x_{(m-1)+1} is x_m itself
     // last row: corner_k is the coefficient that multiplies x_k while x_0 .. x_{m-1} are eliminated
-    corner_[0] = -off_[m];
-    for (std::size_t k = 0; k + 2 <= m; ++k) corner_[k + 1] = -corner_[k] * upper_[k];
-    corner_[m - 1] += -off_[m - 1];
+    corner_[0] = lane_neg(off_[m]);
+    for (std::size_t k = 0; k + 2 <= m; ++k) corner_[k + 1] = lane_neg(corner_[k]) * upper_[k];
+    corner_[m - 1] -= off_[m - 1];
     V beta = shift - diag_[m];
     for (std::size_t k = 0; k < m; ++k) beta -= corner_[k] * spike_[k];
     inv_pivot_[m] = V(1.0) / beta;

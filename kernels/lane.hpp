@@ -36,6 +36,8 @@ inline constexpr std::size_t lane_width = lane_traits<V>::width;
 
 ROTORSWEEP_HD inline double lane_select(bool m, double a, double b) { return m ? a : b; }
 ROTORSWEEP_HD inline double lane_abs(double x) { return std::fabs(x); }
+/// -x by flipping the sign bit (so -(+0) = -0 in every lane type).
+ROTORSWEEP_HD inline double lane_neg(double x) { return -x; }
 ROTORSWEEP_HD inline double lane_min(double a, double b) { return a < b ? a : b; }
 ROTORSWEEP_HD inline double lane_max(double a, double b) { return a > b ? a : b; }
 ROTORSWEEP_HD inline double lane_sqrt(double x) { return std::sqrt(x); }
@@ -86,6 +88,11 @@ inline xsimd::batch<double, Arch> lane_select(const xsimd::batch_bool<double, Ar
 template <class Arch>
 inline auto lane_abs(const xsimd::batch<double, Arch>& x) {
   return xsimd::abs(x);
+}
+// xsimd 8's AVX-512 unary minus computes 0 - x, which gives +0 for +0: flip the sign bit instead.
+template <class Arch>
+inline auto lane_neg(const xsimd::batch<double, Arch>& x) {
+  return xsimd::bitwise_xor(x, xsimd::batch<double, Arch>(-0.0));
 }
 template <class Arch>
 inline auto lane_min(const xsimd::batch<double, Arch>& a, const xsimd::batch<double, Arch>& b) {

@@ -104,8 +104,8 @@ class NearestNeighbourRows {
       const std::size_t jm = (j == 0) ? n - 1 : j - 1;
       const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
       J.diag(j) = inv_g_ * (V(-6.0) * cos_2theta + w.cos_link[j] + w.cos_link[jm] + A_ * w.cos_lag[j]);
-      J.off(j) = -inv_g_ * w.cos_link[j];
-      df_dt[j] = -inv_g_ * A_ * w.cos_lag[j];
+      J.off(j) = lane_neg(inv_g_) * w.cos_link[j];
+      df_dt[j] = lane_neg(inv_g_) * A_ * w.cos_lag[j];
     }
     J.keep_constant_solutions(strict_fm_ != V(0.0));
     integrand_gradients(w, f, J, df_dt, dq_dtheta, dq_dt);
@@ -195,7 +195,7 @@ class NearestNeighbourRows {
         grad[k] = A_ * w.cos_lag[k];
         sum += w.cos_lag[k];
       }
-      dq_dt[Q.drive_index()] = -A_ * sum;
+      dq_dt[Q.drive_index()] = lane_neg(A_) * sum;
     }
     if constexpr (Q.work) {
       V* grad = dq_dtheta + Q.work_index() * n;
@@ -232,7 +232,7 @@ class NearestNeighbourRows {
       V* grad = dq_dtheta + Q.energy_index() * n;
       V sum(0.0);
       for (std::size_t k = 0; k < n; ++k) {
-        grad[k] = -g_ * f[k];
+        grad[k] = lane_neg(g_) * f[k];
         sum += w.sin_lag[k];
       }
       dq_dt[Q.energy_index()] = A_ * sum;

@@ -60,9 +60,9 @@ class SingleRotor {
     V s, c;
     lane_sincos(theta[0] - t, s, c);
     J.diag(0) = inv_g_ * A_ * c;
-    df_dt[0] = -inv_g_ * A_ * c;
+    df_dt[0] = lane_neg(inv_g_) * A_ * c;
     dq_dtheta[0] = A_ * c;
-    dq_dt[0] = -A_ * c;
+    dq_dt[0] = lane_neg(A_) * c;
   }
 
  private:
