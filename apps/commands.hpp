@@ -24,6 +24,7 @@ struct RunOptions {
   std::string output;  ///< overrides the scene's output.path
   int threads = 0;     ///< 0: OpenMP's default
   bool quiet = false;  ///< no progress line
+  bool force = false;  ///< replace an existing file that is not an HDF5 file
 };
 int run_sweep_command(const RunOptions& options);
 

@@ -94,6 +94,16 @@ int run_info(const InfoOptions& options) {
                     *std::min_element(per_row.begin(), per_row.end()),
                     *std::max_element(per_row.begin(), per_row.end()));
     }
+    if (members.has("dissipation_resolved")) {
+      const auto resolved = members.read_integers("dissipation_resolved");
+      const auto status = members.read_strings("status");
+      std::size_t unresolved = 0;
+      for (std::size_t i = 0; i < resolved.size(); ++i) unresolved += status[i] == "ok" && !resolved[i];
+      if (unresolved > 0)
+        std::printf(
+            "%-12s %zu members whose D is not resolved (dissipation_error >= 0.1 |D|: tighten rtol)\n",
+            "warning", unresolved);
+    }
     std::printf("%-12s /members:", "datasets");
     for (const auto& name : members.members()) std::printf(" %s", name.c_str());
     std::printf("\n");

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <optional>
@@ -11,6 +10,7 @@
 #include "build_info.hpp"
 #include "commands.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/output_target.hpp"
 #include "landscape/bifurcation_curves.hpp"
 #include "landscape/chamber_map.hpp"
 #include "landscape/jump_friction.hpp"
@@ -22,17 +22,18 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// Creates the file with `complete` = FALSE, lets `fill` write it, then records the wall time and
-/// sets `complete` = TRUE. Exit code 2 when the file cannot be created, 1 on a later failure.
+/// Creates the file (beside its final path, see io/output_target.hpp) with `complete` = FALSE,
+/// lets `fill` write it, records the wall time, sets `complete` = TRUE and puts it in place.
+/// Exit code 2 when the path cannot be used, 1 on a later failure (no file is left behind).
 int write_landscape_file(const std::string& path, const std::string& kind,
                          const std::function<void(const io::Hdf5Location&)>& fill) {
+  std::optional<io::OutputTarget> target;
   std::optional<io::Hdf5Location> file;
   try {
-    const auto parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent);
-    file = io::Hdf5Location::create_file(path);
+    target.emplace(path, std::vector<std::string>{}, io::Replaceable::hdf5, false);
+    file = io::Hdf5Location::create_file(target->temporary());
   } catch (const std::exception& e) {
-    std::cerr << "error: output path '" << path << "' (-o): " << e.what() << "\n";
+    std::cerr << "error: " << e.what() << " (-o)\n";
     return 2;
   }
   try {
@@ -46,10 +47,13 @@ int write_landscape_file(const std::string& path, const std::string& kind,
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     file->set_attribute("wall_seconds", wall);
     file->set_flag("complete", true);
-    file->flush();
-    std::printf("wrote %s (%s) in %s\n", path.c_str(), kind.c_str(), format_duration(wall).c_str());
+    file->close();
+    target->commit();
+    std::printf("wrote %s (%s)%s in %s\n", path.c_str(), kind.c_str(),
+                target->replaced() ? " replacing the previous file" : "", format_duration(wall).c_str());
   } catch (const std::exception& e) {
-    std::cerr << "error: writing '" << path << "': " << e.what() << "\n";
+    std::cerr << "error: writing '" << path << "' failed: " << e.what() << "; "
+              << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";
     return 1;
   }
   return 0;

@@ -1,6 +1,9 @@
 // Entry point of the rotorsweep command line: parses the subcommand and its options (CLI11).
-// Bad options end with one message and exit code 2.
+// Bad options end with one message and exit code 2; any later failure with one message and exit code 1.
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
 
 #include "commands.hpp"
 #include "kernels/stepper_list.hpp"
@@ -9,6 +12,13 @@ int main(int argc, char** argv) {
   using namespace rotorsweep::apps;
   CLI::App app{"rotorsweep: ensemble sweeper for magnetic rotor arrays over a magnetic substrate"};
   app.require_subcommand(1);
+  const CLI::Validator finite(
+      [](const std::string& text) {
+        double x = 0;
+        return CLI::detail::lexical_cast(text, x) && std::isfinite(x) ? std::string()
+                                                                      : "must be a finite number";
+      },
+      "FINITE");
   const std::vector<std::string> steppers(rotorsweep::kernels::stepper_names.begin(),
                                           rotorsweep::kernels::stepper_names.end());
 
@@ -20,7 +30,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(steppers))
       ->capture_default_str();
   table_cmd->add_option("--rtol", table.rtol, "Relative tolerance (atol = rtol/1000)")
-      ->check(CLI::Range(1e-14, 1e-2))
+      ->check(finite & CLI::Range(1e-14, 1e-2))
       ->capture_default_str();
   table_cmd->add_option("-o,--output", table.output, "Write the table as CSV to this file");
 
@@ -32,6 +42,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::Range(1, 4096));
   run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
+  run_cmd->add_flag("--force", run.force, "Replace an existing output file even if it is not an HDF5 file");
 
   InfoOptions info;
   auto* info_cmd = app.add_subcommand("info", "Summarise a result file");
@@ -50,8 +61,8 @@ int main(int argc, char** argv) {
   auto* chambers_cmd = landscape_cmd->add_subcommand(
       "chambers", "Raster over (A, τ ∈ [0, π/2]): Morse signature, alignment classes, zones and chambers");
   output_option(chambers_cmd);
-  chambers_cmd->add_option("--A-min", landscape.A_min, "Smallest A")->capture_default_str();
-  chambers_cmd->add_option("--A-max", landscape.A_max, "Largest A")->capture_default_str();
+  chambers_cmd->add_option("--A-min", landscape.A_min, "Smallest A")->check(finite)->capture_default_str();
+  chambers_cmd->add_option("--A-max", landscape.A_max, "Largest A")->check(finite)->capture_default_str();
   chambers_cmd->add_option("--A-cells", landscape.A_cells, "Cells along A")
       ->check(CLI::Range(2, 100000))
       ->capture_default_str();
@@ -68,7 +79,8 @@ int main(int argc, char** argv) {
   curves_cmd->add_option("--samples", landscape.samples, "Points per curve")
       ->check(CLI::Range(2, 10000000))
       ->capture_default_str();
-  curves_cmd->add_option("--A-max", landscape.A_max, "Drop off-diagonal points above this A")
+  curves_cmd->add_option("--A-max", landscape.A_max, "Drop off-diagonal points above this A (> 0)")
+      ->check(finite & CLI::PositiveNumber)
       ->capture_default_str();
   auto* jump_cmd = landscape_cmd->add_subcommand(
       "jump-friction", "Quasi-static CP friction J(A) on a uniform grid over [A_-, A_*]");
@@ -89,16 +101,29 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+    for (const auto* cmd : {run_cmd, table_cmd, chambers_cmd, curves_cmd, jump_cmd})
+      if (cmd->parsed() && cmd->count("-o") > 0 && cmd->get_option("-o")->as<std::string>().empty())
+        throw CLI::ValidationError("--output", "the output path is empty");
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
-  if (*run_cmd) return run_sweep_command(run);
-  if (*info_cmd) return run_info(info);
-  if (*table_cmd) return run_table(table);
-  if (*kernels_cmd) return run_bench_kernels(bench);
-  if (*chambers_cmd) return run_landscape_chambers(landscape);
-  if (*curves_cmd) return run_landscape_curves(landscape);
-  if (*jump_cmd) return run_landscape_jump_friction(landscape);
+  // a write beyond the file-size limit fails with EFBIG (and is reported) instead of killing us
+  std::signal(SIGXFSZ, SIG_IGN);
+  try {
+    if (*run_cmd) return run_sweep_command(run);
+    if (*info_cmd) return run_info(info);
+    if (*table_cmd) return run_table(table);
+    if (*kernels_cmd) return run_bench_kernels(bench);
+    if (*chambers_cmd) return run_landscape_chambers(landscape);
+    if (*curves_cmd) return run_landscape_curves(landscape);
+    if (*jump_cmd) return run_landscape_jump_friction(landscape);
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "error: out of memory\n");
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
   return 2;
 }

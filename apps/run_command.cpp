@@ -1,17 +1,20 @@
 // `rotorsweep run SCENE.toml`: validate the scene, plan its members, sweep them on lane
 // blocks, and write the HDF5 result file (complete = TRUE only once everything is in).
 #include <omp.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include "build_info.hpp"
 #include "commands.hpp"
 #include "ensemble/curves.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/sweep.hpp"
+#include "io/output_target.hpp"
 #include "io/result_file.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/lane.hpp"
@@ -39,6 +42,31 @@ void report_failures(const std::vector<ensemble::MemberResult>& results) {
   std::fprintf(stderr, "; see /members/status\n");
 }
 
+/// Whether the plan's results fit in this machine's memory; says how much it needs when not.
+bool fits_in_memory(const ensemble::Scene& scene) {
+  const double needed = ensemble::plan_memory_bytes(scene);
+  const double available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  if (available <= 0 || needed <= 0.8 * available) return true;
+  std::fprintf(stderr,
+               "error: the plan's %.3g members need about %.3g GiB of memory for their results; this machine "
+               "has %.3g GiB. Split the sweep (fewer A, g, replicas per scene)%s.\n",
+               double(scene.member_count()), needed / 0x1p30, available / 0x1p30,
+               scene.period_series ? " or switch off observables.period_series" : "");
+  return false;
+}
+
+void report_unresolved(const ensemble::Scene& scene, const std::vector<ensemble::MemberResult>& results) {
+  if (!scene.has(ensemble::Observable::dissipation)) return;
+  std::size_t unresolved = 0;
+  for (const auto& r : results)
+    unresolved += r.status == kernels::LaneStatus::ok && !r.dissipation_resolved();
+  if (unresolved > 0)
+    std::fprintf(stderr,
+                 "warning: %zu members whose D is not resolved (dissipation_error >= 0.1 |D|); tighten "
+                 "numerics.rtol and atol; see /members/dissipation_resolved\n",
+                 unresolved);
+}
+
 }  // namespace
 
 int run_sweep_command(const RunOptions& options) {
@@ -49,19 +77,20 @@ int run_sweep_command(const RunOptions& options) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
-  const std::string path = output_path(options, scene);
+  if (!fits_in_memory(scene)) return 2;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  const auto members = ensemble::plan_members(scene);
 
+  std::optional<io::OutputTarget> target;
   std::optional<io::ResultFile> file;
+  const std::string path = output_path(options, scene);
   try {
-    const auto parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent);
-    file.emplace(path, scene, io::Provenance{options.scene, version, revision});
+    target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force);
+    file.emplace(target->temporary(), scene, io::Provenance{options.scene, version, revision});
   } catch (const std::exception& e) {
-    std::cerr << "error: output path '" << path << "' (-o or output.path): " << e.what() << "\n";
+    std::cerr << "error: " << e.what() << " (-o or output.path)\n";
     return 2;
   }
+  const auto members = ensemble::plan_members(scene);
 
   const std::size_t lanes =
       scene.lanes == ensemble::LaneKind::simd ? kernels::lane_width<kernels::simd_lane> : 1;
@@ -90,16 +119,20 @@ int run_sweep_command(const RunOptions& options) {
     file->write_members(scene, members, outcome.results);
     file->write_curves(scene, ensemble::aggregate_curves(members, outcome.results, scene.replicas));
     file->finish(outcome.statistics);
+    file->close();
+    target->commit();
   } catch (const std::exception& e) {
-    std::cerr << "error: writing " << path << " failed (the file says complete = FALSE): " << e.what()
-              << "\n";
+    std::cerr << "error: writing " << path << " failed: " << e.what() << "; "
+              << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";
     return 1;
   }
   report_failures(outcome.results);
+  report_unresolved(scene, outcome.results);
   const auto& stats = outcome.statistics;
-  std::fprintf(stderr, "wrote %s: %zu members in %s (%.1f members/s, lane occupancy %.1f %%)\n", path.c_str(),
-               members.size(), format_duration(stats.wall_seconds).c_str(),
-               double(members.size()) / stats.wall_seconds, 100 * stats.occupancy());
+  std::fprintf(stderr, "wrote %s%s: %zu members in %s (%.1f members/s, lane occupancy %.1f %%)\n",
+               path.c_str(), target->replaced() ? " (replacing the previous file)" : "", members.size(),
+               format_duration(stats.wall_seconds).c_str(), double(members.size()) / stats.wall_seconds,
+               100 * stats.occupancy());
   return 0;
 }
 

@@ -1,17 +1,22 @@
 // `rotorsweep table`: integrates the paper's reference members (N = 20, g = 0.0011, FM and
 // AFM starts, 2 relaxation periods, 2 averaged) and prints W, S, R beside the paper's R.
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/paper_table.hpp"
 #include "ensemble/scene.hpp"
 #include "ensemble/sweep.hpp"
+#include "io/output_target.hpp"
 #include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::apps {
@@ -46,11 +51,18 @@ ensemble::SweepOutcome integrate(kernels::StepperId stepper, double rtol) {
 
 int run_table(const TableOptions& options) {
   const auto stepper = kernels::parse_stepper(options.stepper).value();
+  std::optional<io::OutputTarget> target;
   std::ofstream csv;
   if (!options.output.empty()) {
-    csv.open(options.output);
+    try {
+      target.emplace(options.output, std::vector<std::string>{}, io::Replaceable::any, false);
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << " (-o)\n";
+      return 2;
+    }
+    csv.open(target->temporary());
     if (!csv) {
-      std::cerr << "error: cannot write " << options.output << "\n";
+      std::cerr << "error: cannot write " << options.output << ": " << std::strerror(errno) << "\n";
       return 2;
     }
     csv << "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period\n";
@@ -78,7 +90,16 @@ int run_table(const TableOptions& options) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("stepper %s, rtol %g: %.2f s", options.stepper.c_str(), options.rtol, seconds);
-  if (csv) std::printf(", table written to %s", options.output.c_str());
+  if (target) {
+    csv.close();
+    if (!csv) {
+      std::printf("\n");
+      std::cerr << "error: writing " << options.output << " failed: " << std::strerror(errno) << "\n";
+      return 1;
+    }
+    target->commit();
+    std::printf(", table written to %s%s", options.output.c_str(), target->replaced() ? " (replaced)" : "");
+  }
   std::printf("\n");
   return 0;
 }

@@ -23,6 +23,7 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
       point.regime_fraction[std::size_t(r.regime)] += 1.0 / double(group);
       if (r.status != kernels::LaneStatus::ok) continue;
       ++point.count;
+      point.unresolved += !r.dissipation_resolved();
       sum += r.dissipation();
       point.dissipation_min = std::min(point.dissipation_min, r.dissipation());
       point.dissipation_max = std::max(point.dissipation_max, r.dissipation());

@@ -16,8 +16,9 @@ struct CurvePoint {
   double rtol = 0;
   double A = 0, g = 0;
   InitialKind kind = InitialKind::afm;
-  std::size_t members = 0;  ///< replicas at this point
-  std::size_t count = 0;    ///< of them, members that finished with status ok (the statistics use these)
+  std::size_t members = 0;     ///< replicas at this point
+  std::size_t count = 0;       ///< of them, members that finished with status ok (the statistics use these)
+  std::size_t unresolved = 0;  ///< of those, members whose D is not resolved (dissipation_resolved)
   double dissipation_mean = 0, dissipation_std = 0, dissipation_min = 0, dissipation_max = 0;
   std::array<double, 4> regime_fraction{};  ///< over all members of the point, in all_regimes order
 };

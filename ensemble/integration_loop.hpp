@@ -20,6 +20,7 @@ namespace rotorsweep::ensemble {
 template <kernels::LaneModel Model, class Stepper>
 class IntegrationLoop {
  public:
+  using model_type = Model;
   using V = typename Model::lane_type;
   using Parameters = typename Model::Parameters;
   static constexpr std::size_t width = kernels::lane_width<V>;

@@ -2,9 +2,11 @@
 // of an integration loop, closes their periods into records, and retires and refills lanes.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "ensemble/integration_loop.hpp"
@@ -17,6 +19,26 @@
 #include "kernels/angles.hpp"
 
 namespace rotorsweep::ensemble {
+
+/// The step observers a loop's model can feed: the alignment extremes where it integrates ρ̄, the
+/// dissipation's error estimate where it integrates R (the slip counter is always there).
+template <class Loop>
+auto quadrature_observers(const Member& variant) {
+  constexpr kernels::Integrals Q = Loop::model_type::integrals;
+  const auto alignment = [] {
+    if constexpr (Q.alignment)
+      return std::tuple<AlignmentObserver<Loop>>();
+    else
+      return std::tuple<>();
+  };
+  const auto dissipation = [&] {
+    if constexpr (Q.drive)
+      return std::tuple(DissipationErrorObserver<Loop>(variant.rtol, variant.atol));
+    else
+      return std::tuple<>();
+  };
+  return std::tuple_cat(alignment(), dissipation());
+}
 
 /// Runs members of one variant (one dimension and tolerances) through the lanes of an
 /// IntegrationLoop<Model, Stepper>. `Setup` turns a member into the model's parameters and its
@@ -34,6 +56,7 @@ class LaneScheduler {
         setup_(std::move(setup)),
         loop_(variant.rows, {variant.rtol, variant.atol},
               {.h_max = scene.h_max, .max_steps = scene.max_steps}),
+        observers_(quadrature_observers<Loop>(variant)),
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
         lanes_(width) {}
 
@@ -63,15 +86,13 @@ class LaneScheduler {
   struct Lane {
     bool occupied = false;
     Member member;
-    std::vector<PeriodRecord> history;
+    std::vector<PeriodRecord> history;  ///< every period with period_series, else the last ones
+    int periods = 0;                    ///< periods closed
   };
-
-  template <class Observer>
-  using observer_if_alignment = std::conditional_t<Q.alignment, std::tuple<Observer>, std::tuple<>>;
 
   template <class F>
   void for_each_observer(F&& f) {
-    std::apply([&](auto&... observer) { (f(observer), ...); }, alignment_);
+    std::apply([&](auto&... observer) { (f(observer), ...); }, observers_);
     f(slips_);
   }
 
@@ -93,11 +114,12 @@ class LaneScheduler {
     lanes_[l].occupied = true;
     lanes_[l].member = member;
     lanes_[l].history.clear();
+    lanes_[l].periods = 0;
     ++occupied_;
   }
 
   void step() {
-    std::apply([&](auto&... observer) { loop_.step(observer..., slips_); }, alignment_);
+    std::apply([&](auto&... observer) { loop_.step(observer..., slips_); }, observers_);
     busy_ += double(occupied_);
     total_ += double(width);
   }
@@ -117,7 +139,8 @@ class LaneScheduler {
 
     auto& history = lanes_[l].history;
     history.push_back(record);
-    const int periods = int(history.size());
+    const int periods = ++lanes_[l].periods;
+    forget_old_periods(history);
     const bool long_enough = periods >= scene_.relax_periods + scene_.average_periods;
     bool settled = long_enough;
     if (scene_.steady_tol > 0) settled = long_enough && periods_agree(history, scene_.steady_tol);
@@ -128,13 +151,22 @@ class LaneScheduler {
     loop_.next_period(l, scene_.wrap_angles);
   }
 
+  /// Without period_series only the averaged periods (and the two the steady test compares) are
+  /// needed: the history is cut back to them whenever it reaches twice that length, so a lane
+  /// holds at most 2 max(average_periods, 2) records however long its member runs.
+  void forget_old_periods(std::vector<PeriodRecord>& history) const {
+    if (scene_.period_series) return;
+    const std::size_t keep = std::size_t(std::max(scene_.average_periods, 2));
+    if (history.size() >= 2 * keep) history.erase(history.begin(), history.end() - std::ptrdiff_t(keep));
+  }
+
   MemberResult finish(std::size_t l, bool settled) {
     Lane& lane = lanes_[l];
     MemberResult result;
     result.index = lane.member.index;
     result.status = loop_.status(l);
     result.settled = settled;
-    result.periods_run = int(lane.history.size());
+    result.periods_run = lane.periods;
     result.steps_accepted = loop_.steps_accepted(l);
     result.steps_rejected = loop_.steps_rejected(l);
     result.theta_final.resize(loop_.dimension());
@@ -154,7 +186,7 @@ class LaneScheduler {
   const Scene& scene_;
   Setup setup_;
   Loop loop_;
-  observer_if_alignment<AlignmentObserver<Loop>> alignment_;
+  decltype(quadrature_observers<Loop>(std::declval<const Member&>())) observers_;
   SlipObserver<Loop> slips_;
   std::vector<Lane> lanes_;
   std::size_t occupied_ = 0;

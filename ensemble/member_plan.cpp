@@ -2,6 +2,10 @@
 // nesting order, so that the members of one (variant, A, g, kind) point are consecutive.
 #include "ensemble/member_plan.hpp"
 
+#include <algorithm>
+
+#include "ensemble/member_result.hpp"
+
 namespace rotorsweep::ensemble {
 
 std::vector<Member> plan_members(const Scene& scene) {
@@ -17,6 +21,17 @@ std::vector<Member> plan_members(const Scene& scene) {
             members.push_back({members.size(), members.size() - v * per_variant, A, g, kind, replica, v,
                                variants[v].rows, variants[v].rtol, variants[v].atol});
   return members;
+}
+
+double plan_memory_bytes(const Scene& scene) {
+  const double rows = double(scene.max_rows());
+  const double columns = 2 * 8 * rows + 8 * 64;  // written copies of the angles and scalar columns
+  const int periods = std::max(scene.max_periods, scene.relax_periods + scene.average_periods);
+  const double series = scene.period_series ? double(periods) * 2 * sizeof(PeriodRecord) : 0.0;
+  const double per_member = sizeof(Member) + sizeof(MemberResult) + 2 * 8 * rows + columns + series;
+  double count = 1;
+  for (std::size_t n : scene.axis_sizes()) count *= double(n);
+  return count * per_member;
 }
 
 std::vector<double> member_initial_angles(const Scene& scene, const Member& member) {

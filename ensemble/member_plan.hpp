@@ -24,6 +24,11 @@ struct Member {
 
 std::vector<Member> plan_members(const Scene& scene);
 
+/// Bytes a run of the whole plan holds at its peak, as an estimate: per member its Member and
+/// MemberResult, its initial and final angles, the columns being written and, with
+/// period_series, every period record of the longest schedule.
+double plan_memory_bytes(const Scene& scene);
+
 /// θ(0) of a member: its kind with the scene's noise, offset and angles, drawn from the
 /// stream (scene seed, member.stream).
 std::vector<double> member_initial_angles(const Scene& scene, const Member& member);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <string_view>
 #include <vector>
@@ -55,6 +56,13 @@ struct MemberResult {
   double mean(Channel c) const { return summary(Summary::mean, c); }
   double dissipation() const { return mean(Channel::dissipation); }
   double dissipation_std() const { return summary(Summary::spread, Channel::dissipation); }
+  double dissipation_error() const { return mean(Channel::dissipation_error); }
+  /// Whether D is resolved: finished, and its estimated error below 10 % of |D| (docs/numerics.md).
+  bool dissipation_resolved() const {
+    return status == kernels::LaneStatus::ok &&
+           dissipation_error() < resolved_fraction * std::fabs(dissipation());
+  }
+  static constexpr double resolved_fraction = 0.1;
   double alignment_mean() const { return mean(Channel::alignment_mean); }
   double alignment_min() const { return summary(Summary::minimum, Channel::alignment_min); }
   double alignment_max() const { return summary(Summary::maximum, Channel::alignment_max); }

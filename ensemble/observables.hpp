@@ -20,8 +20,9 @@ enum class Channel : std::size_t {
   alignment_max,
   energy_mean,
   slips,
+  dissipation_error,
 };
-inline constexpr std::size_t channel_count = 8;
+inline constexpr std::size_t channel_count = 9;
 
 /// Where a channel's value for a period comes from.
 enum class Source {
@@ -81,11 +82,17 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
      true,
      {true, false, false, false, false},
      {{declare::channel(
-         Channel::dissipation, "dissipation", "R_k = A Σ∫ sin(θ_j - t) dt", Source::quadrature,
-         kernels::Quadrature::drive,
-         {Summary::mean, "dissipation", "D per period, R estimator A Σ∫ sin(θ_j - t) dt, mean"},
-         {Summary::spread, "dissipation_std", "population spread of D"})}},
-     1},
+           Channel::dissipation, "dissipation", "R_k = A Σ∫ sin(θ_j - t) dt", Source::quadrature,
+           kernels::Quadrature::drive,
+           {Summary::mean, "dissipation", "D per period, R estimator A Σ∫ sin(θ_j - t) dt, mean"},
+           {Summary::spread, "dissipation_std", "population spread of D"}),
+       declare::channel(Channel::dissipation_error, "dissipation_error",
+                        "error estimate of R_k: rtol max_t |R(t)| + atol (docs/numerics.md)",
+                        Source::step_reducer, kernels::Quadrature::drive,
+                        {Summary::mean, "dissipation_error",
+                         "estimated integration error of D: mean over the averaged periods of "
+                         "rtol max_t |R(t)| + atol"})}},
+     2},
     {"estimators",
      false,
      {false, true, true, false, false},

@@ -2,6 +2,7 @@
 // conditions, schedule, observables, numerics, output. Plain data; io/ parses and validates it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -69,9 +70,17 @@ struct Scene {
     for (std::size_t r : row_counts) n = r > n ? r : n;
     return n;
   }
+  /// The sizes of the plan's axes: rows, rtol, A, g, kinds, replicas.
+  std::array<std::size_t, 6> axis_sizes() const {
+    return {row_counts.size(), rtol_values.size(), A_values.size(),
+            g_values.size(),   kinds.size(),       std::size_t(replicas)};
+  }
+  /// The number of members (the product of the axis sizes); SIZE_MAX where the product overflows.
   std::size_t member_count() const {
-    return row_counts.size() * rtol_values.size() * A_values.size() * g_values.size() * kinds.size() *
-           std::size_t(replicas);
+    std::size_t count = 1;
+    for (std::size_t n : axis_sizes())
+      if (__builtin_mul_overflow(count, n, &count)) return SIZE_MAX;
+    return count;
   }
 };
 

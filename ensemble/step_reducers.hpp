@@ -1,5 +1,6 @@
 // Reducers that watch every accepted step of a lane block (docs/architecture.md "Observers"): the
-// extremes of the alignment ρ̄ and the count of slip events (docs/model.md §3).
+// extremes of the alignment ρ̄, the count of slip events (docs/model.md §3) and the swing of the
+// dissipation integral that bounds its error (docs/numerics.md).
 #pragma once
 
 #include <cstddef>
@@ -67,6 +68,26 @@ struct SlipCounter {
   void end_period(std::size_t lane, PeriodRecord& record) {
     record[Channel::slips] = kernels::lane_get(count, lane);
     kernels::lane_set(count, lane, 0.0);
+  }
+};
+
+/// The error of a period's dissipation R_k. The step control holds the local error of the running
+/// integral R(t) below atol + rtol |R(t)|, and R(t) swings far above its final value R_k (D is a
+/// small remainder of that swing), so the error of R_k is estimated as rtol max_t |R(t)| + atol.
+template <class V>
+struct DissipationSwing {
+  V swing = V(0.0);  ///< max |R(t)| at the accepted step points of the current period
+
+  void start_lane(std::size_t lane) { kernels::lane_set(swing, lane, 0.0); }
+
+  void accumulate(kernels::lane_mask<V> accepted, V running_integral) {
+    swing =
+        kernels::lane_select(accepted, kernels::lane_max(swing, kernels::lane_abs(running_integral)), swing);
+  }
+
+  void end_period(std::size_t lane, double rtol, double atol, PeriodRecord& record) {
+    record[Channel::dissipation_error] = rtol * kernels::lane_get(swing, lane) + atol;
+    start_lane(lane);
   }
 };
 

@@ -9,9 +9,33 @@ namespace rotorsweep::io {
 
 namespace {
 
-void silence_hdf5_error_stack() {
-  static const bool silenced = [] { return H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0; }();
-  (void)silenced;
+/// Before the library's first use: no error stack printed (every failure becomes an exception), and
+/// no library shutdown at exit. HDF5 1.10 crashes in that shutdown on a file whose last write
+/// failed (a full disk); our handles close every file themselves, so there is nothing left to do.
+void prepare_hdf5() {
+  static const bool prepared = [] {
+    H5dont_atexit();
+    return H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0;
+  }();
+  (void)prepared;
+}
+
+/// The innermost entry of HDF5's error stack, or the OS reason it carries ("File too large"),
+/// as ": <text>"; "" when the stack is empty.
+std::string innermost_error() {
+  std::string text;
+  const auto first = [](unsigned n, const H5E_error2_t* error, void* out) -> herr_t {
+    if (n == 0 && error->desc) *static_cast<std::string*>(out) = error->desc;
+    return 0;
+  };
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, first, &text);
+  // an OS failure carries "..., errno = 28, error message = 'No space left on device', ...": keep that
+  const std::string marker = "error message = '";
+  if (const auto at = text.find(marker); at != std::string::npos) {
+    const auto begin = at + marker.size();
+    text = text.substr(begin, text.find('\'', begin) - begin);
+  }
+  return text.empty() ? "" : ": " + text;
 }
 
 Hdf5Handle string_type() {
@@ -73,18 +97,18 @@ Hdf5Handle::~Hdf5Handle() {
 }
 
 void Hdf5Location::fail(const std::string& what, const std::string& name) const {
-  throw std::runtime_error("HDF5: cannot " + what + " '" + name + "' in " + path_);
+  throw std::runtime_error("HDF5: cannot " + what + " '" + name + "' in " + path_ + innermost_error());
 }
 
 Hdf5Location Hdf5Location::create_file(const std::string& path) {
-  silence_hdf5_error_stack();
+  prepare_hdf5();
   const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (id < 0) throw std::runtime_error("cannot create output file '" + path + "'");
   return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
 }
 
 Hdf5Location Hdf5Location::open_file(const std::string& path) {
-  silence_hdf5_error_stack();
+  prepare_hdf5();
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0) throw std::runtime_error("cannot open '" + path + "' as an HDF5 file");
   return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
@@ -118,7 +142,14 @@ std::vector<std::string> Hdf5Location::members() const {
   return names;
 }
 
-void Hdf5Location::flush() const { H5Fflush(id(), H5F_SCOPE_GLOBAL); }
+void Hdf5Location::flush() const {
+  if (H5Fflush(id(), H5F_SCOPE_GLOBAL) < 0) fail("flush", path_);
+}
+
+void Hdf5Location::close() {
+  const hid_t id = handle_.release();
+  if (id >= 0 && H5Fclose(id) < 0) fail("close", path_);
+}
 
 void Hdf5Location::write_dataset(const std::string& name, hid_t file_type, hid_t memory_type,
                                  const std::vector<hsize_t>& dims, const void* data,

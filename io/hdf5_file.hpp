@@ -21,6 +21,12 @@ class Hdf5Handle {
   Hdf5Handle& operator=(const Hdf5Handle&) = delete;
   ~Hdf5Handle();
   hid_t id() const { return id_; }
+  /// Gives up ownership: the caller closes the identifier.
+  hid_t release() {
+    const hid_t id = id_;
+    id_ = -1;
+    return id;
+  }
 
  private:
   hid_t id_ = -1;
@@ -41,6 +47,8 @@ class Hdf5Location {
   /// Names of the links (datasets, groups) directly in this location, sorted.
   std::vector<std::string> members() const;
   void flush() const;
+  /// Closes a file, reporting a failure to write its last buffers (the destructor cannot).
+  void close();
 
   /// dims empty: one dimension of data.size().
   void write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> dims = {},

@@ -102,6 +102,10 @@ void ResultFile::write_members(const ensemble::Scene& scene, const std::vector<e
   if (scene.classifies_regimes())
     group.write("regime", regime, "FM, AFM, CP or unsettled (README: regime rule)");
   group.write("status", status, "ok, non_finite, step_underflow or step_budget");
+  if (scene.has(ensemble::Observable::dissipation))
+    group.write("dissipation_resolved",
+                integer_column(results, [](auto& r) { return r.dissipation_resolved(); }),
+                "1 when D is resolved: status ok and dissipation_error < 0.1 |D|");
   group.write("settled", integer_column(results, [](auto& r) { return r.settled; }),
               "1 when the schedule ended as planned (steady_tol reached, or fixed schedule)");
   group.write("periods_run", integer_column(results, [](auto& r) { return r.periods_run; }),
@@ -136,12 +140,13 @@ void ResultFile::write_curves(const ensemble::Scene& scene,
     return out;
   };
   std::vector<std::string> ic;
-  std::vector<std::int64_t> members, count, rows;
+  std::vector<std::int64_t> members, count, unresolved, rows;
   for (const auto& p : curves) {
     rows.push_back(std::int64_t(p.rows));
     ic.emplace_back(ensemble::kind_name(p.kind));
     members.push_back(std::int64_t(p.members));
     count.push_back(std::int64_t(p.count));
+    unresolved.push_back(std::int64_t(p.unresolved));
   }
   group.write("rows", rows, "N");
   group.write("rtol", values([](auto& p) { return p.rtol; }), {}, "relative tolerance");
@@ -156,6 +161,7 @@ void ResultFile::write_curves(const ensemble::Scene& scene,
                 "population spread of D over replicas");
     group.write("dissipation_min", values([](auto& p) { return p.dissipation_min; }), {}, "smallest D");
     group.write("dissipation_max", values([](auto& p) { return p.dissipation_max; }), {}, "largest D");
+    group.write("unresolved", unresolved, "members of count whose D is not resolved (dissipation_resolved)");
   }
   if (scene.classifies_regimes())
     for (auto regime : ensemble::all_regimes) {

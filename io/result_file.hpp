@@ -24,7 +24,8 @@ struct Provenance {
 /// says complete = TRUE only after every dataset has been written and flushed.
 class ResultFile {
  public:
-  /// Creates (truncates) path and writes the scene and provenance.
+  /// Creates (truncates) path and writes the scene and provenance (see io/output_target.hpp for
+  /// writing beside the final path).
   ResultFile(const std::string& path, const ensemble::Scene& scene, const Provenance& provenance);
 
   void write_members(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
@@ -32,6 +33,8 @@ class ResultFile {
   void write_curves(const ensemble::Scene& scene, const std::vector<ensemble::CurvePoint>& curves) const;
   /// Run statistics, then complete = TRUE.
   void finish(const ensemble::SweepStatistics& statistics) const;
+  /// Closes the file; throws when its last buffers cannot be written.
+  void close() { file_.close(); }
 
  private:
   Hdf5Location file_;

@@ -5,7 +5,10 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -42,8 +45,16 @@ std::string join(const std::set<std::string>& names) {
   return out;
 }
 
+/// s cut to about `limit` bytes at a character boundary, saying how long it was.
+std::string shortened(const std::string& s, std::size_t limit = 80) {
+  if (s.size() <= limit) return s;
+  std::size_t cut = limit;
+  while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;  // UTF-8 continuation
+  return s.substr(0, cut) + "… (" + std::to_string(s.size()) + " bytes)";
+}
+
 [[noreturn]] void fail(const std::string& key, const std::string& message) {
-  throw SceneError("scene key '" + key + "': " + message);
+  throw SceneError("scene key '" + shortened(key) + "': " + message);
 }
 
 std::string describe(const toml::node& node) {
@@ -56,7 +67,7 @@ std::string describe(const toml::node& node) {
     out << "an array";
   else
     node.visit([&](const auto& value) { out << value; });
-  return out.str();
+  return shortened(out.str());
 }
 
 /// Typed access to one section of the scene, keys named "section.key" in messages.
@@ -188,6 +199,27 @@ std::vector<double> grid(const Section& section, std::string_view k, const std::
   return values;
 }
 
+constexpr std::size_t max_members = 100000000;
+
+/// The plan is too large: names the axis with the most values, and every axis's size.
+[[noreturn]] void fail_too_many_members(const Scene& scene) {
+  static constexpr const char* axis_keys[] = {"model.rows", "numerics.rtol", "sweep.A",
+                                              "drive.g",    "initial.kinds", "initial.replicas"};
+  const auto sizes = scene.axis_sizes();
+  std::size_t largest = 0;
+  std::string product;
+  double count = 1;
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    if (sizes[i] > sizes[largest]) largest = i;
+    product += (i ? " × " : "") + std::string(axis_keys[i]) + " " + std::to_string(sizes[i]);
+    count *= double(sizes[i]);
+  }
+  char total[32];
+  std::snprintf(total, sizeof total, "%.3g", count);
+  fail(axis_keys[largest], "the plan has " + std::string(total) + " members (" + product + "); at most " +
+                               std::to_string(max_members) + " are allowed");
+}
+
 void check_sections(const toml::table& root) {
   std::set<std::string> sections;
   for (const auto& [name, keys] : allowed_keys) sections.insert(name);
@@ -237,7 +269,10 @@ Scene read_scene(const toml::table& root) {
   }
   scene.noise = initial.number("noise", scene.noise, "a number from 0 to 3.14159",
                                [](double x) { return x >= 0 && x <= 3.1415926535897932; });
-  scene.offset = initial.number("offset", scene.offset, "a number", [](double) { return true; });
+  // beyond 10^4 rad an angle's rounding (1.8e-12 there) starts to compete with atol
+  const auto bounded_angle = [](double x) { return std::fabs(x) <= 1e4; };
+  scene.offset = initial.number("offset", scene.offset,
+                                "a number from -1e4 to 1e4 (radians; give it modulo 2π)", bounded_angle);
   scene.replicas = int(initial.integer("replicas", scene.replicas, "an integer from 1 to 1000000",
                                        [](long long r) { return r >= 1 && r <= 1000000; }));
   scene.seed =
@@ -255,8 +290,8 @@ Scene read_scene(const toml::table& root) {
                                         " values, which does not divide N = " + std::to_string(n) +
                                         "; it must be " + angles_what);
     for (const auto& a : *list)
-      scene.exact_angles.push_back(
-          Section::checked_number(a, initial.key("angles"), "a number", [](double) { return true; }));
+      scene.exact_angles.push_back(Section::checked_number(
+          a, initial.key("angles"), "a number from -1e4 to 1e4 (radians; give it modulo 2π)", bounded_angle));
     if (!exact) fail(initial.key("angles"), "is only used with kind \"exact\" in initial.kinds");
   } else if (exact) {
     initial.require("angles", angles_what + " when kinds has \"exact\"");
@@ -322,9 +357,7 @@ Scene read_scene(const toml::table& root) {
       fail(output.key("path"), "must be a non-empty string (got " + describe(*path) + ")");
     scene.output_path = *v;
   }
-  if (scene.member_count() > 100000000)
-    fail("sweep.A", "the scene has " + std::to_string(scene.member_count()) +
-                        " members (rows × rtol × A × g × kinds × replicas); at most 100000000 are allowed");
+  if (scene.member_count() > max_members) fail_too_many_members(scene);
   return scene;
 }
 
@@ -345,13 +378,17 @@ ensemble::Scene parse_scene_text(std::string_view text, std::string_view source)
 }
 
 ensemble::Scene parse_scene_file(const std::string& path) {
+  namespace fs = std::filesystem;
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error))
-    throw SceneError("cannot read scene file '" + path + "': no such file");
+  const fs::file_status status = fs::status(path, error);
+  const std::string what = "cannot read scene file '" + shortened(path, 200) + "': ";
+  if (!fs::exists(status)) throw SceneError(what + (error ? error.message() : "no such file"));
+  if (fs::is_directory(status)) throw SceneError(what + "it is a directory");
+  if (!fs::is_regular_file(status)) throw SceneError(what + "not a regular file (a FIFO, socket or device)");
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
-  if (!in) throw SceneError("cannot read scene file '" + path + "': permission denied or unreadable");
+  if (!in) throw SceneError(what + std::strerror(errno));
   return parse_scene_text(text.str(), path);
 }
 

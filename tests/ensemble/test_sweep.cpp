@@ -1,6 +1,7 @@
 // Sweeps (ensemble/sweep): results are bitwise identical for any thread count, with refill on
 // or off, and on scalar or SIMD lanes; steady_tol retires settled members early; a failing
-// member is isolated from the members sharing its lanes.
+// member is isolated from the members sharing its lanes; without the period series only the last
+// periods are kept, with the same summary.
 #include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -121,6 +122,27 @@ TEST_CASE("steady_tol retires members once successive periods agree", "[ensemble
     }
   }
   CHECK(early > int(outcome.results.size()) / 2);
+}
+
+TEST_CASE("without period_series a member keeps only its last periods, with the same summary",
+          "[ensemble][sweep]") {
+  // 40 + 3 periods and steady_tol retirements: the history is cut back several times
+  const std::string schedule[] = {
+      "[schedule]\nrelax_periods = 40\naverage_periods = 3\n",
+      "[schedule]\nrelax_periods = 2\naverage_periods = 2\nsteady_tol = 1e-9\nmax_periods = 30\n"};
+  for (const auto& text : schedule) {
+    INFO(text);
+    const auto with_series = sweep(curve_scene(text, "period_series = true\n"));
+    const auto without = sweep(curve_scene(text));
+    require_identical(with_series.results, without.results);
+    for (std::size_t i = 0; i < without.results.size(); ++i) {
+      CHECK(without.results[i].periods.empty());
+      CHECK(without.results[i].periods_run == with_series.results[i].periods_run);
+      CHECK(int(with_series.results[i].periods.size()) == with_series.results[i].periods_run);
+      CHECK(same_bits(without.results[i].dissipation_std(), with_series.results[i].dissipation_std()));
+      CHECK(without.results[i].settled == with_series.results[i].settled);
+    }
+  }
 }
 
 TEST_CASE("a failing member is isolated from its lane neighbours", "[ensemble][sweep]") {

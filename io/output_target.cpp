@@ -1,0 +1,111 @@
+// OutputTarget: the checks on an output path, the temporary file beside it, and the rename that
+// puts a complete file in place (or the clean-up that leaves no trace of a failed one).
+#include "io/output_target.hpp"
+
+#include <unistd.h>
+
+#include <array>
+#include <cstring>
+#include <fstream>
+
+namespace rotorsweep::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string in_quotes(const std::string& path) { return "'" + path + "'"; }
+
+}  // namespace
+
+bool is_hdf5_file(const fs::path& path) {
+  static constexpr std::array<char, 8> signature{'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
+  std::ifstream in(path, std::ios::binary);
+  std::error_code error;
+  const auto size = fs::file_size(path, error);
+  if (!in || error) return false;
+  for (std::uintmax_t offset = 0; offset + signature.size() <= size; offset = offset ? 2 * offset : 512) {
+    std::array<char, 8> bytes{};
+    in.seekg(std::streamoff(offset));
+    if (!in.read(bytes.data(), bytes.size())) return false;
+    if (bytes == signature) return true;
+  }
+  return false;
+}
+
+OutputTarget::OutputTarget(const std::string& path, const std::vector<std::string>& inputs,
+                           Replaceable replaceable, bool force)
+    : path_(path) {
+  if (path.empty()) throw OutputPathError("the output path is empty");
+  const std::string name = in_quotes(path);
+  if (path.back() == '/' || fs::path(path).filename() == "." || fs::path(path).filename() == "..")
+    throw OutputPathError("output path " + name + " names a directory; give a file name");
+  std::error_code error;
+  target_ = fs::path(path);
+  if (fs::is_symlink(fs::symlink_status(target_, error))) {
+    // write beside the link's target and replace that file: the link stays a link
+    const fs::path resolved = fs::weakly_canonical(target_, error);
+    if (error) throw OutputPathError("output path " + name + ": " + error.message());
+    target_ = resolved;
+  }
+  const fs::file_status status = fs::status(target_, error);
+  const bool exists = fs::exists(status);
+  if (exists && fs::is_directory(status)) throw OutputPathError("output path " + name + " is a directory");
+  if (exists && !fs::is_regular_file(status))
+    throw OutputPathError("output path " + name + " is not a regular file (a FIFO, socket or device)");
+  for (const auto& input : inputs)
+    if (exists && fs::equivalent(target_, input, error))
+      throw OutputPathError("output path " + name + " is the input file " + in_quotes(input) +
+                            "; writing it would destroy it");
+  if (exists && replaceable == Replaceable::hdf5 && !force && !is_hdf5_file(target_))
+    throw OutputPathError(
+        "output path " + name +
+        " exists and is not an HDF5 file; refusing to replace it (use --force to replace it)");
+  replaced_ = exists;
+
+  // missing parent directories, created outermost first and removed again on failure
+  const fs::path parent = target_.parent_path();
+  std::vector<fs::path> missing;
+  for (fs::path p = parent; !p.empty() && !fs::exists(p, error); p = p.parent_path()) {
+    missing.push_back(p);
+    if (p == p.parent_path()) break;
+  }
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    if (!fs::create_directory(*it, error) && error) {
+      const std::string reason = error.message();
+      for (auto d = created_directories_.rbegin(); d != created_directories_.rend(); ++d)
+        fs::remove(*d, error);
+      throw OutputPathError("output path " + name + ": cannot create directory " + in_quotes(it->string()) +
+                            ": " + reason);
+    }
+    created_directories_.push_back(*it);
+  }
+  if (!parent.empty() && !fs::is_directory(parent, error))
+    throw OutputPathError("output path " + name + ": " + in_quotes(parent.string()) + " is not a directory");
+  if (::access(parent.empty() ? "." : parent.c_str(), W_OK) != 0)
+    throw OutputPathError("output path " + name + ": cannot write in its directory: " + std::strerror(errno));
+  std::string hidden_name(1, '.');
+  hidden_name.append(target_.filename().string())
+      .append(".")
+      .append(std::to_string(::getpid()))
+      .append(".part");
+  temporary_ = parent / hidden_name;
+}
+
+OutputTarget::~OutputTarget() {
+  if (committed_) return;
+  std::error_code error;
+  fs::remove(temporary_, error);
+  for (auto d = created_directories_.rbegin(); d != created_directories_.rend(); ++d) fs::remove(*d, error);
+}
+
+void OutputTarget::commit() {
+  std::error_code error;
+  fs::rename(temporary_, target_, error);
+  if (error)
+    throw std::runtime_error("cannot move the finished file into place as " + in_quotes(path_) + ": " +
+                             error.message());
+  committed_ = true;
+}
+
+}  // namespace rotorsweep::io
