@@ -2,6 +2,8 @@
 // datasets and values, and exit code 2 for bad options.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <iterator>
 
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
@@ -69,5 +71,19 @@ TEST_CASE("landscape rejects bad options with exit code 2", "[apps][landscape]")
   CHECK(run_cli("landscape jump-friction --count 0" + out, dir).exit_code == 2);
   CHECK(run_cli("landscape curves", dir).exit_code == 2);  // -o is required
   CHECK(run_cli("landscape bifurcations" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape chambers --A-max inf" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape chambers --A-min nan" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape curves --A-max nan" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape curves --A-max -5" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape curves -o ''", dir).exit_code == 2);
   CHECK(!std::filesystem::exists(dir / "x.h5"));
+}
+
+TEST_CASE("landscape on a full disk: a clear error and no file", "[apps][landscape][files]") {
+  const auto dir = scratch_directory("landscape-full-disk");
+  const auto run =
+      run_cli("landscape chambers -q -o '" + (dir / "c.h5").string() + "'", dir, "ulimit -f 16; ");
+  CHECK(run.exit_code == 1);
+  CHECK_THAT(run.output, Catch::Contains("File too large"));
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 1);
 }

@@ -1,7 +1,11 @@
 // `rotorsweep run` end to end: the paper's table and regime labels read back from the HDF5
-// file, identical dataset bytes for 1 and 2 threads, and exit code 2 for every bad scene.
+// file, identical dataset bytes for 1 and 2 threads, exit code 2 for every bad scene and plan,
+// and output files that never destroy the scene or a previous result (also on a full disk).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
@@ -127,4 +131,109 @@ TEST_CASE("bad scenes exit with code 2 and name the key and leave no file", "[ap
   CHECK_THAT(unwritable.output, Catch::Contains("/proc/none/out.h5"));
   const auto bad_option = run_cli("run '" + (dir / "good.toml").string() + "' --threads 0", dir);
   CHECK(bad_option.exit_code == 2);
+}
+
+TEST_CASE("a run never destroys the scene or a file it was not asked to replace", "[apps][run][files]") {
+  const auto dir = scratch_directory("run-files");
+  const std::string scene = "[model]\nrows = 4\n[drive]\ng = [0.01]\n[sweep]\nA = [1, 9]\n";
+  const auto path = write_text(dir / "s.toml", scene);
+  const auto quoted = [](const std::filesystem::path& p) {
+    return std::string(1, '\'').append(p.string()).append("'");
+  };
+  const auto scene_intact = [&](const std::filesystem::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {}) == scene;
+  };
+
+  auto run = run_cli("run " + quoted(path) + " -q -o " + quoted(path), dir);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::Contains("is the input file"));
+  CHECK(scene_intact(path));
+
+  std::filesystem::create_symlink(path, dir / "link.h5");
+  run = run_cli("run " + quoted(path) + " -q -o " + quoted(dir / "link.h5"), dir);
+  CHECK(run.exit_code == 2);
+  CHECK(scene_intact(path));
+
+  // a scene named x.h5 writes x.h5 in the working directory by default: itself
+  const auto h5_scene = write_text(dir / "x.h5", scene);
+  run = run_cli("run x.h5 -q", dir, "cd " + quoted(dir) + " && ");
+  CHECK(run.exit_code == 2);
+  CHECK(scene_intact(h5_scene));
+
+  write_text(dir / "notes.txt", "keep me\n");
+  run = run_cli("run " + quoted(path) + " -q -o " + quoted(dir / "notes.txt"), dir);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::Contains("--force"));
+  CHECK(run_cli("run " + quoted(path) + " -q --force -o " + quoted(dir / "notes.txt"), dir).exit_code == 0);
+  CHECK(Hdf5Location::open_file((dir / "notes.txt").string()).attribute_flag("complete"));
+
+  run = run_cli("run " + quoted(path) + " -q -o ''", dir);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::Contains("empty"));
+  run = run_cli("run " + quoted(path) + " -q -o " + quoted(dir / "newdir") + "/", dir);
+  CHECK(run.exit_code == 2);
+  CHECK_FALSE(std::filesystem::exists(dir / "newdir"));
+
+  // replacing a result says so
+  const auto out = dir / "out.h5";
+  CHECK(run_cli("run " + quoted(path) + " -q -o " + quoted(out), dir).exit_code == 0);
+  run = run_cli("run " + quoted(path) + " -q -o " + quoted(out), dir);
+  CHECK(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("replacing the previous file"));
+}
+
+TEST_CASE("a full disk is a clear error that keeps the previous result", "[apps][run][files]") {
+  const auto dir = scratch_directory("run-full-disk");
+  const auto scene = write_text(dir / "big.toml",
+                                "[model]\nrows = 64\n[drive]\ng = [0.01]\n[sweep]\nA = { from = 1, to = 12, "
+                                "count = 200 }\n[observables]\nperiod_series = true\n");
+  const auto small =
+      write_text(dir / "small.toml", "[model]\nrows = 4\n[drive]\ng = [0.01]\n[sweep]\nA = [1]\n");
+  const auto out = dir / "out.h5";
+  const std::string limit = "ulimit -f 64; ";  // 64 KiB: the big scene's file needs about 1 MB
+  auto run = run_cli("run '" + scene.string() + "' -q -o '" + out.string() + "'", dir, limit);
+  CHECK(run.exit_code == 1);
+  CHECK_THAT(run.output, Catch::Contains("File too large"));
+  CHECK_THAT(run.output, Catch::Contains("no file was written"));
+  CHECK_FALSE(std::filesystem::exists(out));
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 3);
+
+  REQUIRE(run_cli("run '" + small.string() + "' -q -o '" + out.string() + "'", dir).exit_code == 0);
+  run = run_cli("run '" + scene.string() + "' -q -o '" + out.string() + "'", dir, limit);
+  CHECK(run.exit_code == 1);
+  CHECK_THAT(run.output, Catch::Contains("the previous file is unchanged"));
+  const auto kept = Hdf5Location::open_file(out.string());
+  CHECK(kept.attribute_flag("complete"));
+  CHECK(kept.open_group("members").read_doubles("A").size() == 1);
+
+  // in new directories: they go again
+  run = run_cli("run '" + scene.string() + "' -q -o '" + (dir / "new" / "deeper" / "out.h5").string() + "'",
+                dir, limit);
+  CHECK(run.exit_code == 1);
+  CHECK_FALSE(std::filesystem::exists(dir / "new"));
+}
+
+TEST_CASE("plans too large to count or to hold are refused before any work", "[apps][run]") {
+  const auto dir = scratch_directory("run-huge");
+  // 10^7 × 10^7 × 2^18 members: the product overflows 64 bits if counted naively
+  const auto overflow =
+      write_text(dir / "overflow.toml",
+                 "[model]\nrows = 4\n[drive]\ng = { from = 0.001, to = 1, count = 10000000 }\n"
+                 "[sweep]\nA = { from = 1, to = 2, count = 9000000 }\n"
+                 "[initial]\nkinds = [\"random\"]\nreplicas = 262144\n");
+  auto run = run_cli("run '" + overflow.string() + "' -q -o '" + (dir / "o.h5").string() + "'", dir);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::Contains("'drive.g'"));
+  CHECK_THAT(run.output, Catch::Contains("2.36e+19 members"));
+  // within the member limit, but terabytes of results
+  const auto memory =
+      write_text(dir / "memory.toml",
+                 "[model]\nrows = 4096\n[drive]\ng = { from = 0.001, to = 1, count = 10000 }\n"
+                 "[sweep]\nA = { from = 1, to = 2, count = 10000 }\n");
+  run = run_cli("run '" + memory.string() + "' -q -o '" + (dir / "m.h5").string() + "'", dir);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::Contains("GiB"));
+  CHECK_FALSE(std::filesystem::exists(dir / "o.h5"));
+  CHECK_FALSE(std::filesystem::exists(dir / "m.h5"));
 }

@@ -1,5 +1,7 @@
 // Scene validation (io/scene_parser): defaults, grids, and one clear message naming the key
 // for every kind of bad scene: missing key, wrong type, out of range, unknown key, unreadable.
+#include <sys/stat.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -149,9 +151,44 @@ TEST_CASE("syntax errors and unreadable files name the file", "[io][scene]") {
   const auto dir = rotorsweep::testing::scratch_directory("scene-parser");
   CHECK_THROWS_WITH(parse_scene_file((dir / "absent.toml").string()),
                     Catch::Contains("cannot read scene file"));
-  CHECK_THROWS_WITH(parse_scene_file(dir.string()), Catch::Contains("cannot read scene file"));
+  CHECK_THROWS_WITH(parse_scene_file((dir / "absent.toml").string()), Catch::Contains("No such file"));
+  CHECK_THROWS_WITH(parse_scene_file(dir.string()), Catch::Contains("is a directory"));
+  const auto fifo = dir / "fifo.toml";
+  REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(parse_scene_file(fifo.string()), Catch::Contains("not a regular file"));
   const auto path = rotorsweep::testing::write_text(dir / "ok.toml", minimal);
   CHECK(parse_scene_file(path.string()).A_values.size() == 2);
+}
+
+TEST_CASE("a huge bad value is cut in the message", "[io][scene]") {
+  const std::string huge(1 << 20, 'x');
+  const std::string message = error_of(minimal + "[numerics]\nstepper = \"" + huge + "\"\n");
+  CHECK_THAT(message, Catch::Contains("'numerics.stepper'") && Catch::Contains("1048578 bytes"));
+  CHECK(message.size() < 600);
+  const std::string key_message = error_of(minimal + "[numerics]\n" + huge + " = 1\n");
+  CHECK_THAT(key_message, Catch::Contains("unknown key"));
+  CHECK(key_message.size() < 600);
+}
+
+TEST_CASE("angles and offsets beyond 1e4 rad are refused", "[io][scene]") {
+  CHECK_THAT(error_of(minimal + "[initial]\noffset = 1e20\n"), Catch::Contains("'initial.offset'"));
+  CHECK_THAT(error_of(minimal + "[initial]\nkinds = [\"exact\"]\nangles = [0.1, 2e4]\n"),
+             Catch::Contains("'initial.angles'"));
+  CHECK(error_of(minimal + "[initial]\noffset = -9999.5\n").empty());
+}
+
+TEST_CASE("the plan size is counted without overflow and the largest axis named", "[io][scene]") {
+  const std::string message = error_of(
+      "[model]\nrows = 4\n[drive]\ng = { from = 0.001, to = 1, count = 8388608 }\n"
+      "[sweep]\nA = { from = 1, to = 2, count = 8388608 }\n[initial]\nkinds = [\"random\"]\nreplicas = "
+      "262144\n");
+  CHECK_THAT(message, Catch::Contains("'sweep.A'") && Catch::Contains("1.84e+19 members") &&
+                          Catch::Contains("initial.replicas 262144"));
+  CHECK_THAT(
+      error_of(
+          "[model]\nrows = 20\n[drive]\ng = [0.001]\n[sweep]\nA = { from = 1, to = 2, count = 100 }\n"
+          "[initial]\nkinds = [\"random\"]\nreplicas = 1000000\n[numerics]\nrtol = [1e-6, 1e-7, 1e-8]\n"),
+      Catch::Contains("'initial.replicas'"));
 }
 
 TEST_CASE("rows and tolerances may be lists: one variant each", "[io][scene]") {

@@ -17,10 +17,12 @@ struct CliResult {
   std::string output;
 };
 
-inline CliResult run_cli(const std::string& arguments, const std::filesystem::path& scratch) {
+/// `shell_prefix` runs first in the same shell (e.g. "ulimit -f 64; " to limit the file size).
+inline CliResult run_cli(const std::string& arguments, const std::filesystem::path& scratch,
+                         const std::string& shell_prefix = "") {
   const auto log = scratch / "cli-output.txt";
-  const std::string command =
-      std::string(ROTORSWEEP_EXECUTABLE) + " " + arguments + " > '" + log.string() + "' 2>&1";
+  const std::string command = "(" + shell_prefix + std::string(ROTORSWEEP_EXECUTABLE) + " " + arguments +
+                              ") > '" + log.string() + "' 2>&1";
   const int status = std::system(command.c_str());
   CliResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -1,0 +1,118 @@
+// OutputTarget (io/output_target): refused paths, the temporary file beside the target, the
+// rename on commit, and the clean-up (file and created directories) without it.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "io/hdf5_file.hpp"
+#include "io/output_target.hpp"
+#include "support/scene_text.hpp"
+
+using namespace rotorsweep::io;
+using rotorsweep::testing::scratch_directory;
+using rotorsweep::testing::write_text;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+void write_hdf5(const std::string& path, double marker) {
+  auto file = Hdf5Location::create_file(path);
+  file.set_attribute("marker", marker);
+  file.close();
+}
+
+}  // namespace
+
+TEST_CASE("output paths that would destroy something are refused", "[io][output]") {
+  const auto dir = scratch_directory("output-refused");
+  const auto scene = write_text(dir / "scene.toml", "[model]\nrows = 4\n");
+  fs::create_symlink(scene, dir / "link.toml");
+  write_text(dir / "notes.txt", "my notes\n");
+  fs::create_directory(dir / "sub");
+  const auto refused = [&](const std::string& path, const std::string& reason) {
+    INFO(path);
+    CHECK_THROWS_WITH(OutputTarget(path, {scene.string()}, Replaceable::hdf5, false),
+                      Catch::Contains(reason));
+  };
+  refused("", "empty");
+  refused((dir / "sub").string(), "is a directory");
+  refused((dir / "newdir").string() + "/", "names a directory");
+  refused(scene.string(), "is the input file");
+  refused((dir / "link.toml").string(), "is the input file");
+  refused((dir / "notes.txt").string(), "not an HDF5 file");
+  CHECK(read_text(scene) == "[model]\nrows = 4\n");
+  CHECK(read_text(dir / "notes.txt") == "my notes\n");
+  CHECK_FALSE(fs::exists(dir / "newdir"));
+  // --force replaces a file of another kind, never the input
+  CHECK_NOTHROW(OutputTarget((dir / "notes.txt").string(), {scene.string()}, Replaceable::hdf5, true));
+  CHECK_THROWS(OutputTarget(scene.string(), {scene.string()}, Replaceable::hdf5, true));
+  CHECK_NOTHROW(OutputTarget((dir / "notes.txt").string(), {}, Replaceable::any, false));
+}
+
+TEST_CASE("the old file stays until commit, and nothing is left without it", "[io][output]") {
+  const auto dir = scratch_directory("output-commit");
+  const auto path = (dir / "result.h5").string();
+  write_hdf5(path, 1.0);
+  {
+    OutputTarget target(path, {}, Replaceable::hdf5, false);
+    CHECK(fs::path(target.temporary()).parent_path() == dir);
+    write_hdf5(target.temporary(), 2.0);
+    CHECK(Hdf5Location::open_file(path).attribute_double("marker") == 1.0);
+    // no commit: a failed run
+  }
+  CHECK(Hdf5Location::open_file(path).attribute_double("marker") == 1.0);
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
+  {
+    OutputTarget target(path, {}, Replaceable::hdf5, false);
+    write_hdf5(target.temporary(), 3.0);
+    target.commit();
+    CHECK(target.replaced());
+  }
+  CHECK(Hdf5Location::open_file(path).attribute_double("marker") == 3.0);
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
+}
+
+TEST_CASE("directories created for an output are removed when it fails", "[io][output]") {
+  const auto dir = scratch_directory("output-directories");
+  const auto path = (dir / "a" / "b" / "out.h5").string();
+  {
+    OutputTarget target(path, {}, Replaceable::hdf5, false);
+    CHECK(fs::is_directory(dir / "a" / "b"));
+    write_hdf5(target.temporary(), 1.0);
+  }
+  CHECK_FALSE(fs::exists(dir / "a"));
+  {
+    OutputTarget target(path, {}, Replaceable::hdf5, false);
+    write_hdf5(target.temporary(), 1.0);
+    target.commit();
+    CHECK_FALSE(target.replaced());
+  }
+  CHECK(Hdf5Location::open_file(path).attribute_double("marker") == 1.0);
+}
+
+TEST_CASE("an output through a symbolic link replaces the link's target", "[io][output]") {
+  const auto dir = scratch_directory("output-link");
+  const auto real = (dir / "real.h5").string();
+  write_hdf5(real, 1.0);
+  fs::create_symlink(real, dir / "link.h5");
+  OutputTarget target((dir / "link.h5").string(), {}, Replaceable::hdf5, false);
+  write_hdf5(target.temporary(), 2.0);
+  target.commit();
+  CHECK(fs::is_symlink(dir / "link.h5"));
+  CHECK(Hdf5Location::open_file(real).attribute_double("marker") == 2.0);
+}
+
+TEST_CASE("HDF5 files are told from others by their signature", "[io][output]") {
+  const auto dir = scratch_directory("output-signature");
+  write_hdf5((dir / "a.h5").string(), 1.0);
+  CHECK(is_hdf5_file(dir / "a.h5"));
+  CHECK_FALSE(is_hdf5_file(write_text(dir / "b.h5", "\x89HDF but not really")));
+  CHECK_FALSE(is_hdf5_file(write_text(dir / "empty", "")));
+  CHECK_FALSE(is_hdf5_file(dir / "absent"));
+}
