@@ -103,7 +103,7 @@ void Hdf5Location::fail(const std::string& what, const std::string& name) const 
 Hdf5Location Hdf5Location::create_file(const std::string& path) {
   prepare_hdf5();
   const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (id < 0) throw std::runtime_error("cannot create output file '" + path + "'");
+  if (id < 0) throw std::runtime_error("cannot create output file '" + path + "'" + innermost_error());
   return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
 }
 
