@@ -55,9 +55,9 @@ lane_vector<V> afm_angles(std::size_t rows) {
 template <class V>
 double rhs_rate(std::size_t rows, int repeats) {
   using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
-  const Model model(rows, {4.0, 0.0011});
-  lane_vector<V> storage(Model::Workspace::storage_size(rows));
+  lane_vector<V> storage(Model::storage_size(rows) + Model::Workspace::storage_size(rows));
   kernels::LaneArena<V> arena(storage.data(), storage.size());
+  const Model model(rows, arena, {4.0, 0.0011});
   typename Model::Workspace work(rows, arena);
   auto theta = afm_angles<V>(rows);
   lane_vector<V> f(rows), q(2);
@@ -79,7 +79,9 @@ double sincos_rate(std::size_t rows, int repeats) {
 template <class V>
 double step_rate(kernels::StepperId id, std::size_t rows, int repeats) {
   using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
-  const Model model(rows, {4.0, 0.0011});
+  lane_vector<V> model_storage(Model::storage_size(rows));
+  kernels::LaneArena<V> model_arena(model_storage.data(), model_storage.size());
+  const Model model(rows, model_arena, {4.0, 0.0011});
   return kernels::with_stepper<Model>(id, [&]<class Stepper>() {
     using Integrator = kernels::AdaptiveIntegrator<Model, Stepper>;
     lane_vector<V> storage(Integrator::storage_size(rows) +

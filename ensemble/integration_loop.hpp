@@ -30,7 +30,7 @@ class IntegrationLoop {
   IntegrationLoop(std::size_t dimension, kernels::Tolerances tolerances, kernels::StepLimits limits)
       : storage_(storage_size(dimension)),
         arena_(storage_.data(), storage_.size()),
-        model_(dimension),
+        model_(dimension, arena_),
         integrator_(model_, tolerances, limits, arena_),
         state_(dimension, quadrature_count, arena_),
         work_(dimension, arena_) {
@@ -39,7 +39,8 @@ class IntegrationLoop {
 
   static std::size_t storage_size(std::size_t n) {
     return kernels::AdaptiveIntegrator<Model, Stepper>::storage_size(n) +
-           kernels::LaneState<V>::storage_size(n, quadrature_count) + Model::Workspace::storage_size(n);
+           kernels::LaneState<V>::storage_size(n, quadrature_count) + Model::Workspace::storage_size(n) +
+           Model::storage_size(n);
   }
 
   std::size_t dimension() const { return model_.dimension(); }

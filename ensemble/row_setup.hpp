@@ -1,10 +1,11 @@
-// How a member of a scene becomes a lane of the row model (docs/model.md §1–2): its initial angles
-// from its own stream, and its parameters A, g and the strict-FM mark.
+// How a member of a scene becomes a lane of the row model (docs/model.md §1, 2, 7): its initial
+// angles from its own stream, and its parameters A, g, the strict-FM mark and its disorder.
 #pragma once
 
 #include <algorithm>
 #include <vector>
 
+#include "ensemble/disorder.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/scene.hpp"
 
@@ -18,11 +19,21 @@ struct RowSetup {
     return member_initial_angles(*scene, member);
   }
 
-  /// A member that starts with all rows equal is marked strict FM (symmetry protection).
-  typename Model::Parameters parameters(const Member& member, const std::vector<double>& theta) const {
+  /// A member that starts with all rows equal is marked strict FM (symmetry protection). The
+  /// parameters point into this setup's buffer for the member's disorder, valid until the next call.
+  typename Model::Parameters parameters(const Member& member, const std::vector<double>& theta) {
     const bool strict_fm = std::all_of(theta.begin(), theta.end(), [&](double x) { return x == theta[0]; });
-    return {member.A, member.g, strict_fm};
+    typename Model::Parameters p{member.A, member.g, strict_fm};
+    if (!scene->disorder.any()) return p;
+    deviations = row_deviations(scene->disorder, member.rows, member.replica);
+    const auto rows_or_null = [](const std::vector<double>& v) { return v.empty() ? nullptr : v.data(); };
+    p.A_rows = rows_or_null(deviations.A);
+    p.anisotropy_rows = rows_or_null(deviations.anisotropy);
+    p.coupling_rows = rows_or_null(deviations.coupling);
+    return p;
   }
+
+  RowDeviations deviations;  ///< the last member's disorder
 };
 
 }  // namespace rotorsweep::ensemble

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ensemble/disorder.hpp"
 #include "ensemble/initial_conditions.hpp"
 #include "ensemble/observables.hpp"
 
@@ -36,6 +37,7 @@ struct Scene {
   std::vector<double> exact_angles;  ///< for kind exact
   int replicas = 1;
   std::uint64_t seed = 1;
+  Disorder disorder;  ///< quenched per-row disorder; replica r is realization r
 
   int relax_periods = 2;
   int average_periods = 2;

@@ -115,7 +115,7 @@ void ResultFile::write_members(const ensemble::Scene& scene, const std::vector<e
   group.write("steps_rejected", integer_column(results, [](auto& r) { return r.steps_rejected; }),
               "rejected steps");
   const std::size_t width = scene.max_rows();
-  const auto write_angles = [&](const std::string& name, const std::string& what, const auto& angles_of) {
+  const auto write_rows = [&](const std::string& name, const std::string& what, const auto& angles_of) {
     std::vector<double> theta(results.size() * width, std::numeric_limits<double>::quiet_NaN());
     for (std::size_t m = 0; m < results.size(); ++m) {
       const std::vector<double>& angles = angles_of(m);
@@ -124,10 +124,23 @@ void ResultFile::write_members(const ensemble::Scene& scene, const std::vector<e
     group.write(name, theta, {results.size(), width},
                 what + " (members × largest N; NaN beyond a member's rows)");
   };
-  write_angles("theta_initial", "θ_j at t = 0, as drawn from the member's stream",
-               [&](std::size_t m) { return ensemble::member_initial_angles(scene, members[m]); });
-  write_angles("theta_final", "θ_j at the end, in [0, 2π)",
-               [&](std::size_t m) -> const std::vector<double>& { return results[m].theta_final; });
+  write_rows("theta_initial", "θ_j at t = 0, as drawn from the member's stream",
+             [&](std::size_t m) { return ensemble::member_initial_angles(scene, members[m]); });
+  write_rows("theta_final", "θ_j at the end, in [0, 2π)",
+             [&](std::size_t m) -> const std::vector<double>& { return results[m].theta_final; });
+  const auto& disorder = scene.disorder;
+  const auto deviations = [&](std::size_t m) {
+    return ensemble::row_deviations(disorder, members[m].rows, members[m].replica);
+  };
+  if (disorder.A > 0 || !disorder.A_rows.empty())
+    write_rows("disorder_A", "δ_j: row j's substrate strength is A (1 + δ_j)",
+               [&](std::size_t m) { return deviations(m).A; });
+  if (disorder.anisotropy > 0 || !disorder.anisotropy_rows.empty())
+    write_rows("disorder_anisotropy", "α_j: row j's anisotropy is (3/2)(1 + α_j)",
+               [&](std::size_t m) { return deviations(m).anisotropy; });
+  if (disorder.coupling > 0 || !disorder.coupling_rows.empty())
+    write_rows("disorder_coupling", "β_j: the coupling of rows j and j+1 is 1 + β_j",
+               [&](std::size_t m) { return deviations(m).coupling; });
   if (scene.period_series) write_period_series(group, scene, results);
 }
 

@@ -28,6 +28,7 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
     {"drive", {"g"}},
     {"sweep", {"A"}},
     {"initial", {"kinds", "noise", "offset", "angles", "replicas", "seed"}},
+    {"disorder", {"A", "anisotropy", "coupling", "seed", "A_rows", "anisotropy_rows", "coupling_rows"}},
     {"schedule", {"relax_periods", "average_periods", "steady_tol", "max_periods", "refill"}},
     {"observables",
      [] {
@@ -199,6 +200,41 @@ std::vector<double> grid(const Section& section, std::string_view k, const std::
   return values;
 }
 
+/// [disorder]: σ of each quantity, or its deviations per row, and the realizations' seed.
+void read_disorder(const Section& disorder, Scene& scene) {
+  auto& d = scene.disorder;
+  const auto sigma_what = "a number from 0 to 1 (relative standard deviation)";
+  const auto sigma = [](double x) { return x >= 0 && x <= 1; };
+  d.A = disorder.number("A", 0.0, sigma_what, sigma);
+  d.anisotropy = disorder.number("anisotropy", 0.0, sigma_what, sigma);
+  d.coupling = disorder.number("coupling", 0.0, sigma_what, sigma);
+  d.seed = std::uint64_t(disorder.integer("seed", 1, "an integer >= 0", [](long long s) { return s >= 0; }));
+  const auto rows_of = [&](const char* key, const char* sigma_key, double sigma_value) {
+    const toml::node* node = disorder.find(key);
+    if (!node) return std::vector<double>{};
+    if (sigma_value > 0)
+      fail(disorder.key(key), std::string("and ") + disorder.key(sigma_key) +
+                                  " are both given; give the deviations either drawn (σ) or per row");
+    const std::string what =
+        "a list of relative deviations > -1 whose length divides every model.rows (repeated over the rows)";
+    const auto* list = node->as_array();
+    if (!list || list->empty()) fail(disorder.key(key), "must be " + what);
+    for (std::size_t n : scene.row_counts)
+      if (n % list->size() != 0)
+        fail(disorder.key(key), "has " + std::to_string(list->size()) +
+                                    " values, which does not divide N = " + std::to_string(n) +
+                                    "; it must be " + what);
+    std::vector<double> values;
+    for (const auto& v : *list)
+      values.push_back(
+          Section::checked_number(v, disorder.key(key), "a number > -1", [](double x) { return x > -1; }));
+    return values;
+  };
+  d.A_rows = rows_of("A_rows", "A", d.A);
+  d.anisotropy_rows = rows_of("anisotropy_rows", "anisotropy", d.anisotropy);
+  d.coupling_rows = rows_of("coupling_rows", "coupling", d.coupling);
+}
+
 constexpr std::size_t max_members = 100000000;
 
 /// The plan is too large: names the axis with the most values, and every axis's size.
@@ -296,6 +332,8 @@ Scene read_scene(const toml::table& root) {
   } else if (exact) {
     initial.require("angles", angles_what + " when kinds has \"exact\"");
   }
+
+  read_disorder(section(root, "disorder"), scene);
 
   const Section schedule = section(root, "schedule");
   const auto non_negative = [](long long n) { return n >= 0 && n <= 1000000; };

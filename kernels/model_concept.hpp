@@ -60,6 +60,7 @@ concept LaneModel = requires(const M& model, M& mutable_model, typename M::Works
   requires M::quadrature_count == M::integrals.count();
   { M::error_controlled[k] } -> std::convertible_to<bool>;
   { M::Workspace::storage_size(k) } -> std::convertible_to<std::size_t>;
+  { M::storage_size(k) } -> std::convertible_to<std::size_t>;
   requires std::constructible_from < typename M::Workspace, std::size_t, LaneArena<typename M::lane_type>
   & > ;
   { model.dimension() } -> std::same_as<std::size_t>;

@@ -1,5 +1,5 @@
-// The nearest-neighbour periodic row model (docs/model.md §1, paper Eq. EOMFULL): right-hand side,
-// cyclic tridiagonal Jacobian, ∂f/∂t, energy, and the quadrature integrands of docs/model.md §3.
+// The nearest-neighbour periodic row model (docs/model.md §1, paper Eq. EOMFULL) with optional
+// per-row disorder (§8): right-hand side, cyclic tridiagonal Jacobian, ∂f/∂t, energy, integrands (§3).
 #pragma once
 
 #include <array>
@@ -16,13 +16,15 @@
 
 namespace rotorsweep::kernels {
 
-/// g dθ_j/dt = -3 sin 2θ_j + sin(θ_j - θ_{j+1}) + sin(θ_j - θ_{j-1}) + A sin(θ_j - t),
-/// rows periodic (θ_N ≡ θ_0), N >= 2. A and g are per lane. Every evaluation takes one
+/// g dθ_j/dt = -3 a_j sin 2θ_j + b_j sin(θ_j - θ_{j+1}) + b_{j-1} sin(θ_j - θ_{j-1}) + A_j sin(θ_j - t),
+/// rows periodic (θ_N ≡ θ_0), N >= 2, with A_j = A (1 + δ_j), a_j = 1 + α_j, b_j = 1 + β_j
+/// (b_j couples rows j and j+1). A, g and the deviations are per lane; all deviations zero is the
+/// uniform model with the same bits (a factor 1 multiplies exactly). Every evaluation takes one
 /// sincos per row and one for the drive phase; all other trigonometry follows from sums
 /// and products of those.
 ///
-/// The model keeps no mutable state: scratch lives in a Workspace over caller-owned storage.
-/// It satisfies LaneModel (kernels/model_concept.hpp).
+/// Scratch lives in a Workspace, the per-row factors in storage_size(N) lane values of
+/// caller-owned storage. It satisfies LaneModel (kernels/model_concept.hpp).
 template <class V, Integrals Q>
 class NearestNeighbourRows {
  public:
@@ -45,14 +47,21 @@ class NearestNeighbourRows {
   /// One lane's parameters. `strict_fm` marks a member that starts exactly in the strict-FM set
   /// (all rows equal): its stage solves keep all-equal rows exactly equal (CyclicTridiagonal),
   /// so that the symmetry-protected state stays strict FM in floating point.
+  /// The per-row relative deviations δ_j, α_j, β_j are read from N values each; nullptr is zero.
   struct Parameters {
     double A = 1.0;
     double g = 1.0;
     bool strict_fm = false;
+    const double* A_rows = nullptr;           ///< δ_j: A_j = A (1 + δ_j)
+    const double* anisotropy_rows = nullptr;  ///< α_j: anisotropy 3/2 (1 + α_j)
+    const double* coupling_rows = nullptr;    ///< β_j: coupling of rows j, j+1 is 1 + β_j
   };
 
+  /// Lane values of caller storage the model keeps (its per-row factors).
+  static constexpr std::size_t storage_size(std::size_t n) { return 3 * n; }
+
   struct Workspace {
-    static constexpr std::size_t storage_size(std::size_t n) { return 7 * n; }
+    static constexpr std::size_t storage_size(std::size_t n) { return 8 * n; }
     ROTORSWEEP_HD Workspace(std::size_t n, LaneArena<V>& arena)
         : sin_row(arena.take(n)),
           cos_row(arena.take(n)),
@@ -60,20 +69,34 @@ class NearestNeighbourRows {
           cos_lag(arena.take(n)),
           sin_link(arena.take(n)),
           cos_link(arena.take(n)),
-          product(arena.take(n)) {}
+          product(arena.take(n)),
+          weighted_lag(arena.take(n)) {}
     V *sin_row, *cos_row;    // sin θ_j, cos θ_j
     V *sin_lag, *cos_lag;    // sin(θ_j - t), cos(θ_j - t)
     V *sin_link, *cos_link;  // sin(θ_j - θ_{j+1}), cos(θ_j - θ_{j+1})
     V* product;              // J·v products for the integrand gradients
+    V* weighted_lag;         // (1 + δ_j) sin(θ_j - t)
   };
 
-  ROTORSWEEP_HD explicit NearestNeighbourRows(std::size_t rows) : rows_(rows) {}
-  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, const Parameters& p) : rows_(rows) {
+  /// A uniform model (every factor 1) over storage_size(rows) values of `arena`.
+  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena)
+      : rows_(rows),
+        A_row_(arena.take(rows)),
+        anisotropy_row_(arena.take(rows)),
+        coupling_row_(arena.take(rows)) {
+    for (std::size_t j = 0; j < rows; ++j) A_row_[j] = anisotropy_row_[j] = coupling_row_[j] = V(1.0);
+  }
+  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena, const Parameters& p)
+      : NearestNeighbourRows(rows, arena) {
     for (std::size_t l = 0; l < lane_width<V>; ++l) set_lane(l, p);
   }
-  /// A and g per lane, no lane symmetry protected.
-  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, V A, V g)
-      : rows_(rows), A_(A), g_(g), inv_g_(V(1.0) / g) {}
+  /// A and g per lane, uniform rows, no lane symmetry protected.
+  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena, V A, V g)
+      : NearestNeighbourRows(rows, arena) {
+    A_ = A;
+    g_ = g;
+    inv_g_ = V(1.0) / g;
+  }
 
   /// Gives one lane new parameters (a lane block refilled with another member).
   ROTORSWEEP_HD void set_lane(std::size_t lane, const Parameters& p) {
@@ -81,6 +104,15 @@ class NearestNeighbourRows {
     lane_set(g_, lane, p.g);
     lane_set(inv_g_, lane, 1.0 / p.g);
     lane_set(strict_fm_, lane, p.strict_fm ? 1.0 : 0.0);
+    for (std::size_t j = 0; j < rows_; ++j) {
+      const double factors[3] = {p.A_rows ? 1.0 + p.A_rows[j] : 1.0,
+                                 p.anisotropy_rows ? 1.0 + p.anisotropy_rows[j] : 1.0,
+                                 p.coupling_rows ? 1.0 + p.coupling_rows[j] : 1.0};
+      lane_set(A_row_[j], lane, factors[0]);
+      lane_set(anisotropy_row_[j], lane, factors[1]);
+      lane_set(coupling_row_[j], lane, factors[2]);
+      disordered_ = disordered_ || factors[0] != 1.0 || factors[1] != 1.0 || factors[2] != 1.0;
+    }
   }
 
   ROTORSWEEP_HD std::size_t dimension() const { return rows_; }
@@ -89,41 +121,87 @@ class NearestNeighbourRows {
 
   /// f = dθ/dt and the quadrature integrands qdot at (θ, t).
   ROTORSWEEP_HD void evaluate(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
-    trigonometry(w, theta, t);
-    torques(w, f);
-    integrands(w, f, qdot);
+    if (disordered_)
+      evaluate_rows<true>(w, theta, t, f, qdot);
+    else
+      evaluate_rows<false>(w, theta, t, f, qdot);
   }
 
   /// evaluate() plus the Jacobian J = ∂f/∂θ, ∂f/∂t, and the gradients of the integrands
   /// (dq_dtheta[q·N + k] = ∂qdot_q/∂θ_k, dq_dt[q] = ∂qdot_q/∂t) at the same point.
   ROTORSWEEP_HD void linearize(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt,
                                V* dq_dtheta, V* dq_dt) const {
-    evaluate(w, theta, t, f, qdot);
-    const std::size_t n = rows_;
-    for (std::size_t j = 0; j < n; ++j) {
-      const std::size_t jm = (j == 0) ? n - 1 : j - 1;
-      const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
-      J.diag(j) = inv_g_ * (V(-6.0) * cos_2theta + w.cos_link[j] + w.cos_link[jm] + A_ * w.cos_lag[j]);
-      J.off(j) = lane_neg(inv_g_) * w.cos_link[j];
-      df_dt[j] = lane_neg(inv_g_) * A_ * w.cos_lag[j];
-    }
-    J.keep_constant_solutions(strict_fm_ != V(0.0));
-    integrand_gradients(w, f, J, df_dt, dq_dtheta, dq_dt);
+    if (disordered_)
+      linearize_rows<true>(w, theta, t, f, qdot, J, df_dt, dq_dtheta, dq_dt);
+    else
+      linearize_rows<false>(w, theta, t, f, qdot, J, df_dt, dq_dtheta, dq_dt);
   }
 
   /// H(θ; A, t) of docs/model.md §1.
   ROTORSWEEP_HD V energy(Workspace& w, const V* theta, V t) const {
-    trigonometry(w, theta, t);
-    return energy_from_trigonometry(w);
+    if (disordered_) {
+      trigonometry<true>(w, theta, t);
+      return energy_from_trigonometry<true>(w);
+    }
+    trigonometry<false>(w, theta, t);
+    return energy_from_trigonometry<false>(w);
   }
 
   /// ρ̄(θ) = (1/N) Σ cos²((θ_j - θ_{j+1})/2).
   ROTORSWEEP_HD V alignment(Workspace& w, const V* theta, V t) const {
-    trigonometry(w, theta, t);
+    trigonometry<false>(w, theta, t);
     return alignment_from_trigonometry(w);
   }
 
  private:
+  // Every loop below is written once for both cases: per_row = false is the uniform model (the
+  // factors are not read), per_row = true multiplies each term by its row's factor.
+
+  /// factor[j] · x with per-row factors, else x.
+  template <bool per_row>
+  ROTORSWEEP_HD static V scaled(const V* factor, std::size_t j, const V& x) {
+    if constexpr (per_row)
+      return factor[j] * x;
+    else
+      return x;
+  }
+
+  /// (1 + δ_j) sin(θ_j - t) after trigonometry<per_row>().
+  template <bool per_row>
+  ROTORSWEEP_HD static const V* weighted_lag(const Workspace& w) {
+    if constexpr (per_row)
+      return w.weighted_lag;
+    else
+      return w.sin_lag;
+  }
+
+  template <bool per_row>
+  ROTORSWEEP_HD void evaluate_rows(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
+    trigonometry<per_row>(w, theta, t);
+    torques<per_row>(w, f);
+    integrands<per_row>(w, f, qdot);
+  }
+
+  template <bool per_row>
+  ROTORSWEEP_HD void linearize_rows(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt,
+                                    V* dq_dtheta, V* dq_dt) const {
+    evaluate_rows<per_row>(w, theta, t, f, qdot);
+    const std::size_t n = rows_;
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t jm = (j == 0) ? n - 1 : j - 1;
+      const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
+      const V coupled = scaled<per_row>(coupling_row_, j, w.cos_link[j]);
+      const V lag = scaled<per_row>(A_row_, j, w.cos_lag[j]);
+      J.diag(j) = inv_g_ * (V(-6.0) * scaled<per_row>(anisotropy_row_, j, cos_2theta) + coupled +
+                            scaled<per_row>(coupling_row_, jm, w.cos_link[jm]) + A_ * lag);
+      J.off(j) = lane_neg(inv_g_) * coupled;
+      df_dt[j] = lane_neg(inv_g_) * A_ * lag;
+    }
+    J.keep_constant_solutions(strict_fm_ != V(0.0));
+    integrand_gradients<per_row>(w, f, J, df_dt, dq_dtheta, dq_dt);
+  }
+
+  template <bool per_row>
   ROTORSWEEP_HD void trigonometry(Workspace& w, const V* theta, V t) const {
     const std::size_t n = rows_;
     V sin_t, cos_t;
@@ -132,6 +210,7 @@ class NearestNeighbourRows {
       lane_sincos(theta[j], w.sin_row[j], w.cos_row[j]);
       w.sin_lag[j] = w.sin_row[j] * cos_t - w.cos_row[j] * sin_t;
       w.cos_lag[j] = w.cos_row[j] * cos_t + w.sin_row[j] * sin_t;
+      if constexpr (per_row) w.weighted_lag[j] = A_row_[j] * w.sin_lag[j];
     }
     for (std::size_t j = 0; j < n; ++j) {
       const std::size_t jp = (j + 1 == n) ? 0 : j + 1;
@@ -140,20 +219,26 @@ class NearestNeighbourRows {
     }
   }
 
+  template <bool per_row>
   ROTORSWEEP_HD void torques(const Workspace& w, V* f) const {
+    const V* lag = weighted_lag<per_row>(w);
     const std::size_t n = rows_;
     for (std::size_t j = 0; j < n; ++j) {
       const std::size_t jm = (j == 0) ? n - 1 : j - 1;
       const V sin_2theta = V(2.0) * w.sin_row[j] * w.cos_row[j];
-      f[j] = inv_g_ * (V(-3.0) * sin_2theta + w.sin_link[j] - w.sin_link[jm] + A_ * w.sin_lag[j]);
+      f[j] = inv_g_ * (V(-3.0) * scaled<per_row>(anisotropy_row_, j, sin_2theta) +
+                       scaled<per_row>(coupling_row_, j, w.sin_link[j]) -
+                       scaled<per_row>(coupling_row_, jm, w.sin_link[jm]) + A_ * lag[j]);
     }
   }
 
+  template <bool per_row>
   ROTORSWEEP_HD V energy_from_trigonometry(const Workspace& w) const {
     V h(0.0);
     for (std::size_t j = 0; j < rows_; ++j) {
       const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
-      h += V(-1.5) * cos_2theta + w.cos_link[j] + A_ * w.cos_lag[j];
+      h += V(-1.5) * scaled<per_row>(anisotropy_row_, j, cos_2theta) +
+           scaled<per_row>(coupling_row_, j, w.cos_link[j]) + A_ * scaled<per_row>(A_row_, j, w.cos_lag[j]);
     }
     return h;
   }
@@ -164,16 +249,18 @@ class NearestNeighbourRows {
     return V(0.5) + V(0.5 / double(rows_)) * sum;
   }
 
+  template <bool per_row>
   ROTORSWEEP_HD void integrands(const Workspace& w, const V* f, V* qdot) const {
     const std::size_t n = rows_;
+    const V* lag = weighted_lag<per_row>(w);
     if constexpr (Q.drive) {
       V sum(0.0);
-      for (std::size_t j = 0; j < n; ++j) sum += w.sin_lag[j];
+      for (std::size_t j = 0; j < n; ++j) sum += lag[j];
       qdot[Q.drive_index()] = A_ * sum;
     }
     if constexpr (Q.work) {
       V sum(0.0);
-      for (std::size_t j = 0; j < n; ++j) sum += w.sin_lag[j] * f[j];
+      for (std::size_t j = 0; j < n; ++j) sum += lag[j] * f[j];
       qdot[Q.work_index()] = A_ * sum;
     }
     if constexpr (Q.stokes) {
@@ -182,29 +269,33 @@ class NearestNeighbourRows {
       qdot[Q.stokes_index()] = g_ * sum;
     }
     if constexpr (Q.alignment) qdot[Q.alignment_index()] = alignment_from_trigonometry(w);
-    if constexpr (Q.energy) qdot[Q.energy_index()] = energy_from_trigonometry(w);
+    if constexpr (Q.energy) qdot[Q.energy_index()] = energy_from_trigonometry<per_row>(w);
   }
 
+  template <bool per_row>
   ROTORSWEEP_HD void integrand_gradients(Workspace& w, const V* f, const Jacobian& J, const V* df_dt,
                                          V* dq_dtheta, V* dq_dt) const {
     const std::size_t n = rows_;
+    const V* sin_lag = weighted_lag<per_row>(w);
     if constexpr (Q.drive) {
       V* grad = dq_dtheta + Q.drive_index() * n;
       V sum(0.0);
       for (std::size_t k = 0; k < n; ++k) {
-        grad[k] = A_ * w.cos_lag[k];
-        sum += w.cos_lag[k];
+        const V lag = scaled<per_row>(A_row_, k, w.cos_lag[k]);
+        grad[k] = A_ * lag;
+        sum += lag;
       }
       dq_dt[Q.drive_index()] = lane_neg(A_) * sum;
     }
     if constexpr (Q.work) {
       V* grad = dq_dtheta + Q.work_index() * n;
       for (std::size_t k = 0; k < n; ++k) w.product[k] = V(0.0);
-      J.multiply_add(w.sin_lag, w.product);  // J symmetric: Jᵀ sin_lag
+      J.multiply_add(sin_lag, w.product);  // J symmetric: Jᵀ (1 + δ) sin_lag
       V sum(0.0);
       for (std::size_t k = 0; k < n; ++k) {
-        grad[k] = A_ * (w.cos_lag[k] * f[k] + w.product[k]);
-        sum += w.sin_lag[k] * df_dt[k] - w.cos_lag[k] * f[k];
+        const V lag = scaled<per_row>(A_row_, k, w.cos_lag[k]);
+        grad[k] = A_ * (lag * f[k] + w.product[k]);
+        sum += sin_lag[k] * df_dt[k] - lag * f[k];
       }
       dq_dt[Q.work_index()] = A_ * sum;
     }
@@ -233,13 +324,15 @@ class NearestNeighbourRows {
       V sum(0.0);
       for (std::size_t k = 0; k < n; ++k) {
         grad[k] = lane_neg(g_) * f[k];
-        sum += w.sin_lag[k];
+        sum += sin_lag[k];
       }
       dq_dt[Q.energy_index()] = A_ * sum;
     }
   }
 
   std::size_t rows_;
+  V *A_row_, *anisotropy_row_, *coupling_row_;  ///< 1 + δ_j, 1 + α_j, 1 + β_j per lane
+  bool disordered_ = false;  ///< some lane has a factor other than 1: the per-row loops run
   V A_ = V(1.0), g_ = V(1.0), inv_g_ = V(1.0);
   V strict_fm_ = V(0.0);  ///< 1 in lanes whose member is symmetry protected
 };

@@ -38,7 +38,8 @@ class SingleRotor {
     ROTORSWEEP_HD Workspace(std::size_t, LaneArena<V>&) {}
   };
 
-  ROTORSWEEP_HD explicit SingleRotor(std::size_t) {}
+  static constexpr std::size_t storage_size(std::size_t) { return 0; }  ///< it keeps no per-row values
+  ROTORSWEEP_HD SingleRotor(std::size_t, LaneArena<V>&) {}
 
   ROTORSWEEP_HD void set_lane(std::size_t lane, const Parameters& p) {
     lane_set(A_, lane, p.A);

@@ -15,7 +15,7 @@ __global__ void advance_members(double* storage, std::size_t per_thread, std::si
                                 const double* g, double* dissipation) {
   const std::size_t member = blockIdx.x * blockDim.x + threadIdx.x;
   LaneArena<double> arena(storage + member * per_thread, per_thread);
-  const Model model(rows, {A[member], g[member], false});
+  const Model model(rows, arena, {A[member], g[member], false});
   AdaptiveIntegrator<Model, Stepper> integrator(model, {1e-6, 1e-9}, {}, arena);
   LaneState<double> state(rows, Model::quadrature_count, arena);
   for (std::size_t j = 0; j < rows; ++j) state.theta[j] = 3.14159 * double(j % 2) + 0.01 * double(j);

@@ -47,7 +47,7 @@ double max_error(const std::vector<double>& a, const std::vector<double>& b, std
 
 template <class Stepper>
 void check_order(int expected, std::vector<int> steps) {
-  const Model m(6, 2.5, 3.0);
+  const auto m = rotorsweep::testing::model<Model>(6, 2.5, 3.0);
   const auto reference = fixed_steps<DormandPrince5<Model>>(m, 4096);
   const std::size_t n = m.dimension();
   const auto coarse = fixed_steps<Stepper>(m, steps[0]), fine = fixed_steps<Stepper>(m, steps[1]);

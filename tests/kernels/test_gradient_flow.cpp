@@ -25,6 +25,7 @@ struct FrozenDrive {
   static constexpr Integrals integrals = Model::integrals;
   static constexpr std::size_t quadrature_count = Model::quadrature_count;
   static constexpr auto error_controlled = Model::error_controlled;
+  static constexpr std::size_t storage_size(std::size_t n) { return Model::storage_size(n); }
 
   Model model;
   double phase;
@@ -46,7 +47,7 @@ struct FrozenDrive {
 template <class Stepper>
 void check_energy_descent(double A, double g) {
   const std::size_t rows = 12;
-  const FrozenDrive system{Model(rows, A, g), 0.9};
+  const FrozenDrive system{rotorsweep::testing::model<Model>(rows, A, g), 0.9};
   auto integrator =
       rotorsweep::testing::integrator<AdaptiveIntegrator<FrozenDrive, Stepper>>(system, {1e-8, 1e-11});
   auto s = rotorsweep::testing::lane_state<double>(rows, FrozenDrive::quadrature_count);

@@ -30,7 +30,7 @@ LaneState<simd_lane> make_state(bool poison_lane_zero) {
 }  // namespace
 
 TEST_CASE("a non-finite lane is frozen and flagged; the others are untouched", "[kernels][status]") {
-  const Model model(rows, lane_from<simd_lane>([](std::size_t l) { return 1.0 + double(l); }),
+  const auto model = rotorsweep::testing::model<Model>(rows, lane_from<simd_lane>([](std::size_t l) { return 1.0 + double(l); }),
                     simd_lane(0.01));
   auto clean_run =
       rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-7, 1e-10});
@@ -54,7 +54,7 @@ TEST_CASE("a non-finite lane is frozen and flagged; the others are untouched", "
 }
 
 TEST_CASE("an exhausted step budget is flagged and stops the lane", "[kernels][status]") {
-  const Model model(rows, simd_lane(6.0), simd_lane(0.001));
+  const auto model = rotorsweep::testing::model<Model>(rows, simd_lane(6.0), simd_lane(0.001));
   StepLimits limits;
   limits.max_steps = 40;
   auto integrator =

@@ -1,5 +1,7 @@
-// Tests of the row model (kernels/row_model.hpp, docs/model.md §1 and §3): the Jacobian, ∂f/∂t and
-// the integrand gradients against central differences; f = -∇H/g; N = 2 is the two-angle H_r.
+// Tests of the row model (kernels/row_model.hpp, docs/model.md §1, §3, §7): the Jacobian, ∂f/∂t and
+// the integrand gradients against central differences, uniform and with per-row disorder;
+// f = -∇H/g; N = 2 is the two-angle H_r; the disordered equations written out; zero deviations
+// give the uniform model's bits.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -35,63 +37,143 @@ Evaluation evaluate(const Model& m, std::vector<double> theta, double t) {
   return e;
 }
 
+/// Per-row deviations of size 0.1–0.3 in all three quantities, different for each.
+struct Deviations {
+  std::vector<double> A, anisotropy, coupling;
+  explicit Deviations(std::size_t n) {
+    for (std::size_t j = 0; j < n; ++j) {
+      A.push_back(0.3 * std::sin(1.0 + double(j)));
+      anisotropy.push_back(0.2 * std::cos(2.0 * double(j)));
+      coupling.push_back(0.25 * std::sin(0.5 + 3.0 * double(j)));
+    }
+  }
+  Model::Parameters parameters(double A_value, double g) const {
+    return {A_value, g, false, A.data(), anisotropy.data(), coupling.data()};
+  }
+};
+
 }  // namespace
 
 TEST_CASE("Jacobian, df/dt and integrand gradients match central differences", "[kernels][model]") {
-  for (std::size_t n : {2u, 4u, 7u, 20u}) {
-    const Model m(n, 4.3, 0.37);
-    const auto theta = random_angles(n, unsigned(n));
-    const double t = 1.9, eps = 1e-6;
+  for (std::size_t n : {2u, 4u, 7u, 20u})
+    for (bool disordered : {false, true}) {
+      const Deviations d(n);
+      const auto m = disordered ? rotorsweep::testing::model<Model>(n, d.parameters(4.3, 0.37))
+                                : rotorsweep::testing::model<Model>(n, 4.3, 0.37);
+      INFO("disordered " << disordered);
+      const auto theta = random_angles(n, unsigned(n));
+      const double t = 1.9, eps = 1e-6;
 
-    auto w = rotorsweep::testing::workspace(m);
-    std::vector<double> f(n), q(nq), df_dt(n), dq_dy(nq * n), dq_dt(nq);
-    auto J = rotorsweep::testing::jacobian<Model::Jacobian>(n);
-    m.linearize(w, theta.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
+      auto w = rotorsweep::testing::workspace(m);
+      std::vector<double> f(n), q(nq), df_dt(n), dq_dy(nq * n), dq_dt(nq);
+      auto J = rotorsweep::testing::jacobian<Model::Jacobian>(n);
+      m.linearize(w, theta.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
 
-    for (std::size_t k = 0; k < n; ++k) {
-      auto plus = theta, minus = theta;
-      plus[k] += eps;
-      minus[k] -= eps;
-      const auto ep = evaluate(m, plus, t), em = evaluate(m, minus, t);
-      std::vector<double> unit(n, 0.0), column(n, 0.0);
-      unit[k] = 1.0;
-      J.multiply_add(unit.data(), column.data());
-      for (std::size_t j = 0; j < n; ++j) {
-        INFO("n=" << n << " d f_" << j << " / d theta_" << k);
-        CHECK(column[j] == Approx((ep.f[j] - em.f[j]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
+      for (std::size_t k = 0; k < n; ++k) {
+        auto plus = theta, minus = theta;
+        plus[k] += eps;
+        minus[k] -= eps;
+        const auto ep = evaluate(m, plus, t), em = evaluate(m, minus, t);
+        std::vector<double> unit(n, 0.0), column(n, 0.0);
+        unit[k] = 1.0;
+        J.multiply_add(unit.data(), column.data());
+        for (std::size_t j = 0; j < n; ++j) {
+          INFO("n=" << n << " d f_" << j << " / d theta_" << k);
+          CHECK(column[j] == Approx((ep.f[j] - em.f[j]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
+        }
+        for (std::size_t p = 0; p < nq; ++p) {
+          INFO("n=" << n << " d q_" << p << " / d theta_" << k);
+          CHECK(dq_dy[p * n + k] == Approx((ep.q[p] - em.q[p]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
+        }
       }
-      for (std::size_t p = 0; p < nq; ++p) {
-        INFO("n=" << n << " d q_" << p << " / d theta_" << k);
-        CHECK(dq_dy[p * n + k] == Approx((ep.q[p] - em.q[p]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
-      }
+      const auto ep = evaluate(m, theta, t + eps), em = evaluate(m, theta, t - eps);
+      for (std::size_t j = 0; j < n; ++j)
+        CHECK(df_dt[j] == Approx((ep.f[j] - em.f[j]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
+      for (std::size_t p = 0; p < nq; ++p)
+        CHECK(dq_dt[p] == Approx((ep.q[p] - em.q[p]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
     }
-    const auto ep = evaluate(m, theta, t + eps), em = evaluate(m, theta, t - eps);
-    for (std::size_t j = 0; j < n; ++j)
-      CHECK(df_dt[j] == Approx((ep.f[j] - em.f[j]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
-    for (std::size_t p = 0; p < nq; ++p)
-      CHECK(dq_dt[p] == Approx((ep.q[p] - em.q[p]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
-  }
 }
 
 TEST_CASE("the flow is the gradient of the energy: g f = -dH/dtheta", "[kernels][model]") {
   const std::size_t n = 6;
   const double g = 0.05, t = 0.4, eps = 1e-6;
-  const Model m(n, 2.0, g);
-  const auto theta = random_angles(n, 3);
+  const Deviations d(n);
+  for (const auto& m : {rotorsweep::testing::model<Model>(n, 2.0, g),
+                        rotorsweep::testing::model<Model>(n, d.parameters(2.0, g))}) {
+    const auto theta = random_angles(n, 3);
+    const auto e = evaluate(m, theta, t);
+    auto w = rotorsweep::testing::workspace(m);
+    for (std::size_t k = 0; k < n; ++k) {
+      auto plus = theta, minus = theta;
+      plus[k] += eps;
+      minus[k] -= eps;
+      const double dH = (m.energy(w, plus.data(), t) - m.energy(w, minus.data(), t)) / (2 * eps);
+      CHECK(g * e.f[k] == Approx(-dH).epsilon(1e-7).margin(1e-8));
+    }
+  }
+}
+
+TEST_CASE("per-row disorder: the equations of docs/model.md section 7 written out", "[kernels][model]") {
+  const std::size_t n = 5;
+  const double A = 3.0, g = 0.2, t = 0.7;
+  const Deviations d(n);
+  const auto m = rotorsweep::testing::model<Model>(n, d.parameters(A, g));
+  const auto theta = random_angles(n, 11);
   const auto e = evaluate(m, theta, t);
   auto w = rotorsweep::testing::workspace(m);
-  for (std::size_t k = 0; k < n; ++k) {
-    auto plus = theta, minus = theta;
-    plus[k] += eps;
-    minus[k] -= eps;
-    const double dH = (m.energy(w, plus.data(), t) - m.energy(w, minus.data(), t)) / (2 * eps);
-    CHECK(g * e.f[k] == Approx(-dH).epsilon(1e-7).margin(1e-8));
+  double H = 0, drive = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t jp = (j + 1) % n, jm = (j + n - 1) % n;
+    const double A_j = A * (1 + d.A[j]), a_j = 1.5 * (1 + d.anisotropy[j]);
+    const double b_j = 1 + d.coupling[j], b_jm = 1 + d.coupling[jm];
+    const double torque = -2 * a_j * std::sin(2 * theta[j]) + b_j * std::sin(theta[j] - theta[jp]) +
+                          b_jm * std::sin(theta[j] - theta[jm]) + A_j * std::sin(theta[j] - t);
+    CHECK(e.f[j] == Approx(torque / g).epsilon(1e-13));
+    H += -a_j * std::cos(2 * theta[j]) + b_j * std::cos(theta[j] - theta[jp]) + A_j * std::cos(theta[j] - t);
+    drive += A_j * std::sin(theta[j] - t);
   }
+  CHECK(m.energy(w, theta.data(), t) == Approx(H).epsilon(1e-13));
+  CHECK(e.q[every.drive_index()] == Approx(drive).epsilon(1e-13));
+}
+
+TEST_CASE("a lane with zero deviations beside a disordered lane keeps the uniform bits", "[kernels][model]") {
+  using Simd = NearestNeighbourRows<simd_lane, every>;
+  const std::size_t n = 9;
+  const double t = 1.1;
+  const Deviations d(n);
+  const std::vector<double> zeros(n, 0.0);
+  auto simd = rotorsweep::testing::model<Simd>(n, Simd::Parameters{4.0, 0.01});
+  simd.set_lane(0, {4.0, 0.01, false, d.A.data(), d.anisotropy.data(), d.coupling.data()});
+  simd.set_lane(1, {4.0, 0.01, false, zeros.data(), zeros.data(), zeros.data()});
+  const auto uniform = rotorsweep::testing::model<Model>(n, 4.0, 0.01);
+  const auto theta = random_angles(n, 5);
+  lane_vector<simd_lane> theta_v(n), f_v(n), q_v(nq), df_dt_v(n), dq_dy_v(nq * n), dq_dt_v(nq);
+  for (std::size_t j = 0; j < n; ++j) theta_v[j] = simd_lane(theta[j]);
+  auto w_v = rotorsweep::testing::workspace(simd);
+  auto J_v = rotorsweep::testing::jacobian<Simd::Jacobian>(n);
+  simd.linearize(w_v, theta_v.data(), simd_lane(t), f_v.data(), q_v.data(), J_v, df_dt_v.data(),
+                 dq_dy_v.data(), dq_dt_v.data());
+  auto w = rotorsweep::testing::workspace(uniform);
+  auto J = rotorsweep::testing::jacobian<Model::Jacobian>(n);
+  std::vector<double> f(n), q(nq), df_dt(n), dq_dy(nq * n), dq_dt(nq);
+  uniform.linearize(w, theta.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
+  for (std::size_t l : {1u, 2u}) {
+    INFO("lane " << l);
+    for (std::size_t j = 0; j < n; ++j) {
+      CHECK(lane_get(f_v[j], l) == f[j]);
+      CHECK(lane_get(df_dt_v[j], l) == df_dt[j]);
+      CHECK(lane_get(J_v.diag(j), l) == J.diag(j));
+      CHECK(lane_get(J_v.off(j), l) == J.off(j));
+    }
+    for (std::size_t p = 0; p < nq; ++p) CHECK(lane_get(q_v[p], l) == q[p]);
+    for (std::size_t k = 0; k < nq * n; ++k) CHECK(lane_get(dq_dy_v[k], l) == dq_dy[k]);
+  }
+  CHECK(lane_get(f_v[0], 0) != f[0]);  // lane 0 is disordered
 }
 
 TEST_CASE("two rows reduce to the two-angle landscape H_r and its alignment", "[kernels][model]") {
   const double A = 5.5, te = 0.8, to = 2.9, tau = 1.3;
-  const Model m(2, A, 1.0);
+  const auto m = rotorsweep::testing::model<Model>(2, A, 1.0);
   auto w = rotorsweep::testing::workspace(m);
   const double theta[2] = {te, to};
   const double H_r = -1.5 * (std::cos(2 * te) + std::cos(2 * to)) + 2 * std::cos(te - to) +
@@ -104,7 +186,7 @@ TEST_CASE("two rows reduce to the two-angle landscape H_r and its alignment", "[
 TEST_CASE("quadrature integrands follow model.md section 3", "[kernels][model]") {
   const std::size_t n = 5;
   const double A = 3.0, g = 0.2, t = 0.7;
-  const Model m(n, A, g);
+  const auto m = rotorsweep::testing::model<Model>(n, A, g);
   const auto theta = random_angles(n, 9);
   const auto e = evaluate(m, theta, t);
   double drive = 0, work = 0, stokes = 0, align = 0;

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <deque>
+#include <utility>
 
 #include "kernels/adaptive_integrator.hpp"
 #include "kernels/lane.hpp"
@@ -18,6 +19,13 @@ kernels::LaneArena<V> scratch(std::size_t size) {
   static std::deque<kernels::lane_vector<V>> chunks;
   chunks.emplace_back(size);
   return {chunks.back().data(), size};
+}
+
+/// A model over a fresh chunk of its own storage; `args` follow the row count (A and g, or Parameters).
+template <class Model, class... Args>
+Model model(std::size_t n, Args&&... args) {
+  auto arena = scratch<typename Model::lane_type>(Model::storage_size(n));
+  return Model(n, arena, std::forward<Args>(args)...);
 }
 
 template <class Model>
