@@ -1,7 +1,9 @@
 // `rotorsweep bench kernels`: single-thread throughput of the kernels, scalar and SIMD: RHS
-// evaluations, the bare vectorised sincos that bounds them, and step attempts per stepper.
+// evaluations, the bare vectorised sincos that bounds them, step attempts per stepper, and the
+// cost of per-row disorder (docs/model.md §7) on both.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -52,12 +54,25 @@ lane_vector<V> afm_angles(std::size_t rows) {
   return out;
 }
 
+/// Per-row deviations of relative size 1e-6 in all three quantities (or none).
+struct BenchDisorder {
+  std::vector<double> deviations;
+  BenchDisorder(std::size_t rows, bool on) {
+    for (std::size_t j = 0; on && j < rows; ++j) deviations.push_back(1e-6 * std::sin(double(j)));
+  }
+  template <class Parameters>
+  Parameters parameters() const {
+    const double* d = deviations.empty() ? nullptr : deviations.data();
+    return {4.0, 0.0011, false, d, d, d};
+  }
+};
+
 template <class V>
-double rhs_rate(std::size_t rows, int repeats) {
+double rhs_rate(std::size_t rows, int repeats, bool disordered = false) {
   using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
   lane_vector<V> storage(Model::storage_size(rows) + Model::Workspace::storage_size(rows));
   kernels::LaneArena<V> arena(storage.data(), storage.size());
-  const Model model(rows, arena, {4.0, 0.0011});
+  const Model model(rows, arena, BenchDisorder(rows, disordered).parameters<typename Model::Parameters>());
   typename Model::Workspace work(rows, arena);
   auto theta = afm_angles<V>(rows);
   lane_vector<V> f(rows), q(2);
@@ -77,11 +92,12 @@ double sincos_rate(std::size_t rows, int repeats) {
 }
 
 template <class V>
-double step_rate(kernels::StepperId id, std::size_t rows, int repeats) {
+double step_rate(kernels::StepperId id, std::size_t rows, int repeats, bool disordered = false) {
   using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
   lane_vector<V> model_storage(Model::storage_size(rows));
   kernels::LaneArena<V> model_arena(model_storage.data(), model_storage.size());
-  const Model model(rows, model_arena, {4.0, 0.0011});
+  const Model model(rows, model_arena,
+                    BenchDisorder(rows, disordered).parameters<typename Model::Parameters>());
   return kernels::with_stepper<Model>(id, [&]<class Stepper>() {
     using Integrator = kernels::AdaptiveIntegrator<Model, Stepper>;
     lane_vector<V> storage(Integrator::storage_size(rows) +
@@ -118,6 +134,13 @@ int run_bench_kernels(const BenchKernelOptions& options) {
     std::printf("  steps %-8s scalar %10.4g /s   SIMD %10.4g member-steps/s (%.1fx)\n",
                 kernels::stepper_names[k].data(), s, v, v / s);
   }
+  const double disordered_rhs = rhs_rate<simd_lane>(rows, options.repeats, true);
+  const double uniform_steps = step_rate<simd_lane>(0, rows, options.repeats);
+  const double disordered_steps = step_rate<simd_lane>(0, rows, options.repeats, true);
+  std::printf("  with per-row disorder (SIMD): RHS %.4g evaluations/s (%.2f of uniform), %s %.4g member-steps/s "
+              "(%.2f of uniform)\n",
+              disordered_rhs, disordered_rhs / simd, kernels::stepper_names[0].data(), disordered_steps,
+              disordered_steps / uniform_steps);
   return 0;
 }
 

@@ -211,3 +211,22 @@ TEST_CASE("rows and tolerances may be lists: one variant each", "[io][scene]") {
                       "[\"exact\"]\nangles = [0, 1, 2, 3]\n"),
              Catch::Contains("'initial.angles'") && Catch::Contains("N = 6"));
 }
+
+TEST_CASE("disorder: drawn or per row, with the key named when wrong", "[io][scene]") {
+  const auto scene = parse_scene_text(minimal + "[disorder]\nA = 1e-6\nseed = 4\ncoupling_rows = [0.1, -0.1]\n",
+                                      "test.toml");
+  CHECK(scene.disorder.A == 1e-6);
+  CHECK(scene.disorder.seed == 4);
+  CHECK(scene.disorder.coupling_rows == std::vector<double>{0.1, -0.1});
+  CHECK(scene.disorder.any());
+  CHECK_FALSE(parse_scene_text(minimal, "test.toml").disorder.any());
+  CHECK_THAT(error_of(minimal + "[disorder]\nA = -1e-3\n"), Catch::Contains("'disorder.A'"));
+  CHECK_THAT(error_of(minimal + "[disorder]\nanisotropy = 2\n"), Catch::Contains("'disorder.anisotropy'"));
+  CHECK_THAT(error_of(minimal + "[disorder]\nA_rows = [0.1, 0.2, 0.3]\n"),
+             Catch::Contains("'disorder.A_rows'") && Catch::Contains("does not divide N = 20"));
+  CHECK_THAT(error_of(minimal + "[disorder]\ncoupling_rows = [0.1, -1.5]\n"),
+             Catch::Contains("'disorder.coupling_rows'") && Catch::Contains("> -1"));
+  CHECK_THAT(error_of(minimal + "[disorder]\nA = 1e-3\nA_rows = [0.1]\n"),
+             Catch::Contains("'disorder.A_rows'") && Catch::Contains("both given"));
+  CHECK_THAT(error_of(minimal + "[disorder]\nsigma = 1\n"), Catch::Contains("'disorder.sigma'"));
+}
