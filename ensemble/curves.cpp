@@ -31,6 +31,7 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
     if (point.count == 0) {
       const double nan = std::numeric_limits<double>::quiet_NaN();
       point.dissipation_mean = point.dissipation_std = point.dissipation_min = point.dissipation_max = nan;
+      point.dissipation_sem = nan;
     } else {
       point.dissipation_mean = sum / double(point.count);
       double spread = 0;
@@ -38,6 +39,9 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
         if (results[i].status == kernels::LaneStatus::ok)
           spread += std::pow(results[i].dissipation() - point.dissipation_mean, 2) / double(point.count);
       point.dissipation_std = std::sqrt(spread);
+      const double n = double(point.count);
+      point.dissipation_sem =
+          n > 1 ? point.dissipation_std / std::sqrt(n - 1) : std::numeric_limits<double>::quiet_NaN();
     }
     curves.push_back(point);
   }

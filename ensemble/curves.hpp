@@ -20,6 +20,7 @@ struct CurvePoint {
   std::size_t count = 0;       ///< of them, members that finished with status ok (the statistics use these)
   std::size_t unresolved = 0;  ///< of those, members whose D is not resolved (dissipation_resolved)
   double dissipation_mean = 0, dissipation_std = 0, dissipation_min = 0, dissipation_max = 0;
+  double dissipation_sem = 0;  ///< standard error of dissipation_mean: sample spread / √count (NaN for one)
   std::array<double, 4> regime_fraction{};  ///< over all members of the point, in all_regimes order
 };
 

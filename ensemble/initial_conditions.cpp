@@ -3,7 +3,7 @@
 
 #include <numbers>
 
-#include "ensemble/random_stream.hpp"
+#include "kernels/counter_random.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -25,7 +25,7 @@ std::optional<InitialKind> parse_kind(std::string_view name) {
 
 std::vector<double> initial_angles(const InitialCondition& ic, std::size_t rows, std::uint64_t seed,
                                    std::uint64_t member) {
-  const RandomStream stream(seed, member);
+  const kernels::RandomStream stream(seed, member);
   constexpr double pi = std::numbers::pi;
   std::vector<double> theta(rows);
   for (std::size_t j = 0; j < rows; ++j) {

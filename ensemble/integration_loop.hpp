@@ -1,12 +1,12 @@
 // The integration loop of one block of lanes (docs/architecture.md "Driver"): caller-owned storage,
-// a model, its adaptive integrator and the lane state; steps every lane in lockstep and gives its
-// observers their hooks (after a step, at a period's end) without knowing what they compute.
+// a model, its integrator (adaptive, or the Langevin stepper) and the lane state; steps every lane
+// in lockstep and gives its observers their hooks without knowing what they compute.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
-#include "kernels/adaptive_integrator.hpp"
 #include "kernels/angles.hpp"
 #include "kernels/lane.hpp"
 #include "kernels/lane_arena.hpp"
@@ -15,9 +15,10 @@
 
 namespace rotorsweep::ensemble {
 
-/// Advances lane_width<V> members of `Model` with `Stepper`. Each lane owns its time, step size,
-/// stopping time (the end of its current period) and status.
-template <kernels::LaneModel Model, class Stepper>
+/// Advances lane_width<V> members of `Model` with `Integrator` (kernels::AdaptiveIntegrator or
+/// kernels::LangevinEuler). Each lane owns its time, step size, stopping time (the end of its
+/// current period) and status.
+template <kernels::LaneModel Model, class Integrator>
 class IntegrationLoop {
  public:
   using model_type = Model;
@@ -26,19 +27,22 @@ class IntegrationLoop {
   static constexpr std::size_t width = kernels::lane_width<V>;
   static constexpr std::size_t quadrature_count = Model::quadrature_count;
   static constexpr double period = Model::period;
+  /// Whether the integrator draws noise (then every member also gets a noise stream).
+  static constexpr bool stochastic = Integrator::stochastic;
+  using Settings = typename Integrator::Settings;
 
-  IntegrationLoop(std::size_t dimension, kernels::Tolerances tolerances, kernels::StepLimits limits)
+  IntegrationLoop(std::size_t dimension, const Settings& settings)
       : storage_(storage_size(dimension)),
         arena_(storage_.data(), storage_.size()),
         model_(dimension, arena_),
-        integrator_(model_, tolerances, limits, arena_),
+        integrator_(model_, settings, arena_),
         state_(dimension, quadrature_count, arena_),
         work_(dimension, arena_) {
     for (auto& s : state_.status) s = kernels::LaneStatus::idle;
   }
 
   static std::size_t storage_size(std::size_t n) {
-    return kernels::AdaptiveIntegrator<Model, Stepper>::storage_size(n) +
+    return Integrator::storage_size(n) +
            kernels::LaneState<V>::storage_size(n, quadrature_count) + Model::Workspace::storage_size(n) +
            Model::storage_size(n);
   }
@@ -61,6 +65,9 @@ class IntegrationLoop {
     state_.status[lane] = kernels::LaneStatus::ok;
     model_.set_lane(lane, parameters);
   }
+
+  /// The noise stream (its key) and damping g of the member in `lane` (stochastic integrators).
+  void start_noise(std::size_t lane, std::uint64_t key, double g) { integrator_.start_lane(lane, key, g); }
 
   /// One step attempt of every running lane short of its period's end; `observers` see the state
   /// before (before_step) and the accepted lanes after (after_step). Returns the accepted lanes.
@@ -113,7 +120,7 @@ class IntegrationLoop {
   kernels::lane_vector<V> storage_;
   kernels::LaneArena<V> arena_;
   Model model_;
-  kernels::AdaptiveIntegrator<Model, Stepper> integrator_;
+  Integrator integrator_;
   kernels::LaneState<V> state_;
   typename Model::Workspace work_;
 };

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstddef>
 #include <optional>
 #include <tuple>
@@ -21,7 +23,8 @@
 namespace rotorsweep::ensemble {
 
 /// The step observers a loop's model can feed: the alignment extremes where it integrates ρ̄, the
-/// dissipation's error estimate where it integrates R (the slip counter is always there).
+/// dissipation's error estimate where it integrates R with error control (the slip counter is
+/// always there; at T > 0 the error of D is statistical and comes from the periods, see finish()).
 template <class Loop>
 auto quadrature_observers(const Member& variant) {
   constexpr kernels::Integrals Q = Loop::model_type::integrals;
@@ -32,7 +35,7 @@ auto quadrature_observers(const Member& variant) {
       return std::tuple<>();
   };
   const auto dissipation = [&] {
-    if constexpr (Q.drive)
+    if constexpr (Q.drive && !Loop::stochastic)
       return std::tuple(DissipationErrorObserver<Loop>(variant.rtol, variant.atol));
     else
       return std::tuple<>();
@@ -40,22 +43,32 @@ auto quadrature_observers(const Member& variant) {
   return std::tuple_cat(alignment(), dissipation());
 }
 
+/// The integrator settings of a variant: tolerances and step limits for the adaptive integrators,
+/// temperature and steps per period for the Langevin stepper.
+template <class Integrator>
+typename Integrator::Settings integrator_settings(const Scene& scene, const Member& variant) {
+  if constexpr (Integrator::stochastic)
+    return {scene.thermal.temperature, scene.thermal.steps_per_period};
+  else
+    return {{variant.rtol, variant.atol}, {.h_max = scene.h_max, .max_steps = scene.max_steps}};
+}
+
 /// Runs members of one variant (one dimension and tolerances) through the lanes of an
-/// IntegrationLoop<Model, Stepper>. `Setup` turns a member into the model's parameters and its
-/// initial state: initial_state(member) and parameters(member, y0). Each lane owns its member; a
+/// IntegrationLoop<Model, Integrator>. `Setup` turns a member into the model's parameters and its
+/// initial state: initial_state(member) and parameters(member, y0), and with a stochastic integrator
+/// its noise stream: noise_key(member). Each lane owns its member; a
 /// member that finishes or fails retires at once and (with scene.refill) its lane takes the next.
-template <kernels::LaneModel Model, class Stepper, class Setup>
+template <kernels::LaneModel Model, class Integrator, class Setup>
 class LaneScheduler {
  public:
-  using Loop = IntegrationLoop<Model, Stepper>;
+  using Loop = IntegrationLoop<Model, Integrator>;
   static constexpr std::size_t width = Loop::width;
   static constexpr kernels::Integrals Q = Model::integrals;
 
   LaneScheduler(const Scene& scene, const Member& variant, Setup setup)
       : scene_(scene),
         setup_(std::move(setup)),
-        loop_(variant.rows, {variant.rtol, variant.atol},
-              {.h_max = scene.h_max, .max_steps = scene.max_steps}),
+        loop_(variant.rows, integrator_settings<Integrator>(scene, variant)),
         observers_(quadrature_observers<Loop>(variant)),
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
         lanes_(width) {}
@@ -110,6 +123,7 @@ class LaneScheduler {
   void start(std::size_t l, const Member& member) {
     const std::vector<double> y0 = setup_.initial_state(member);
     loop_.start(l, setup_.parameters(member, y0), y0);
+    if constexpr (Loop::stochastic) loop_.start_noise(l, setup_.noise_key(member), member.g);
     for_each_observer([&](auto& observer) { observer.start(loop_, l); });
     lanes_[l].occupied = true;
     lanes_[l].member = member;
@@ -136,6 +150,7 @@ class LaneScheduler {
             channel.source == Source::quadrature_mean ? integral / Loop::period : integral;
       }
     for_each_observer([&](auto& observer) { observer.end_period(l, record); });
+    if constexpr (Loop::stochastic) record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
 
     auto& history = lanes_[l].history;
     history.push_back(record);
@@ -175,6 +190,12 @@ class LaneScheduler {
     const bool ok = result.status == kernels::LaneStatus::ok;
     summarize(ok ? lane.history : std::vector<PeriodRecord>{}, scene_.average_periods,
               scene_.classifies_regimes(), result);
+    if constexpr (Loop::stochastic) {
+      // D is a random quantity: its error is the standard error of the mean over the averaged periods
+      const double n = double(std::min<std::size_t>(lane.history.size(), std::size_t(scene_.average_periods)));
+      result.summary(Summary::mean, Channel::dissipation_error) =
+          n > 1 ? result.dissipation_std() / std::sqrt(n - 1) : std::numeric_limits<double>::infinity();
+    }
     if (scene_.period_series) result.periods = std::move(lane.history);
     lane.occupied = false;
     lane.history.clear();

@@ -3,11 +3,13 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
 #include "ensemble/disorder.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/scene.hpp"
+#include "kernels/counter_random.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -31,6 +33,11 @@ struct RowSetup {
     p.anisotropy_rows = rows_or_null(deviations.anisotropy);
     p.coupling_rows = rows_or_null(deviations.coupling);
     return p;
+  }
+
+  /// The key of the member's noise stream (thermal seed, position within its variant).
+  std::uint64_t noise_key(const Member& member) const {
+    return kernels::RandomStream(scene->thermal.seed, member.stream).key();
   }
 
   RowDeviations deviations;  ///< the last member's disorder

@@ -23,6 +23,15 @@ struct Variant {
   double atol = 1e-9;
 };
 
+/// Thermal noise (docs/model.md §7): temperature T in units of ε, integrated with the Langevin
+/// stepper in steps_per_period equal steps; each member's noise comes from (seed, its stream).
+struct Thermal {
+  double temperature = 0.0;
+  int steps_per_period = 2000;
+  std::uint64_t seed = 1;
+  bool on() const { return temperature > 0; }
+};
+
 struct Scene {
   std::string text;  ///< the scene file as written, stored in the output for provenance
 
@@ -38,6 +47,7 @@ struct Scene {
   int replicas = 1;
   std::uint64_t seed = 1;
   Disorder disorder;  ///< quenched per-row disorder; replica r is realization r
+  Thermal thermal;    ///< temperature > 0: overdamped Langevin dynamics
 
   int relax_periods = 2;
   int average_periods = 2;

@@ -1,5 +1,5 @@
-// run_sweep: variant by variant, dispatch from the scene's stepper to its instantiation
-// (one generated translation unit per entry of kernels::steppers).
+// run_sweep: variant by variant, dispatch from the scene's stepper to its instantiation (one
+// generated translation unit per entry of kernels::steppers), or to the Langevin stepper at T > 0.
 #include "ensemble/sweep.hpp"
 
 #include "kernels/stepper_list.hpp"
@@ -8,6 +8,7 @@ namespace rotorsweep::ensemble {
 
 template <kernels::StepperId id>
 SweepOutcome run_row_sweep(const Scene&, const std::vector<Member>&, int, const ProgressCallback&);
+SweepOutcome run_thermal_row_sweep(const Scene&, const std::vector<Member>&, int, const ProgressCallback&);
 
 static_assert(ROTORSWEEP_STEPPER_COUNT == kernels::steppers::size,
               "the build generated one translation unit per entry of kernels::steppers");
@@ -34,9 +35,12 @@ SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, i
     const ProgressCallback part_progress = [&](std::size_t done) {
       if (progress) progress(done_before + done);
     };
-    outcome.append(kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-      return run_row_sweep<id>(scene, part, threads, part_progress);
-    }));
+    if (scene.thermal.on())
+      outcome.append(run_thermal_row_sweep(scene, part, threads, part_progress));
+    else
+      outcome.append(kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
+        return run_row_sweep<id>(scene, part, threads, part_progress);
+      }));
     done_before += part.size();
   }
   return outcome;

@@ -12,13 +12,14 @@
 #include "ensemble/lane_scheduler.hpp"
 #include "ensemble/row_setup.hpp"
 #include "ensemble/sweep.hpp"
+#include "kernels/adaptive_integrator.hpp"
 #include "kernels/row_model.hpp"
 #include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
 /// Runs `members` (one variant) on `threads` lane schedulers that share one counter.
-template <class Model, class Stepper, class Setup>
+template <class Model, class Integrator, class Setup>
 SweepOutcome run_lane_schedulers(const Scene& scene, const std::vector<Member>& members, const Setup& setup,
                                  int threads, const ProgressCallback& progress) {
   SweepOutcome outcome;
@@ -32,7 +33,7 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const std::vector<Member>& 
 
 #pragma omp parallel num_threads(threads)
   {
-    LaneScheduler<Model, Stepper, Setup> scheduler(scene, members.front(), setup);
+    LaneScheduler<Model, Integrator, Setup> scheduler(scene, members.front(), setup);
     const auto next_member = [&]() -> std::optional<Member> {
       const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
       if (i >= members.size()) return std::nullopt;
@@ -90,7 +91,8 @@ SweepOutcome run_row_sweep(const Scene& scene, const std::vector<Member>& member
     return with_integrals(scene.observables.quadratures(), [&]<kernels::Integrals Q>() {
       using Model = kernels::NearestNeighbourRows<V, Q>;
       using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
-      return run_lane_schedulers<Model, Stepper>(scene, members, RowSetup<Model>{&scene}, threads, progress);
+      return run_lane_schedulers<Model, kernels::AdaptiveIntegrator<Model, Stepper>>(
+          scene, members, RowSetup<Model>{&scene}, threads, progress);
     });
   });
 }

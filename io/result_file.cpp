@@ -174,6 +174,8 @@ void ResultFile::write_curves(const ensemble::Scene& scene,
                 "population spread of D over replicas");
     group.write("dissipation_min", values([](auto& p) { return p.dissipation_min; }), {}, "smallest D");
     group.write("dissipation_max", values([](auto& p) { return p.dissipation_max; }), {}, "largest D");
+    group.write("dissipation_sem", values([](auto& p) { return p.dissipation_sem; }), {},
+                "standard error of dissipation_mean over the replicas (sample spread / √count; NaN for one)");
     group.write("unresolved", unresolved, "members of count whose D is not resolved (dissipation_resolved)");
   }
   if (scene.classifies_regimes())

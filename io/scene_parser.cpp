@@ -29,6 +29,7 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
     {"sweep", {"A"}},
     {"initial", {"kinds", "noise", "offset", "angles", "replicas", "seed"}},
     {"disorder", {"A", "anisotropy", "coupling", "seed", "A_rows", "anisotropy_rows", "coupling_rows"}},
+    {"thermal", {"temperature", "steps_per_period", "seed"}},
     {"schedule", {"relax_periods", "average_periods", "steady_tol", "max_periods", "refill"}},
     {"observables",
      [] {
@@ -334,6 +335,14 @@ Scene read_scene(const toml::table& root) {
   }
 
   read_disorder(section(root, "disorder"), scene);
+  const Section thermal = section(root, "thermal");
+  scene.thermal.temperature = thermal.number("temperature", 0.0, "a number from 0 to 1e6 (units of ε)",
+                                             [](double T) { return T >= 0 && T <= 1e6; });
+  scene.thermal.steps_per_period = int(thermal.integer("steps_per_period", scene.thermal.steps_per_period,
+                                                       "an integer from 16 to 10000000",
+                                                       [](long long n) { return n >= 16 && n <= 10000000; }));
+  scene.thermal.seed =
+      std::uint64_t(thermal.integer("seed", 1, "an integer >= 0", [](long long s) { return s >= 0; }));
 
   const Section schedule = section(root, "schedule");
   const auto non_negative = [](long long n) { return n >= 0 && n <= 1000000; };
@@ -366,6 +375,10 @@ Scene read_scene(const toml::table& root) {
   if (scene.steady_tol > 0 && !scene.has(ensemble::Observable::dissipation))
     fail(schedule.key("steady_tol"),
          "needs observables.dissipation = true (it compares D of successive periods)");
+  if (scene.thermal.on() && scene.has(ensemble::Observable::estimators))
+    fail(observables.key("estimators"),
+         "must be false when thermal.temperature > 0: with noise θ̇ does not exist, so the Stokes estimator "
+         "diverges (D is the drive's work R; see docs/model.md §7)");
 
   const Section numerics = section(root, "numerics");
   std::set<std::string> steppers(kernels::stepper_names.begin(), kernels::stepper_names.end());

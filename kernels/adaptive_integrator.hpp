@@ -28,6 +28,17 @@ class AdaptiveIntegrator {
     return Stepper::storage_size(n) + System::Workspace::storage_size(n) + 2 * n + 2 * (nq + 1);
   }
 
+  static constexpr bool stochastic = false;
+
+  /// What a driver configures: tolerances and step limits.
+  struct Settings {
+    Tolerances tolerances;
+    StepLimits limits;
+  };
+
+  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Settings settings, LaneArena<V>& arena)
+      : AdaptiveIntegrator(system, settings.tolerances, settings.limits, arena) {}
+
   ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Tolerances tol, StepLimits limits,
                                    LaneArena<V>& arena)
       : tol_(tol),

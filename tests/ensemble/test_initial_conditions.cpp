@@ -5,9 +5,10 @@
 #include <numbers>
 
 #include "ensemble/initial_conditions.hpp"
-#include "ensemble/random_stream.hpp"
+#include "kernels/counter_random.hpp"
 
 using namespace rotorsweep::ensemble;
+using rotorsweep::kernels::RandomStream;
 
 TEST_CASE("FM and AFM angles lie within the noise of their pattern", "[ensemble][initial]") {
   const double pi = std::numbers::pi;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ensemble/lane_scheduler.hpp"
+#include "kernels/adaptive_integrator.hpp"
 #include "kernels/rosenbrock.hpp"
 #include "kernels/single_rotor.hpp"
 
@@ -40,8 +41,8 @@ std::vector<ensemble::MemberResult> run(const ensemble::Scene& scene,
                                         const std::vector<ensemble::Member>& members,
                                         const std::vector<double>& psi0) {
   using Model = kernels::SingleRotor<V>;
-  ensemble::LaneScheduler<Model, kernels::Rodas4<Model>, RotorSetup<V>> scheduler(scene, members.front(),
-                                                                                  RotorSetup<V>{psi0});
+  ensemble::LaneScheduler<Model, kernels::AdaptiveIntegrator<Model, kernels::Rodas4<Model>>, RotorSetup<V>>
+      scheduler(scene, members.front(), RotorSetup<V>{psi0});
   std::vector<ensemble::MemberResult> results(members.size());
   std::size_t next = 0;
   scheduler.run(

@@ -230,3 +230,18 @@ TEST_CASE("disorder: drawn or per row, with the key named when wrong", "[io][sce
              Catch::Contains("'disorder.A_rows'") && Catch::Contains("both given"));
   CHECK_THAT(error_of(minimal + "[disorder]\nsigma = 1\n"), Catch::Contains("'disorder.sigma'"));
 }
+
+TEST_CASE("thermal: temperature, steps per period and seed, with the key named when wrong", "[io][scene]") {
+  const auto scene =
+      parse_scene_text(minimal + "[thermal]\ntemperature = 0.01\nsteps_per_period = 500\nseed = 2\n", "test.toml");
+  CHECK(scene.thermal.temperature == 0.01);
+  CHECK(scene.thermal.steps_per_period == 500);
+  CHECK(scene.thermal.seed == 2);
+  CHECK(scene.thermal.on());
+  CHECK_FALSE(parse_scene_text(minimal, "test.toml").thermal.on());
+  CHECK_THAT(error_of(minimal + "[thermal]\ntemperature = -0.1\n"), Catch::Contains("'thermal.temperature'"));
+  CHECK_THAT(error_of(minimal + "[thermal]\ntemperature = nan\n"), Catch::Contains("'thermal.temperature'"));
+  CHECK_THAT(error_of(minimal + "[thermal]\nsteps_per_period = 3\n"), Catch::Contains("'thermal.steps_per_period'"));
+  CHECK_THAT(error_of(minimal + "[thermal]\ntemperature = 0.1\n[observables]\nestimators = true\n"),
+             Catch::Contains("'observables.estimators'"));
+}
