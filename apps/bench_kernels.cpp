@@ -137,10 +137,11 @@ int run_bench_kernels(const BenchKernelOptions& options) {
   const double disordered_rhs = rhs_rate<simd_lane>(rows, options.repeats, true);
   const double uniform_steps = step_rate<simd_lane>(0, rows, options.repeats);
   const double disordered_steps = step_rate<simd_lane>(0, rows, options.repeats, true);
-  std::printf("  with per-row disorder (SIMD): RHS %.4g evaluations/s (%.2f of uniform), %s %.4g member-steps/s "
-              "(%.2f of uniform)\n",
-              disordered_rhs, disordered_rhs / simd, kernels::stepper_names[0].data(), disordered_steps,
-              disordered_steps / uniform_steps);
+  std::printf(
+      "  with per-row disorder (SIMD): RHS %.4g evaluations/s (%.2f of uniform), %s %.4g member-steps/s "
+      "(%.2f of uniform)\n",
+      disordered_rhs, disordered_rhs / simd, kernels::stepper_names[0].data(), disordered_steps,
+      disordered_steps / uniform_steps);
   return 0;
 }
 

@@ -100,9 +100,8 @@ int run_info(const InfoOptions& options) {
       std::size_t unresolved = 0;
       for (std::size_t i = 0; i < resolved.size(); ++i) unresolved += status[i] == "ok" && !resolved[i];
       if (unresolved > 0)
-        std::printf(
-            "%-12s %zu members whose D is not resolved (dissipation_error >= 0.1 |D|: tighten rtol)\n",
-            "warning", unresolved);
+        std::printf("%-12s %zu members whose D is not resolved (dissipation_error >= 0.1 |D|)\n", "warning",
+                    unresolved);
     }
     std::printf("%-12s /members:", "datasets");
     for (const auto& name : members.members()) std::printf(" %s", name.c_str());

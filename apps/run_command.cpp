@@ -62,9 +62,11 @@ void report_unresolved(const ensemble::Scene& scene, const std::vector<ensemble:
     unresolved += r.status == kernels::LaneStatus::ok && !r.dissipation_resolved();
   if (unresolved > 0)
     std::fprintf(stderr,
-                 "warning: %zu members whose D is not resolved (dissipation_error >= 0.1 |D|); tighten "
-                 "numerics.rtol and atol; see /members/dissipation_resolved\n",
-                 unresolved);
+                 "warning: %zu members whose D is not resolved (dissipation_error >= 0.1 |D|); %s; see "
+                 "/members/dissipation_resolved\n",
+                 unresolved,
+                 scene.thermal.on() ? "at T > 0 this is the statistical error: average more periods"
+                                    : "tighten numerics.rtol and atol");
 }
 
 }  // namespace

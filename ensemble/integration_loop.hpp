@@ -42,9 +42,8 @@ class IntegrationLoop {
   }
 
   static std::size_t storage_size(std::size_t n) {
-    return Integrator::storage_size(n) +
-           kernels::LaneState<V>::storage_size(n, quadrature_count) + Model::Workspace::storage_size(n) +
-           Model::storage_size(n);
+    return Integrator::storage_size(n) + kernels::LaneState<V>::storage_size(n, quadrature_count) +
+           Model::Workspace::storage_size(n) + Model::storage_size(n);
   }
 
   std::size_t dimension() const { return model_.dimension(); }

@@ -40,6 +40,8 @@ class SlipObserver {
       : slips_(slip_rate), theta_before_(enabled ? dimension : 0), enabled_(enabled) {}
 
   void start(Loop&, std::size_t lane) { slips_.start_lane(lane); }
+  /// The lane's own threshold (at T > 0 it is raised above the noise, see LaneScheduler).
+  void set_rate(std::size_t lane, double slip_rate) { slips_.set_rate(lane, slip_rate); }
   void before_step(Loop& loop) {
     if (!enabled_) return;
     for (std::size_t j = 0; j < theta_before_.size(); ++j) theta_before_[j] = loop.state().theta[j];

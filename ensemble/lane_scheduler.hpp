@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -48,7 +48,7 @@ auto quadrature_observers(const Member& variant) {
 template <class Integrator>
 typename Integrator::Settings integrator_settings(const Scene& scene, const Member& variant) {
   if constexpr (Integrator::stochastic)
-    return {scene.thermal.temperature, scene.thermal.steps_per_period};
+    return {scene.thermal.temperature, scene.thermal.steps_per_period, scene.thermal.step_fraction};
   else
     return {{variant.rtol, variant.atol}, {.h_max = scene.h_max, .max_steps = scene.max_steps}};
 }
@@ -68,7 +68,8 @@ class LaneScheduler {
   LaneScheduler(const Scene& scene, const Member& variant, Setup setup)
       : scene_(scene),
         setup_(std::move(setup)),
-        loop_(variant.rows, integrator_settings<Integrator>(scene, variant)),
+        settings_(integrator_settings<Integrator>(scene, variant)),
+        loop_(variant.rows, settings_),
         observers_(quadrature_observers<Loop>(variant)),
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
         lanes_(width) {}
@@ -123,7 +124,10 @@ class LaneScheduler {
   void start(std::size_t l, const Member& member) {
     const std::vector<double> y0 = setup_.initial_state(member);
     loop_.start(l, setup_.parameters(member, y0), y0);
-    if constexpr (Loop::stochastic) loop_.start_noise(l, setup_.noise_key(member), member.g);
+    if constexpr (Loop::stochastic) {
+      loop_.start_noise(l, setup_.noise_key(member), member.g);
+      slips_.set_rate(l, thermal_slip_rate(member.g));
+    }
     for_each_observer([&](auto& observer) { observer.start(loop_, l); });
     lanes_[l].occupied = true;
     lanes_[l].member = member;
@@ -150,7 +154,8 @@ class LaneScheduler {
             channel.source == Source::quadrature_mean ? integral / Loop::period : integral;
       }
     for_each_observer([&](auto& observer) { observer.end_period(l, record); });
-    if constexpr (Loop::stochastic) record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
+    if constexpr (Loop::stochastic)
+      record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
 
     auto& history = lanes_[l].history;
     history.push_back(record);
@@ -164,6 +169,14 @@ class LaneScheduler {
       return;
     }
     loop_.next_period(l, scene_.wrap_angles);
+  }
+
+  /// At T > 0 one step of h turns a row by about √(2T h/g) from noise alone, a rate of √(2T/(g h)):
+  /// a step counts as fast only above max(slip_rate, 6 √(2T/(g h))), six standard deviations of the
+  /// noise (docs/model.md §7).
+  double thermal_slip_rate(double g) const {
+    const double h = Loop::period / Integrator::steps_for(settings_, g);
+    return std::max(scene_.slip_rate, 6.0 * std::sqrt(2.0 * scene_.thermal.temperature / (g * h)));
   }
 
   /// Without period_series only the averaged periods (and the two the steady test compares) are
@@ -192,7 +205,8 @@ class LaneScheduler {
               scene_.classifies_regimes(), result);
     if constexpr (Loop::stochastic) {
       // D is a random quantity: its error is the standard error of the mean over the averaged periods
-      const double n = double(std::min<std::size_t>(lane.history.size(), std::size_t(scene_.average_periods)));
+      const double n =
+          double(std::min<std::size_t>(lane.history.size(), std::size_t(scene_.average_periods)));
       result.summary(Summary::mean, Channel::dissipation_error) =
           n > 1 ? result.dissipation_std() / std::sqrt(n - 1) : std::numeric_limits<double>::infinity();
     }
@@ -206,6 +220,7 @@ class LaneScheduler {
 
   const Scene& scene_;
   Setup setup_;
+  typename Loop::Settings settings_;
   Loop loop_;
   decltype(quadrature_observers<Loop>(std::declval<const Member&>())) observers_;
   SlipObserver<Loop> slips_;

@@ -27,7 +27,8 @@ struct Variant {
 /// stepper in steps_per_period equal steps; each member's noise comes from (seed, its stream).
 struct Thermal {
   double temperature = 0.0;
-  int steps_per_period = 2000;
+  int steps_per_period = 2000;  ///< at least this many steps per period
+  double step_fraction = 0.25;  ///< and steps no longer than step_fraction · g
   std::uint64_t seed = 1;
   bool on() const { return temperature > 0; }
 };

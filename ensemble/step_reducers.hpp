@@ -39,12 +39,12 @@ struct AlignmentExtrema {
 
 /// Slip events: an accepted step is fast when some row turns faster than `slip_rate`
 /// (max_j |Δθ_j| / Δt, in units of the drive's angular velocity); a slip is a run of fast
-/// steps, counted in the period where it begins.
+/// steps, counted in the period where it begins. The rate may differ per lane (set_rate).
 template <class V>
 struct SlipCounter {
   explicit SlipCounter(double slip_rate) : rate(slip_rate) {}
 
-  double rate;
+  V rate;
   V count = V(0.0);  ///< slips begun in the current period
   V fast = V(0.0);   ///< 1 while the lane is inside a slip
 
@@ -52,6 +52,7 @@ struct SlipCounter {
     kernels::lane_set(count, lane, 0.0);
     kernels::lane_set(fast, lane, 0.0);
   }
+  void set_rate(std::size_t lane, double slip_rate) { kernels::lane_set(rate, lane, slip_rate); }
 
   void accumulate(kernels::lane_mask<V> accepted, std::size_t rows, const V* theta_before,
                   const V* theta_after, V dt) {
@@ -59,7 +60,7 @@ struct SlipCounter {
     for (std::size_t j = 0; j < rows; ++j)
       largest = kernels::lane_max(largest, kernels::lane_abs(theta_after[j] - theta_before[j]));
     const V safe_dt = kernels::lane_select(accepted, dt, V(1.0));
-    const auto is_fast = largest > V(rate) * safe_dt;
+    const auto is_fast = largest > rate * safe_dt;
     const auto begins = accepted & is_fast & (fast == V(0.0));
     count += kernels::lane_select(begins, V(1.0), V(0.0));
     fast = kernels::lane_select(accepted, kernels::lane_select(is_fast, V(1.0), V(0.0)), fast);

@@ -11,8 +11,8 @@ SweepOutcome run_thermal_row_sweep(const Scene& scene, const std::vector<Member>
     using V = std::conditional_t<simd, kernels::simd_lane, double>;
     return with_integrals(scene.observables.quadratures(), [&]<kernels::Integrals Q>() {
       using Model = kernels::NearestNeighbourRows<V, Q>;
-      return run_lane_schedulers<Model, kernels::LangevinEuler<Model>>(scene, members, RowSetup<Model>{&scene},
-                                                                       threads, progress);
+      return run_lane_schedulers<Model, kernels::LangevinEuler<Model>>(
+          scene, members, RowSetup<Model>{&scene}, threads, progress);
     });
   });
 }

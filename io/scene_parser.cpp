@@ -29,7 +29,7 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
     {"sweep", {"A"}},
     {"initial", {"kinds", "noise", "offset", "angles", "replicas", "seed"}},
     {"disorder", {"A", "anisotropy", "coupling", "seed", "A_rows", "anisotropy_rows", "coupling_rows"}},
-    {"thermal", {"temperature", "steps_per_period", "seed"}},
+    {"thermal", {"temperature", "steps_per_period", "step_fraction", "seed"}},
     {"schedule", {"relax_periods", "average_periods", "steady_tol", "max_periods", "refill"}},
     {"observables",
      [] {
@@ -341,6 +341,9 @@ Scene read_scene(const toml::table& root) {
   scene.thermal.steps_per_period = int(thermal.integer("steps_per_period", scene.thermal.steps_per_period,
                                                        "an integer from 16 to 10000000",
                                                        [](long long n) { return n >= 16 && n <= 10000000; }));
+  scene.thermal.step_fraction = thermal.number("step_fraction", scene.thermal.step_fraction,
+                                               "a number from 1e-6 to 10 (largest step / g)",
+                                               [](double x) { return x >= 1e-6 && x <= 10; });
   scene.thermal.seed =
       std::uint64_t(thermal.integer("seed", 1, "an integer >= 0", [](long long s) { return s >= 0; }));
 

@@ -21,10 +21,11 @@ namespace rotorsweep::kernels {
 /// the drift-implicit (Rosenbrock–Euler) scheme: strong and weak order 1 for this additive noise
 /// (Itô and Stratonovich readings coincide), and unconditionally stable for the stiff gradient
 /// drift, which it solves with the model's own Jacobian factorisation. Quadratures take the left
-/// point, q += h qdot(θ_n, t_n). Each period is split into `steps_per_period` equal steps (the
-/// last steps of a period are evened out to land on t_stop). ΔW of a lane comes from its own
-/// counter-based stream: row j of step k is normal number k N + j, so a member's path does not
-/// depend on its lane, block, thread or device.
+/// point, q += h qdot(θ_n, t_n). Each period of a lane is split into steps_for(settings, g)
+/// equal steps: at least `steps_per_period`, and steps no longer than step_fraction · g, the time
+/// scale of a slip (the last steps of a period are evened out to land on t_stop). ΔW of a lane comes from its
+/// own counter-based stream: row j of step k is normal number k N + j, so a member's path does not depend on
+/// its lane, block, thread or device.
 template <LaneModel Model>
 class LangevinEuler {
  public:
@@ -35,7 +36,14 @@ class LangevinEuler {
   struct Settings {
     double temperature = 0.0;  ///< T in units of the energy scale
     int steps_per_period = 2000;
+    double step_fraction = 0.25;  ///< steps no longer than this times g
   };
+
+  /// The steps per period of a member with damping g.
+  ROTORSWEEP_HD static double steps_for(const Settings& settings, double g) {
+    const double by_g = std::ceil(Model::period / (settings.step_fraction * g));
+    return by_g > double(settings.steps_per_period) ? by_g : double(settings.steps_per_period);
+  }
 
   static constexpr std::size_t storage_size(std::size_t n) {
     return Model::Workspace::storage_size(n) + Model::Jacobian::storage_size(n) + 2 * n + n * nq +
@@ -56,6 +64,7 @@ class LangevinEuler {
   ROTORSWEEP_HD void start_lane(std::size_t lane, std::uint64_t key, double g) {
     keys_[lane] = key;
     lane_set(amplitude_, lane, lane_sqrt(2.0 * settings_.temperature / g));
+    lane_set(h_nominal_, lane, Model::period / steps_for(settings_, g));
   }
 
   /// One step of every lane that is ok and short of its t_stop. Returns the lanes that stepped.
@@ -64,10 +73,9 @@ class LangevinEuler {
     if (!lane_any(active)) return active;
     const std::size_t n = s.rows();
     // the steps left in this period, all equal: lands on t_stop without a sliver step
-    const double h_nominal = Model::period / double(settings_.steps_per_period);
     const V remaining = s.t_stop - s.t;
-    const V steps_left = lane_max(V(1.0), lane_round(remaining * V(1.0 / h_nominal) + V(0.25)));
-    const V h = lane_select(active, remaining / steps_left, V(h_nominal));
+    const V steps_left = lane_max(V(1.0), lane_round(remaining / h_nominal_ + V(0.25)));
+    const V h = lane_select(active, remaining / steps_left, h_nominal_);
     s.h = lane_select(active, h, s.h);
 
     model.linearize(work_, s.theta, s.t, f_, qdot_, jacobian_, df_dt_, dq_dtheta_, dq_dt_);
@@ -104,6 +112,7 @@ class LangevinEuler {
   V *f_, *df_dt_, *dq_dtheta_, *qdot_, *dq_dt_;
   std::array<std::uint64_t, lane_width<V>> keys_{};
   V amplitude_ = V(0.0);  ///< √(2T/g) per lane
+  V h_nominal_ = V(1.0);  ///< the lane's step: period / steps_for(settings, g)
 };
 
 }  // namespace rotorsweep::kernels
