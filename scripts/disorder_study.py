@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""The CP friction against the size of the rows' disorder (docs/model.md §7): runs
-examples/disorder_curve.toml for σ = 0, 1e-9, 1e-6, 1e-3 and plots D/N against A (mean over the
-realizations, with its standard error), then D at A = 6 and 8 against σ from 1e-12 to 1e-2.
-Writes results/disorder_study.png and results/disorder_study.csv.
+"""The CP friction against the size of the rows' disorder and against temperature (docs/model.md
+§7): runs examples/disorder_curve.toml for σ = 0, 1e-9, 1e-6, 1e-3 and, without disorder, at
+T = 1e-4, and plots D/N against A (mean over the realizations, with its standard error), then D
+at A = 6 and 8 against σ from 1e-12 to 1e-2. Writes results/disorder_study.png and
+results/disorder_study.csv (about a minute on 2 cores).
 Usage: disorder_study.py [--rotorsweep build/bin/rotorsweep] [--out results]"""
 import argparse
 import pathlib
@@ -39,6 +40,11 @@ def with_sigma(text, sigma, A=None):
     return text
 
 
+def with_temperature(text, temperature):
+    """The scene without disorder, at temperature T (Langevin dynamics)."""
+    return with_sigma(text, 0.0) + f"\n[thermal]\ntemperature = {temperature!r}\n"
+
+
 def mean_and_error(A, d):
     values = np.unique(A)
     means = np.array([d[A == a].mean() for a in values])
@@ -50,7 +56,7 @@ def main(rotorsweep, out):
     out.mkdir(parents=True, exist_ok=True)
     text = SCENE.read_text()
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
-    rows = ["kind,sigma,A,d_mean,d_standard_error"]
+    rows = ["kind,sigma_or_T,A,d_mean,d_standard_error"]
     with tempfile.TemporaryDirectory() as tmp:
         tmp = pathlib.Path(tmp)
         for sigma in [0.0, 1e-9, 1e-6, 1e-3]:
@@ -58,6 +64,12 @@ def main(rotorsweep, out):
             a, mean, err = mean_and_error(A, d)
             left.errorbar(a, mean, yerr=err, marker=".", ms=3, lw=1, capsize=2, label=f"σ = {sigma:g}")
             rows += [f"curve,{sigma:g},{x:g},{y:.9g},{e:.3g}" for x, y, e in zip(a, mean, err)]
+        temperature = 1e-4
+        A, d = run(rotorsweep, with_temperature(text, temperature), tmp / "thermal.h5")
+        a, mean, err = mean_and_error(A, d)
+        left.errorbar(a, mean, yerr=err, marker=".", ms=3, lw=1, capsize=2, color="k", ls="--",
+                      label=f"σ = 0, T = {temperature:g}")
+        rows += [f"thermal,{temperature:g},{x:g},{y:.9g},{e:.3g}" for x, y, e in zip(a, mean, err)]
         sigmas = 10.0 ** np.arange(-12, -1)
         for A_value in (6.0, 8.0):
             means, errors = [], []
@@ -69,7 +81,7 @@ def main(rotorsweep, out):
             right.errorbar(sigmas, means, yerr=errors, marker="o", capsize=2, label=f"A = {A_value:g}")
     left.set_xlabel("A")
     left.set_ylabel("d = D/N per period")
-    left.set_title("friction curve, N = 20, g = 1e-3: CP part against disorder σ")
+    left.set_title("friction curve, N = 20, g = 1e-3: CP part against disorder σ and T")
     left.legend()
     right.set_xscale("log")
     right.set_xlabel("σ (relative spread of the rows' A_j)")
