@@ -183,6 +183,20 @@ TEST_CASE("two rows reduce to the two-angle landscape H_r and its alignment", "[
   CHECK(m.alignment(w, theta, tau) == Approx(zeta * zeta).epsilon(1e-14));
 }
 
+TEST_CASE("two disordered rows reduce to the two-angle energy with per-row parameters", "[kernels][model]") {
+  // H_r = -a0 cos 2θe - a1 cos 2θo + (b0 + b1) cos(θe - θo) + A0 cos(θe - τ) + A1 cos(θo - τ)
+  const double A = 5.5, te = 0.8, to = 2.9, tau = 1.3;
+  const Deviations d(2);
+  const auto m = rotorsweep::testing::model<Model>(2, d.parameters(A, 1.0));
+  auto w = rotorsweep::testing::workspace(m);
+  const double theta[2] = {te, to};
+  const double H_r = -1.5 * (1 + d.anisotropy[0]) * std::cos(2 * te) -
+                     1.5 * (1 + d.anisotropy[1]) * std::cos(2 * to) +
+                     (2 + d.coupling[0] + d.coupling[1]) * std::cos(te - to) +
+                     A * ((1 + d.A[0]) * std::cos(te - tau) + (1 + d.A[1]) * std::cos(to - tau));
+  CHECK(m.energy(w, theta, tau) == Approx(H_r).epsilon(1e-14));
+}
+
 TEST_CASE("quadrature integrands follow model.md section 3", "[kernels][model]") {
   const std::size_t n = 5;
   const double A = 3.0, g = 0.2, t = 0.7;
