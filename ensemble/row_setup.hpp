@@ -15,6 +15,8 @@ namespace rotorsweep::ensemble {
 
 template <class Model>
 struct RowSetup {
+  explicit RowSetup(const Scene* s) : scene(s) {}
+
   const Scene* scene;
 
   std::vector<double> initial_state(const Member& member) const {

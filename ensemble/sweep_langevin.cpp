@@ -12,7 +12,7 @@ SweepOutcome run_thermal_row_sweep(const Scene& scene, const std::vector<Member>
     return with_integrals(scene.observables.quadratures(), [&]<kernels::Integrals Q>() {
       using Model = kernels::NearestNeighbourRows<V, Q>;
       return run_lane_schedulers<Model, kernels::LangevinEuler<Model>>(
-          scene, members, RowSetup<Model>{&scene}, threads, progress);
+          scene, members, RowSetup<Model>(&scene), threads, progress);
     });
   });
 }

@@ -92,7 +92,7 @@ SweepOutcome run_row_sweep(const Scene& scene, const std::vector<Member>& member
       using Model = kernels::NearestNeighbourRows<V, Q>;
       using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
       return run_lane_schedulers<Model, kernels::AdaptiveIntegrator<Model, Stepper>>(
-          scene, members, RowSetup<Model>{&scene}, threads, progress);
+          scene, members, RowSetup<Model>(&scene), threads, progress);
     });
   });
 }
