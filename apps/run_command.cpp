@@ -107,10 +107,13 @@ int run_sweep_command(const RunOptions& options) {
     tolerances += text;
   }
   std::fprintf(stderr,
-               "rotorsweep run %s: %zu members (%zu N × %zu rtol × %zu A × %zu g × %zu kinds × %d replicas), "
+               "rotorsweep run %s: %zu members (%zu N × %zu rtol × %zu A × %zu g × %zu noise × %zu offset × "
+               "%zu kinds × %d "
+               "replicas), "
                "N = %s, %s rtol %s, %d threads × %zu lanes\n",
                options.scene.c_str(), members.size(), scene.row_counts.size(), scene.rtol_values.size(),
-               scene.A_values.size(), scene.g_values.size(), scene.kinds.size(), scene.replicas, rows.c_str(),
+               scene.A_values.size(), scene.g_values.size(), scene.noise_values.size(),
+               scene.offset_values.size(), scene.kinds.size(), scene.replicas, rows.c_str(),
                kernels::stepper_names[std::size_t(scene.stepper)].data(), tolerances.c_str(), threads, lanes);
   ProgressLine progress(members.size(), !options.quiet);
   const auto outcome =

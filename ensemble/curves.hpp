@@ -1,4 +1,4 @@
-// Per-point statistics of a sweep (/curves of the output): for each (N, rtol, A, g, initial kind),
+// Per-point statistics of a sweep (/curves of the output): for each (N, rtol, A, g, noise, offset, kind),
 // count, mean, spread and range of D over its replicas, and the fraction in each regime.
 #pragma once
 
@@ -16,6 +16,7 @@ struct CurvePoint {
   double rtol = 0;
   double A = 0, g = 0;
   InitialKind kind = InitialKind::afm;
+  double noise = 0, offset = 0;
   std::size_t members = 0;     ///< replicas at this point
   std::size_t count = 0;       ///< of them, members that finished with status ok (the statistics use these)
   std::size_t unresolved = 0;  ///< of those, members whose D is not resolved (dissipation_resolved)
@@ -24,7 +25,8 @@ struct CurvePoint {
   std::array<double, 4> regime_fraction{};  ///< over all members of the point, in all_regimes order
 };
 
-/// One point per (variant, A, g, kind), in plan order; members of a point are consecutive (replicas).
+/// One point per (variant, A, g, noise, offset, kind), in plan order; members of a point are
+/// consecutive (replicas).
 std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
                                          const std::vector<MemberResult>& results, int replicas);
 

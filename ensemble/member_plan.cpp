@@ -1,5 +1,5 @@
-// Member plan of a scene: the Cartesian product variant × A × g × kind × replica in that
-// nesting order, so that the members of one (variant, A, g, kind) point are consecutive.
+// Member plan of a scene: the Cartesian product variant × A × g × noise × offset × kind × replica in
+// that nesting order, so that the members of one curve point (all but replica) are consecutive.
 #include "ensemble/member_plan.hpp"
 
 #include <algorithm>
@@ -12,14 +12,15 @@ std::vector<Member> plan_members(const Scene& scene) {
   std::vector<Member> members;
   members.reserve(scene.member_count());
   const auto variants = scene.variants();
-  const std::size_t per_variant = scene.member_count() / variants.size();
   for (std::size_t v = 0; v < variants.size(); ++v)
     for (double A : scene.A_values)
       for (double g : scene.g_values)
-        for (InitialKind kind : scene.kinds)
-          for (int replica = 0; replica < scene.replicas; ++replica)
-            members.push_back({members.size(), members.size() - v * per_variant, A, g, kind, replica, v,
-                               variants[v].rows, variants[v].rtol, variants[v].atol});
+        for (double noise : scene.noise_values)
+          for (double offset : scene.offset_values)
+            for (InitialKind kind : scene.kinds)
+              for (int replica = 0; replica < scene.replicas; ++replica)
+                members.push_back({members.size(), std::size_t(replica), A, g, kind, replica, v,
+                                   variants[v].rows, variants[v].rtol, variants[v].atol, noise, offset});
   return members;
 }
 
@@ -35,7 +36,7 @@ double plan_memory_bytes(const Scene& scene) {
 }
 
 std::vector<double> member_initial_angles(const Scene& scene, const Member& member) {
-  const InitialCondition ic{member.kind, scene.noise, scene.offset, scene.exact_angles};
+  const InitialCondition ic{member.kind, member.noise, member.offset, scene.exact_angles};
   return initial_angles(ic, member.rows, scene.seed, member.stream);
 }
 

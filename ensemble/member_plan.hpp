@@ -1,5 +1,5 @@
-// Expands a scene into its members: the Cartesian product variant (N, tolerances) × A × g ×
-// initial kind × replica (replica innermost), each with its index, which keys its random stream.
+// Expands a scene into its members: the Cartesian product variant (N, tolerances) × A × g × noise ×
+// offset × initial kind × replica (replica innermost); a member's random stream is its replica.
 #pragma once
 
 #include <cstddef>
@@ -11,8 +11,8 @@ namespace rotorsweep::ensemble {
 
 struct Member {
   std::size_t index = 0;   ///< position in the plan and in the output
-  std::size_t stream = 0;  ///< position within its variant: keys the random stream, so the same
-                           ///< member under another N or tolerance starts from the same draw
+  std::size_t stream = 0;  ///< keys the random streams: the replica index, so a member keeps its draw
+                           ///< across every other axis (a noise scan rescales the same draw)
   double A = 0.0;
   double g = 0.0;
   InitialKind kind = InitialKind::afm;
@@ -20,6 +20,8 @@ struct Member {
   std::size_t variant = 0;  ///< position in Scene::variants()
   std::size_t rows = 20;
   double rtol = 1e-6, atol = 1e-9;
+  double noise = 0.01;  ///< η of its FM/AFM start
+  double offset = 0.0;  ///< θ0 of its FM/AFM start
 };
 
 std::vector<Member> plan_members(const Scene& scene);
@@ -29,7 +31,7 @@ std::vector<Member> plan_members(const Scene& scene);
 /// period_series, every period record of the longest schedule.
 double plan_memory_bytes(const Scene& scene);
 
-/// θ(0) of a member: its kind with the scene's noise, offset and angles, drawn from the
+/// θ(0) of a member: its kind with its noise and offset and the scene's angles, drawn from the
 /// stream (scene seed, member.stream).
 std::vector<double> member_initial_angles(const Scene& scene, const Member& member);
 

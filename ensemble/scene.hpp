@@ -42,9 +42,9 @@ struct Scene {
   std::vector<double> g_values;  ///< drive: g = damping × drive speed
   std::vector<double> A_values;  ///< sweep: substrate strength A
   std::vector<InitialKind> kinds{InitialKind::afm};
-  double noise = 0.01;               ///< η of model.md §2
-  double offset = 0.0;               ///< θ0 of model.md §2
-  std::vector<double> exact_angles;  ///< for kind exact
+  std::vector<double> noise_values{0.01};  ///< initial.noise: every η of docs/model.md §2
+  std::vector<double> offset_values{0.0};  ///< initial.offset: every θ0 of docs/model.md §2
+  std::vector<double> exact_angles;        ///< for kind exact
   int replicas = 1;
   std::uint64_t seed = 1;
   Disorder disorder;  ///< quenched per-row disorder; replica r is realization r
@@ -83,10 +83,10 @@ struct Scene {
     for (std::size_t r : row_counts) n = r > n ? r : n;
     return n;
   }
-  /// The sizes of the plan's axes: rows, rtol, A, g, kinds, replicas.
-  std::array<std::size_t, 6> axis_sizes() const {
-    return {row_counts.size(), rtol_values.size(), A_values.size(),
-            g_values.size(),   kinds.size(),       std::size_t(replicas)};
+  /// The sizes of the plan's axes: rows, rtol, A, g, noise, offset, kinds, replicas.
+  std::array<std::size_t, 8> axis_sizes() const {
+    return {row_counts.size(),   rtol_values.size(),   A_values.size(), g_values.size(),
+            noise_values.size(), offset_values.size(), kinds.size(),    std::size_t(replicas)};
   }
   /// The number of members (the product of the axis sizes); SIZE_MAX where the product overflows.
   std::size_t member_count() const {

@@ -11,11 +11,11 @@ namespace {
 
 using ensemble::MemberResult;
 
-template <class F>
-std::vector<double> column(const std::vector<MemberResult>& results, F&& field) {
+template <class T, class F>
+std::vector<double> column(const std::vector<T>& rows, F&& field) {
   std::vector<double> out;
-  out.reserve(results.size());
-  for (const auto& r : results) out.push_back(field(r));
+  out.reserve(rows.size());
+  for (const auto& r : rows) out.push_back(field(r));
   return out;
 }
 
@@ -88,6 +88,10 @@ void ResultFile::write_members(const ensemble::Scene& scene, const std::vector<e
   group.write("rtol", rtol, {}, "relative tolerance");
   group.write("atol", atol, {}, "absolute tolerance");
   group.write("ic", ic, "initial condition kind: FM, AFM, random, exact");
+  group.write("noise", column(members, [](const ensemble::Member& m) { return m.noise; }), {},
+              "η: FM/AFM starts draw θ_j - θ0 - (π for odd rows in AFM) from U[-η, η]");
+  group.write("offset", column(members, [](const ensemble::Member& m) { return m.offset; }), {},
+              "θ0 added to FM/AFM starts");
   group.write("replica", replica, "replica index at this (A, g, ic)");
   const std::string averaged = " over the averaged periods; NaN when status is not ok";
   for_each_channel(scene, [&](const ensemble::ChannelDeclaration& channel) {
@@ -166,6 +170,8 @@ void ResultFile::write_curves(const ensemble::Scene& scene,
   group.write("A", values([](auto& p) { return p.A; }), {}, "substrate strength A");
   group.write("g", values([](auto& p) { return p.g; }), {}, "g = damping × drive speed");
   group.write("ic", ic, "initial condition kind");
+  group.write("noise", values([](auto& p) { return p.noise; }), {}, "η of the point's FM/AFM starts");
+  group.write("offset", values([](auto& p) { return p.offset; }), {}, "θ0 of the point's FM/AFM starts");
   group.write("members", members, "replicas at this point");
   group.write("count", count, "members with status ok (the statistics use these)");
   if (scene.has(ensemble::Observable::dissipation)) {

@@ -164,13 +164,17 @@ class Section {
   std::string name_;
 };
 
-/// A list of numbers, or { from, to, count, spacing = "linear" | "log" }.
+/// A list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a `fallback` also a
+/// single number, and the fallback when the key is absent.
 std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
-                         bool (*valid)(double)) {
+                         bool (*valid)(double), const std::vector<double>& fallback = {}) {
   const std::string key = section.key(k);
-  const std::string shape =
-      "a list of numbers " + what + ", or { from, to, count, spacing = \"linear\"|\"log\" }";
+  const std::string shape = (fallback.empty() ? "a list of numbers " : "a number, a list of numbers ") +
+                            what + ", or { from, to, count, spacing = \"linear\"|\"log\" }";
+  if (!fallback.empty() && !section.find(k)) return fallback;
   const toml::node& node = section.require(k, shape);
+  if (!fallback.empty() && (node.is_floating_point() || node.is_integer()))
+    return {Section::checked_number(node, key, what, valid)};
   std::vector<double> values;
   if (const auto* list = node.as_array()) {
     if (list->empty()) fail(key, "must not be empty; it must be " + shape);
@@ -240,8 +244,9 @@ constexpr std::size_t max_members = 100000000;
 
 /// The plan is too large: names the axis with the most values, and every axis's size.
 [[noreturn]] void fail_too_many_members(const Scene& scene) {
-  static constexpr const char* axis_keys[] = {"model.rows", "numerics.rtol", "sweep.A",
-                                              "drive.g",    "initial.kinds", "initial.replicas"};
+  static constexpr const char* axis_keys[] = {"model.rows",    "numerics.rtol",   "sweep.A",
+                                              "drive.g",       "initial.noise",   "initial.offset",
+                                              "initial.kinds", "initial.replicas"};
   const auto sizes = scene.axis_sizes();
   std::size_t largest = 0;
   std::string product;
@@ -304,12 +309,13 @@ Scene read_scene(const toml::table& root) {
       scene.kinds.push_back(*kind);
     }
   }
-  scene.noise = initial.number("noise", scene.noise, "a number from 0 to 3.14159",
-                               [](double x) { return x >= 0 && x <= 3.1415926535897932; });
+  scene.noise_values = grid(
+      initial, "noise", "from 0 to 3.14159", [](double x) { return x >= 0 && x <= 3.1415926535897932; },
+      scene.noise_values);
   // beyond 10^4 rad an angle's rounding (1.8e-12 there) starts to compete with atol
   const auto bounded_angle = [](double x) { return std::fabs(x) <= 1e4; };
-  scene.offset = initial.number("offset", scene.offset,
-                                "a number from -1e4 to 1e4 (radians; give it modulo 2π)", bounded_angle);
+  scene.offset_values = grid(initial, "offset", "from -1e4 to 1e4 (radians; give them modulo 2π)",
+                             bounded_angle, scene.offset_values);
   scene.replicas = int(initial.integer("replicas", scene.replicas, "an integer from 1 to 1000000",
                                        [](long long r) { return r >= 1 && r <= 1000000; }));
   scene.seed =

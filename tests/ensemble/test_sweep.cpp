@@ -191,3 +191,31 @@ TEST_CASE("a subset of the plan gives the same bits as the whole plan", "[ensemb
     CHECK(part.results[i].theta_final == expected[i].theta_final);
   }
 }
+
+TEST_CASE("noise and offset lists give the same members as separate scenes, bit for bit",
+          "[ensemble][sweep]") {
+  const std::string base =
+      "[model]\nrows = 8\n[drive]\ng = [0.002]\n[sweep]\nA = [3.0, 6.0, 9.0]\n[observables]\nestimators = "
+      "true\n"
+      "[initial]\nkinds = [\"FM\", \"AFM\"]\nreplicas = 2\n";
+  const auto together = sweep(
+      rotorsweep::io::parse_scene_text(base + "noise = [1e-4, 0.3]\noffset = [0.0, 1.5]\n", "lists.toml"), 2);
+  const auto plan = plan_members(
+      rotorsweep::io::parse_scene_text(base + "noise = [1e-4, 0.3]\noffset = [0.0, 1.5]\n", "x"));
+  for (double noise : {1e-4, 0.3})
+    for (double offset : {0.0, 1.5}) {
+      char extra[64];
+      std::snprintf(extra, sizeof extra, "noise = %.17g\noffset = %.17g\n", noise, offset);
+      const auto alone = sweep(rotorsweep::io::parse_scene_text(base + extra, "one.toml"));
+      std::vector<MemberResult> subset;
+      for (std::size_t i = 0; i < plan.size(); ++i)
+        if (plan[i].noise == noise && plan[i].offset == offset) subset.push_back(together.results[i]);
+      INFO("noise " << noise << ", offset " << offset);
+      REQUIRE(subset.size() == alone.results.size());
+      for (std::size_t i = 0; i < subset.size(); ++i) {
+        CHECK(same_bits(subset[i].dissipation(), alone.results[i].dissipation()));
+        CHECK(subset[i].theta_final == alone.results[i].theta_final);
+        CHECK(subset[i].steps_accepted == alone.results[i].steps_accepted);
+      }
+    }
+}

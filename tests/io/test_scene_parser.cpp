@@ -35,7 +35,8 @@ TEST_CASE("a minimal scene gets the documented defaults", "[io][scene]") {
   CHECK(scene.A_values == std::vector<double>{1.0, 2.0});
   CHECK(scene.g_values == std::vector<double>{0.001});
   CHECK(scene.kinds == std::vector{rotorsweep::ensemble::InitialKind::afm});
-  CHECK(scene.noise == 0.01);
+  CHECK(scene.noise_values == std::vector<double>{0.01});
+  CHECK(scene.offset_values == std::vector<double>{0.0});
   CHECK(scene.replicas == 1);
   CHECK(scene.relax_periods == 2);
   CHECK(scene.average_periods == 2);
@@ -80,7 +81,7 @@ TEST_CASE("every option is read from its key", "[io][scene]") {
   CHECK(scene.exact_angles.size() == 20);
   CHECK(scene.replicas == 3);
   CHECK(scene.seed == 9);
-  CHECK(scene.noise == 0.1);
+  CHECK(scene.noise_values == std::vector<double>{0.1});
   CHECK(scene.steady_tol == 1e-5);
   CHECK(scene.max_periods == 9);
   CHECK_FALSE(scene.refill);
