@@ -204,7 +204,7 @@ TEST_CASE("noise and offset lists give the same members as separate scenes, bit 
       rotorsweep::io::parse_scene_text(base + "noise = [1e-4, 0.3]\noffset = [0.0, 1.5]\n", "x"));
   for (double noise : {1e-4, 0.3})
     for (double offset : {0.0, 1.5}) {
-      char extra[64];
+      char extra[96];
       std::snprintf(extra, sizeof extra, "noise = %.17g\noffset = %.17g\n", noise, offset);
       const auto alone = sweep(rotorsweep::io::parse_scene_text(base + extra, "one.toml"));
       std::vector<MemberResult> subset;
