@@ -20,8 +20,12 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
     point.dissipation_max = -std::numeric_limits<double>::infinity();
     for (std::size_t i = first; i < first + group; ++i) {
       const MemberResult& r = results[i];
-      point.regime_fraction[std::size_t(r.regime)] += 1.0 / double(group);
-      if (r.status != kernels::LaneStatus::ok) continue;
+      ++point.attractor_count[r.final_state.attractor];
+      if (r.status != kernels::LaneStatus::ok) {
+        ++point.failed;
+        continue;
+      }
+      ++point.regime_count[std::size_t(r.regime)];
       ++point.count;
       point.unresolved += !r.dissipation_resolved();
       sum += r.dissipation();

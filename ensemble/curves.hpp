@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <map>
+#include <string>
 #include <cstddef>
 #include <vector>
 
@@ -22,7 +24,10 @@ struct CurvePoint {
   std::size_t unresolved = 0;  ///< of those, members whose D is not resolved (dissipation_resolved)
   double dissipation_mean = 0, dissipation_std = 0, dissipation_min = 0, dissipation_max = 0;
   double dissipation_sem = 0;  ///< standard error of dissipation_mean: sample spread / √count (NaN for one)
-  std::array<double, 4> regime_fraction{};  ///< over all members of the point, in all_regimes order
+  /// Members of the point in each regime (all_regimes order; finished members only) and failed.
+  std::array<std::size_t, 4> regime_count{};
+  std::size_t failed = 0;
+  std::map<std::string, std::size_t> attractor_count;  ///< members per attractor label (failed included)
 };
 
 /// One point per (variant, A, g, noise, offset, kind), in plan order; members of a point are

@@ -102,6 +102,7 @@ class LaneScheduler {
     Member member;
     std::vector<PeriodRecord> history;  ///< every period with period_series, else the last ones
     int periods = 0;                    ///< periods closed
+    std::vector<std::vector<double>> end_states;  ///< θ at the last period ends (up to 4, oldest first)
   };
 
   template <class F>
@@ -133,6 +134,7 @@ class LaneScheduler {
     lanes_[l].member = member;
     lanes_[l].history.clear();
     lanes_[l].periods = 0;
+    lanes_[l].end_states.clear();
     ++occupied_;
   }
 
@@ -156,6 +158,11 @@ class LaneScheduler {
     for_each_observer([&](auto& observer) { observer.end_period(l, record); });
     if constexpr (Loop::stochastic)
       record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
+
+    auto& ends = lanes_[l].end_states;
+    if (ends.size() == 4) ends.erase(ends.begin());
+    ends.emplace_back(loop_.dimension());
+    for (std::size_t k = 0; k < loop_.dimension(); ++k) ends.back()[k] = loop_.component(l, k);
 
     auto& history = lanes_[l].history;
     history.push_back(record);
@@ -210,6 +217,10 @@ class LaneScheduler {
       result.summary(Summary::mean, Channel::dissipation_error) =
           n > 1 ? result.dissipation_std() / std::sqrt(n - 1) : std::numeric_limits<double>::infinity();
     }
+    if (ok && !lane.end_states.empty())
+      result.final_state = classify_final_state(lane.end_states, std::string(regime_name(result.regime)));
+    else
+      result.final_state.attractor = ok ? "unsettled:none:p0" : "failed";
     if (scene_.period_series) result.periods = std::move(lane.history);
     lane.occupied = false;
     lane.history.clear();

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ensemble/final_state.hpp"
 #include "ensemble/observables.hpp"
 #include "kernels/lane_status.hpp"
 
@@ -50,6 +51,7 @@ struct MemberResult {
   double steps_accepted = 0, steps_rejected = 0;
   std::vector<double> theta_final;    ///< θ_j at the end, wrapped to [0, 2π)
   std::vector<PeriodRecord> periods;  ///< every period, kept only for period_series
+  FinalState final_state;             ///< the kind of state it ended in (attractor "failed" if it failed)
 
   double& summary(Summary s, Channel c) { return summaries[std::size_t(c)][std::size_t(s)]; }
   double summary(Summary s, Channel c) const { return summaries[std::size_t(c)][std::size_t(s)]; }

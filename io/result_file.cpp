@@ -4,12 +4,17 @@
 
 #include <algorithm>
 #include <limits>
+#include <set>
+
+#include "ensemble/wilson_interval.hpp"
 
 namespace rotorsweep::io {
 
 namespace {
 
 using ensemble::MemberResult;
+
+void write_final_states(const Hdf5Location& group, const std::vector<MemberResult>& results);
 
 template <class T, class F>
 std::vector<double> column(const std::vector<T>& rows, F&& field) {
@@ -145,8 +150,66 @@ void ResultFile::write_members(const ensemble::Scene& scene, const std::vector<e
   if (disorder.coupling > 0 || !disorder.coupling_rows.empty())
     write_rows("disorder_coupling", "β_j: the coupling of rows j and j+1 is 1 + β_j",
                [&](std::size_t m) { return deviations(m).coupling; });
+  write_final_states(group, results);
   if (scene.period_series) write_period_series(group, scene, results);
 }
+
+namespace {
+
+/// The final-state classification of every member (docs/model.md §3, "Final states").
+void write_final_states(const Hdf5Location& group, const std::vector<MemberResult>& results) {
+  const auto state = [&](auto&& field) {
+    return column(results, [&](const MemberResult& r) { return double(field(r.final_state)); });
+  };
+  group.write("sublattice_deviation", state([](auto& f) { return f.sublattice_deviation; }), {},
+              "largest distance (rad) of a row from its sublattice's circular mean at the last period ends");
+  group.write("domain_walls", integer_column(results, [](auto& r) { return r.final_state.domain_walls; }),
+              "domain walls: sign changes of cos(θ_j - θ_{j+1}) around the ring, halved");
+  group.write("detached_rows", integer_column(results, [](auto& r) { return r.final_state.detached_rows; }),
+              "rows farther than π/4 from their sublattice's mean at the last period end");
+  group.write("orbit_period", integer_column(results, [](auto& r) { return r.final_state.orbit_period; }),
+              "periods after which the state repeats (1..3; 0: not within 3)");
+  std::vector<double> angles;
+  for (const auto& r : results) {
+    angles.push_back(r.final_state.sublattice_even);
+    angles.push_back(r.final_state.sublattice_odd);
+  }
+  group.write("sublattice_angles", angles, {results.size(), 2},
+              "circular means of the even and odd rows at the last period end, in [0, 2π)");
+  std::vector<std::string> labels;
+  for (const auto& r : results) labels.push_back(r.final_state.attractor);
+  group.write("attractor", labels, "<regime>:<structure>:p<period>, or failed (docs/model.md §3)");
+}
+
+/// /curves/attractors: every attractor label of the sweep, and per point and label the count, the
+/// fraction and its Wilson 95 % interval (points × labels).
+void write_attractors(const Hdf5Location& curves_group, const std::vector<ensemble::CurvePoint>& curves) {
+  std::set<std::string> label_set;
+  for (const auto& p : curves)
+    for (const auto& [label, count] : p.attractor_count) label_set.insert(label);
+  const std::vector<std::string> labels(label_set.begin(), label_set.end());
+  std::vector<std::int64_t> count;
+  std::vector<double> fraction, low, high;
+  for (const auto& p : curves)
+    for (const auto& label : labels) {
+      const auto it = p.attractor_count.find(label);
+      const std::size_t k = it == p.attractor_count.end() ? 0 : it->second;
+      const auto interval = ensemble::wilson_interval(k, p.members);
+      count.push_back(std::int64_t(k));
+      fraction.push_back(double(k) / double(p.members));
+      low.push_back(interval.low);
+      high.push_back(interval.high);
+    }
+  const auto group = curves_group.create_group("attractors");
+  const std::vector<hsize_t> dims{curves.size(), labels.size()};
+  group.write("labels", labels, "attractor labels <regime>:<structure>:p<period> (docs/model.md §3)");
+  group.write("count", count, dims, "members of the point (row) with the label (column)");
+  group.write("fraction", fraction, dims, "count / members of the point");
+  group.write("low", low, dims, "Wilson 95 % interval of fraction: lower end");
+  group.write("high", high, dims, "Wilson 95 % interval of fraction: upper end");
+}
+
+}  // namespace
 
 void ResultFile::write_curves(const ensemble::Scene& scene,
                               const std::vector<ensemble::CurvePoint>& curves) const {
@@ -184,12 +247,29 @@ void ResultFile::write_curves(const ensemble::Scene& scene,
                 "standard error of dissipation_mean over the replicas (sample spread / √count; NaN for one)");
     group.write("unresolved", unresolved, "members of count whose D is not resolved (dissipation_resolved)");
   }
+  // basin fractions over all members of a point, with Wilson 95 % intervals
+  const auto write_fraction = [&](const std::string& name, const std::string& what, const auto& count_of) {
+    const auto fraction = [&](auto&& pick) {
+      return values([&](const ensemble::CurvePoint& p) {
+        const auto interval = ensemble::wilson_interval(count_of(p), p.members);
+        return pick(double(count_of(p)) / double(p.members), interval);
+      });
+    };
+    group.write("fraction_" + name, fraction([](double f, auto) { return f; }), {},
+                "fraction of the point's members " + what);
+    group.write("fraction_" + name + "_low", fraction([](double, auto i) { return i.low; }), {},
+                "Wilson 95 % interval of fraction_" + name + ": lower end");
+    group.write("fraction_" + name + "_high", fraction([](double, auto i) { return i.high; }), {},
+                "Wilson 95 % interval of fraction_" + name + ": upper end");
+  };
   if (scene.classifies_regimes())
     for (auto regime : ensemble::all_regimes) {
       const std::string name(ensemble::regime_name(regime));
-      group.write("fraction_" + name, values([&](auto& p) { return p.regime_fraction[std::size_t(regime)]; }),
-                  {}, "fraction of the point's members in regime " + name);
+      write_fraction(name, "that finished in regime " + name,
+                     [&](const ensemble::CurvePoint& p) { return p.regime_count[std::size_t(regime)]; });
     }
+  write_fraction("failed", "that failed (status not ok)", [](const ensemble::CurvePoint& p) { return p.failed; });
+  write_attractors(group, curves);
 }
 
 void ResultFile::finish(const ensemble::SweepStatistics& statistics) const {

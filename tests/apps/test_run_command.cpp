@@ -19,11 +19,11 @@ namespace {
 /// Names of every dataset under /members, /members/periods and /curves.
 std::vector<std::string> dataset_paths(const Hdf5Location& file) {
   std::vector<std::string> paths;
-  for (const std::string group : {"members", "members/periods", "curves"}) {
+  for (const std::string group : {"members", "members/periods", "curves", "curves/attractors"}) {
     if (!file.has(group)) continue;
     const auto location = file.open_group(group);
     for (const auto& name : location.members())
-      if (name != "periods") paths.push_back(group + "/" + name);
+      if (name != "periods" && name != "attractors") paths.push_back(group + "/" + name);
   }
   return paths;
 }

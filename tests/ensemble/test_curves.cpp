@@ -31,11 +31,13 @@ TEST_CASE("points aggregate their replicas", "[ensemble][curves]") {
   CHECK(curves[0].dissipation_std == 1);
   CHECK(curves[0].dissipation_min == 1);
   CHECK(curves[0].dissipation_max == 3);
-  CHECK(curves[0].regime_fraction[std::size_t(Regime::fm)] == 0.5);
-  CHECK(curves[0].regime_fraction[std::size_t(Regime::cp)] == 0.25);
+  CHECK(curves[0].regime_count[std::size_t(Regime::fm)] == 2);
+  CHECK(curves[0].regime_count[std::size_t(Regime::cp)] == 1);
   CHECK(curves[1].members == 4);
   CHECK(curves[1].count == 3);
   CHECK(curves[1].dissipation_mean == 5);
   CHECK(curves[1].dissipation_std == 0);
-  CHECK(curves[1].regime_fraction[std::size_t(Regime::unsettled)] == 0.25);
+  CHECK(curves[1].regime_count[std::size_t(Regime::unsettled)] == 0);  // the failed member is its own
+  CHECK(curves[1].failed == 1);
+  CHECK(curves[1].regime_count[std::size_t(Regime::cp)] == 3);
 }
