@@ -3,9 +3,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <map>
 #include <string>
-#include <cstddef>
 #include <vector>
 
 #include "ensemble/member_plan.hpp"

@@ -38,16 +38,26 @@ double largest_deviation(const std::vector<double>& theta) {
 
 }  // namespace
 
-FinalState classify_final_state(const std::vector<std::vector<double>>& end_states, const std::string& regime) {
+FinalState classify_final_state(const std::vector<std::vector<double>>& end_states,
+                                const std::string& regime) {
   FinalState f;
   const auto& last = end_states.back();
   const std::size_t n = last.size();
-  for (const auto& theta : end_states) f.sublattice_deviation = std::max(f.sublattice_deviation, largest_deviation(theta));
+  for (const auto& theta : end_states)
+    f.sublattice_deviation = std::max(f.sublattice_deviation, largest_deviation(theta));
   const auto [even, odd] = sublattice_means(last);
   f.sublattice_even = kernels::wrap_2pi(even);
   f.sublattice_odd = kernels::wrap_2pi(odd);
-  for (std::size_t j = 0; j < n; ++j)
-    f.detached_rows += std::fabs(centred(last[j] - (j % 2 ? odd : even))) > detached_angle;
+  // a row is detached when it is far from the circular mean of the other rows of its sublattice
+  double s[2] = {0, 0}, c[2] = {0, 0};
+  for (std::size_t j = 0; j < n; ++j) {
+    s[j % 2] += std::sin(last[j]);
+    c[j % 2] += std::cos(last[j]);
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    const double others = std::atan2(s[j % 2] - std::sin(last[j]), c[j % 2] - std::cos(last[j]));
+    f.detached_rows += std::fabs(centred(last[j] - others)) > detached_angle;
+  }
   int changes = 0;
   for (std::size_t j = 0; j < n; ++j) {
     const bool aligned = std::cos(last[j] - last[(j + 1) % n]) > 0;
@@ -55,6 +65,24 @@ FinalState classify_final_state(const std::vector<std::vector<double>>& end_stat
     changes += aligned != next_aligned;
   }
   f.domain_walls = changes / 2;
+  // clusters on the circle: sort, split at gaps wider than group_gap (the wrap-around gap included)
+  std::vector<double> sorted(n);
+  for (std::size_t j = 0; j < n; ++j) sorted[j] = kernels::wrap_2pi(last[j]);
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<int> sizes;
+  std::size_t start = 0;
+  for (std::size_t j = 1; j <= n; ++j)
+    if (j == n || sorted[j] - sorted[j - 1] > group_gap) {
+      sizes.push_back(int(j - start));
+      start = j;
+    }
+  if (sizes.size() > 1 && sorted.front() + 2 * std::numbers::pi - sorted.back() <= group_gap) {
+    sizes.front() += sizes.back();  // the first and last clusters meet across 0 = 2π
+    sizes.pop_back();
+  }
+  f.angle_groups = int(sizes.size());
+  std::sort(sizes.rbegin(), sizes.rend());
+  for (std::size_t k = 2; k < sizes.size(); ++k) f.stray_rows += sizes[k];
   for (int p = 1; p <= 3 && f.orbit_period == 0; ++p) {
     if (end_states.size() < std::size_t(p) + 1) break;
     const auto& before = end_states[end_states.size() - 1 - std::size_t(p)];

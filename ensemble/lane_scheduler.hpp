@@ -100,8 +100,8 @@ class LaneScheduler {
   struct Lane {
     bool occupied = false;
     Member member;
-    std::vector<PeriodRecord> history;  ///< every period with period_series, else the last ones
-    int periods = 0;                    ///< periods closed
+    std::vector<PeriodRecord> history;            ///< every period with period_series, else the last ones
+    int periods = 0;                              ///< periods closed
     std::vector<std::vector<double>> end_states;  ///< θ at the last period ends (up to 4, oldest first)
   };
 

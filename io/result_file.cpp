@@ -166,9 +166,13 @@ void write_final_states(const Hdf5Location& group, const std::vector<MemberResul
   group.write("domain_walls", integer_column(results, [](auto& r) { return r.final_state.domain_walls; }),
               "domain walls: sign changes of cos(θ_j - θ_{j+1}) around the ring, halved");
   group.write("detached_rows", integer_column(results, [](auto& r) { return r.final_state.detached_rows; }),
-              "rows farther than π/4 from their sublattice's mean at the last period end");
+              "rows farther than π/4 from the mean of the rest of their sublattice at the last period end");
   group.write("orbit_period", integer_column(results, [](auto& r) { return r.final_state.orbit_period; }),
               "periods after which the state repeats (1..3; 0: not within 3)");
+  group.write("angle_groups", integer_column(results, [](auto& r) { return r.final_state.angle_groups; }),
+              "clusters of the final angles on the circle (split at gaps > 0.1 rad)");
+  group.write("stray_rows", integer_column(results, [](auto& r) { return r.final_state.stray_rows; }),
+              "rows outside the two largest clusters of final angles");
   std::vector<double> angles;
   for (const auto& r : results) {
     angles.push_back(r.final_state.sublattice_even);
@@ -268,7 +272,8 @@ void ResultFile::write_curves(const ensemble::Scene& scene,
       write_fraction(name, "that finished in regime " + name,
                      [&](const ensemble::CurvePoint& p) { return p.regime_count[std::size_t(regime)]; });
     }
-  write_fraction("failed", "that failed (status not ok)", [](const ensemble::CurvePoint& p) { return p.failed; });
+  write_fraction("failed", "that failed (status not ok)",
+                 [](const ensemble::CurvePoint& p) { return p.failed; });
   write_attractors(group, curves);
 }
 
