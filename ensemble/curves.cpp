@@ -14,7 +14,15 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
   const std::size_t group = std::size_t(replicas);
   for (std::size_t first = 0; first + group <= members.size(); first += group) {
     const Member& m = members[first];
-    CurvePoint point{m.rows, m.rtol, m.A, m.g, m.kind, m.noise, m.offset, group};
+    CurvePoint point;
+    point.rows = m.rows;
+    point.rtol = m.rtol;
+    point.A = m.A;
+    point.g = m.g;
+    point.kind = m.kind;
+    point.noise = m.noise;
+    point.offset = m.offset;
+    point.members = group;
     double sum = 0;
     point.dissipation_min = std::numeric_limits<double>::infinity();
     point.dissipation_max = -std::numeric_limits<double>::infinity();
