@@ -1,0 +1,65 @@
+#!/usr/bin/python3
+"""Basin fractions against A: per curve point the fraction of members in each regime (FM, AFM,
+CP, unsettled) and failed, stacked, with Wilson 95 % intervals as error bars on each fraction;
+one panel per initial noise value (docs/model.md §3, "Basin fractions").
+Usage: plot_basins.py RESULT.h5 OUT.png [--kind random]"""
+import argparse
+import sys
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+CATEGORIES = [("AFM", "tab:blue"), ("CP", "tab:orange"), ("FM", "tab:red"), ("unsettled", "tab:gray"),
+              ("failed", "black")]
+
+
+def main(h5_path, png_path, kind):
+    with h5py.File(h5_path, "r") as f:
+        if not f.attrs.get("complete", False):
+            sys.exit(f"error: {h5_path} is incomplete (the run did not finish)")
+        c = f["curves"]
+        if "fraction_CP" not in c:
+            sys.exit(f"error: {h5_path} has no regime fractions (observables.alignment and slips are needed)")
+        ic = c["ic"].asstr()[:]
+        keep = ic == kind if kind else np.ones(len(ic), bool)
+        if not keep.any():
+            sys.exit(f"error: no curve points with initial kind {kind!r} (kinds: {sorted(set(ic))})")
+        A, noise = c["A"][:][keep], c["noise"][:][keep]
+        data = {name: (c[f"fraction_{name}"][:][keep], c[f"fraction_{name}_low"][:][keep],
+                       c[f"fraction_{name}_high"][:][keep]) for name, _ in CATEGORIES}
+        members = int(c["members"][0])
+    noises = np.unique(noise)
+    fig, axes = plt.subplots(1, len(noises), figsize=(6.5 * len(noises), 4.5), squeeze=False)
+    for ax, eta in zip(axes[0], noises):
+        sel = noise == eta
+        order = np.argsort(A[sel])
+        a = A[sel][order]
+        bottom = np.zeros(len(a))
+        for name, colour in CATEGORIES:
+            frac, low, high = (x[sel][order] for x in data[name])
+            if not frac.any():
+                continue
+            ax.fill_between(a, bottom, bottom + frac, step="mid", color=colour, alpha=0.55, label=name)
+            ax.errorbar(a, bottom + frac / 2, yerr=[frac - low, high - frac], fmt="none", ecolor=colour, capsize=2)
+            bottom += frac
+        ax.set_xlabel("A")
+        ax.set_ylabel("fraction of members")
+        ax.set_ylim(0, 1)
+        ax.set_title(f"{kind or 'all'} starts, η = {eta:g}, {members} per A (Wilson 95 %)")
+        ax.legend(loc="center right")
+    fig.tight_layout()
+    fig.savefig(png_path, dpi=120)
+    print(f"wrote {png_path}")
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("result")
+    parser.add_argument("png")
+    parser.add_argument("--kind", default="random", help="initial kind to draw ('' for all points)")
+    args = parser.parse_args()
+    main(args.result, args.png, args.kind)
