@@ -79,6 +79,7 @@ int run_info(const InfoOptions& options) {
     print_counts("initial", members.read_strings("ic"));
     print_counts("status", members.read_strings("status"));
     if (members.has("regime")) print_counts("regime", members.read_strings("regime"));
+    if (members.has("attractor")) print_counts("attractor", members.read_strings("attractor"));
     if (members.has("dissipation")) {
       const auto D = members.read_doubles("dissipation");
       std::vector<double> finite, per_row;
