@@ -37,7 +37,7 @@ struct RowSetup {
     return p;
   }
 
-  /// The key of the member's noise stream (thermal seed, position within its variant).
+  /// The key of the member's noise stream (thermal seed, replica).
   std::uint64_t noise_key(const Member& member) const {
     return kernels::RandomStream(scene->thermal.seed, member.stream).key();
   }
