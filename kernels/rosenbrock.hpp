@@ -128,6 +128,8 @@ using Rodas4 = RosenbrockStepper<System, rodas4_tableau>;
 template <class System>
 using Rodas4P2 = RosenbrockStepper<System, rodas4p2_tableau>;
 template <class System>
+using Rodas5P = RosenbrockStepper<System, rodas5p_tableau>;
+template <class System>
 using Ros2 = RosenbrockStepper<System, ros2_tableau>;
 
 }  // namespace rotorsweep::kernels

@@ -36,7 +36,8 @@ struct StepperList {
 
 // Adding a stepper: its tableau, and one entry here (the build makes a translation unit per entry).
 using steppers = StepperList<StepperEntry<rodas4_tableau>, StepperEntry<ros2_tableau>,
-                             StepperEntry<dormand_prince5_tableau>, StepperEntry<rodas4p2_tableau>>;
+                             StepperEntry<dormand_prince5_tableau>, StepperEntry<rodas4p2_tableau>,
+                             StepperEntry<rodas5p_tableau>>;
 
 inline constexpr auto stepper_names = steppers::names;
 

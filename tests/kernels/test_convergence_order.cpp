@@ -1,5 +1,5 @@
-// Observed convergence orders of every stepper (Rodas4, Rodas4P2: 4, ROS2: 2, Dormand–Prince: 5) in the
-// angles and in all quadrature states, from fixed-step runs on a smooth, mildly stiff case.
+// Observed convergence orders of every stepper (Rodas4, Rodas4P2: 4, Rodas5P: 5, ROS2: 2, Dormand–Prince: 5)
+// in the angles and in all quadrature states, from fixed-step runs on a smooth, mildly stiff case.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -69,6 +69,7 @@ TEST_CASE("Rodas4 converges with order 4", "[kernels][order]") { check_order<Rod
 TEST_CASE("Rodas4P2 converges with order 4", "[kernels][order]") {
   check_order<Rodas4P2<Model>>(4, {64, 128});
 }
+TEST_CASE("Rodas5P converges with order 5", "[kernels][order]") { check_order<Rodas5P<Model>>(5, {32, 64}); }
 TEST_CASE("ROS2 converges with order 2", "[kernels][order]") { check_order<Ros2<Model>>(2, {128, 256}); }
 TEST_CASE("Dormand-Prince converges with order 5", "[kernels][order]") {
   check_order<DormandPrince5<Model>>(5, {16, 32});
