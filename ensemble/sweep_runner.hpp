@@ -81,19 +81,26 @@ decltype(auto) with_integrals(kernels::Integrals needed, F&& f) {
   });
 }
 
-/// One variant's members with stepper `id` on the row model, in the scene's lane type and with the
+/// Calls f.template operator()<Model>() with the row model in the scene's lane type and with the
 /// quadratures its observables need.
-template <kernels::StepperId id>
-SweepOutcome run_row_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
-                           const ProgressCallback& progress) {
+template <class F>
+decltype(auto) with_row_model(const Scene& scene, F&& f) {
   return with_flag(scene.lanes == LaneKind::simd, [&]<bool simd>() {
     using V = std::conditional_t<simd, kernels::simd_lane, double>;
     return with_integrals(scene.observables.quadratures(), [&]<kernels::Integrals Q>() {
-      using Model = kernels::NearestNeighbourRows<V, Q>;
-      using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
-      return run_lane_schedulers<Model, kernels::AdaptiveIntegrator<Model, Stepper>>(
-          scene, members, RowSetup<Model>(&scene), threads, progress);
+      return f.template operator()<kernels::NearestNeighbourRows<V, Q>>();
     });
+  });
+}
+
+/// One variant's members with stepper `id` on the row model.
+template <kernels::StepperId id>
+SweepOutcome run_row_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
+                           const ProgressCallback& progress) {
+  return with_row_model(scene, [&]<class Model>() {
+    using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
+    return run_lane_schedulers<Model, kernels::AdaptiveIntegrator<Model, Stepper>>(
+        scene, members, RowSetup<Model>(&scene), threads, progress);
   });
 }
 
