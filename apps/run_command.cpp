@@ -11,7 +11,6 @@
 
 #include "build_info.hpp"
 #include "commands.hpp"
-#include "ensemble/curves.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/sweep.hpp"
 #include "io/output_target.hpp"
@@ -121,9 +120,7 @@ int run_sweep_command(const RunOptions& options) {
   progress.finish();
 
   try {
-    file->write_members(scene, members, outcome.results);
-    file->write_curves(scene, ensemble::aggregate_curves(members, outcome.results, scene.replicas));
-    file->finish(outcome.statistics);
+    file->write_sweep(scene, members, outcome);
     file->close();
     target->commit();
   } catch (const std::exception& e) {

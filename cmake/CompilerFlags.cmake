@@ -3,6 +3,8 @@
 set(CMAKE_CXX_STANDARD 20)
 set(CMAKE_CXX_STANDARD_REQUIRED ON)
 set(CMAKE_CXX_EXTENSIONS OFF)
+# The libraries go into the Python module and into other projects' shared libraries as well.
+set(CMAKE_POSITION_INDEPENDENT_CODE ON)
 
 add_compile_options(-Wall -Wextra -Wpedantic -ffp-contract=off)
 # GCC 12 flags the self-initialised placeholders inside its own AVX-512 intrinsic headers.

@@ -3,6 +3,7 @@
 option(ROTORSWEEP_NATIVE "Compile for the host CPU (-march=native): widest SIMD lanes" ON)
 option(ROTORSWEEP_BUILD_TESTS "Build the Catch2 test suite" ON)
 option(ROTORSWEEP_BUILD_BENCH "Build the peer benchmarks in bench/ (needs libsundials-dev)" OFF)
+option(ROTORSWEEP_PYTHON "Build the Python module (needs pybind11-dev and python3-dev; off when absent)" ON)
 
 if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
   set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)

@@ -76,9 +76,11 @@ class LaneScheduler {
 
   /// Takes members from next_member() (a std::optional<Member>; empty when the plan is
   /// exhausted) until none is left and every lane has retired; hands each result to retire().
-  template <class NextMember, class Retire>
-  void run(NextMember&& next_member, Retire&& retire) {
+  /// Returns at once, abandoning the members in its lanes, when stopped() turns true.
+  template <class NextMember, class Retire, class Stopped>
+  void run(NextMember&& next_member, Retire&& retire, Stopped&& stopped) {
     for (;;) {
+      if (stopped()) return;
       if (scene_.refill || occupied_ == 0) fill_idle_lanes(next_member);
       if (occupied_ == 0) return;
       step();

@@ -7,8 +7,8 @@
 namespace rotorsweep::ensemble {
 
 template <kernels::StepperId id>
-SweepOutcome run_row_sweep(const Scene&, const std::vector<Member>&, int, const ProgressCallback&);
-SweepOutcome run_thermal_row_sweep(const Scene&, const std::vector<Member>&, int, const ProgressCallback&);
+SweepOutcome run_row_sweep(const Scene&, const std::vector<Member>&, int, const SweepControl&);
+SweepOutcome run_thermal_row_sweep(const Scene&, const std::vector<Member>&, int, const SweepControl&);
 
 static_assert(ROTORSWEEP_STEPPER_COUNT == kernels::steppers::size,
               "the build generated one translation unit per entry of kernels::steppers");
@@ -20,10 +20,11 @@ void SweepOutcome::append(SweepOutcome&& part) {
   statistics.lane_steps_total += part.statistics.lane_steps_total;
   statistics.threads = part.statistics.threads;
   statistics.lane_width = part.statistics.lane_width;
+  interrupted = interrupted || part.interrupted;
 }
 
 SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
-                       const ProgressCallback& progress) {
+                       const ProgressCallback& progress, const std::atomic<bool>* stop) {
   const auto variants = scene.variants();
   SweepOutcome outcome;
   std::size_t done_before = 0;
@@ -32,14 +33,20 @@ SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, i
     for (const auto& m : members)
       if (m.variant == v) part.push_back(m);
     if (part.empty()) continue;
-    const ProgressCallback part_progress = [&](std::size_t done) {
-      if (progress) progress(done_before + done);
-    };
+    const SweepControl control{[&](std::size_t done) {
+                                 if (progress) progress(done_before + done);
+                               },
+                               stop};
+    if (control.stopped()) {
+      outcome.results.resize(outcome.results.size() + part.size());
+      outcome.interrupted = true;
+      continue;
+    }
     if (scene.thermal.on())
-      outcome.append(run_thermal_row_sweep(scene, part, threads, part_progress));
+      outcome.append(run_thermal_row_sweep(scene, part, threads, control));
     else
       outcome.append(kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-        return run_row_sweep<id>(scene, part, threads, part_progress);
+        return run_row_sweep<id>(scene, part, threads, control);
       }));
     done_before += part.size();
   }

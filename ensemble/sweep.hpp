@@ -2,6 +2,7 @@
 // members from one shared counter; results land at their member index, whatever the order.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -26,14 +27,26 @@ struct SweepOutcome {
   /// Adds another part of the same sweep (its results go after these).
   void append(SweepOutcome&& part);
   SweepStatistics statistics;
+  /// The stop flag was raised: members still in lanes were abandoned and members not yet
+  /// started were skipped; their entries of results are default values, not results.
+  bool interrupted = false;
 };
 
 /// Called now and then with the number of members finished (never from two threads at once).
 using ProgressCallback = std::function<void(std::size_t done)>;
 
+/// What a caller sees of a running sweep and how it stops one: progress (may be empty) and a
+/// flag (may be null) that, once raised from any thread, ends the sweep within one step.
+struct SweepControl {
+  ProgressCallback progress;
+  const std::atomic<bool>* stop = nullptr;
+  bool stopped() const { return stop != nullptr && stop->load(std::memory_order_relaxed); }
+};
+
 /// Runs `members` (any subset of the scene's plan, in plan order) and returns their results in
-/// the same order; members of different variants run one variant after the other.
+/// the same order; members of different variants run one variant after the other. Raising
+/// *stop returns early with outcome.interrupted set.
 SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
-                       const ProgressCallback& progress);
+                       const ProgressCallback& progress, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace rotorsweep::ensemble

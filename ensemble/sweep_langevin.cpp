@@ -6,10 +6,10 @@
 namespace rotorsweep::ensemble {
 
 SweepOutcome run_thermal_row_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
-                                   const ProgressCallback& progress) {
+                                   const SweepControl& control) {
   return with_row_model(scene, [&]<class Model>() {
     return run_lane_schedulers<Model, kernels::LangevinEuler<Model>>(scene, members, RowSetup<Model>(&scene),
-                                                                     threads, progress);
+                                                                     threads, control);
   });
 }
 

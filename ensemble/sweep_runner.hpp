@@ -21,7 +21,7 @@ namespace rotorsweep::ensemble {
 /// Runs `members` (one variant) on `threads` lane schedulers that share one counter.
 template <class Model, class Integrator, class Setup>
 SweepOutcome run_lane_schedulers(const Scene& scene, const std::vector<Member>& members, const Setup& setup,
-                                 int threads, const ProgressCallback& progress) {
+                                 int threads, const SweepControl& control) {
   SweepOutcome outcome;
   outcome.results.resize(members.size());
   auto& stats = outcome.statistics;
@@ -35,6 +35,7 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const std::vector<Member>& 
   {
     LaneScheduler<Model, Integrator, Setup> scheduler(scene, members.front(), setup);
     const auto next_member = [&]() -> std::optional<Member> {
+      if (control.stopped()) return std::nullopt;
       const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
       if (i >= members.size()) return std::nullopt;
       return members[i];
@@ -45,17 +46,18 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const std::vector<Member>& 
                                        [](const Member& m, std::size_t index) { return m.index < index; });
       outcome.results[std::size_t(at - members.begin())] = std::move(result);
       const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
-      if (progress && progress_lock.try_lock()) {
-        progress(finished);
+      if (control.progress && progress_lock.try_lock()) {
+        control.progress(finished);
         progress_lock.unlock();
       }
     };
-    scheduler.run(next_member, retire);
+    scheduler.run(next_member, retire, [&] { return control.stopped(); });
     const std::lock_guard guard(statistics_lock);
     stats.lane_steps_busy += scheduler.lane_steps_busy();
     stats.lane_steps_total += scheduler.lane_steps_total();
   }
   stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.interrupted = control.stopped();
   return outcome;
 }
 
@@ -96,11 +98,11 @@ decltype(auto) with_row_model(const Scene& scene, F&& f) {
 /// One variant's members with stepper `id` on the row model.
 template <kernels::StepperId id>
 SweepOutcome run_row_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
-                           const ProgressCallback& progress) {
+                           const SweepControl& control) {
   return with_row_model(scene, [&]<class Model>() {
     using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
     return run_lane_schedulers<Model, kernels::AdaptiveIntegrator<Model, Stepper>>(
-        scene, members, RowSetup<Model>(&scene), threads, progress);
+        scene, members, RowSetup<Model>(&scene), threads, control);
   });
 }
 

@@ -114,6 +114,17 @@ Hdf5Location Hdf5Location::open_file(const std::string& path) {
   return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
 }
 
+Hdf5Location Hdf5Location::create_in_memory(const std::string& name) {
+  prepare_hdf5();
+  const Hdf5Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (H5Pset_fapl_core(access.id(), 1 << 20, false) < 0)
+    throw std::runtime_error("HDF5: cannot set up an in-memory file" + innermost_error());
+  const hid_t id = H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.id());
+  if (id < 0)
+    throw std::runtime_error("HDF5: cannot create the in-memory file '" + name + "'" + innermost_error());
+  return Hdf5Location(Hdf5Handle(id, H5Fclose), name);
+}
+
 Hdf5Location Hdf5Location::create_group(const std::string& name) const {
   const auto gcpl = untimed(H5P_GROUP_CREATE);
   const hid_t id = H5Gcreate2(this->id(), name.c_str(), H5P_DEFAULT, gcpl.id(), H5P_DEFAULT);
@@ -149,6 +160,15 @@ void Hdf5Location::flush() const {
 void Hdf5Location::close() {
   const hid_t id = handle_.release();
   if (id >= 0 && H5Fclose(id) < 0) fail("close", path_);
+}
+
+std::vector<unsigned char> Hdf5Location::file_image() const {
+  flush();
+  const ssize_t size = H5Fget_file_image(id(), nullptr, 0);
+  if (size < 0) fail("take the image of", path_);
+  std::vector<unsigned char> image(std::size_t(size), 0);
+  if (H5Fget_file_image(id(), image.data(), image.size()) != size) fail("take the image of", path_);
+  return image;
 }
 
 void Hdf5Location::write_dataset(const std::string& name, hid_t file_type, hid_t memory_type,

@@ -40,6 +40,9 @@ class Hdf5Location {
   static Hdf5Location create_file(const std::string& path);
   /// Opens an existing file read-only.
   static Hdf5Location open_file(const std::string& path);
+  /// Creates a file that lives in memory only (HDF5's core driver, no backing store); `name`
+  /// names it in messages, and file_image() hands out its bytes.
+  static Hdf5Location create_in_memory(const std::string& name);
 
   Hdf5Location create_group(const std::string& name) const;
   Hdf5Location open_group(const std::string& name) const;
@@ -49,6 +52,9 @@ class Hdf5Location {
   void flush() const;
   /// Closes a file, reporting a failure to write its last buffers (the destructor cannot).
   void close();
+  /// The bytes of the whole file as it would be on disk (flushes first); readable by any HDF5
+  /// reader, e.g. h5py.File(io.BytesIO(image)).
+  std::vector<unsigned char> file_image() const;
 
   /// dims empty: one dimension of data.size().
   void write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> dims = {},

@@ -61,7 +61,14 @@ void write_period_series(const Hdf5Location& members, const ensemble::Scene& sce
 }  // namespace
 
 ResultFile::ResultFile(const std::string& path, const ensemble::Scene& scene, const Provenance& provenance)
-    : file_(Hdf5Location::create_file(path)) {
+    : ResultFile(Hdf5Location::create_file(path), scene, provenance) {}
+
+ResultFile ResultFile::in_memory(const ensemble::Scene& scene, const Provenance& provenance) {
+  return ResultFile(Hdf5Location::create_in_memory(provenance.scene_path + ".h5"), scene, provenance);
+}
+
+ResultFile::ResultFile(Hdf5Location file, const ensemble::Scene& scene, const Provenance& provenance)
+    : file_(std::move(file)) {
   file_.set_flag("complete", false);
   file_.set_attribute("scene", scene.text);
   file_.set_attribute("scene_path", provenance.scene_path);
@@ -275,6 +282,13 @@ void ResultFile::write_curves(const ensemble::Scene& scene,
   write_fraction("failed", "that failed (status not ok)",
                  [](const ensemble::CurvePoint& p) { return p.failed; });
   write_attractors(group, curves);
+}
+
+void ResultFile::write_sweep(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
+                             const ensemble::SweepOutcome& outcome) const {
+  write_members(scene, members, outcome.results);
+  write_curves(scene, ensemble::aggregate_curves(members, outcome.results, scene.replicas));
+  finish(outcome.statistics);
 }
 
 void ResultFile::finish(const ensemble::SweepStatistics& statistics) const {

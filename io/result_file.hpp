@@ -27,6 +27,12 @@ class ResultFile {
   /// Creates (truncates) path and writes the scene and provenance (see io/output_target.hpp for
   /// writing beside the final path).
   ResultFile(const std::string& path, const ensemble::Scene& scene, const Provenance& provenance);
+  /// The same file in memory only (see image()).
+  static ResultFile in_memory(const ensemble::Scene& scene, const Provenance& provenance);
+
+  /// Members, curves (aggregated from them) and statistics: everything after the constructor.
+  void write_sweep(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
+                   const ensemble::SweepOutcome& outcome) const;
 
   void write_members(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
                      const std::vector<ensemble::MemberResult>& results) const;
@@ -35,8 +41,11 @@ class ResultFile {
   void finish(const ensemble::SweepStatistics& statistics) const;
   /// Closes the file; throws when its last buffers cannot be written.
   void close() { file_.close(); }
+  /// The file's bytes (for a file in memory).
+  std::vector<unsigned char> image() const { return file_.file_image(); }
 
  private:
+  ResultFile(Hdf5Location file, const ensemble::Scene& scene, const Provenance& provenance);
   Hdf5Location file_;
 };
 

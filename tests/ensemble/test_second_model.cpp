@@ -50,7 +50,7 @@ std::vector<ensemble::MemberResult> run(const ensemble::Scene& scene,
         if (next == members.size()) return std::nullopt;
         return members[next++];
       },
-      [&](ensemble::MemberResult&& r) { results[r.index] = std::move(r); });
+      [&](ensemble::MemberResult&& r) { results[r.index] = std::move(r); }, [] { return false; });
   return results;
 }
 

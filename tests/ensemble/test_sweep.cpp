@@ -1,7 +1,7 @@
 // Sweeps (ensemble/sweep): results are bitwise identical for any thread count, with refill on
 // or off, and on scalar or SIMD lanes; steady_tol retires settled members early; a failing
 // member is isolated from the members sharing its lanes; without the period series only the last
-// periods are kept, with the same summary.
+// periods are kept, with the same summary; the stop flag ends a sweep early.
 #include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -218,4 +218,30 @@ TEST_CASE("noise and offset lists give the same members as separate scenes, bit 
         CHECK(subset[i].steps_accepted == alone.results[i].steps_accepted);
       }
     }
+}
+
+TEST_CASE("the stop flag ends a sweep early and says so", "[ensemble][sweep]") {
+  const Scene scene = curve_scene("[model]\nrows = [2, 8]\n");
+  const auto members = plan_members(scene);
+  std::atomic<bool> stop{false};
+  CHECK_FALSE(run_sweep(scene, members, 2, nullptr, &stop).interrupted);
+
+  stop = true;
+  const auto before = run_sweep(scene, members, 2, nullptr, &stop);
+  CHECK(before.interrupted);
+  CHECK(before.results.size() == members.size());
+  CHECK(before.statistics.lane_steps_total == 0);  // not one step was taken
+
+  // raised from the progress callback: the members still to come are skipped
+  stop = false;
+  std::size_t seen = 0;
+  const auto during = run_sweep(
+      scene, members, 1,
+      [&](std::size_t done) {
+        seen = done;
+        if (done >= 5) stop = true;
+      },
+      &stop);
+  CHECK(during.interrupted);
+  CHECK(seen < members.size());
 }

@@ -1,0 +1,25 @@
+// The extension module rotorsweep._core: bad scenes and unusable output paths become ValueError
+// (the command line's exit code 2), everything else RuntimeError.
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "build_info.hpp"
+#include "io/output_target.hpp"
+#include "io/scene_parser.hpp"
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "rotorsweep's C++ engine (use the rotorsweep package, not this module)";
+  m.attr("version") = std::string(rotorsweep::apps::version);
+  m.attr("revision") = std::string(rotorsweep::apps::revision);
+  pybind11::register_exception_translator([](std::exception_ptr error) {
+    try {
+      if (error) std::rethrow_exception(error);
+    } catch (const rotorsweep::io::SceneError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const rotorsweep::io::OutputPathError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  rotorsweep::python::bind_sweep(m);
+  rotorsweep::python::bind_landscape(m);
+}

@@ -1,0 +1,95 @@
+"""rotorsweep from Python: run scenes, read result files as xarray Datasets, and explore the
+two-angle energy landscape (README "Python"; docs/architecture.md "Python module").
+
+    import rotorsweep
+    ds = rotorsweep.run({"sweep": {"A": [1.0, 4.0]}, "initial": {"replicas": 2}})
+    ds.dissipation.mean("replica")
+"""
+
+import io
+import os
+
+import h5py
+
+from . import _core, _dataset, _progress, _scene
+from .landscape import A_minus, A_star, bifurcation_curve, chamber_map, critical_points, jump_events, jump_friction
+
+__version__ = _core.version
+__all__ = ["run", "open", "members", "scene_text", "plan_axes", "critical_points", "chamber_map",
+           "bifurcation_curve", "jump_events", "jump_friction", "A_minus", "A_star"]
+
+#: how often run() looks at the sweep (progress line, Ctrl-C), in seconds
+_POLL_SECONDS = 0.1
+
+
+def run(scene, threads=None, progress=True, output=None, force=False):
+    """Runs a scene and returns its results as an xarray.Dataset (see open()).
+
+    scene: TOML text, a path to a scene file, or a dict of tables ({"sweep": {"A": [...]}, ...});
+        validated by the command line's parser: a bad key raises ValueError naming it.
+    threads: OpenMP threads (None: all cores).
+    progress: draw a progress line on stderr.
+    output: None keeps the result in memory only; a path writes that file exactly as
+        `rotorsweep run -o PATH` does; True writes to the scene's output.path.
+    force: replace an existing file at output that is not an HDF5 file.
+
+    The sweep runs on its own thread without the GIL; Ctrl-C (KeyboardInterrupt) stops it within
+    one step, writes nothing, and is raised again.
+    """
+    text, is_path = _scene.resolve(scene)
+    if output is True:
+        output = _core.scene_info(text, is_path)["output_path"]
+        if not output:
+            raise ValueError("output=True: the scene has no output.path; give output a path")
+    path = "" if output is None or output is False else os.fspath(output)
+    job = _core.SweepJob(text, is_path, 0 if threads is None else int(threads), path, bool(force),
+                         _core.version, _core.revision)
+    line = _progress.ProgressLine(job.total, progress)
+    try:
+        while not job.wait(_POLL_SECONDS):
+            line.update(job.done)
+    except BaseException:
+        job.cancel()
+        job.wait(-1)
+        line.finish()
+        raise
+    line.finish()
+    image = job.take_image()
+    if path:
+        return open(path)
+    with h5py.File(io.BytesIO(image), "r") as h5file:
+        return _dataset.from_hdf5(h5file)
+
+
+def open(path, allow_incomplete=False):  # noqa: A001 (rotorsweep.open, like xarray.open_dataset)
+    """A result file as an xarray.Dataset.
+
+    Dimensions: the plan's axes rows, rtol, A, g, noise, offset, ic, replica (an axis with one
+    value becomes a scalar coordinate, except A and replica), plus row (per-row angles), period
+    (observables.period_series), sublattice and attractor_label (/curves/attractors). Variables: every /members column over
+    the axes; every /curves column as curve_<name> over the axes but replica; per-period series
+    as period_<channel>. Each carries description and units attributes; the file's attributes
+    (scene, version, revision, complete, wall_seconds, ...) are the Dataset's. The coordinate
+    plan_index gives each member's row in /members; members(ds) stacks the Dataset back into
+    plan order. A file that is not complete raises ValueError unless allow_incomplete.
+    """
+    with h5py.File(os.fspath(path), "r") as h5file:
+        return _dataset.from_hdf5(h5file, allow_incomplete)
+
+
+def members(dataset):
+    """The Dataset stacked into one `member` dimension in plan order (a MultiIndex over the axes)."""
+    dims = [axis for axis in _dataset.AXES if axis in dataset.dims]
+    return dataset.stack(member=dims).sortby("plan_index")
+
+
+def scene_text(scene):
+    """The scene's TOML text as the engine reads it (a dict written out, a file read), validated."""
+    text, is_path = _scene.resolve(scene)
+    return _core.scene_info(text, is_path)["text"]
+
+
+def plan_axes(scene):
+    """The scene's plan axes (dict: axis name -> values, outermost first), validated."""
+    text, is_path = _scene.resolve(scene)
+    return _core.plan_axes(text, is_path)

@@ -1,0 +1,130 @@
+"""A result file (README "Output file") as an xarray.Dataset: the plan's axes become dimensions,
+/members columns variables over them, /curves columns `curve_*` variables over all axes but replica
+(docs/architecture.md "Python module")."""
+
+import numpy as np
+import xarray as xr
+
+from . import _core
+
+#: the columns that hold the plan's axes, in plan order (outermost first)
+AXES = ("rows", "rtol", "A", "g", "noise", "offset", "ic", "replica")
+#: axes that stay dimensions even with one value (a friction curve is over A, averages over replica)
+ALWAYS_DIMENSIONS = ("A", "replica")
+
+ENERGY = "ε (docs/model.md: energies in units of ε)"
+ANGLE = "rad"
+
+
+def _units(name):
+    bare = name.removeprefix("curve_").removeprefix("period_")
+    if bare.startswith(("theta_", "sublattice_angles", "sublattice_deviation")) or bare in ("noise", "offset"):
+        return ANGLE
+    if bare.startswith(("dissipation", "energy_mean")) and "resolved" not in bare or bare == "A":
+        return ENERGY
+    if bare == "g":
+        return "ε/ṽ (damping × drive speed)"
+    return "1"
+
+
+def _second_dimension(name):
+    if name.startswith(("theta_", "disorder_")):
+        return "row"
+    if name == "sublattice_angles":
+        return "sublattice"
+    return name + "_index"
+
+
+def _read(dataset):
+    """A dataset's values (strings decoded) and its description."""
+    description = dataset.attrs.get("description", "")
+    if isinstance(description, bytes):
+        description = description.decode()
+    if dataset.dtype.kind == "O":
+        values = np.array(dataset.asstr()[()], dtype=object)
+    else:
+        values = dataset[()]
+    return values, description
+
+
+def _attributes(h5file):
+    attrs = {}
+    for key, value in h5file.attrs.items():
+        if isinstance(value, bytes):
+            value = value.decode()
+        elif isinstance(value, np.generic):
+            value = value.item()
+        attrs[key] = value
+    return attrs
+
+
+def from_hdf5(h5file, allow_incomplete=False):
+    """The Dataset of an open h5py.File."""
+    attrs = _attributes(h5file)
+    name = h5file.filename
+    if not attrs.get("complete", False) and not allow_incomplete:
+        raise ValueError(f"'{name}' is not a complete result (attribute complete = FALSE)")
+    if "members" not in h5file:
+        raise ValueError(f"'{name}' holds no /members (not a rotorsweep result)")
+    axes = _core.plan_axes(attrs["scene"])
+    shape = tuple(len(values) for values in axes.values())
+    dims = tuple(axes)
+    members = h5file["members"]
+    count = int(np.prod(shape))
+    if members["A"].shape[0] != count:
+        raise ValueError(f"'{name}': /members holds {members['A'].shape[0]} members, its scene plans {count}")
+
+    coords = {axis: (axis, np.asarray(values)) for axis, values in axes.items()}
+    variables = {}
+
+    def add(var_name, values, description, leading, trailing=()):
+        values = values.reshape(leading + values.shape[1:])
+        var_dims = dims[: len(leading)] + tuple(trailing)
+        attrs = {"description": description, "units": _units(var_name)}
+        variables[var_name] = xr.Variable(var_dims, values, attrs)
+
+    for column, dataset in members.items():
+        if not hasattr(dataset, "dtype"):
+            continue
+        values, description = _read(dataset)
+        if column in AXES:
+            grid = np.broadcast_to(
+                np.asarray(axes[column]).reshape([-1 if a == column else 1 for a in dims]), shape)
+            if not np.array_equal(values.reshape(shape), grid):
+                raise ValueError(f"'{name}': /members/{column} does not follow the scene's plan")
+            continue
+        add(column, values, description, shape, [_second_dimension(column)] if values.ndim == 2 else [])
+    if "periods" in members:
+        for channel, dataset in members["periods"].items():
+            values, description = _read(dataset)
+            add("period_" + channel, values, description, shape, ["period"])
+
+    if "curves" in h5file:
+        curves = h5file["curves"]
+        point_shape = shape[:-1]
+        for column, dataset in curves.items():
+            if not hasattr(dataset, "dtype") or column in AXES:
+                continue
+            values, description = _read(dataset)
+            add("curve_" + column, values, description, point_shape)
+        if "attractors" in curves:
+            group = curves["attractors"]
+            labels, _ = _read(group["labels"])
+            coords["attractor_label"] = ("attractor_label", labels.astype(str))
+            for column, dataset in group.items():
+                if column == "labels":
+                    continue
+                values, description = _read(dataset)
+                add("curve_attractor_" + column, values, description, point_shape, ["attractor_label"])
+
+    coords["plan_index"] = (dims, np.arange(count).reshape(shape))
+    dataset = xr.Dataset(variables, coords=coords, attrs=attrs)
+    dataset["plan_index"].attrs["description"] = "the member's index in the plan (row of /members)"
+    for axis in AXES:
+        dataset[axis].attrs["units"] = _units(axis)
+    if "row" in dataset.dims:
+        dataset = dataset.assign_coords(row=np.arange(dataset.sizes["row"]))
+    if "sublattice" in dataset.dims:
+        dataset = dataset.assign_coords(sublattice=["even", "odd"])
+    single = [axis for axis in AXES if dataset.sizes[axis] == 1 and axis not in ALWAYS_DIMENSIONS]
+    return dataset.squeeze(single)

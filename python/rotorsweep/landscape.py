@@ -1,0 +1,67 @@
+"""The two-angle energy landscape H_r(θe, θo; A, τ) (docs/model.md §4–5) as NumPy arrays and
+xarray Datasets: critical points, the chamber map, bifurcation curves, J(A), A_− and A_*."""
+
+import numpy as np
+import xarray as xr
+
+from . import _core
+
+#: A_−, the smallest A of the CP interval (lower off-diagonal curve's minimum)
+A_minus = _core.A_minus
+#: A_*, where the lower off-diagonal curve meets the transverse strict-FM curve (J(A_*) = 0)
+A_star = _core.A_star
+
+MORSE_TYPES = ("minimum", "saddle", "maximum")
+ALIGNMENT_CLASSES = ("strict_fm", "fm_like", "afm_like")
+
+
+def critical_points(A, tau):
+    """Every critical point of H_r at (A, τ): a dict of arrays even, odd (angles in [0, 2π)),
+    energy, rho (alignment cos²((θe − θo)/2)), type and alignment (strings)."""
+    points = _core.critical_points(float(A), float(tau))
+    points["type"] = np.array(points["type"], dtype=str)
+    points["alignment"] = np.array(points["alignment"], dtype=str)
+    return points
+
+
+def chamber_map(A_min=0.0, A_max=12.0, A_cells=400, tau_cells=300):
+    """The chamber raster over (A, τ ∈ [0, π/2]) at cell centres, as an xarray.Dataset with
+    counts of minima, saddles, maxima and degenerate points per cell, counts by Morse type and
+    alignment class, and the zone and chamber labels (−1 on degenerate cells). Runs on all cores."""
+    if not (A_cells > 0 and tau_cells > 0 and A_max > A_min):
+        raise ValueError("chamber_map: need A_cells > 0, tau_cells > 0 and A_max > A_min")
+    raw = _core.chamber_map(float(A_min), float(A_max), int(A_cells), int(tau_cells))
+    cell = ("A", "tau")
+    described = {
+        "minima": "minima on the torus (an exchange pair counts twice)",
+        "saddles": "saddles on the torus",
+        "maxima": "maxima on the torus",
+        "degenerate": "degenerate critical points",
+        "zone": "connected component of equal Morse signature (−1: degenerate cell)",
+        "chamber": "connected component of equal signature and alignment classes (−1: degenerate cell)",
+    }
+    variables = {name: (cell, raw[name], {"description": text}) for name, text in described.items()}
+    variables["by_type_and_class"] = (
+        cell + ("type", "alignment"), raw["by_type_and_class"],
+        {"description": "critical points by Morse type and alignment class"})
+    return xr.Dataset(
+        variables,
+        coords={"A": raw["A"], "tau": raw["tau"], "type": list(MORSE_TYPES), "alignment": list(ALIGNMENT_CLASSES)},
+        attrs={"zones": raw["zones"], "chambers": raw["chambers"]})
+
+
+def bifurcation_curve(name, count=2000, A_max=np.inf):
+    """`count` points of a curve in the folded (A, τ) plane: arrays A, tau, parameter. Names:
+    fm_tangential, fm_transverse, off_diagonal_plus, off_diagonal_minus, alignment."""
+    return _core.bifurcation_curve(name, int(count), float(min(A_max, 1e300)))
+
+
+def jump_events(A):
+    """The two jumps of half a drive period at A ∈ [A_−, A_*] (a dict; NaN outside)."""
+    return _core.jump_events(float(A))
+
+
+def jump_friction(A):
+    """The quasi-static CP friction J(A) = ΔH⊥ + ΔH_low per half period (array in, array out; NaN
+    outside [A_−, A_*])."""
+    return _core.jump_friction(np.asarray(A, dtype=float))

@@ -1,0 +1,91 @@
+// Python bindings of the sweep: scene validation, the plan's axes, and SweepJob (run on a
+// thread with the GIL released; the Python side polls it, draws progress, and cancels on Ctrl-C).
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "ensemble/member_plan.hpp"
+#include "io/scene_parser.hpp"
+#include "kernels/lane.hpp"
+#include "kernels/stepper_list.hpp"
+#include "sweep_job.hpp"
+
+namespace py = pybind11;
+
+namespace rotorsweep::python {
+
+namespace {
+
+/// The scene text (from a file when `is_path`) parsed and validated; io::SceneError otherwise.
+ensemble::Scene parse(const std::string& scene, bool is_path) {
+  return is_path ? io::parse_scene_file(scene) : io::parse_scene_text(scene, "<scene>");
+}
+
+/// The plan's axes in plan order (outermost first), each with its values.
+py::dict plan_axes(const ensemble::Scene& scene) {
+  py::dict axes;
+  axes["rows"] = scene.row_counts;
+  axes["rtol"] = scene.rtol_values;
+  axes["A"] = scene.A_values;
+  axes["g"] = scene.g_values;
+  axes["noise"] = scene.noise_values;
+  axes["offset"] = scene.offset_values;
+  py::list kinds;
+  for (auto kind : scene.kinds) kinds.append(std::string(ensemble::kind_name(kind)));
+  axes["ic"] = kinds;
+  py::list replicas;
+  for (int r = 0; r < scene.replicas; ++r) replicas.append(r);
+  axes["replica"] = replicas;
+  return axes;
+}
+
+}  // namespace
+
+void bind_sweep(py::module_& m) {
+  m.def(
+      "plan_axes", [](const std::string& scene, bool is_path) { return plan_axes(parse(scene, is_path)); },
+      py::arg("scene"), py::arg("is_path") = false,
+      "The member plan's axes of a scene (TOML text, or a path with is_path): a dict from axis name "
+      "to its values, outermost first; raises ValueError naming a bad key.");
+  m.def(
+      "scene_info",
+      [](const std::string& scene, bool is_path) {
+        const auto parsed = parse(scene, is_path);
+        py::dict info;
+        info["text"] = parsed.text;
+        info["output_path"] = parsed.output_path;
+        info["members"] = parsed.member_count();
+        return info;
+      },
+      py::arg("scene"), py::arg("is_path") = false,
+      "The validated scene: its text, output.path ('' when not given) and member count.");
+  m.attr("lane_width") = kernels::lane_width<kernels::simd_lane>;
+  py::list steppers;
+  for (auto name : kernels::stepper_names) steppers.append(std::string(name));
+  m.attr("steppers") = steppers;
+
+  py::class_<SweepJob>(m, "SweepJob",
+                       "A sweep on its own thread; poll wait(), read done/total, cancel() to stop.")
+      .def(py::init([](const std::string& scene, bool is_path, int threads, const std::string& output,
+                       bool force, const std::string& version, const std::string& revision) {
+             const std::string source = is_path ? scene : std::string("<python>");
+             return std::make_unique<SweepJob>(parse(scene, is_path), threads, output, force,
+                                               io::Provenance{source, version, revision});
+           }),
+           py::arg("scene"), py::arg("is_path"), py::arg("threads"), py::arg("output"), py::arg("force"),
+           py::arg("version"), py::arg("revision"))
+      .def("wait", &SweepJob::wait, py::arg("seconds"), py::call_guard<py::gil_scoped_release>(),
+           "Waits up to `seconds` (forever when negative) with the GIL released; True once ended.")
+      .def_property_readonly("done", &SweepJob::done)
+      .def_property_readonly("total", &SweepJob::total)
+      .def("cancel", &SweepJob::cancel)
+      .def(
+          "take_image",
+          [](SweepJob& job) {
+            const auto image = job.take_image();
+            return py::bytes(reinterpret_cast<const char*>(image.data()), image.size());
+          },
+          "The result as HDF5 file bytes (b'' when it went to the output path); raises the sweep's error.");
+}
+
+}  // namespace rotorsweep::python

@@ -1,0 +1,72 @@
+// The Python module's sweep thread: plan, run_sweep with a stop flag, and the same ResultFile
+// writer as `rotorsweep run`, to the output path or to an in-memory HDF5 image.
+#include "sweep_job.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+
+#include "ensemble/sweep.hpp"
+
+namespace rotorsweep::python {
+
+SweepJob::SweepJob(ensemble::Scene scene, int threads, const std::string& output, bool force,
+                   const io::Provenance& provenance)
+    : scene_(std::move(scene)), members_(ensemble::plan_members(scene_)) {
+  if (output.empty()) {
+    file_.emplace(io::ResultFile::in_memory(scene_, provenance));
+  } else {
+    const std::vector<std::string> inputs{provenance.scene_path};
+    target_.emplace(output, inputs, io::Replaceable::hdf5, force);
+    file_.emplace(target_->temporary(), scene_, provenance);
+  }
+  worker_ = std::thread([this, threads] { run(threads > 0 ? threads : omp_get_max_threads()); });
+}
+
+SweepJob::~SweepJob() {
+  cancel();
+  if (worker_.joinable()) worker_.join();
+}
+
+void SweepJob::run(int threads) {
+  try {
+    const auto outcome = ensemble::run_sweep(
+        scene_, members_, threads, [this](std::size_t done) { done_.store(done, std::memory_order_relaxed); },
+        &stop_);
+    if (!outcome.interrupted) {
+      done_.store(members_.size(), std::memory_order_relaxed);
+      file_->write_sweep(scene_, members_, outcome);
+      if (target_) {
+        file_->close();
+        target_->commit();
+      } else {
+        image_ = file_->image();
+      }
+    }
+  } catch (...) {
+    error_ = std::current_exception();
+  }
+  file_.reset();    // an interrupted or failed file is closed ...
+  target_.reset();  // ... and its temporary removed
+  const std::lock_guard guard(lock_);
+  finished_ = true;
+  ended_.notify_all();
+}
+
+bool SweepJob::wait(double seconds) {
+  std::unique_lock guard(lock_);
+  if (seconds < 0)
+    ended_.wait(guard, [this] { return finished_; });
+  else
+    ended_.wait_for(guard, std::chrono::duration<double>(seconds), [this] { return finished_; });
+  return finished_;
+}
+
+std::vector<unsigned char> SweepJob::take_image() {
+  if (!wait(0)) throw std::logic_error("the sweep is still running");
+  if (worker_.joinable()) worker_.join();
+  if (error_) std::rethrow_exception(error_);
+  return std::move(image_);
+}
+
+}  // namespace rotorsweep::python

@@ -1,0 +1,95 @@
+"""The result as an xarray.Dataset: the plan's axes as dimensions, the member plan as a stacked
+coordinate, units and descriptions, and open() of a written file giving the same Dataset."""
+
+import numpy as np
+import pytest
+import rotorsweep
+import xarray as xr
+from conftest import identical
+
+THREE_AXES = """
+[model]
+rows = 6
+[drive]
+g = [0.001, 0.002]
+[sweep]
+A = [1.0, 11.0, 12.0]
+[initial]
+kinds = ["AFM"]
+noise = [0.0, 0.05]
+replicas = 3
+[schedule]
+relax_periods = 1
+average_periods = 1
+[observables]
+period_series = true
+"""
+
+
+def test_three_axes_become_dimensions_with_their_values():
+    ds = rotorsweep.run(THREE_AXES, progress=False)
+    assert dict(ds.dissipation.sizes) == {"A": 3, "g": 2, "noise": 2, "replica": 3}
+    assert list(ds.A.values) == [1.0, 11.0, 12.0]
+    assert list(ds.g.values) == [0.001, 0.002]
+    assert list(ds.noise.values) == [0.0, 0.05]
+    assert list(ds.replica.values) == [0, 1, 2]
+    # axes with one value stay as scalar coordinates
+    assert ds.rows.item() == 6 and ds.ic.item() == "AFM" and ds.offset.item() == 0.0
+    assert dict(ds.theta_final.sizes) == {"A": 3, "g": 2, "noise": 2, "replica": 3, "row": 6}
+    assert ds.period_dissipation.sizes["period"] == 2
+    assert dict(ds.curve_dissipation_mean.sizes) == {"A": 3, "g": 2, "noise": 2}
+    assert ds.dissipation.attrs["units"].startswith("ε") and "mean" in ds.dissipation.attrs["description"]
+    assert ds.theta_final.attrs["units"] == "rad"
+    assert ds.status.dtype == object and set(np.unique(ds.status.values)) == {"ok"}
+    # curves are the replica statistics of the members
+    np.testing.assert_allclose(ds.curve_dissipation_mean, ds.dissipation.mean("replica"), rtol=1e-14)
+
+
+def test_the_plan_is_a_stacked_coordinate_in_plan_order():
+    ds = rotorsweep.run(THREE_AXES, progress=False)
+    stacked = rotorsweep.members(ds)
+    assert stacked.sizes["member"] == 36
+    assert list(stacked.plan_index.values) == list(range(36))
+    # plan order: A outermost, then g, noise, replica innermost
+    assert list(stacked.A.values[:6]) == [1.0] * 6
+    assert list(stacked.replica.values[:3]) == [0, 1, 2]
+    assert int(ds.plan_index.sel(A=11.0, g=0.002, noise=0.05, replica=1)) == 12 + 6 + 3 + 1
+
+
+def test_open_reads_a_written_file_into_the_same_dataset(tmp_path):
+    in_memory = rotorsweep.run(THREE_AXES, progress=False)
+    rotorsweep.run(THREE_AXES, progress=False, output=tmp_path / "three.h5")
+    opened = rotorsweep.open(tmp_path / "three.h5")
+    assert set(opened.data_vars) == set(in_memory.data_vars)
+    for name in in_memory.data_vars:
+        assert identical(opened[name].values, in_memory[name].values), name
+        assert opened[name].dims == in_memory[name].dims
+    xr.testing.assert_equal(opened.coords.to_dataset(), in_memory.coords.to_dataset())
+    assert opened.A.attrs == in_memory.A.attrs
+    assert opened.attrs["scene"] == in_memory.attrs["scene"]
+
+
+def test_open_refuses_an_incomplete_or_foreign_file(tmp_path):
+    import h5py
+
+    rotorsweep.run(THREE_AXES, progress=False, output=tmp_path / "three.h5")
+    with h5py.File(tmp_path / "three.h5", "r+") as f:
+        f.attrs["complete"] = np.bool_(False)
+    with pytest.raises(ValueError, match="not a complete result"):
+        rotorsweep.open(tmp_path / "three.h5")
+    assert rotorsweep.open(tmp_path / "three.h5", allow_incomplete=True).sizes["A"] == 3
+    with h5py.File(tmp_path / "other.h5", "w") as f:
+        f.attrs["complete"] = np.bool_(True)
+        f.attrs["scene"] = THREE_AXES
+    with pytest.raises(ValueError, match="no /members"):
+        rotorsweep.open(tmp_path / "other.h5")
+
+
+def test_scene_helpers():
+    axes = rotorsweep.plan_axes(THREE_AXES)
+    assert list(axes) == ["rows", "rtol", "A", "g", "noise", "offset", "ic", "replica"]
+    assert axes["noise"] == [0.0, 0.05]
+    scene = {"model": {"rows": 4}, "sweep": {"A": {"from": 1.0, "to": 2.0, "count": 3}}, "drive": {"g": [1e-3]}}
+    assert "A = { from = 1.0, to = 2.0, count = 3 }" in rotorsweep.scene_text(scene)
+    scene["drive"]["g"] = np.array([1e-3])
+    assert rotorsweep.plan_axes(scene)["A"] == [1.0, 1.5, 2.0]

@@ -1,0 +1,50 @@
+"""The landscape from Python against the C++ tests' values: A_−, A_*, J(A_−) = 4.9757…, the
+minima at A = 1 and 11, and the paper's seven zones of the chamber map."""
+
+import numpy as np
+import pytest
+import rotorsweep
+
+
+def test_thresholds_and_jump_friction():
+    assert rotorsweep.A_minus == pytest.approx(4.634583466980286, rel=1e-14)
+    assert rotorsweep.A_star == pytest.approx(8.778365775883558, rel=1e-15)
+    J = rotorsweep.jump_friction([rotorsweep.A_minus, 6.0, rotorsweep.A_star, 3.0, 10.0])
+    assert J[0] == pytest.approx(4.975766521411717, rel=1e-13)
+    assert 0 < J[1] < J[0]
+    assert abs(J[2]) < 1e-13
+    assert np.isnan(J[3]) and np.isnan(J[4])
+    events = rotorsweep.jump_events(6.0)
+    assert events["J"] == J[1]
+
+
+def test_critical_points_at_A_1_and_11():
+    for tau in np.linspace(0, np.pi / 2, 7):
+        large = rotorsweep.critical_points(11.0, tau)
+        assert list(large["type"]).count("minimum") == 1
+        assert large["alignment"][large["type"] == "minimum"][0] == "strict_fm"
+        small = rotorsweep.critical_points(1.0, tau)
+        minima = small["type"] == "minimum"
+        assert minima.sum() == 4
+        assert sorted(small["alignment"][minima]) == ["afm_like", "afm_like", "strict_fm", "strict_fm"]
+        counts = {t: list(small["type"]).count(t) for t in ("minimum", "saddle", "maximum")}
+        assert counts["minimum"] - counts["saddle"] + counts["maximum"] == 0  # Euler characteristic
+        assert small["even"].dtype == np.float64 and small["even"].flags["OWNDATA"] is False
+
+
+def test_chamber_map_has_the_papers_seven_zones():
+    ds = rotorsweep.chamber_map(A_min=0.0, A_max=12.0, A_cells=120, tau_cells=90)
+    assert dict(ds.minima.sizes) == {"A": 120, "tau": 90}
+    zone = ds.zone.values
+    sizes = np.bincount(zone[zone >= 0])
+    assert (sizes >= 10).sum() == 7
+    assert int((ds.minima - ds.saddles + ds.maxima).max()) == 0
+    assert int(ds.minima.isel(A=119, tau=45)) == 1
+    assert int(ds.by_type_and_class.sel(type="minimum", alignment="strict_fm").isel(A=119, tau=45)) == 1
+
+
+def test_curves():
+    curve = rotorsweep.bifurcation_curve("off_diagonal_minus", 200)
+    assert np.nanmin(curve["A"]) == pytest.approx(rotorsweep.A_minus, rel=1e-3)
+    with pytest.raises(ValueError, match="alignment"):
+        rotorsweep.bifurcation_curve("no_such_curve")

@@ -1,0 +1,103 @@
+"""rotorsweep.run: scenes as dict, text or path; bad scenes raise ValueError naming the key; the
+results equal the command line's file bit for bit; output paths; thread-count invariance."""
+
+import io
+
+import h5py
+import numpy as np
+import pytest
+import rotorsweep
+from conftest import hdf5_datasets, identical, run_cli
+
+
+def as_dict():
+    return {
+        "model": {"rows": 8},
+        "drive": {"g": [0.0011]},
+        "sweep": {"A": [1.0, 6.0, 11.0]},
+        "initial": {"kinds": ["FM", "AFM"], "replicas": 2},
+        "schedule": {"relax_periods": 1, "average_periods": 2},
+    }
+
+
+def test_dict_text_and_path_give_the_same_results(small_scene, tmp_path):
+    path = tmp_path / "small.toml"
+    path.write_text(small_scene)
+    from_text = rotorsweep.run(small_scene, progress=False)
+    from_path = rotorsweep.run(path, progress=False)
+    from_str_path = rotorsweep.run(str(path), progress=False)
+    from_dict = rotorsweep.run(as_dict(), progress=False)
+    for other in (from_path, from_str_path, from_dict):
+        for name in from_text.data_vars:
+            assert identical(from_text[name].values, other[name].values), name
+    assert from_path.attrs["scene_path"] == str(path)
+    assert from_dict.attrs["scene_path"] == "<python>"
+
+
+def test_a_bad_key_raises_value_error_naming_it(small_scene):
+    with pytest.raises(ValueError, match="sweep.A"):
+        rotorsweep.run(small_scene.replace("A = [1.0, 6.0, 11.0]", "A = [-1.0]"), progress=False)
+    with pytest.raises(ValueError, match="numerics.stepper"):
+        rotorsweep.run({**as_dict(), "numerics": {"stepper": "euler"}}, progress=False)
+    with pytest.raises(ValueError, match="initial.replica"):
+        rotorsweep.run({**as_dict(), "initial": {"replica": 3}}, progress=False)
+    with pytest.raises(FileNotFoundError):
+        rotorsweep.run("no-such-scene.toml", progress=False)
+    with pytest.raises(TypeError):
+        rotorsweep.run(42, progress=False)
+
+
+def test_results_equal_the_command_line_file_bit_for_bit(small_scene, tmp_path, executable):
+    scene = tmp_path / "small.toml"
+    scene.write_text(small_scene)
+    cli = hdf5_datasets(run_cli(executable, scene, tmp_path / "cli.h5"))
+    written = rotorsweep.run(scene, progress=False, output=tmp_path / "module.h5")
+    assert hdf5_datasets(tmp_path / "module.h5") == cli
+    assert written.attrs["complete"]
+    # the in-memory result holds the same datasets as well
+    job = rotorsweep._core.SweepJob(str(scene), True, 0, "", False, "test", "test")
+    assert job.wait(-1)
+    in_memory = hdf5_datasets(io.BytesIO(job.take_image()))
+    assert in_memory == cli
+    assert len(cli) > 40
+
+
+def test_no_file_is_written_unless_asked(small_scene, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    rotorsweep.run(small_scene + '\n[output]\npath = "scene_asks.h5"\n', progress=False)
+    assert list(tmp_path.iterdir()) == []
+    rotorsweep.run(small_scene + '\n[output]\npath = "scene_asks.h5"\n', progress=False, output=True)
+    assert [p.name for p in tmp_path.iterdir()] == ["scene_asks.h5"]
+    with pytest.raises(ValueError, match="output.path"):
+        rotorsweep.run(small_scene, progress=False, output=True)
+
+
+def test_an_unusable_output_path_is_a_value_error_before_any_work(small_scene, tmp_path):
+    (tmp_path / "notes.txt").write_text("keep me")
+    with pytest.raises(ValueError, match="not an HDF5 file"):
+        rotorsweep.run(small_scene, progress=False, output=tmp_path / "notes.txt")
+    assert (tmp_path / "notes.txt").read_text() == "keep me"
+    with pytest.raises(ValueError):
+        rotorsweep.run(small_scene, progress=False, output=tmp_path)
+
+
+def test_thread_count_does_not_change_a_bit(small_scene):
+    one = rotorsweep.run(small_scene, threads=1, progress=False)
+    two = rotorsweep.run(small_scene, threads=2, progress=False)
+    for name in one.data_vars:
+        assert identical(one[name].values, two[name].values), name
+    assert one.attrs["threads"] == 1 and two.attrs["threads"] == 2
+
+
+def test_the_paper_members_through_the_module():
+    """The paper's non-CP members (A = 1, 4, 11; N = 20) against its table, as in the C++ tests."""
+    paper = {(1.0, "FM"): 2.018948e-3, (1.0, "AFM"): 7.184589e-4, (11.0, "FM"): 1.654868e-1,
+             (11.0, "AFM"): 1.654868e-1}
+    ds = rotorsweep.run({
+        "model": {"rows": 20}, "drive": {"g": [0.0011]}, "sweep": {"A": [1.0, 11.0]},
+        "initial": {"kinds": ["FM", "AFM"], "replicas": 1, "noise": 0.01},
+        "schedule": {"relax_periods": 2, "average_periods": 2},
+        "numerics": {"rtol": 1e-8, "atol": 1e-11}}, progress=False)
+    for (A, ic), R in paper.items():
+        D = float(ds.dissipation.sel(A=A, ic=ic, replica=0))
+        assert D == pytest.approx(R, rel=2e-3), (A, ic)
