@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 #include "ensemble/member_plan.hpp"
+#include "ensemble/paper_table.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/lane.hpp"
 #include "kernels/stepper_list.hpp"
@@ -39,6 +40,28 @@ py::dict plan_axes(const ensemble::Scene& scene) {
   return axes;
 }
 
+/// The paper's table of dissipation integrals (its members and its R values).
+py::dict paper_table() {
+  namespace paper = ensemble::paper_table;
+  py::dict table;
+  table["rows"] = paper::rows;
+  table["g"] = paper::g;
+  table["relax_periods"] = paper::relax_periods;
+  table["average_periods"] = paper::average_periods;
+  py::list A, ic, R, cp;
+  for (const auto& entry : paper::entries) {
+    A.append(entry.A);
+    ic.append(std::string(ensemble::kind_name(entry.kind)));
+    R.append(entry.paper_R);
+    cp.append(entry.cp);
+  }
+  table["A"] = A;
+  table["ic"] = ic;
+  table["R"] = R;
+  table["cp"] = cp;
+  return table;
+}
+
 }  // namespace
 
 void bind_sweep(py::module_& m) {
@@ -59,6 +82,7 @@ void bind_sweep(py::module_& m) {
       },
       py::arg("scene"), py::arg("is_path") = false,
       "The validated scene: its text, output.path ('' when not given) and member count.");
+  m.attr("paper_table") = paper_table();
   m.attr("lane_width") = kernels::lane_width<kernels::simd_lane>;
   py::list steppers;
   for (auto name : kernels::stepper_names) steppers.append(std::string(name));

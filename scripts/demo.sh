@@ -8,9 +8,7 @@ scripts/setup.sh
 scripts/build.sh
 build/bin/rotorsweep run examples/friction_curve.toml -o results/friction_curve.h5
 build/bin/rotorsweep info results/friction_curve.h5
-build/bin/rotorsweep landscape jump-friction --count 2000 -o results/jump_friction.h5
-/usr/bin/python3 scripts/plot_friction.py results/friction_curve.h5 results/friction_curve.png \
-  --jump results/jump_friction.h5
+/usr/bin/python3 scripts/plot_friction.py results/friction_curve.h5 results/friction_curve.png
 build/bin/rotorsweep landscape chambers -o results/chambers.h5
 build/bin/rotorsweep landscape curves -o results/curves.h5
 /usr/bin/python3 scripts/plot_chambers.py results/chambers.h5 results/curves.h5 results/chambers.png
