@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace rotorsweep::apps {
 
@@ -25,8 +26,16 @@ struct RunOptions {
   int threads = 0;     ///< 0: OpenMP's default
   bool quiet = false;  ///< no progress line
   bool force = false;  ///< replace an existing file that is not an HDF5 file
+  std::string shard;   ///< "I/N": run part I of N of the plan (ensemble::shard_members)
 };
 int run_sweep_command(const RunOptions& options);
+
+struct MergeOptions {
+  std::vector<std::string> shards;
+  std::string output;
+  bool force = false;
+};
+int run_merge(const MergeOptions& options);
 
 struct InfoOptions {
   std::string file;

@@ -65,6 +65,11 @@ int run_info(const InfoOptions& options) {
     const auto members = file.open_group("members");
     const auto A = members.read_doubles("A");
     std::printf("%-12s %zu\n", "members", A.size());
+    if (file.has_attribute("shard_index"))
+      std::printf("%-12s %lld/%lld of a plan of %lld members (join the shards with rotorsweep merge)\n",
+                  "shard", (long long)file.attribute_double("shard_index"),
+                  (long long)file.attribute_double("shard_count"),
+                  (long long)file.attribute_double("plan_members"));
     if (file.has_attribute("wall_seconds"))
       std::printf("%-12s %.2f s on %lld threads × %lld lanes (%.1f members/s, lane occupancy %.1f %%)\n",
                   "wall time", file.attribute_double("wall_seconds"),

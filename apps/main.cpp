@@ -43,8 +43,18 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 4096));
   run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
   run_cmd->add_flag("--force", run.force, "Replace an existing output file even if it is not an HDF5 file");
+  run_cmd->add_option("--shard", run.shard,
+                      "Run part I of N of the plan (I/N; members I-1, I-1+N, ...); `merge` joins the parts");
 
   InfoOptions info;
+  MergeOptions merge;
+  auto* merge_cmd =
+      app.add_subcommand("merge", "Join the shard files of one plan (run --shard I/N) into one result file");
+  merge_cmd->add_option("shards", merge.shards, "Shard files, in any order")->required();
+  merge_cmd->add_option("-o,--output", merge.output, "Result file to write")->required();
+  merge_cmd->add_flag("--force", merge.force,
+                      "Replace an existing output file even if it is not an HDF5 file");
+
   auto* info_cmd = app.add_subcommand("info", "Summarise a result file");
   info_cmd->add_option("file", info.file, "Result file (HDF5)")->required();
   info_cmd->add_flag("--scene", info.scene, "Also print the scene the file was made from");
@@ -101,7 +111,7 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-    for (const auto* cmd : {run_cmd, table_cmd, chambers_cmd, curves_cmd, jump_cmd})
+    for (const auto* cmd : {run_cmd, merge_cmd, table_cmd, chambers_cmd, curves_cmd, jump_cmd})
       if (cmd->parsed() && cmd->count("-o") > 0 && cmd->get_option("-o")->as<std::string>().empty())
         throw CLI::ValidationError("--output", "the output path is empty");
   } catch (const CLI::ParseError& e) {
@@ -112,6 +122,7 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   try {
     if (*run_cmd) return run_sweep_command(run);
+    if (*merge_cmd) return run_merge(merge);
     if (*info_cmd) return run_info(info);
     if (*table_cmd) return run_table(table);
     if (*kernels_cmd) return run_bench_kernels(bench);

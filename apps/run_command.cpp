@@ -24,11 +24,31 @@ namespace rotorsweep::apps {
 
 namespace {
 
-/// -o, else output.path, else SCENE's stem + ".h5" in the working directory.
-std::string output_path(const RunOptions& options, const ensemble::Scene& scene) {
+/// -o, else output.path, else SCENE's stem + ".h5" in the working directory; a shard without -o
+/// gets ".shard-I-of-N" before the extension, so that shards do not overwrite each other.
+std::string output_path(const RunOptions& options, const ensemble::Scene& scene,
+                        const std::optional<io::ShardLabel>& shard) {
   if (!options.output.empty()) return options.output;
-  if (!scene.output_path.empty()) return scene.output_path;
-  return std::filesystem::path(options.scene).stem().string() + ".h5";
+  std::filesystem::path path =
+      scene.output_path.empty()
+          ? std::filesystem::path(std::filesystem::path(options.scene).stem().string() + ".h5")
+          : std::filesystem::path(scene.output_path);
+  if (shard) {
+    const std::string tag = ".shard-" + std::to_string(shard->index) + "-of-" + std::to_string(shard->count);
+    path.replace_filename(path.stem().string() + tag + path.extension().string());
+  }
+  return path.string();
+}
+
+/// "I/N" with 1 ≤ I ≤ N; nothing for an empty text; throws std::invalid_argument otherwise.
+std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t plan_members) {
+  if (text.empty()) return std::nullopt;
+  std::size_t index = 0, count = 0;
+  int used = 0;
+  if (std::sscanf(text.c_str(), "%zu/%zu%n", &index, &count, &used) != 2 || used != int(text.size()) ||
+      index < 1 || index > count)
+    throw std::invalid_argument("--shard '" + text + "': must be I/N with 1 <= I <= N (e.g. 2/8)");
+  return io::ShardLabel{index, count, plan_members};
 }
 
 void report_failures(const std::vector<ensemble::MemberResult>& results) {
@@ -80,10 +100,17 @@ int run_sweep_command(const RunOptions& options) {
   }
   if (!fits_in_memory(scene)) return 2;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  std::optional<io::ShardLabel> shard;
+  try {
+    shard = parse_shard(options.shard, scene.member_count());
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
 
   std::optional<io::OutputTarget> target;
   std::optional<io::ResultFile> file;
-  const std::string path = output_path(options, scene);
+  const std::string path = output_path(options, scene, shard);
   try {
     target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force);
     file.emplace(target->temporary(), scene, io::Provenance{options.scene, version, revision});
@@ -91,7 +118,9 @@ int run_sweep_command(const RunOptions& options) {
     std::cerr << "error: " << e.what() << " (-o or output.path)\n";
     return 2;
   }
-  const auto members = ensemble::plan_members(scene);
+  const auto members =
+      shard ? ensemble::shard_members(ensemble::plan_members(scene), shard->index, shard->count)
+            : ensemble::plan_members(scene);
 
   const std::size_t lanes =
       scene.lanes == ensemble::LaneKind::simd ? kernels::lane_width<kernels::simd_lane> : 1;
@@ -105,6 +134,10 @@ int run_sweep_command(const RunOptions& options) {
     std::snprintf(text, sizeof text, "%s%g", tolerances.empty() ? "" : ",", r);
     tolerances += text;
   }
+  if (shard)
+    std::fprintf(stderr, "shard %zu/%zu: members %zu, %zu, %zu, ... of the plan's %zu\n", shard->index,
+                 shard->count, shard->index - 1, shard->index - 1 + shard->count,
+                 shard->index - 1 + 2 * shard->count, shard->plan_members);
   std::fprintf(stderr,
                "rotorsweep run %s: %zu members (%zu N × %zu rtol × %zu A × %zu g × %zu noise × %zu offset × "
                "%zu kinds × %d "
@@ -120,7 +153,10 @@ int run_sweep_command(const RunOptions& options) {
   progress.finish();
 
   try {
-    file->write_sweep(scene, members, outcome);
+    if (shard)
+      file->write_shard(scene, members, outcome, *shard);
+    else
+      file->write_sweep(scene, members, outcome);
     file->close();
     target->commit();
   } catch (const std::exception& e) {

@@ -24,6 +24,12 @@ std::vector<Member> plan_members(const Scene& scene) {
   return members;
 }
 
+std::vector<Member> shard_members(const std::vector<Member>& plan, std::size_t index, std::size_t count) {
+  std::vector<Member> shard;
+  for (std::size_t i = index - 1; i < plan.size(); i += count) shard.push_back(plan[i]);
+  return shard;
+}
+
 double plan_memory_bytes(const Scene& scene) {
   const double rows = double(scene.max_rows());
   const double columns = 2 * 8 * rows + 8 * 64;  // written copies of the angles and scalar columns

@@ -26,6 +26,10 @@ struct Member {
 
 std::vector<Member> plan_members(const Scene& scene);
 
+/// Part `index` (1-based) of `count` of a plan: the members whose plan index is index − 1 modulo
+/// count, so that every shard holds every kind of member and they cost about the same.
+std::vector<Member> shard_members(const std::vector<Member>& plan, std::size_t index, std::size_t count);
+
 /// Bytes a run of the whole plan holds at its peak, as an estimate: per member its Member and
 /// MemberResult, its initial and final angles, the columns being written and, with
 /// period_series, every period record of the longest schedule.

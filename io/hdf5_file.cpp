@@ -3,6 +3,7 @@
 #include "io/hdf5_file.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 
 namespace rotorsweep::io {
@@ -110,6 +111,7 @@ Hdf5Location Hdf5Location::create_file(const std::string& path) {
 Hdf5Location Hdf5Location::open_file(const std::string& path) {
   prepare_hdf5();
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id < 0 && !std::filesystem::exists(path)) throw std::runtime_error("'" + path + "' does not exist");
   if (id < 0) throw std::runtime_error("cannot open '" + path + "' as an HDF5 file");
   return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
 }

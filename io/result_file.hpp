@@ -20,6 +20,12 @@ struct Provenance {
   std::string revision;  ///< source revision, "unknown" when the build could not tell
 };
 
+/// Which part of a plan a shard file holds (ensemble::shard_members).
+struct ShardLabel {
+  std::size_t index = 1, count = 1;  ///< part index of count, 1-based
+  std::size_t plan_members = 0;      ///< members in the whole plan
+};
+
 /// A result file being written: it exists with complete = FALSE from construction on, and
 /// says complete = TRUE only after every dataset has been written and flushed.
 class ResultFile {
@@ -33,6 +39,10 @@ class ResultFile {
   /// Members, curves (aggregated from them) and statistics: everything after the constructor.
   void write_sweep(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
                    const ensemble::SweepOutcome& outcome) const;
+  /// A shard's members, their plan indices (/members/plan_index) and the shard's label as
+  /// attributes shard_index, shard_count, plan_members; no curves (`rotorsweep merge` makes them).
+  void write_shard(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
+                   const ensemble::SweepOutcome& outcome, const ShardLabel& shard) const;
 
   void write_members(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
                      const std::vector<ensemble::MemberResult>& results) const;

@@ -64,6 +64,9 @@ def from_hdf5(h5file, allow_incomplete=False):
     name = h5file.filename
     if not attrs.get("complete", False) and not allow_incomplete:
         raise ValueError(f"'{name}' is not a complete result (attribute complete = FALSE)")
+    if "shard_index" in attrs:
+        raise ValueError(f"'{name}' is shard {attrs['shard_index']}/{attrs['shard_count']} of a plan: "
+                         "join the shards with `rotorsweep merge` first")
     if "members" not in h5file:
         raise ValueError(f"'{name}' holds no /members (not a rotorsweep result)")
     axes = _core.plan_axes(attrs["scene"])

@@ -9,26 +9,11 @@
 
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
+#include "support/result_datasets.hpp"
 #include "support/scene_text.hpp"
 
 using rotorsweep::io::Hdf5Location;
 using namespace rotorsweep::testing;
-
-namespace {
-
-/// Names of every dataset under /members, /members/periods and /curves.
-std::vector<std::string> dataset_paths(const Hdf5Location& file) {
-  std::vector<std::string> paths;
-  for (const std::string group : {"members", "members/periods", "curves", "curves/attractors"}) {
-    if (!file.has(group)) continue;
-    const auto location = file.open_group(group);
-    for (const auto& name : location.members())
-      if (name != "periods" && name != "attractors") paths.push_back(group + "/" + name);
-  }
-  return paths;
-}
-
-}  // namespace
 
 TEST_CASE("the paper's table read back from the result file", "[apps][run]") {
   const auto dir = scratch_directory("run-table");

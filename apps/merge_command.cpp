@@ -1,0 +1,149 @@
+// `rotorsweep merge SHARD.h5... -o OUT.h5`: checks that the shards come from one scene and one
+// version and cover its plan exactly once, and writes the result file the unsharded run writes.
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <stdexcept>
+
+#include "build_info.hpp"
+#include "commands.hpp"
+#include "ensemble/member_plan.hpp"
+#include "ensemble/sweep.hpp"
+#include "io/output_target.hpp"
+#include "io/result_file.hpp"
+#include "io/result_reader.hpp"
+#include "io/scene_parser.hpp"
+
+namespace rotorsweep::apps {
+
+namespace {
+
+/// A shard's identity as its attributes state it.
+struct ShardFile {
+  std::string path, scene_text, scene_path, version;
+  std::size_t index = 0, count = 0, plan_members = 0;
+  double wall_seconds = 0, threads = 1, lane_width = 1, lane_occupancy = 0;
+};
+
+/// Thrown for shards that do not belong together (exit code 2).
+struct MismatchError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+ShardFile describe(const std::string& path, const io::Hdf5Location& file) {
+  if (!file.has_attribute("shard_index") || !file.has("members"))
+    throw MismatchError("'" + path + "' is not a shard file (written by run --shard I/N)");
+  if (!file.attribute_flag("complete"))
+    throw MismatchError("'" + path + "' is incomplete: its run did not finish; run that shard again");
+  ShardFile shard;
+  shard.path = path;
+  shard.scene_text = file.attribute_string("scene");
+  shard.scene_path = file.attribute_string("scene_path");
+  shard.version = file.attribute_string("version") + " (revision " + file.attribute_string("revision") + ")";
+  shard.index = std::size_t(file.attribute_double("shard_index"));
+  shard.count = std::size_t(file.attribute_double("shard_count"));
+  shard.plan_members = std::size_t(file.attribute_double("plan_members"));
+  shard.wall_seconds = file.attribute_double("wall_seconds");
+  shard.threads = file.attribute_double("threads");
+  shard.lane_width = file.attribute_double("lane_width");
+  shard.lane_occupancy = file.attribute_double("lane_occupancy");
+  return shard;
+}
+
+void check_same_plan(const ShardFile& first, const ShardFile& other) {
+  const auto differ = [&](const std::string& what) {
+    throw MismatchError("'" + other.path + "' and '" + first.path + "' differ in their " + what +
+                        ": they are not shards of one run");
+  };
+  if (other.scene_text != first.scene_text) differ("scene");
+  if (other.version != first.version) differ("program version");
+  if (other.count != first.count) differ("shard count");
+}
+
+}  // namespace
+
+int run_merge(const MergeOptions& options) {
+  ensemble::Scene scene;
+  std::vector<ensemble::Member> plan;
+  ensemble::SweepOutcome outcome;
+  std::optional<ShardFile> first;
+  try {
+    std::map<std::size_t, std::string> seen;  // shard index → file
+    std::vector<bool> covered;
+    double busy = 0;
+    for (const auto& path : options.shards) {
+      const auto file = io::Hdf5Location::open_file(path);
+      const ShardFile shard = describe(path, file);
+      if (!first) {
+        first = shard;
+        scene = io::parse_scene_text(shard.scene_text, shard.scene_path);
+        plan = ensemble::plan_members(scene);
+        if (plan.size() != shard.plan_members)
+          throw MismatchError("'" + path + "': its plan size does not match its scene");
+        const std::string ours = std::string(version) + " (revision " + revision + ")";
+        if (shard.version != ours)
+          throw MismatchError("'" + path + "' was written by rotorsweep " + shard.version + ", this is " +
+                              ours + ": merge with the program that ran the shards");
+        outcome.results.resize(plan.size());
+        covered.assign(plan.size(), false);
+      }
+      check_same_plan(*first, shard);
+      if (const auto [at, fresh] = seen.emplace(shard.index, path); !fresh)
+        throw MismatchError("'" + path + "' and '" + at->second + "' are both shard " +
+                            std::to_string(shard.index) + "/" + std::to_string(shard.count));
+      auto stored = io::read_member_results(file, scene, plan);
+      for (std::size_t i = 0; i < stored.plan_index.size(); ++i) {
+        const std::size_t m = stored.plan_index[i];
+        if (covered[m])
+          throw MismatchError("member " + std::to_string(m) + " is in two shards ('" + path + "')");
+        covered[m] = true;
+        outcome.results[m] = std::move(stored.results[i]);
+      }
+      auto& stats = outcome.statistics;
+      stats.wall_seconds += shard.wall_seconds;
+      stats.threads = std::max(stats.threads, int(shard.threads));
+      stats.lane_width = std::size_t(shard.lane_width);
+      busy += shard.lane_occupancy * double(stored.plan_index.size());
+    }
+    std::string missing;
+    for (std::size_t i = 1; i <= first->count; ++i)
+      if (!seen.count(i)) missing += (missing.empty() ? "" : ", ") + std::to_string(i);
+    if (!missing.empty())
+      throw MismatchError("shard" + std::string(missing.find(',') == std::string::npos ? " " : "s ") +
+                          missing + " of " + std::to_string(first->count) + " missing");
+    for (std::size_t m = 0; m < plan.size(); ++m)
+      if (!covered[m]) throw MismatchError("member " + std::to_string(m) + " is in no shard");
+    outcome.statistics.lane_steps_busy = busy;
+    outcome.statistics.lane_steps_total = double(plan.size());
+  } catch (const MismatchError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+
+  std::optional<io::OutputTarget> target;
+  try {
+    target.emplace(options.output, options.shards, io::Replaceable::hdf5, options.force);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << " (-o)\n";
+    return 2;
+  }
+  try {
+    io::ResultFile file(target->temporary(), scene, io::Provenance{first->scene_path, version, revision});
+    file.write_sweep(scene, plan, outcome);
+    file.close();
+    target->commit();
+  } catch (const std::exception& e) {
+    std::cerr << "error: writing " << options.output << " failed: " << e.what() << "; "
+              << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";
+    return 1;
+  }
+  std::fprintf(stderr, "wrote %s: %zu members from %zu shards\n", options.output.c_str(), plan.size(),
+               options.shards.size());
+  return 0;
+}
+
+}  // namespace rotorsweep::apps
