@@ -22,11 +22,12 @@ int run_bench_kernels(const BenchKernelOptions& options);
 
 struct RunOptions {
   std::string scene;
-  std::string output;  ///< overrides the scene's output.path
-  int threads = 0;     ///< 0: OpenMP's default
-  bool quiet = false;  ///< no progress line
-  bool force = false;  ///< replace an existing file that is not an HDF5 file
-  std::string shard;   ///< "I/N": run part I of N of the plan (ensemble::shard_members)
+  std::string output;   ///< overrides the scene's output.path
+  int threads = 0;      ///< 0: OpenMP's default
+  bool quiet = false;   ///< no progress line
+  bool force = false;   ///< replace an existing file that is not an HDF5 file
+  std::string shard;    ///< "I/N": run part I of N of the plan (ensemble::shard_members)
+  bool resume = false;  ///< continue from OUTPUT.partial, left by an interrupted run
 };
 int run_sweep_command(const RunOptions& options);
 

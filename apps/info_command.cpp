@@ -65,6 +65,10 @@ int run_info(const InfoOptions& options) {
     const auto members = file.open_group("members");
     const auto A = members.read_doubles("A");
     std::printf("%-12s %zu\n", "members", A.size());
+    if (file.has_attribute("members_done"))
+      std::printf("%-12s %lld of %lld members done by an interrupted run (continue it with run --resume)\n",
+                  "partial", (long long)file.attribute_double("members_done"),
+                  (long long)file.attribute_double("plan_members"));
     if (file.has_attribute("shard_index"))
       std::printf("%-12s %lld/%lld of a plan of %lld members (join the shards with rotorsweep merge)\n",
                   "shard", (long long)file.attribute_double("shard_index"),

@@ -43,6 +43,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 4096));
   run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
   run_cmd->add_flag("--force", run.force, "Replace an existing output file even if it is not an HDF5 file");
+  run_cmd->add_flag(
+      "--resume", run.resume,
+      "Continue the run that SIGINT/SIGTERM interrupted (from OUT.h5.partial): same scene, same program");
   run_cmd->add_option("--shard", run.shard,
                       "Run part I of N of the plan (I/N; members I-1, I-1+N, ...); `merge` joins the parts");
 

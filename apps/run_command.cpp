@@ -3,6 +3,8 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -15,6 +17,7 @@
 #include "ensemble/sweep.hpp"
 #include "io/output_target.hpp"
 #include "io/result_file.hpp"
+#include "io/result_reader.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/lane.hpp"
 #include "kernels/stepper_list.hpp"
@@ -88,6 +91,99 @@ void report_unresolved(const ensemble::Scene& scene, const std::vector<ensemble:
                                     : "tighten numerics.rtol and atol");
 }
 
+/// SIGINT and SIGTERM raise the sweep's stop flag while an instance lives (the previous handlers
+/// come back after it); signal() names the signal that came, 0 for none.
+class StopOnSignals {
+ public:
+  StopOnSignals() {
+    stop_ = false;
+    signal_ = 0;
+    previous_int_ = std::signal(SIGINT, &StopOnSignals::handle);
+    previous_term_ = std::signal(SIGTERM, &StopOnSignals::handle);
+  }
+  ~StopOnSignals() {
+    std::signal(SIGINT, previous_int_);
+    std::signal(SIGTERM, previous_term_);
+  }
+  StopOnSignals(const StopOnSignals&) = delete;
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
+  const std::atomic<bool>* flag() const { return &stop_; }
+  int signal() const { return signal_; }
+
+ private:
+  static void handle(int number) {
+    signal_ = number;
+    stop_ = true;
+  }
+  static inline std::atomic<bool> stop_{false};
+  static inline volatile std::sig_atomic_t signal_ = 0;
+  void (*previous_int_)(int) = SIG_DFL;
+  void (*previous_term_)(int) = SIG_DFL;
+};
+
+/// A partial file that does not belong to this run (exit code 2; the file is left as it is).
+struct ResumeError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The members an interrupted run left in `partial`, put at their positions in `plan`; the
+/// partial file must come from the same scene text and the same program.
+double read_partial(const std::string& partial, const ensemble::Scene& scene,
+                    const std::vector<ensemble::Member>& plan, std::vector<ensemble::MemberResult>& results,
+                    std::vector<char>& done) {
+  if (!std::filesystem::exists(partial))
+    throw ResumeError("--resume: there is no '" + partial + "' to resume (an interrupted run leaves it)");
+  const auto file = io::Hdf5Location::open_file(partial);
+  if (!file.has_attribute("members_done") || file.attribute_flag("complete"))
+    throw ResumeError("--resume: '" + partial + "' is not the partial file of an interrupted run");
+  if (file.attribute_string("scene") != scene.text)
+    throw ResumeError("--resume: '" + partial +
+                      "' was made from a different scene; run without --resume to start afresh");
+  const std::string ours = std::string(version) + " (revision " + revision + ")";
+  const std::string theirs =
+      file.attribute_string("version") + " (revision " + file.attribute_string("revision") + ")";
+  if (theirs != ours)
+    throw ResumeError("--resume: '" + partial + "' was written by rotorsweep " + theirs + ", this is " +
+                      ours);
+  auto stored = io::read_member_results(file, scene, plan);
+  for (std::size_t i = 0; i < stored.plan_index.size(); ++i) {
+    results[stored.plan_index[i]] = std::move(stored.results[i]);
+    done[stored.plan_index[i]] = 1;
+  }
+  return file.attribute_double("wall_seconds");
+}
+
+/// After SIGINT or SIGTERM: the finished members go to `partial` (replacing an older one), and
+/// the exit code is 128 + the signal's number.
+int keep_partial(const ensemble::Scene& scene, const RunOptions& options,
+                 const std::vector<ensemble::Member>& members, const ensemble::SweepOutcome& outcome,
+                 const std::vector<char>& done, const std::string& partial, int signal_number) {
+  std::vector<ensemble::Member> kept;
+  std::vector<ensemble::MemberResult> kept_results;
+  for (std::size_t i = 0; i < members.size(); ++i)
+    if (done[i]) {
+      kept.push_back(members[i]);
+      kept_results.push_back(outcome.results[i]);
+    }
+  const char* name = signal_number == SIGTERM ? "SIGTERM" : "SIGINT";
+  try {
+    io::OutputTarget target(partial, {options.scene}, io::Replaceable::hdf5, true);
+    io::ResultFile file(target.temporary(), scene, io::Provenance{options.scene, version, revision});
+    file.write_partial(scene, kept, kept_results, members.size(), outcome.statistics);
+    file.close();
+    target.commit();
+  } catch (const std::exception& e) {
+    std::cerr << "\nstopped by " << name << "; keeping the finished members failed: " << e.what() << "\n";
+    return 128 + (signal_number ? signal_number : SIGINT);
+  }
+  std::fprintf(stderr,
+               "\nstopped by %s: %zu of %zu members done, kept in %s (not a result: complete = FALSE).\n"
+               "resume with: rotorsweep run %s%s%s --resume\n",
+               name, kept.size(), members.size(), partial.c_str(), options.scene.c_str(),
+               options.output.empty() ? "" : " -o ", options.output.c_str());
+  return 128 + (signal_number ? signal_number : SIGINT);
+}
+
 }  // namespace
 
 int run_sweep_command(const RunOptions& options) {
@@ -108,9 +204,33 @@ int run_sweep_command(const RunOptions& options) {
     return 2;
   }
 
+  if (shard && options.resume) {
+    std::cerr << "error: --resume continues a whole run; an interrupted shard is run again (--shard without "
+                 "--resume)\n";
+    return 2;
+  }
+  const std::string path = output_path(options, scene, shard);
+  const std::string partial = path + ".partial";
+  const auto members =
+      shard ? ensemble::shard_members(ensemble::plan_members(scene), shard->index, shard->count)
+            : ensemble::plan_members(scene);
+  std::vector<ensemble::MemberResult> results(members.size());
+  std::vector<char> done(members.size(), 0);
+  double earlier_seconds = 0;
+  if (options.resume) {
+    try {
+      earlier_seconds = read_partial(partial, scene, members, results, done);
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  std::vector<ensemble::Member> to_run;
+  for (std::size_t i = 0; i < members.size(); ++i)
+    if (!done[i]) to_run.push_back(members[i]);
+
   std::optional<io::OutputTarget> target;
   std::optional<io::ResultFile> file;
-  const std::string path = output_path(options, scene, shard);
   try {
     target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force);
     file.emplace(target->temporary(), scene, io::Provenance{options.scene, version, revision});
@@ -118,9 +238,6 @@ int run_sweep_command(const RunOptions& options) {
     std::cerr << "error: " << e.what() << " (-o or output.path)\n";
     return 2;
   }
-  const auto members =
-      shard ? ensemble::shard_members(ensemble::plan_members(scene), shard->index, shard->count)
-            : ensemble::plan_members(scene);
 
   const std::size_t lanes =
       scene.lanes == ensemble::LaneKind::simd ? kernels::lane_width<kernels::simd_lane> : 1;
@@ -147,10 +264,29 @@ int run_sweep_command(const RunOptions& options) {
                scene.A_values.size(), scene.g_values.size(), scene.noise_values.size(),
                scene.offset_values.size(), scene.kinds.size(), scene.replicas, rows.c_str(),
                kernels::stepper_names[std::size_t(scene.stepper)].data(), tolerances.c_str(), threads, lanes);
-  ProgressLine progress(members.size(), !options.quiet);
-  const auto outcome =
-      ensemble::run_sweep(scene, members, threads, [&](std::size_t done) { progress.update(done); });
+  if (options.resume)
+    std::fprintf(stderr, "resuming from %s: %zu members done, %zu to run\n", partial.c_str(),
+                 members.size() - to_run.size(), to_run.size());
+  ProgressLine progress(to_run.size(), !options.quiet);
+  ensemble::SweepOutcome outcome;
+  int signal_number = 0;
+  {
+    const StopOnSignals signals;
+    outcome = ensemble::run_sweep(
+        scene, to_run, threads, [&](std::size_t count) { progress.update(count); }, signals.flag());
+    signal_number = signals.signal();
+  }
   progress.finish();
+  for (std::size_t i = 0, k = 0; i < members.size(); ++i) {
+    if (done[i]) continue;
+    done[i] = outcome.finished[k];
+    if (done[i]) results[i] = std::move(outcome.results[k]);
+    ++k;
+  }
+  outcome.results = std::move(results);
+  outcome.statistics.wall_seconds += earlier_seconds;
+  if (outcome.interrupted)
+    return keep_partial(scene, options, members, outcome, done, partial, signal_number);
 
   try {
     if (shard)
@@ -159,6 +295,7 @@ int run_sweep_command(const RunOptions& options) {
       file->write_sweep(scene, members, outcome);
     file->close();
     target->commit();
+    if (std::filesystem::exists(partial)) std::filesystem::remove(partial);
   } catch (const std::exception& e) {
     std::cerr << "error: writing " << path << " failed: " << e.what() << "; "
               << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";

@@ -15,6 +15,7 @@ static_assert(ROTORSWEEP_STEPPER_COUNT == kernels::steppers::size,
 
 void SweepOutcome::append(SweepOutcome&& part) {
   for (auto& r : part.results) results.push_back(std::move(r));
+  finished.insert(finished.end(), part.finished.begin(), part.finished.end());
   statistics.wall_seconds += part.statistics.wall_seconds;
   statistics.lane_steps_busy += part.statistics.lane_steps_busy;
   statistics.lane_steps_total += part.statistics.lane_steps_total;
@@ -39,6 +40,7 @@ SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, i
                                stop};
     if (control.stopped()) {
       outcome.results.resize(outcome.results.size() + part.size());
+      outcome.finished.resize(outcome.finished.size() + part.size(), 0);
       outcome.interrupted = true;
       continue;
     }

@@ -30,6 +30,7 @@ struct SweepOutcome {
   /// The stop flag was raised: members still in lanes were abandoned and members not yet
   /// started were skipped; their entries of results are default values, not results.
   bool interrupted = false;
+  std::vector<char> finished;  ///< finished[i]: results[i] holds a result (all 1 unless interrupted)
 };
 
 /// Called now and then with the number of members finished (never from two threads at once).

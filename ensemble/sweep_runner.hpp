@@ -24,6 +24,7 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const std::vector<Member>& 
                                  int threads, const SweepControl& control) {
   SweepOutcome outcome;
   outcome.results.resize(members.size());
+  outcome.finished.assign(members.size(), 0);
   auto& stats = outcome.statistics;
   stats.threads = threads;
   stats.lane_width = kernels::lane_width<typename Model::lane_type>;
@@ -45,6 +46,7 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const std::vector<Member>& 
       const auto at = std::lower_bound(members.begin(), members.end(), result.index,
                                        [](const Member& m, std::size_t index) { return m.index < index; });
       outcome.results[std::size_t(at - members.begin())] = std::move(result);
+      outcome.finished[std::size_t(at - members.begin())] = 1;
       const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
       if (control.progress && progress_lock.try_lock()) {
         control.progress(finished);

@@ -291,24 +291,43 @@ void ResultFile::write_sweep(const ensemble::Scene& scene, const std::vector<ens
   finish(outcome.statistics);
 }
 
+void ResultFile::write_part(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
+                            const std::vector<MemberResult>& results) const {
+  write_members(scene, members, results);
+  std::vector<std::int64_t> index;
+  for (const auto& m : members) index.push_back(std::int64_t(m.index));
+  file_.open_group("members").write("plan_index", index,
+                                    "the member's index in the whole plan (shard and partial files only)");
+}
+
 void ResultFile::write_shard(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
                              const ensemble::SweepOutcome& outcome, const ShardLabel& shard) const {
   file_.set_attribute("shard_index", std::int64_t(shard.index));
   file_.set_attribute("shard_count", std::int64_t(shard.count));
   file_.set_attribute("plan_members", std::int64_t(shard.plan_members));
-  write_members(scene, members, outcome.results);
-  std::vector<std::int64_t> index;
-  for (const auto& m : members) index.push_back(std::int64_t(m.index));
-  file_.open_group("members").write("plan_index", index,
-                                    "the member's index in the whole plan (shard files only)");
+  write_part(scene, members, outcome.results);
   finish(outcome.statistics);
 }
 
-void ResultFile::finish(const ensemble::SweepStatistics& statistics) const {
+void ResultFile::write_partial(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
+                               const std::vector<MemberResult>& results, std::size_t plan_members,
+                               const ensemble::SweepStatistics& statistics) const {
+  file_.set_attribute("members_done", std::int64_t(members.size()));
+  file_.set_attribute("plan_members", std::int64_t(plan_members));
+  write_part(scene, members, results);
+  write_statistics(statistics);
+  file_.flush();
+}
+
+void ResultFile::write_statistics(const ensemble::SweepStatistics& statistics) const {
   file_.set_attribute("wall_seconds", statistics.wall_seconds);
   file_.set_attribute("threads", std::int64_t(statistics.threads));
   file_.set_attribute("lane_width", std::int64_t(statistics.lane_width));
   file_.set_attribute("lane_occupancy", statistics.occupancy());
+}
+
+void ResultFile::finish(const ensemble::SweepStatistics& statistics) const {
+  write_statistics(statistics);
   file_.flush();
   file_.set_flag("complete", true);
   file_.flush();

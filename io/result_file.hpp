@@ -43,6 +43,11 @@ class ResultFile {
   /// attributes shard_index, shard_count, plan_members; no curves (`rotorsweep merge` makes them).
   void write_shard(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
                    const ensemble::SweepOutcome& outcome, const ShardLabel& shard) const;
+  /// The finished members of an interrupted run, laid out like a shard's, with the attributes
+  /// members_done and plan_members; complete stays FALSE (`run --resume` continues from it).
+  void write_partial(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
+                     const std::vector<ensemble::MemberResult>& results, std::size_t plan_members,
+                     const ensemble::SweepStatistics& statistics) const;
 
   void write_members(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
                      const std::vector<ensemble::MemberResult>& results) const;
@@ -56,6 +61,10 @@ class ResultFile {
 
  private:
   ResultFile(Hdf5Location file, const ensemble::Scene& scene, const Provenance& provenance);
+  /// /members of a part of the plan, with /members/plan_index.
+  void write_part(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
+                  const std::vector<ensemble::MemberResult>& results) const;
+  void write_statistics(const ensemble::SweepStatistics& statistics) const;
   Hdf5Location file_;
 };
 
