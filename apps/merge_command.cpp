@@ -26,21 +26,16 @@ struct ShardFile {
   double wall_seconds = 0, threads = 1, lane_width = 1, lane_occupancy = 0;
 };
 
-/// Thrown for shards that do not belong together (exit code 2).
-struct MismatchError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 ShardFile describe(const std::string& path, const io::Hdf5Location& file) {
   if (!file.has_attribute("shard_index") || !file.has("members"))
-    throw MismatchError("'" + path + "' is not a shard file (written by run --shard I/N)");
+    throw std::runtime_error("'" + path + "' is not a shard file (written by run --shard I/N)");
   if (!file.attribute_flag("complete"))
-    throw MismatchError("'" + path + "' is incomplete: its run did not finish; run that shard again");
+    throw std::runtime_error("'" + path + "' is incomplete: its run did not finish; run that shard again");
   ShardFile shard;
   shard.path = path;
   shard.scene_text = file.attribute_string("scene");
   shard.scene_path = file.attribute_string("scene_path");
-  shard.version = file.attribute_string("version") + " (revision " + file.attribute_string("revision") + ")";
+  shard.version = io::written_by(file);
   shard.index = std::size_t(file.attribute_double("shard_index"));
   shard.count = std::size_t(file.attribute_double("shard_count"));
   shard.plan_members = std::size_t(file.attribute_double("plan_members"));
@@ -53,8 +48,8 @@ ShardFile describe(const std::string& path, const io::Hdf5Location& file) {
 
 void check_same_plan(const ShardFile& first, const ShardFile& other) {
   const auto differ = [&](const std::string& what) {
-    throw MismatchError("'" + other.path + "' and '" + first.path + "' differ in their " + what +
-                        ": they are not shards of one run");
+    throw std::runtime_error("'" + other.path + "' and '" + first.path + "' differ in their " + what +
+                             ": they are not shards of one run");
   };
   if (other.scene_text != first.scene_text) differ("scene");
   if (other.version != first.version) differ("program version");
@@ -80,23 +75,23 @@ int run_merge(const MergeOptions& options) {
         scene = io::parse_scene_text(shard.scene_text, shard.scene_path);
         plan = ensemble::plan_members(scene);
         if (plan.size() != shard.plan_members)
-          throw MismatchError("'" + path + "': its plan size does not match its scene");
-        const std::string ours = std::string(version) + " (revision " + revision + ")";
-        if (shard.version != ours)
-          throw MismatchError("'" + path + "' was written by rotorsweep " + shard.version + ", this is " +
-                              ours + ": merge with the program that ran the shards");
+          throw std::runtime_error("'" + path + "': its plan size does not match its scene");
+        if (shard.version != program_identity())
+          throw std::runtime_error("'" + path + "' was written by rotorsweep " + shard.version +
+                                   ", this is " + program_identity() +
+                                   ": merge with the program that ran the shards");
         outcome.results.resize(plan.size());
         covered.assign(plan.size(), false);
       }
       check_same_plan(*first, shard);
       if (const auto [at, fresh] = seen.emplace(shard.index, path); !fresh)
-        throw MismatchError("'" + path + "' and '" + at->second + "' are both shard " +
-                            std::to_string(shard.index) + "/" + std::to_string(shard.count));
+        throw std::runtime_error("'" + path + "' and '" + at->second + "' are both shard " +
+                                 std::to_string(shard.index) + "/" + std::to_string(shard.count));
       auto stored = io::read_member_results(file, scene, plan);
       for (std::size_t i = 0; i < stored.plan_index.size(); ++i) {
         const std::size_t m = stored.plan_index[i];
         if (covered[m])
-          throw MismatchError("member " + std::to_string(m) + " is in two shards ('" + path + "')");
+          throw std::runtime_error("member " + std::to_string(m) + " is in two shards ('" + path + "')");
         covered[m] = true;
         outcome.results[m] = std::move(stored.results[i]);
       }
@@ -110,16 +105,13 @@ int run_merge(const MergeOptions& options) {
     for (std::size_t i = 1; i <= first->count; ++i)
       if (!seen.count(i)) missing += (missing.empty() ? "" : ", ") + std::to_string(i);
     if (!missing.empty())
-      throw MismatchError("shard" + std::string(missing.find(',') == std::string::npos ? " " : "s ") +
-                          missing + " of " + std::to_string(first->count) + " missing");
+      throw std::runtime_error("shard" + std::string(missing.find(',') == std::string::npos ? " " : "s ") +
+                               missing + " of " + std::to_string(first->count) + " missing");
     for (std::size_t m = 0; m < plan.size(); ++m)
-      if (!covered[m]) throw MismatchError("member " + std::to_string(m) + " is in no shard");
+      if (!covered[m]) throw std::runtime_error("member " + std::to_string(m) + " is in no shard");
     outcome.statistics.lane_steps_busy = busy;
     outcome.statistics.lane_steps_total = double(plan.size());
-  } catch (const MismatchError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
+  } catch (const std::exception& e) {  // shards that do not make one plan, or unreadable ones
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }

@@ -121,30 +121,23 @@ class StopOnSignals {
   void (*previous_term_)(int) = SIG_DFL;
 };
 
-/// A partial file that does not belong to this run (exit code 2; the file is left as it is).
-struct ResumeError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 /// The members an interrupted run left in `partial`, put at their positions in `plan`; the
 /// partial file must come from the same scene text and the same program.
 double read_partial(const std::string& partial, const ensemble::Scene& scene,
                     const std::vector<ensemble::Member>& plan, std::vector<ensemble::MemberResult>& results,
                     std::vector<char>& done) {
   if (!std::filesystem::exists(partial))
-    throw ResumeError("--resume: there is no '" + partial + "' to resume (an interrupted run leaves it)");
+    throw std::runtime_error("--resume: there is no '" + partial +
+                             "' to resume (an interrupted run leaves it)");
   const auto file = io::Hdf5Location::open_file(partial);
   if (!file.has_attribute("members_done") || file.attribute_flag("complete"))
-    throw ResumeError("--resume: '" + partial + "' is not the partial file of an interrupted run");
+    throw std::runtime_error("--resume: '" + partial + "' is not the partial file of an interrupted run");
   if (file.attribute_string("scene") != scene.text)
-    throw ResumeError("--resume: '" + partial +
-                      "' was made from a different scene; run without --resume to start afresh");
-  const std::string ours = std::string(version) + " (revision " + revision + ")";
-  const std::string theirs =
-      file.attribute_string("version") + " (revision " + file.attribute_string("revision") + ")";
-  if (theirs != ours)
-    throw ResumeError("--resume: '" + partial + "' was written by rotorsweep " + theirs + ", this is " +
-                      ours);
+    throw std::runtime_error("--resume: '" + partial +
+                             "' was made from a different scene; run without --resume to start afresh");
+  if (io::written_by(file) != program_identity())
+    throw std::runtime_error("--resume: '" + partial + "' was written by rotorsweep " + io::written_by(file) +
+                             ", this is " + program_identity());
   auto stored = io::read_member_results(file, scene, plan);
   for (std::size_t i = 0; i < stored.plan_index.size(); ++i) {
     results[stored.plan_index[i]] = std::move(stored.results[i]);

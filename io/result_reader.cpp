@@ -2,7 +2,7 @@
 // column, the schedule counters, final angles, final-state classification and period series.
 #include "io/result_reader.hpp"
 
-#include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +24,14 @@ ensemble::Regime regime_from(const std::string& name) {
     if (ensemble::regime_name(r) == name) return r;
   throw std::runtime_error("unknown regime '" + name + "' in /members/regime");
 }
+
+}  // namespace
+
+std::string written_by(const Hdf5Location& file) {
+  return file.attribute_string("version") + " (revision " + file.attribute_string("revision") + ")";
+}
+
+namespace {
 
 /// A (members × width) dataset's rows, checked against the member count.
 struct Matrix {
@@ -47,7 +55,8 @@ StoredMembers read_member_results(const Hdf5Location& file, const ensemble::Scen
                                   const std::vector<ensemble::Member>& plan) {
   const auto group = file.open_group("members");
   StoredMembers stored;
-  const std::size_t count = group.read_strings("status").size();
+  const auto status = group.read_strings("status");
+  const std::size_t count = status.size();
   if (group.has("plan_index")) {
     for (auto i : group.read_integers("plan_index")) {
       if (i < 0 || std::size_t(i) >= plan.size())
@@ -62,7 +71,6 @@ StoredMembers read_member_results(const Hdf5Location& file, const ensemble::Scen
   auto& results = stored.results;
   results.resize(count);
 
-  const auto status = group.read_strings("status");
   const auto attractor = group.read_strings("attractor");
   const auto settled = group.read_integers("settled");
   const auto periods_run = group.read_integers("periods_run");

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "ensemble/member_plan.hpp"
@@ -11,6 +12,9 @@
 #include "io/hdf5_file.hpp"
 
 namespace rotorsweep::io {
+
+/// "<version> (revision <revision>)" of the program that wrote `file`.
+std::string written_by(const Hdf5Location& file);
 
 struct StoredMembers {
   std::vector<std::size_t> plan_index;          ///< the plan member of each result

@@ -1,10 +1,7 @@
 // Interrupting `rotorsweep run` (SIGINT, SIGTERM) and `--resume`: exit codes 130 and 143, the
 // finished members kept in OUT.partial, resumed twice to a file whose datasets equal an
 // uninterrupted run's byte for byte; a changed scene or a missing partial file is exit code 2.
-#include <sys/wait.h>
-
 #include <catch2/catch.hpp>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -26,20 +23,6 @@ const char* long_scene =
     "[initial]\nkinds = [\"AFM\", \"random\"]\nreplicas = 5\n[schedule]\nrelax_periods = 10\naverage_periods "
     "= 10\n";
 
-/// Runs the executable with `arguments` in the background, sends `signal` after 0.5 s, and returns
-/// its exit code and output.
-CliResult run_and_signal(const std::string& arguments, const char* signal, const fs::path& dir) {
-  const auto log = dir / "signalled-output.txt";
-  const std::string command = std::string(ROTORSWEEP_EXECUTABLE) + " " + arguments + " > '" + log.string() +
-                              "' 2>&1 & pid=$!; sleep 0.5; kill -" + signal + " $pid; wait $pid";
-  const int status = std::system(command.c_str());
-  CliResult result;
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(log);
-  result.output.assign(std::istreambuf_iterator<char>(in), {});
-  return result;
-}
-
 std::string bytes_of(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
@@ -59,7 +42,7 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
 
   CHECK(run_cli(base + " --resume", dir).exit_code == 2);  // nothing to resume yet
 
-  const auto first = run_and_signal(base, "INT", dir);
+  const auto first = run_cli_signalled(base, dir, "INT", "0.5");
   INFO(first.output);
   REQUIRE(first.exit_code == 130);
   CHECK_THAT(first.output, Catch::Contains("stopped by SIGINT") && Catch::Contains("--resume"));
@@ -82,7 +65,7 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
   CHECK(bytes_of(partial) == before);
   write_text(scene, long_scene);
 
-  const auto second = run_and_signal(base + " --resume", "TERM", dir);
+  const auto second = run_cli_signalled(base + " --resume", dir, "TERM", "0.5");
   INFO(second.output);
   REQUIRE(second.exit_code == 143);
   CHECK_THAT(second.output, Catch::Contains("resuming from") && Catch::Contains("stopped by SIGTERM"));

@@ -1,5 +1,5 @@
 // Test support: runs the rotorsweep executable with arguments and returns its exit code and
-// everything it printed (stdout and stderr together).
+// everything it printed (stdout and stderr together), also when it is sent a signal mid-run.
 #pragma once
 
 #include <sys/wait.h>
@@ -17,18 +17,37 @@ struct CliResult {
   std::string output;
 };
 
-/// `shell_prefix` runs first in the same shell (e.g. "ulimit -f 64; " to limit the file size).
-inline CliResult run_cli(const std::string& arguments, const std::filesystem::path& scratch,
-                         const std::string& shell_prefix = "") {
-  const auto log = scratch / "cli-output.txt";
-  const std::string command = "(" + shell_prefix + std::string(ROTORSWEEP_EXECUTABLE) + " " + arguments +
-                              ") > '" + log.string() + "' 2>&1";
+namespace detail {
+
+/// Runs a shell command that writes to `log` and returns its exit code and the log's text.
+inline CliResult run_logged(const std::string& command, const std::filesystem::path& log) {
   const int status = std::system(command.c_str());
   CliResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::ifstream in(log);
   result.output.assign(std::istreambuf_iterator<char>(in), {});
   return result;
+}
+
+}  // namespace detail
+
+/// `shell_prefix` runs first in the same shell (e.g. "ulimit -f 64; " to limit the file size).
+inline CliResult run_cli(const std::string& arguments, const std::filesystem::path& scratch,
+                         const std::string& shell_prefix = "") {
+  const auto log = scratch / "cli-output.txt";
+  return detail::run_logged("(" + shell_prefix + std::string(ROTORSWEEP_EXECUTABLE) + " " + arguments +
+                                ") > '" + log.string() + "' 2>&1",
+                            log);
+}
+
+/// Runs the executable in the background and sends it `signal` ("INT", "TERM") after `delay`
+/// (a sleep(1) argument, e.g. "0.5"); the exit code is the process's own.
+inline CliResult run_cli_signalled(const std::string& arguments, const std::filesystem::path& scratch,
+                                   const std::string& signal, const std::string& delay) {
+  const auto log = scratch / "cli-output.txt";
+  return detail::run_logged(std::string(ROTORSWEEP_EXECUTABLE) + " " + arguments + " > '" + log.string() +
+                                "' 2>&1 & pid=$!; sleep " + delay + "; kill -" + signal + " $pid; wait $pid",
+                            log);
 }
 
 }  // namespace rotorsweep::testing
