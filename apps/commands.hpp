@@ -2,6 +2,7 @@
 // Each returns the process exit code.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -22,12 +23,14 @@ int run_bench_kernels(const BenchKernelOptions& options);
 
 struct RunOptions {
   std::string scene;
-  std::string output;   ///< overrides the scene's output.path
-  int threads = 0;      ///< 0: OpenMP's default
-  bool quiet = false;   ///< no progress line
-  bool force = false;   ///< replace an existing file that is not an HDF5 file
-  std::string shard;    ///< "I/N": run part I of N of the plan (ensemble::shard_members)
-  bool resume = false;  ///< continue from OUTPUT.partial, left by an interrupted run
+  std::string output;                ///< overrides the scene's output.path
+  int threads = 0;                   ///< 0: OpenMP's default
+  bool quiet = false;                ///< no progress line
+  bool force = false;                ///< replace an existing file that is not an HDF5 file
+  std::string shard;                 ///< "I/N": run part I of N of the plan (ensemble::shard_members)
+  bool resume = false;               ///< continue from OUTPUT.partial, left by an interrupted run
+  double flush_seconds = 5;          ///< finished members go to the file at least this often ...
+  std::size_t flush_members = 4096;  ///< ... and whenever this many are waiting
 };
 int run_sweep_command(const RunOptions& options);
 

@@ -63,12 +63,25 @@ int run_info(const InfoOptions& options) {
     }
     if (!file.has("members")) return complete ? 0 : 1;
     const auto members = file.open_group("members");
-    const auto A = members.read_doubles("A");
-    std::printf("%-12s %zu\n", "members", A.size());
-    if (file.has_attribute("members_done"))
-      std::printf("%-12s %lld of %lld members done by an interrupted run (continue it with run --resume)\n",
-                  "partial", (long long)file.attribute_double("members_done"),
-                  (long long)file.attribute_double("plan_members"));
+    // rows not marked done (an unfinished run's) hold nothing yet: leave them out of every count
+    std::vector<char> done;
+    if (members.has("done"))
+      for (auto flag : members.read_flags("done")) done.push_back(char(flag));
+    std::size_t done_count = 0;
+    for (char d : done) done_count += d != 0;
+    const auto kept = [&](auto values) {
+      if (done.empty()) return values;
+      decltype(values) out;
+      for (std::size_t i = 0; i < values.size(); ++i)
+        if (done[i]) out.push_back(values[i]);
+      return out;
+    };
+    const auto A = kept(members.read_doubles("A"));
+    std::printf("%-12s %zu\n", "members", done.empty() ? A.size() : done.size());
+    if (!complete && !done.empty())
+      std::printf(
+          "%-12s %zu of %zu members done by a run that stopped early (continue it with run --resume)\n",
+          "partial", done_count, done.size());
     if (file.has_attribute("shard_index"))
       std::printf("%-12s %lld/%lld of a plan of %lld members (join the shards with rotorsweep merge)\n",
                   "shard", (long long)file.attribute_double("shard_index"),
@@ -80,17 +93,17 @@ int run_info(const InfoOptions& options) {
                   (long long)file.attribute_double("threads"), (long long)file.attribute_double("lane_width"),
                   double(A.size()) / file.attribute_double("wall_seconds"),
                   100 * file.attribute_double("lane_occupancy"));
-    const auto rows = members.read_integers("rows");
+    const auto rows = kept(members.read_integers("rows"));
     print_range("rows N", std::vector<double>(rows.begin(), rows.end()));
-    if (members.has("rtol")) print_range("rtol", members.read_doubles("rtol"));
+    if (members.has("rtol")) print_range("rtol", kept(members.read_doubles("rtol")));
     print_range("A", A);
-    print_range("g", members.read_doubles("g"));
-    print_counts("initial", members.read_strings("ic"));
-    print_counts("status", members.read_strings("status"));
-    if (members.has("regime")) print_counts("regime", members.read_strings("regime"));
-    if (members.has("attractor")) print_counts("attractor", members.read_strings("attractor"));
+    print_range("g", kept(members.read_doubles("g")));
+    print_counts("initial", kept(members.read_strings("ic")));
+    print_counts("status", kept(members.read_strings("status")));
+    if (members.has("regime")) print_counts("regime", kept(members.read_strings("regime")));
+    if (members.has("attractor")) print_counts("attractor", kept(members.read_strings("attractor")));
     if (members.has("dissipation")) {
-      const auto D = members.read_doubles("dissipation");
+      const auto D = kept(members.read_doubles("dissipation"));
       std::vector<double> finite, per_row;
       for (std::size_t i = 0; i < D.size(); ++i)
         if (std::isfinite(D[i])) {
@@ -105,8 +118,8 @@ int run_info(const InfoOptions& options) {
                     *std::max_element(per_row.begin(), per_row.end()));
     }
     if (members.has("dissipation_resolved")) {
-      const auto resolved = members.read_integers("dissipation_resolved");
-      const auto status = members.read_strings("status");
+      const auto resolved = kept(members.read_integers("dissipation_resolved"));
+      const auto status = kept(members.read_strings("status"));
       std::size_t unresolved = 0;
       for (std::size_t i = 0; i < resolved.size(); ++i) unresolved += status[i] == "ok" && !resolved[i];
       if (unresolved > 0)

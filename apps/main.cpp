@@ -42,10 +42,20 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::Range(1, 4096));
   run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
-  run_cmd->add_flag("--force", run.force, "Replace an existing output file even if it is not an HDF5 file");
-  run_cmd->add_flag(
-      "--resume", run.resume,
-      "Continue the run that SIGINT/SIGTERM interrupted (from OUT.h5.partial): same scene, same program");
+  run_cmd->add_flag("--force", run.force,
+                    "Replace an existing output file even if it is not an HDF5 file, or a partial file");
+  run_cmd->add_flag("--resume", run.resume,
+                    "Continue the run that stopped early (from OUT.h5.partial): same scene, same program");
+  run_cmd
+      ->add_option("--flush-seconds", run.flush_seconds,
+                   "Write finished members to the file at least this often (seconds)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  run_cmd
+      ->add_option("--flush-members", run.flush_members,
+                   "... and whenever this many finished members are waiting")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 30))
+      ->capture_default_str();
   run_cmd->add_option("--shard", run.shard,
                       "Run part I of N of the plan (I/N; members I-1, I-1+N, ...); `merge` joins the parts");
 

@@ -58,14 +58,17 @@ void check_same_plan(const ShardFile& first, const ShardFile& other) {
 
 }  // namespace
 
+/// Members copied at a time.
+constexpr std::size_t block_members = 4096;
+
 int run_merge(const MergeOptions& options) {
+  // first pass: the shards' attributes and plan indices, checked to make one plan exactly once
   ensemble::Scene scene;
-  std::vector<ensemble::Member> plan;
-  ensemble::SweepOutcome outcome;
   std::optional<ShardFile> first;
+  ensemble::SweepStatistics stats;
   try {
     std::map<std::size_t, std::string> seen;  // shard index → file
-    std::vector<bool> covered;
+    std::vector<char> covered;
     double busy = 0;
     for (const auto& path : options.shards) {
       const auto file = io::Hdf5Location::open_file(path);
@@ -73,33 +76,33 @@ int run_merge(const MergeOptions& options) {
       if (!first) {
         first = shard;
         scene = io::parse_scene_text(shard.scene_text, shard.scene_path);
-        plan = ensemble::plan_members(scene);
-        if (plan.size() != shard.plan_members)
+        if (scene.member_count() != shard.plan_members)
           throw std::runtime_error("'" + path + "': its plan size does not match its scene");
         if (shard.version != program_identity())
           throw std::runtime_error("'" + path + "' was written by rotorsweep " + shard.version +
                                    ", this is " + program_identity() +
                                    ": merge with the program that ran the shards");
-        outcome.results.resize(plan.size());
-        covered.assign(plan.size(), false);
+        covered.assign(scene.member_count(), 0);
       }
       check_same_plan(*first, shard);
       if (const auto [at, fresh] = seen.emplace(shard.index, path); !fresh)
         throw std::runtime_error("'" + path + "' and '" + at->second + "' are both shard " +
                                  std::to_string(shard.index) + "/" + std::to_string(shard.count));
-      auto stored = io::read_member_results(file, scene, plan);
-      for (std::size_t i = 0; i < stored.plan_index.size(); ++i) {
-        const std::size_t m = stored.plan_index[i];
-        if (covered[m])
-          throw std::runtime_error("member " + std::to_string(m) + " is in two shards ('" + path + "')");
-        covered[m] = true;
-        outcome.results[m] = std::move(stored.results[i]);
-      }
-      auto& stats = outcome.statistics;
+      const auto members = file.open_group("members");
+      const std::size_t rows = io::member_rows(file);
+      for (std::size_t row = 0; row < rows; row += block_members)
+        for (const auto i :
+             members.read_rows_integers("plan_index", row, std::min(block_members, rows - row))) {
+          if (i < 0 || std::size_t(i) >= covered.size())
+            throw std::runtime_error("'" + path + "': /members/plan_index is outside the plan");
+          if (covered[std::size_t(i)])
+            throw std::runtime_error("member " + std::to_string(i) + " is in two shards ('" + path + "')");
+          covered[std::size_t(i)] = 1;
+        }
       stats.wall_seconds += shard.wall_seconds;
       stats.threads = std::max(stats.threads, int(shard.threads));
       stats.lane_width = std::size_t(shard.lane_width);
-      busy += shard.lane_occupancy * double(stored.plan_index.size());
+      busy += shard.lane_occupancy * double(rows);
     }
     std::string missing;
     for (std::size_t i = 1; i <= first->count; ++i)
@@ -107,10 +110,10 @@ int run_merge(const MergeOptions& options) {
     if (!missing.empty())
       throw std::runtime_error("shard" + std::string(missing.find(',') == std::string::npos ? " " : "s ") +
                                missing + " of " + std::to_string(first->count) + " missing");
-    for (std::size_t m = 0; m < plan.size(); ++m)
+    for (std::size_t m = 0; m < covered.size(); ++m)
       if (!covered[m]) throw std::runtime_error("member " + std::to_string(m) + " is in no shard");
-    outcome.statistics.lane_steps_busy = busy;
-    outcome.statistics.lane_steps_total = double(plan.size());
+    stats.lane_steps_busy = busy;
+    stats.lane_steps_total = double(covered.size());
   } catch (const std::exception& e) {  // shards that do not make one plan, or unreadable ones
     std::cerr << "error: " << e.what() << "\n";
     return 2;
@@ -123,18 +126,27 @@ int run_merge(const MergeOptions& options) {
     std::cerr << "error: " << e.what() << " (-o)\n";
     return 2;
   }
+  // second pass: the shards' rows, a block at a time, into their plan rows of the output
   try {
-    io::ResultFile file(target->temporary(), scene, io::Provenance{first->scene_path, version, revision});
-    file.write_sweep(scene, plan, outcome);
-    file.close();
+    const ensemble::MemberPlan plan(scene);
+    io::ResultFile out(target->temporary(), scene, io::Provenance{first->scene_path, version, revision});
+    for (const auto& path : options.shards) {
+      const auto file = io::Hdf5Location::open_file(path);
+      const std::size_t rows = io::member_rows(file);
+      for (std::size_t row = 0; row < rows; row += block_members)
+        out.write_results(plan,
+                          io::read_member_rows(file, scene, plan, row, std::min(block_members, rows - row)));
+    }
+    out.finish(stats);
+    out.close();
     target->commit();
   } catch (const std::exception& e) {
     std::cerr << "error: writing " << options.output << " failed: " << e.what() << "; "
               << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";
     return 1;
   }
-  std::fprintf(stderr, "wrote %s: %zu members from %zu shards\n", options.output.c_str(), plan.size(),
-               options.shards.size());
+  std::fprintf(stderr, "wrote %s: %zu members from %zu shards\n", options.output.c_str(),
+               scene.member_count(), options.shards.size());
   return 0;
 }
 

@@ -1,7 +1,6 @@
-// `rotorsweep run SCENE.toml`: validate the scene, plan its members, sweep them on lane
-// blocks, and write the HDF5 result file (complete = TRUE only once everything is in).
+// `rotorsweep run SCENE.toml`: validate the scene, plan its members, sweep them on lane blocks
+// streaming finished members into OUT.h5.partial, and put the complete file in place at the end.
 #include <omp.h>
-#include <unistd.h>
 
 #include <atomic>
 #include <csignal>
@@ -15,6 +14,7 @@
 #include "commands.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/sweep.hpp"
+#include "io/member_stream.hpp"
 #include "io/output_target.hpp"
 #include "io/result_file.hpp"
 #include "io/result_reader.hpp"
@@ -54,34 +54,29 @@ std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t p
   return io::ShardLabel{index, count, plan_members};
 }
 
-void report_failures(const std::vector<ensemble::MemberResult>& results) {
-  std::map<std::string_view, std::size_t> failures;
-  for (const auto& r : results)
-    if (r.status != kernels::LaneStatus::ok) ++failures[kernels::status_name(r.status)];
-  if (failures.empty()) return;
-  std::fprintf(stderr, "warning: members that did not finish (their observables are NaN):");
-  for (const auto& [name, count] : failures) std::fprintf(stderr, " %s %zu", name.data(), count);
-  std::fprintf(stderr, "; see /members/status\n");
-}
-
-/// Whether the plan's results fit in this machine's memory; says how much it needs when not.
-bool fits_in_memory(const ensemble::Scene& scene) {
-  const double needed = ensemble::plan_memory_bytes(scene);
-  const double available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-  if (available <= 0 || needed <= 0.8 * available) return true;
-  std::fprintf(stderr,
-               "error: the plan's %.3g members need about %.3g GiB of memory for their results; this machine "
-               "has %.3g GiB. Split the sweep (fewer A, g, replicas per scene)%s.\n",
-               double(scene.member_count()), needed / 0x1p30, available / 0x1p30,
-               scene.period_series ? " or switch off observables.period_series" : "");
-  return false;
-}
-
-void report_unresolved(const ensemble::Scene& scene, const std::vector<ensemble::MemberResult>& results) {
-  if (!scene.has(ensemble::Observable::dissipation)) return;
+/// Members that did not finish, by status, and finished members whose D is not resolved, read from
+/// the written file a block at a time.
+void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene) {
+  const auto members = file.open_group("members");
+  const std::size_t rows = members.shape("status").first, block = 1 << 16;
+  const bool dissipation = members.has("dissipation_resolved");
+  std::map<std::string, std::size_t> failures;
   std::size_t unresolved = 0;
-  for (const auto& r : results)
-    unresolved += r.status == kernels::LaneStatus::ok && !r.dissipation_resolved();
+  for (std::size_t first = 0; first < rows; first += block) {
+    const std::size_t count = std::min(block, rows - first);
+    const auto status = members.read_rows_strings("status", first, count);
+    const auto resolved = dissipation ? members.read_rows_integers("dissipation_resolved", first, count)
+                                      : std::vector<std::int64_t>(count, 1);
+    for (std::size_t i = 0; i < count; ++i) {
+      if (status[i] != "ok") ++failures[status[i]];
+      unresolved += status[i] == "ok" && resolved[i] == 0;
+    }
+  }
+  if (!failures.empty()) {
+    std::fprintf(stderr, "warning: members that did not finish (their observables are NaN):");
+    for (const auto& [name, count] : failures) std::fprintf(stderr, " %s %zu", name.c_str(), count);
+    std::fprintf(stderr, "; see /members/status\n");
+  }
   if (unresolved > 0)
     std::fprintf(stderr,
                  "warning: %zu members whose D is not resolved (dissipation_error >= 0.1 |D|); %s; see "
@@ -108,6 +103,8 @@ class StopOnSignals {
   StopOnSignals(const StopOnSignals&) = delete;
   StopOnSignals& operator=(const StopOnSignals&) = delete;
   const std::atomic<bool>* flag() const { return &stop_; }
+  /// Stops the sweep as a signal would, for another reason (signal() stays 0).
+  void stop() const { stop_ = true; }
   int signal() const { return signal_; }
 
  private:
@@ -121,117 +118,57 @@ class StopOnSignals {
   void (*previous_term_)(int) = SIG_DFL;
 };
 
-/// The members an interrupted run left in `partial`, put at their positions in `plan`; the
-/// partial file must come from the same scene text and the same program.
-double read_partial(const std::string& partial, const ensemble::Scene& scene,
-                    const std::vector<ensemble::Member>& plan, std::vector<ensemble::MemberResult>& results,
-                    std::vector<char>& done) {
+/// Checks that `partial` is an unfinished file of this scene, shard and program, and returns its
+/// done mask and the wall time spent on it so far.
+std::vector<char> check_partial(const std::string& partial, const ensemble::Scene& scene,
+                                const std::optional<io::ShardLabel>& shard, double& earlier_seconds) {
   if (!std::filesystem::exists(partial))
     throw std::runtime_error("--resume: there is no '" + partial +
-                             "' to resume (an interrupted run leaves it)");
+                             "' to resume (a run that stops early leaves it)");
   const auto file = io::Hdf5Location::open_file(partial);
-  if (!file.has_attribute("members_done") || file.attribute_flag("complete"))
-    throw std::runtime_error("--resume: '" + partial + "' is not the partial file of an interrupted run");
+  if (!file.has("members") || !file.open_group("members").has("done") || file.attribute_flag("complete"))
+    throw std::runtime_error("--resume: '" + partial + "' is not the partial file of an unfinished run");
   if (file.attribute_string("scene") != scene.text)
     throw std::runtime_error("--resume: '" + partial +
                              "' was made from a different scene; run without --resume to start afresh");
   if (io::written_by(file) != program_identity())
     throw std::runtime_error("--resume: '" + partial + "' was written by rotorsweep " + io::written_by(file) +
                              ", this is " + program_identity());
-  auto stored = io::read_member_results(file, scene, plan);
-  for (std::size_t i = 0; i < stored.plan_index.size(); ++i) {
-    results[stored.plan_index[i]] = std::move(stored.results[i]);
-    done[stored.plan_index[i]] = 1;
-  }
-  return file.attribute_double("wall_seconds");
+  const auto part = [](std::size_t index, std::size_t count) {
+    return std::to_string(index) + "/" + std::to_string(count);
+  };
+  const std::string theirs = file.has_attribute("shard_index")
+                                 ? part(std::size_t(file.attribute_double("shard_index")),
+                                        std::size_t(file.attribute_double("shard_count")))
+                                 : "";
+  const std::string ours = shard ? part(shard->index, shard->count) : "";
+  if (theirs != ours)
+    throw std::runtime_error("--resume: '" + partial + "' holds " +
+                             (theirs.empty() ? "the whole plan" : "shard " + theirs) + ", not " +
+                             (ours.empty() ? "the whole plan" : "shard " + ours));
+  earlier_seconds = file.has_attribute("wall_seconds") ? file.attribute_double("wall_seconds") : 0.0;
+  return io::read_done(file);
 }
 
-/// After SIGINT or SIGTERM: the finished members go to `partial` (replacing an older one), and
-/// the exit code is 128 + the signal's number.
-int keep_partial(const ensemble::Scene& scene, const RunOptions& options,
-                 const std::vector<ensemble::Member>& members, const ensemble::SweepOutcome& outcome,
-                 const std::vector<char>& done, const std::string& partial, int signal_number) {
-  std::vector<ensemble::Member> kept;
-  std::vector<ensemble::MemberResult> kept_results;
-  for (std::size_t i = 0; i < members.size(); ++i)
-    if (done[i]) {
-      kept.push_back(members[i]);
-      kept_results.push_back(outcome.results[i]);
-    }
-  const char* name = signal_number == SIGTERM ? "SIGTERM" : "SIGINT";
-  try {
-    io::OutputTarget target(partial, {options.scene}, io::Replaceable::hdf5, true);
-    io::ResultFile file(target.temporary(), scene, io::Provenance{options.scene, version, revision});
-    file.write_partial(scene, kept, kept_results, members.size(), outcome.statistics);
-    file.close();
-    target.commit();
-  } catch (const std::exception& e) {
-    std::cerr << "\nstopped by " << name << "; keeping the finished members failed: " << e.what() << "\n";
-    return 128 + (signal_number ? signal_number : SIGINT);
-  }
-  std::fprintf(stderr,
-               "\nstopped by %s: %zu of %zu members done, kept in %s (not a result: complete = FALSE).\n"
-               "resume with: rotorsweep run %s%s%s --resume\n",
-               name, kept.size(), members.size(), partial.c_str(), options.scene.c_str(),
-               options.output.empty() ? "" : " -o ", options.output.c_str());
-  return 128 + (signal_number ? signal_number : SIGINT);
+/// Whether the file fits on its disk (its columns are allocated up front); says how much it needs when not.
+bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, const std::string& partial) {
+  const double needed = double(rows) * io::member_row_bytes(io::member_columns(scene));
+  std::error_code error;
+  auto directory = std::filesystem::absolute(partial, error).parent_path();
+  const auto space = std::filesystem::space(directory, error);
+  if (error || needed <= 0.95 * double(space.available)) return true;
+  std::fprintf(
+      stderr,
+      "error: the plan's %.3g members need about %.3g GiB on disk for their results; %s has %.3g GiB "
+      "free. Split the sweep (fewer A, g, replicas per scene, or --shard)%s.\n",
+      double(rows), needed / 0x1p30, directory.c_str(), double(space.available) / 0x1p30,
+      scene.period_series ? " or switch off observables.period_series" : "");
+  return false;
 }
 
-}  // namespace
-
-int run_sweep_command(const RunOptions& options) {
-  ensemble::Scene scene;
-  try {
-    scene = io::parse_scene_file(options.scene);
-  } catch (const io::SceneError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
-  }
-  if (!fits_in_memory(scene)) return 2;
-  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  std::optional<io::ShardLabel> shard;
-  try {
-    shard = parse_shard(options.shard, scene.member_count());
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
-  }
-
-  if (shard && options.resume) {
-    std::cerr << "error: --resume continues a whole run; an interrupted shard is run again (--shard without "
-                 "--resume)\n";
-    return 2;
-  }
-  const std::string path = output_path(options, scene, shard);
-  const std::string partial = path + ".partial";
-  const auto members =
-      shard ? ensemble::shard_members(ensemble::plan_members(scene), shard->index, shard->count)
-            : ensemble::plan_members(scene);
-  std::vector<ensemble::MemberResult> results(members.size());
-  std::vector<char> done(members.size(), 0);
-  double earlier_seconds = 0;
-  if (options.resume) {
-    try {
-      earlier_seconds = read_partial(partial, scene, members, results, done);
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      return 2;
-    }
-  }
-  std::vector<ensemble::Member> to_run;
-  for (std::size_t i = 0; i < members.size(); ++i)
-    if (!done[i]) to_run.push_back(members[i]);
-
-  std::optional<io::OutputTarget> target;
-  std::optional<io::ResultFile> file;
-  try {
-    target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force);
-    file.emplace(target->temporary(), scene, io::Provenance{options.scene, version, revision});
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << " (-o or output.path)\n";
-    return 2;
-  }
-
+/// The one-line description of the run on stderr.
+void print_header(const RunOptions& options, const ensemble::Scene& scene, std::size_t members, int threads,
+                  const std::optional<io::ShardLabel>& shard) {
   const std::size_t lanes =
       scene.lanes == ensemble::LaneKind::simd ? kernels::lane_width<kernels::simd_lane> : 1;
   std::string rows, tolerances;
@@ -250,57 +187,168 @@ int run_sweep_command(const RunOptions& options) {
                  shard->index - 1 + 2 * shard->count, shard->plan_members);
   std::fprintf(stderr,
                "rotorsweep run %s: %zu members (%zu N × %zu rtol × %zu A × %zu g × %zu noise × %zu offset × "
-               "%zu kinds × %d "
-               "replicas), "
-               "N = %s, %s rtol %s, %d threads × %zu lanes\n",
-               options.scene.c_str(), members.size(), scene.row_counts.size(), scene.rtol_values.size(),
+               "%zu kinds × %d replicas), N = %s, %s rtol %s, %d threads × %zu lanes\n",
+               options.scene.c_str(), members, scene.row_counts.size(), scene.rtol_values.size(),
                scene.A_values.size(), scene.g_values.size(), scene.noise_values.size(),
                scene.offset_values.size(), scene.kinds.size(), scene.replicas, rows.c_str(),
                kernels::stepper_names[std::size_t(scene.stepper)].data(), tolerances.c_str(), threads, lanes);
+}
+
+std::string resume_command(const RunOptions& options) {
+  std::string command = "rotorsweep run " + options.scene;
+  if (!options.output.empty()) command += " -o " + options.output;
+  if (!options.shard.empty()) command += " --shard " + options.shard;
+  return command + " --resume";
+}
+
+}  // namespace
+
+int run_sweep_command(const RunOptions& options) {
+  ensemble::Scene scene;
+  try {
+    scene = io::parse_scene_file(options.scene);
+  } catch (const io::SceneError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  std::optional<io::ShardLabel> shard;
+  try {
+    shard = parse_shard(options.shard, scene.member_count());
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+  const std::string path = output_path(options, scene, shard);
+  std::optional<io::OutputTarget> target;
+  try {
+    target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force, true);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << " (-o or output.path)\n";
+    return 2;
+  }
+  const std::string partial = target->temporary();
+  if (!options.resume && !options.force && std::filesystem::exists(partial)) {
+    std::cerr
+        << "error: " << partial
+        << " holds the finished members of an earlier run that stopped early: continue it with --resume, "
+           "or start afresh with --force\n";
+    target->keep();
+    return 2;
+  }
+
+  if (!options.resume &&
+      !fits_on_disk(
+          scene,
+          shard ? (scene.member_count() + shard->count - shard->index) / shard->count : scene.member_count(),
+          partial))
+    return 2;
+
+  // the members to run, as plan indices: all of the plan or the shard, less those done before
+  const ensemble::MemberPlan plan(scene);
+  const auto plan_index_of_row = [&](std::size_t row) {
+    return shard ? shard->index - 1 + row * shard->count : row;
+  };
+  std::optional<io::ResultFile> file;
+  std::vector<std::size_t> remaining;  // resume only: plan indices of the rows not done
+  std::size_t done_before = 0;
+  double earlier_seconds = 0;
+  if (options.resume) {
+    try {
+      const auto done = check_partial(partial, scene, shard, earlier_seconds);
+      file.emplace(io::ResultFile::reopen(partial, scene));
+      for (std::size_t row = 0; row < done.size(); ++row)
+        if (done[row])
+          ++done_before;
+        else
+          remaining.push_back(plan_index_of_row(row));
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      target->keep();  // the file is not touched
+      return 2;
+    }
+  } else {
+    try {
+      file.emplace(partial, scene, io::Provenance{options.scene, version, revision}, shard);
+    } catch (const std::exception& e) {
+      std::cerr << "error: creating " << partial << " failed: " << e.what() << "; "
+                << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";
+      return 1;
+    }
+  }
+  const std::size_t rows = file->rows();
+  const std::size_t to_run = options.resume ? remaining.size() : rows;
+  const ensemble::MemberSource source{
+      to_run, [&](std::size_t k) { return plan[options.resume ? remaining[k] : plan_index_of_row(k)]; }};
+
+  print_header(options, scene, rows, threads, shard);
   if (options.resume)
-    std::fprintf(stderr, "resuming from %s: %zu members done, %zu to run\n", partial.c_str(),
-                 members.size() - to_run.size(), to_run.size());
-  ProgressLine progress(to_run.size(), !options.quiet);
+    std::fprintf(stderr, "resuming from %s: %zu members done, %zu to run\n", partial.c_str(), done_before,
+                 to_run);
+  ProgressLine progress(to_run, !options.quiet);
   ensemble::SweepOutcome outcome;
   int signal_number = 0;
+  std::string write_error;
   {
     const StopOnSignals signals;
-    outcome = ensemble::run_sweep(
-        scene, to_run, threads, [&](std::size_t count) { progress.update(count); }, signals.flag());
+    io::MemberStream stream(*file, plan, {options.flush_seconds, options.flush_members},
+                            [&signals] { signals.stop(); });
+    outcome = ensemble::run_members(
+        scene, source, threads, {[&](std::size_t count) { progress.update(count); }, signals.flag()},
+        [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); });
     signal_number = signals.signal();
+    try {
+      stream.flush();
+    } catch (const std::exception& e) {
+      write_error = e.what();
+    }
+    done_before += stream.written();
   }
   progress.finish();
-  for (std::size_t i = 0, k = 0; i < members.size(); ++i) {
-    if (done[i]) continue;
-    done[i] = outcome.finished[k];
-    if (done[i]) results[i] = std::move(outcome.results[k]);
-    ++k;
-  }
-  outcome.results = std::move(results);
-  outcome.statistics.wall_seconds += earlier_seconds;
-  if (outcome.interrupted)
-    return keep_partial(scene, options, members, outcome, done, partial, signal_number);
+  auto& stats = outcome.statistics;
+  stats.wall_seconds += earlier_seconds;
 
-  try {
-    if (shard)
-      file->write_shard(scene, members, outcome, *shard);
-    else
-      file->write_sweep(scene, members, outcome);
-    file->close();
-    target->commit();
-    if (std::filesystem::exists(partial)) std::filesystem::remove(partial);
-  } catch (const std::exception& e) {
-    std::cerr << "error: writing " << path << " failed: " << e.what() << "; "
-              << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";
+  if (!write_error.empty()) {
+    // the rows marked done are on disk: keep them for --resume, and say so
+    target->keep();
+    std::fprintf(stderr,
+                 "error: writing %s failed: %s\n%zu of %zu members are kept in %s (not a result: complete = "
+                 "FALSE); once the cause is fixed, resume with: %s\n",
+                 partial.c_str(), write_error.c_str(), done_before, rows, partial.c_str(),
+                 resume_command(options).c_str());
     return 1;
   }
-  report_failures(outcome.results);
-  report_unresolved(scene, outcome.results);
-  const auto& stats = outcome.statistics;
+  if (outcome.interrupted) {
+    const char* name = signal_number == SIGTERM ? "SIGTERM" : "SIGINT";
+    try {
+      file->keep_partial(done_before, stats);
+      file->close();
+    } catch (const std::exception& e) {
+      std::cerr << "\nstopped by " << name << "; closing " << partial << " failed: " << e.what() << "\n";
+    }
+    target->keep();
+    std::fprintf(stderr,
+                 "\nstopped by %s: %zu of %zu members done, kept in %s (not a result: complete = FALSE).\n"
+                 "resume with: %s\n",
+                 name, done_before, rows, partial.c_str(), resume_command(options).c_str());
+    return 128 + (signal_number ? signal_number : SIGINT);
+  }
+
+  try {
+    file->finish(stats);
+    file->close();
+    report_outcome(io::Hdf5Location::open_file(partial), scene);
+    target->commit();
+  } catch (const std::exception& e) {
+    target->keep();
+    std::cerr << "error: finishing " << path << " failed: " << e.what() << "; the members are kept in "
+              << partial << " (complete = FALSE); resume with: " << resume_command(options) << "\n";
+    return 1;
+  }
   std::fprintf(stderr, "wrote %s%s: %zu members in %s (%.1f members/s, lane occupancy %.1f %%)\n",
-               path.c_str(), target->replaced() ? " (replacing the previous file)" : "", members.size(),
-               format_duration(stats.wall_seconds).c_str(), double(members.size()) / stats.wall_seconds,
-               100 * stats.occupancy());
+               path.c_str(), target->replaced() ? " (replacing the previous file)" : "", rows,
+               format_duration(stats.wall_seconds).c_str(),
+               double(to_run) / (stats.wall_seconds - earlier_seconds), 100 * stats.occupancy());
   return 0;
 }
 

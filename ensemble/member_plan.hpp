@@ -24,16 +24,25 @@ struct Member {
   double offset = 0.0;  ///< θ0 of its FM/AFM start
 };
 
+/// The plan of a scene without holding it: member i is computed from i (mixed radix over the axes).
+class MemberPlan {
+ public:
+  explicit MemberPlan(const Scene& scene);
+  std::size_t size() const { return size_; }
+  Member operator[](std::size_t index) const;
+
+ private:
+  const Scene* scene_;
+  std::vector<Variant> variants_;
+  std::size_t size_ = 0;
+};
+
+/// Every member of the plan, in order.
 std::vector<Member> plan_members(const Scene& scene);
 
 /// Part `index` (1-based) of `count` of a plan: the members whose plan index is index − 1 modulo
 /// count, so that every shard holds every kind of member and they cost about the same.
 std::vector<Member> shard_members(const std::vector<Member>& plan, std::size_t index, std::size_t count);
-
-/// Bytes a run of the whole plan holds at its peak, as an estimate: per member its Member and
-/// MemberResult, its initial and final angles, the columns being written and, with
-/// period_series, every period record of the longest schedule.
-double plan_memory_bytes(const Scene& scene);
 
 /// θ(0) of a member: its kind with its noise and offset and the scene's angles, drawn from the
 /// stream (scene seed, member.stream).

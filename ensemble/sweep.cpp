@@ -2,13 +2,16 @@
 // generated translation unit per entry of kernels::steppers), or to the Langevin stepper at T > 0.
 #include "ensemble/sweep.hpp"
 
+#include <algorithm>
+
 #include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
 template <kernels::StepperId id>
-SweepOutcome run_row_sweep(const Scene&, const std::vector<Member>&, int, const SweepControl&);
-SweepOutcome run_thermal_row_sweep(const Scene&, const std::vector<Member>&, int, const SweepControl&);
+SweepOutcome run_row_sweep(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
+SweepOutcome run_thermal_row_sweep(const Scene&, const VariantRange&, int, const SweepControl&,
+                                   const ResultSink&);
 
 static_assert(ROTORSWEEP_STEPPER_COUNT == kernels::steppers::size,
               "the build generated one translation unit per entry of kernels::steppers");
@@ -24,34 +27,59 @@ void SweepOutcome::append(SweepOutcome&& part) {
   interrupted = interrupted || part.interrupted;
 }
 
-SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
-                       const ProgressCallback& progress, const std::atomic<bool>* stop) {
-  const auto variants = scene.variants();
+SweepOutcome run_members(const Scene& scene, const MemberSource& source, int threads,
+                         const SweepControl& control, const ResultSink& sink) {
   SweepOutcome outcome;
   std::size_t done_before = 0;
-  for (std::size_t v = 0; v < variants.size(); ++v) {
-    std::vector<Member> part;
-    for (const auto& m : members)
-      if (m.variant == v) part.push_back(m);
-    if (part.empty()) continue;
-    const SweepControl control{[&](std::size_t done) {
-                                 if (progress) progress(done_before + done);
-                               },
-                               stop};
-    if (control.stopped()) {
-      outcome.results.resize(outcome.results.size() + part.size());
-      outcome.finished.resize(outcome.finished.size() + part.size(), 0);
-      outcome.interrupted = true;
-      continue;
+  for (std::size_t begin = 0; begin < source.count;) {
+    // the variant's members are consecutive in plan order: find where they end
+    const std::size_t variant = source.at(begin).variant;
+    std::size_t low = begin + 1, high = source.count;
+    while (low < high) {
+      const std::size_t mid = low + (high - low) / 2;
+      if (source.at(mid).variant == variant)
+        low = mid + 1;
+      else
+        high = mid;
     }
+    const VariantRange range{&source, begin, low};
+    begin = low;
+    if (control.stopped()) {
+      outcome.interrupted = true;
+      break;
+    }
+    const std::size_t before = done_before;
+    const SweepControl part_control{[&](std::size_t done) {
+                                      if (control.progress) control.progress(before + done);
+                                    },
+                                    control.stop};
     if (scene.thermal.on())
-      outcome.append(run_thermal_row_sweep(scene, part, threads, control));
+      outcome.append(run_thermal_row_sweep(scene, range, threads, part_control, sink));
     else
       outcome.append(kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-        return run_row_sweep<id>(scene, part, threads, control);
+        return run_row_sweep<id>(scene, range, threads, part_control, sink);
       }));
-    done_before += part.size();
+    done_before += range.end - range.begin;
   }
+  return outcome;
+}
+
+SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
+                       const ProgressCallback& progress, const std::atomic<bool>* stop) {
+  std::vector<MemberResult> results(members.size());
+  std::vector<char> finished(members.size(), 0);
+  const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
+  auto outcome =
+      run_members(scene, source, threads, SweepControl{progress, stop}, [&](MemberResult&& result) {
+        // members are in plan order (sorted by index): find the result's position
+        const auto at = std::lower_bound(members.begin(), members.end(), result.index,
+                                         [](const Member& m, std::size_t index) { return m.index < index; });
+        const auto k = std::size_t(at - members.begin());
+        results[k] = std::move(result);
+        finished[k] = 1;
+      });
+  outcome.results = std::move(results);
+  outcome.finished = std::move(finished);
   return outcome;
 }
 

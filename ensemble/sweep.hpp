@@ -44,6 +44,29 @@ struct SweepControl {
   bool stopped() const { return stop != nullptr && stop->load(std::memory_order_relaxed); }
 };
 
+/// The members a run takes, in plan order (ascending Member::index): how many, and the k-th.
+struct MemberSource {
+  std::size_t count = 0;
+  std::function<Member(std::size_t k)> at;
+};
+
+/// Members [begin, end) of a source, all of one variant.
+struct VariantRange {
+  const MemberSource* source = nullptr;
+  std::size_t begin = 0, end = 0;
+};
+
+/// Takes each finished member's result (MemberResult::index is its plan index); called from the
+/// worker threads, possibly at the same time.
+using ResultSink = std::function<void(MemberResult&&)>;
+
+/// Runs the members of `source` (any part of the scene's plan, in plan order), handing each result
+/// to `sink` as it finishes and keeping none: outcome.results stays empty. Members of different
+/// variants run one variant after the other. Raising control.stop returns early with
+/// outcome.interrupted set; members still in lanes are abandoned and reach no sink.
+SweepOutcome run_members(const Scene& scene, const MemberSource& source, int threads,
+                         const SweepControl& control, const ResultSink& sink);
+
 /// Runs `members` (any subset of the scene's plan, in plan order) and returns their results in
 /// the same order; members of different variants run one variant after the other. Raising
 /// *stop returns early with outcome.interrupted set.

@@ -1,4 +1,4 @@
-// The compile-time side of run_sweep: picks the lane type and the quadratures the scene's
+// The compile-time side of run_members: picks the lane type and the quadratures the scene's
 // observables need, and runs lane schedulers of that instantiation on OpenMP threads.
 #pragma once
 
@@ -18,35 +18,30 @@
 
 namespace rotorsweep::ensemble {
 
-/// Runs `members` (one variant) on `threads` lane schedulers that share one counter.
+/// Runs the members of `range` (one variant) on `threads` lane schedulers that share one counter.
 template <class Model, class Integrator, class Setup>
-SweepOutcome run_lane_schedulers(const Scene& scene, const std::vector<Member>& members, const Setup& setup,
-                                 int threads, const SweepControl& control) {
+SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, const Setup& setup,
+                                 int threads, const SweepControl& control, const ResultSink& sink) {
   SweepOutcome outcome;
-  outcome.results.resize(members.size());
-  outcome.finished.assign(members.size(), 0);
   auto& stats = outcome.statistics;
   stats.threads = threads;
   stats.lane_width = kernels::lane_width<typename Model::lane_type>;
-  std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<std::size_t> next{range.begin}, done{0};
   std::mutex progress_lock, statistics_lock;
   const auto start = std::chrono::steady_clock::now();
+  const Member variant = range.source->at(range.begin);
 
 #pragma omp parallel num_threads(threads)
   {
-    LaneScheduler<Model, Integrator, Setup> scheduler(scene, members.front(), setup);
+    LaneScheduler<Model, Integrator, Setup> scheduler(scene, variant, setup);
     const auto next_member = [&]() -> std::optional<Member> {
       if (control.stopped()) return std::nullopt;
-      const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
-      if (i >= members.size()) return std::nullopt;
-      return members[i];
+      const std::size_t k = next.fetch_add(1, std::memory_order_relaxed);
+      if (k >= range.end) return std::nullopt;
+      return range.source->at(k);
     };
     const auto retire = [&](MemberResult&& result) {
-      // members are in plan order (sorted by index): find the result's position
-      const auto at = std::lower_bound(members.begin(), members.end(), result.index,
-                                       [](const Member& m, std::size_t index) { return m.index < index; });
-      outcome.results[std::size_t(at - members.begin())] = std::move(result);
-      outcome.finished[std::size_t(at - members.begin())] = 1;
+      sink(std::move(result));
       const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
       if (control.progress && progress_lock.try_lock()) {
         control.progress(finished);
@@ -99,12 +94,12 @@ decltype(auto) with_row_model(const Scene& scene, F&& f) {
 
 /// One variant's members with stepper `id` on the row model.
 template <kernels::StepperId id>
-SweepOutcome run_row_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
-                           const SweepControl& control) {
+SweepOutcome run_row_sweep(const Scene& scene, const VariantRange& range, int threads,
+                           const SweepControl& control, const ResultSink& sink) {
   return with_row_model(scene, [&]<class Model>() {
     using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
     return run_lane_schedulers<Model, kernels::AdaptiveIntegrator<Model, Stepper>>(
-        scene, members, RowSetup<Model>(&scene), threads, control);
+        scene, range, RowSetup<Model>(&scene), threads, control, sink);
   });
 }
 

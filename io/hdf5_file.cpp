@@ -1,5 +1,5 @@
 // The HDF5 C API behind Hdf5Location: creation properties without timestamps (so that the
-// same results give the same bytes), UTF-8 variable-length strings, h5py-style booleans.
+// same results give the same bytes), UTF-8 strings, h5py-style booleans, row-wise table I/O.
 #include "io/hdf5_file.hpp"
 
 #include <algorithm>
@@ -42,6 +42,15 @@ std::string innermost_error() {
 Hdf5Handle string_type() {
   Hdf5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_size(type.id(), H5T_VARIABLE);
+  H5Tset_cset(type.id(), H5T_CSET_UTF8);
+  return type;
+}
+
+/// Fixed-length UTF-8 strings of `length` bytes, padded with NUL (h5py reads them as bytes "S<length>").
+Hdf5Handle text_type(std::size_t length) {
+  Hdf5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.id(), std::max<std::size_t>(length, 1));
+  H5Tset_strpad(type.id(), H5T_STR_NULLPAD);
   H5Tset_cset(type.id(), H5T_CSET_UTF8);
   return type;
 }
@@ -113,6 +122,13 @@ Hdf5Location Hdf5Location::open_file(const std::string& path) {
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0 && !std::filesystem::exists(path)) throw std::runtime_error("'" + path + "' does not exist");
   if (id < 0) throw std::runtime_error("cannot open '" + path + "' as an HDF5 file");
+  return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
+}
+
+Hdf5Location Hdf5Location::open_file_for_writing(const std::string& path) {
+  prepare_hdf5();
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (id < 0) throw std::runtime_error("cannot open '" + path + "' for writing" + innermost_error());
   return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
 }
 
@@ -209,6 +225,158 @@ void Hdf5Location::write(const std::string& name, const std::vector<std::string>
   write_dataset(name, type.id(), type.id(), {hsize_t(data.size())}, pointers.data(), description);
 }
 
+void Hdf5Location::create_column(const std::string& name, ColumnType type, const ColumnShape& shape,
+                                 const std::string& description) const {
+  std::vector<hsize_t> dims{shape.rows};
+  if (shape.width > 0) dims.push_back(shape.width);
+  const Hdf5Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
+  const auto dcpl = untimed(H5P_DATASET_CREATE);
+  H5Pset_layout(dcpl.id(), H5D_CONTIGUOUS);
+  H5Pset_alloc_time(dcpl.id(), H5D_ALLOC_TIME_EARLY);
+  H5Pset_fill_time(dcpl.id(), H5D_FILL_TIME_NEVER);
+  const auto file_type = [&]() -> Hdf5Handle {
+    switch (type) {
+      case ColumnType::float64: return Hdf5Handle(H5Tcopy(H5T_IEEE_F64LE), H5Tclose);
+      case ColumnType::int64: return Hdf5Handle(H5Tcopy(H5T_STD_I64LE), H5Tclose);
+      case ColumnType::flag: return flag_type();
+      case ColumnType::text: break;
+    }
+    return text_type(shape.text_length);
+  }();
+  const Hdf5Handle set(
+      H5Dcreate2(id(), name.c_str(), file_type.id(), space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
+      H5Dclose);
+  if (set.id() < 0) fail("create dataset", name);
+  if (!description.empty()) describe(set.id(), description);
+}
+
+void Hdf5Location::write_selected_rows(const std::string& name, const std::vector<hsize_t>& rows,
+                                       hid_t memory_type, const void* data) const {
+  if (rows.empty()) return;
+  const auto set = open_dataset(name);
+  const Hdf5Handle file_space(H5Dget_space(set.id()), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(file_space.id());
+  hsize_t dims[2] = {0, 1};
+  H5Sget_simple_extent_dims(file_space.id(), dims, nullptr);
+  H5Sselect_none(file_space.id());
+  // one hyperslab per run of consecutive rows
+  for (std::size_t i = 0; i < rows.size();) {
+    std::size_t j = i + 1;
+    while (j < rows.size() && rows[j] == rows[j - 1] + 1) ++j;
+    const hsize_t start[2] = {rows[i], 0}, count[2] = {hsize_t(j - i), dims[1]};
+    if (rows[j - 1] >= dims[0] ||
+        H5Sselect_hyperslab(file_space.id(), H5S_SELECT_OR, start, nullptr, count, nullptr) < 0)
+      fail("select rows of", name);
+    i = j;
+  }
+  const hsize_t memory_dims[2] = {hsize_t(rows.size()), dims[1]};
+  const Hdf5Handle memory_space(H5Screate_simple(rank, memory_dims, nullptr), H5Sclose);
+  if (H5Dwrite(set.id(), memory_type, memory_space.id(), file_space.id(), H5P_DEFAULT, data) < 0)
+    fail("write rows of", name);
+}
+
+void Hdf5Location::write_rows(const std::string& name, const std::vector<hsize_t>& rows,
+                              const double* data) const {
+  write_selected_rows(name, rows, H5T_NATIVE_DOUBLE, data);
+}
+
+void Hdf5Location::write_rows(const std::string& name, const std::vector<hsize_t>& rows,
+                              const std::int64_t* data) const {
+  write_selected_rows(name, rows, H5T_NATIVE_INT64, data);
+}
+
+void Hdf5Location::write_rows(const std::string& name, const std::vector<hsize_t>& rows,
+                              const signed char* data) const {
+  const auto type = flag_type();
+  write_selected_rows(name, rows, type.id(), data);
+}
+
+void Hdf5Location::write_rows(const std::string& name, const std::vector<hsize_t>& rows,
+                              const std::vector<std::string>& data) const {
+  const auto set = open_dataset(name);
+  const Hdf5Handle type(H5Dget_type(set.id()), H5Tclose);
+  const std::size_t length = H5Tget_size(type.id());
+  std::vector<char> packed(data.size() * length, '\0');
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    if (data[i].size() > length)
+      fail("write '" + data[i] + "' (longer than " + std::to_string(length) + " bytes) into", name);
+    std::copy(data[i].begin(), data[i].end(), packed.begin() + std::ptrdiff_t(i * length));
+  }
+  write_selected_rows(name, rows, type.id(), packed.data());
+}
+
+std::pair<hsize_t, hsize_t> Hdf5Location::shape(const std::string& name) const {
+  const auto set = open_dataset(name);
+  const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
+  hsize_t dims[2] = {0, 1};
+  if (H5Sget_simple_extent_ndims(space.id()) > 2) fail("read the shape of", name);
+  H5Sget_simple_extent_dims(space.id(), dims, nullptr);
+  return {dims[0], dims[1]};
+}
+
+void Hdf5Location::read_selected_rows(const std::string& name, hsize_t first, hsize_t count,
+                                      hid_t memory_type, void* data) const {
+  const auto set = open_dataset(name);
+  const Hdf5Handle file_space(H5Dget_space(set.id()), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(file_space.id());
+  hsize_t dims[2] = {0, 1};
+  H5Sget_simple_extent_dims(file_space.id(), dims, nullptr);
+  if (first + count > dims[0]) fail("read rows beyond the end of", name);
+  if (count == 0) return;
+  const hsize_t start[2] = {first, 0}, counts[2] = {count, dims[1]};
+  H5Sselect_hyperslab(file_space.id(), H5S_SELECT_SET, start, nullptr, counts, nullptr);
+  const Hdf5Handle memory_space(H5Screate_simple(rank, counts, nullptr), H5Sclose);
+  if (H5Dread(set.id(), memory_type, memory_space.id(), file_space.id(), H5P_DEFAULT, data) < 0)
+    fail("read rows of", name);
+}
+
+std::vector<double> Hdf5Location::read_rows_doubles(const std::string& name, hsize_t first,
+                                                    hsize_t count) const {
+  std::vector<double> data(std::size_t(count * shape(name).second));
+  read_selected_rows(name, first, count, H5T_NATIVE_DOUBLE, data.data());
+  return data;
+}
+
+std::vector<std::int64_t> Hdf5Location::read_rows_integers(const std::string& name, hsize_t first,
+                                                           hsize_t count) const {
+  std::vector<std::int64_t> data(std::size_t(count * shape(name).second));
+  read_selected_rows(name, first, count, H5T_NATIVE_INT64, data.data());
+  return data;
+}
+
+std::vector<signed char> Hdf5Location::read_flags(const std::string& name) const {
+  const hsize_t rows = shape(name).first;
+  std::vector<signed char> data(static_cast<std::size_t>(rows));
+  const auto type = flag_type();
+  read_selected_rows(name, 0, rows, type.id(), data.data());
+  return data;
+}
+
+std::vector<std::string> Hdf5Location::read_rows_strings(const std::string& name, hsize_t first,
+                                                         hsize_t count) const {
+  const auto set = open_dataset(name);
+  const Hdf5Handle type(H5Dget_type(set.id()), H5Tclose);
+  std::vector<std::string> data;
+  if (H5Tis_variable_str(type.id()) > 0) {
+    const auto text = string_type();
+    std::vector<char*> pointers(std::size_t(count), nullptr);
+    read_selected_rows(name, first, count, text.id(), pointers.data());
+    for (char* p : pointers) data.emplace_back(p ? p : "");
+    const hsize_t n = count;
+    const Hdf5Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+    if (count > 0) H5Dvlen_reclaim(text.id(), space.id(), H5P_DEFAULT, pointers.data());
+    return data;
+  }
+  const std::size_t length = H5Tget_size(type.id());
+  std::vector<char> packed(std::size_t(count) * length);
+  read_selected_rows(name, first, count, type.id(), packed.data());
+  for (std::size_t i = 0; i < count; ++i) {
+    const char* begin = packed.data() + i * length;
+    data.emplace_back(begin, std::find(begin, begin + length, '\0'));
+  }
+  return data;
+}
+
 Hdf5Handle Hdf5Location::open_dataset(const std::string& name) const {
   Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
   if (set.id() < 0) fail("open dataset", name);
@@ -239,16 +407,7 @@ std::vector<std::int64_t> Hdf5Location::read_integers(const std::string& name) c
 }
 
 std::vector<std::string> Hdf5Location::read_strings(const std::string& name) const {
-  const auto set = open_dataset(name);
-  const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
-  const auto type = string_type();
-  std::vector<char*> pointers(std::size_t(H5Sget_simple_extent_npoints(space.id())), nullptr);
-  if (H5Dread(set.id(), type.id(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0)
-    fail("read dataset", name);
-  std::vector<std::string> data;
-  for (char* p : pointers) data.emplace_back(p ? p : "");
-  H5Dvlen_reclaim(type.id(), space.id(), H5P_DEFAULT, pointers.data());
-  return data;
+  return read_rows_strings(name, 0, shape(name).first);
 }
 
 std::vector<unsigned char> Hdf5Location::read_bytes(const std::string& name) const {
@@ -291,6 +450,10 @@ void Hdf5Location::set_flag(const std::string& name, bool value) const {
   const auto attribute = fresh_attribute(id(), name, type.id());
   const signed char stored = value ? 1 : 0;
   if (attribute.id() < 0 || H5Awrite(attribute.id(), type.id(), &stored) < 0) fail("write attribute", name);
+}
+
+void Hdf5Location::remove_attribute(const std::string& name) const {
+  if (has_attribute(name) && H5Adelete(id(), name.c_str()) < 0) fail("remove attribute", name);
 }
 
 bool Hdf5Location::has_attribute(const std::string& name) const { return H5Aexists(id(), name.c_str()) > 0; }

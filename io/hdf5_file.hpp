@@ -1,11 +1,12 @@
 // A thin RAII layer over the HDF5 C API: files, groups, 1-D/2-D datasets of doubles, integers
-// and strings, and attributes; every failure becomes a std::runtime_error naming the object.
+// and strings, pre-sized tables written row by row, and attributes; failures become exceptions.
 #pragma once
 
 #include <hdf5.h>
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rotorsweep::io {
@@ -33,6 +34,17 @@ class Hdf5Handle {
   herr_t (*close_)(hid_t) = nullptr;
 };
 
+/// The element type of a pre-sized table column (Hdf5Location::create_column).
+enum class ColumnType { float64, int64, flag, text };
+
+/// A column of a table: `rows` elements, or rows × `width` when width > 0; text columns hold
+/// fixed-length UTF-8 strings of at most text_length bytes.
+struct ColumnShape {
+  hsize_t rows = 0;
+  hsize_t width = 0;
+  std::size_t text_length = 0;
+};
+
 /// A file or group to write into or read from.
 class Hdf5Location {
  public:
@@ -40,6 +52,8 @@ class Hdf5Location {
   static Hdf5Location create_file(const std::string& path);
   /// Opens an existing file read-only.
   static Hdf5Location open_file(const std::string& path);
+  /// Opens an existing file to write into it.
+  static Hdf5Location open_file_for_writing(const std::string& path);
   /// Creates a file that lives in memory only (HDF5's core driver, no backing store); `name`
   /// names it in messages, and file_image() hands out its bytes.
   static Hdf5Location create_in_memory(const std::string& name);
@@ -66,6 +80,26 @@ class Hdf5Location {
   void write(const std::string& name, const std::vector<std::string>& data,
              const std::string& description = "") const;
 
+  /// A dataset whose file space is allocated at creation and never changes (contiguous, no
+  /// fill written): writing its rows later changes raw data only, never the file's metadata.
+  void create_column(const std::string& name, ColumnType type, const ColumnShape& shape,
+                     const std::string& description) const;
+  /// Rows `rows` (ascending, distinct) of a column, from consecutive rows in memory.
+  void write_rows(const std::string& name, const std::vector<hsize_t>& rows, const double* data) const;
+  void write_rows(const std::string& name, const std::vector<hsize_t>& rows, const std::int64_t* data) const;
+  /// Flags as 0 / 1.
+  void write_rows(const std::string& name, const std::vector<hsize_t>& rows, const signed char* data) const;
+  void write_rows(const std::string& name, const std::vector<hsize_t>& rows,
+                  const std::vector<std::string>& data) const;
+  /// Rows [first, first + count) of a column (any number of columns per row).
+  std::vector<double> read_rows_doubles(const std::string& name, hsize_t first, hsize_t count) const;
+  std::vector<std::int64_t> read_rows_integers(const std::string& name, hsize_t first, hsize_t count) const;
+  std::vector<std::string> read_rows_strings(const std::string& name, hsize_t first, hsize_t count) const;
+  /// A flag column as 0 / 1.
+  std::vector<signed char> read_flags(const std::string& name) const;
+  /// The number of rows and the row width (1 for a 1-D dataset).
+  std::pair<hsize_t, hsize_t> shape(const std::string& name) const;
+
   std::vector<double> read_doubles(const std::string& name, std::vector<hsize_t>* dims = nullptr) const;
   std::vector<std::int64_t> read_integers(const std::string& name) const;
   std::vector<std::string> read_strings(const std::string& name) const;
@@ -78,6 +112,8 @@ class Hdf5Location {
   /// A boolean in h5py's convention (int8 enum FALSE = 0, TRUE = 1), read back as numpy.bool_.
   void set_flag(const std::string& name, bool value) const;
 
+  /// Removes an attribute if it is there.
+  void remove_attribute(const std::string& name) const;
   bool has_attribute(const std::string& name) const;
   double attribute_double(const std::string& name) const;
   std::string attribute_string(const std::string& name) const;
@@ -94,6 +130,10 @@ class Hdf5Location {
   Hdf5Handle open_dataset(const std::string& name) const;
   template <class T>
   std::vector<T> read_numbers(const std::string& name, hid_t memory_type, std::vector<hsize_t>* dims) const;
+  void write_selected_rows(const std::string& name, const std::vector<hsize_t>& rows, hid_t memory_type,
+                           const void* data) const;
+  void read_selected_rows(const std::string& name, hsize_t first, hsize_t count, hid_t memory_type,
+                          void* data) const;
 
   Hdf5Handle handle_;
   std::string path_;

@@ -34,7 +34,7 @@ bool is_hdf5_file(const fs::path& path) {
 }
 
 OutputTarget::OutputTarget(const std::string& path, const std::vector<std::string>& inputs,
-                           Replaceable replaceable, bool force)
+                           Replaceable replaceable, bool force, bool resumable)
     : path_(path) {
   if (path.empty()) throw OutputPathError("the output path is empty");
   const std::string name = in_quotes(path);
@@ -84,6 +84,11 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
     throw OutputPathError("output path " + name + ": " + in_quotes(parent.string()) + " is not a directory");
   if (::access(parent.empty() ? "." : parent.c_str(), W_OK) != 0)
     throw OutputPathError("output path " + name + ": cannot write in its directory: " + std::strerror(errno));
+  if (resumable) {
+    temporary_ = target_;
+    temporary_ += ".partial";
+    return;
+  }
   std::string hidden_name(1, '.');
   hidden_name.append(target_.filename().string())
       .append(".")

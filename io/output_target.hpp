@@ -28,8 +28,9 @@ class OutputTarget {
   /// Checks the path and creates missing parent directories. Throws OutputPathError when the path
   /// is empty or names a directory, is the same file as one of `inputs` (also through a link),
   /// or is an existing file that is not `replaceable` (unless `force`).
+  /// With `resumable` the temporary file is path + ".partial", which keep() leaves in place.
   OutputTarget(const std::string& path, const std::vector<std::string>& inputs, Replaceable replaceable,
-               bool force);
+               bool force, bool resumable = false);
   OutputTarget(const OutputTarget&) = delete;
   OutputTarget& operator=(const OutputTarget&) = delete;
   ~OutputTarget();
@@ -43,6 +44,8 @@ class OutputTarget {
 
   /// Renames the temporary file over the target. Throws std::runtime_error with the OS reason.
   void commit();
+  /// Leaves the temporary file where it is (an unfinished run to resume).
+  void keep() { committed_ = true; }
 
  private:
   std::string path_;

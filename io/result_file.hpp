@@ -1,15 +1,16 @@
-// The output file of a sweep (README "Output file"): /members (one row per member),
-// /members/periods (per-period series), /curves (per-point statistics) and root attributes.
+// The output file of a sweep (README "Output file"): /members (one row per member, allocated
+// up front and filled as members finish, /members/done marking them), /curves and root attributes.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "ensemble/curves.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/scene.hpp"
 #include "ensemble/sweep.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/member_columns.hpp"
 
 namespace rotorsweep::io {
 
@@ -26,46 +27,55 @@ struct ShardLabel {
   std::size_t plan_members = 0;      ///< members in the whole plan
 };
 
-/// A result file being written: it exists with complete = FALSE from construction on, and
-/// says complete = TRUE only after every dataset has been written and flushed.
+/// A result file being written. From construction on it holds the scene, the provenance and every
+/// /members column sized for its members; rows are written as members finish, each batch marked in
+/// /members/done only after it is on disk, so the file is readable and resumable whenever the
+/// process stops. complete = TRUE comes last, after /curves.
 class ResultFile {
  public:
-  /// Creates (truncates) path and writes the scene and provenance (see io/output_target.hpp for
-  /// writing beside the final path).
-  ResultFile(const std::string& path, const ensemble::Scene& scene, const Provenance& provenance);
+  /// Creates (truncates) path for the whole plan of `scene`, or for a shard's part of it (rows in
+  /// the shard's plan order, /members/plan_index, attributes shard_index and shard_count).
+  ResultFile(const std::string& path, const ensemble::Scene& scene, const Provenance& provenance,
+             const std::optional<ShardLabel>& shard = std::nullopt);
   /// The same file in memory only (see image()).
   static ResultFile in_memory(const ensemble::Scene& scene, const Provenance& provenance);
+  /// A file this class created (and did not finish), to write more rows into; `scene` is its scene.
+  static ResultFile reopen(const std::string& path, const ensemble::Scene& scene);
 
-  /// Members, curves (aggregated from them) and statistics: everything after the constructor.
-  void write_sweep(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
-                   const ensemble::SweepOutcome& outcome) const;
-  /// A shard's members, their plan indices (/members/plan_index) and the shard's label as
-  /// attributes shard_index, shard_count, plan_members; no curves (`rotorsweep merge` makes them).
-  void write_shard(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
-                   const ensemble::SweepOutcome& outcome, const ShardLabel& shard) const;
-  /// The finished members of an interrupted run, laid out like a shard's, with the attributes
-  /// members_done and plan_members; complete stays FALSE (`run --resume` continues from it).
-  void write_partial(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
-                     const std::vector<ensemble::MemberResult>& results, std::size_t plan_members,
-                     const ensemble::SweepStatistics& statistics) const;
+  /// The row of plan member `plan_index` (which must belong to the file).
+  hsize_t row_of(std::size_t plan_index) const;
+  /// Members the file has rows for.
+  std::size_t rows() const { return rows_; }
 
-  void write_members(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
-                     const std::vector<ensemble::MemberResult>& results) const;
-  void write_curves(const ensemble::Scene& scene, const std::vector<ensemble::CurvePoint>& curves) const;
-  /// Run statistics, then complete = TRUE.
+  /// Writes each result (in any order) into the row of its member (`plan` gives the members),
+  /// flushes, then marks the rows done and flushes again.
+  void write_results(const ensemble::MemberPlan& plan, std::vector<ensemble::MemberResult> results) const;
+  /// /members/done: 1 for the rows written.
+  std::vector<char> done() const;
+  /// Run statistics, /curves computed from the file (not for shards), then complete = TRUE.
   void finish(const ensemble::SweepStatistics& statistics) const;
+  /// Run statistics and members_done of a run that stopped early; complete stays FALSE.
+  void keep_partial(std::size_t members_done, const ensemble::SweepStatistics& statistics) const;
+  /// Every member of the file at once (results held in memory), then finish().
+  void write_sweep(const std::vector<ensemble::Member>& members, const ensemble::SweepOutcome& outcome) const;
+
   /// Closes the file; throws when its last buffers cannot be written.
   void close() { file_.close(); }
   /// The file's bytes (for a file in memory).
   std::vector<unsigned char> image() const { return file_.file_image(); }
 
  private:
-  ResultFile(Hdf5Location file, const ensemble::Scene& scene, const Provenance& provenance);
-  /// /members of a part of the plan, with /members/plan_index.
-  void write_part(const ensemble::Scene& scene, const std::vector<ensemble::Member>& members,
+  ResultFile(Hdf5Location file, const ensemble::Scene& scene, std::optional<ShardLabel> shard);
+  void create(const Provenance& provenance) const;
+  void write_rows(std::vector<hsize_t> rows, const std::vector<ensemble::Member>& members,
                   const std::vector<ensemble::MemberResult>& results) const;
   void write_statistics(const ensemble::SweepStatistics& statistics) const;
+
   Hdf5Location file_;
+  ensemble::Scene scene_;
+  std::vector<MemberColumn> columns_;
+  std::optional<ShardLabel> shard_;
+  std::size_t rows_ = 0;
 };
 
 }  // namespace rotorsweep::io

@@ -1,8 +1,7 @@
-// Reading /members back: plan indices, statuses and regimes by name, every declared summary
-// column, the schedule counters, final angles, final-state classification and period series.
+// Reading /members back a block of rows at a time: plan indices, statuses and regimes by name,
+// every declared summary column, the schedule counters, final angles and states, period series.
 #include "io/result_reader.hpp"
 
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -25,71 +24,68 @@ ensemble::Regime regime_from(const std::string& name) {
   throw std::runtime_error("unknown regime '" + name + "' in /members/regime");
 }
 
-}  // namespace
-
-std::string written_by(const Hdf5Location& file) {
-  return file.attribute_string("version") + " (revision " + file.attribute_string("revision") + ")";
-}
-
-namespace {
-
-/// A (members × width) dataset's rows, checked against the member count.
+/// Rows of a (members × width) column.
 struct Matrix {
   std::vector<double> values;
   std::size_t width = 0;
   const double* row(std::size_t m) const { return values.data() + m * width; }
 };
 
-Matrix read_matrix(const Hdf5Location& group, const std::string& name, std::size_t members) {
-  std::vector<hsize_t> dims;
-  Matrix matrix{group.read_doubles(name, &dims), 0};
-  if (dims.size() != 2 || dims[0] != members)
-    throw std::runtime_error("/members/" + name + " has the wrong shape");
-  matrix.width = std::size_t(dims[1]);
-  return matrix;
+Matrix read_matrix(const Hdf5Location& group, const std::string& name, std::size_t first, std::size_t count) {
+  return {group.read_rows_doubles(name, first, count), std::size_t(group.shape(name).second)};
 }
 
 }  // namespace
 
-StoredMembers read_member_results(const Hdf5Location& file, const ensemble::Scene& scene,
-                                  const std::vector<ensemble::Member>& plan) {
+std::string written_by(const Hdf5Location& file) {
+  return file.attribute_string("version") + " (revision " + file.attribute_string("revision") + ")";
+}
+
+std::size_t member_rows(const Hdf5Location& file) {
+  return std::size_t(file.open_group("members").shape("status").first);
+}
+
+std::vector<char> read_done(const Hdf5Location& file) {
+  const auto flags = file.open_group("members").read_flags("done");
+  return std::vector<char>(flags.begin(), flags.end());
+}
+
+std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensemble::Scene& scene,
+                                           const ensemble::MemberPlan& plan, std::size_t first,
+                                           std::size_t count) {
   const auto group = file.open_group("members");
-  StoredMembers stored;
-  const auto status = group.read_strings("status");
-  const std::size_t count = status.size();
+  std::vector<MemberResult> results(count);
   if (group.has("plan_index")) {
-    for (auto i : group.read_integers("plan_index")) {
-      if (i < 0 || std::size_t(i) >= plan.size())
+    const auto index = group.read_rows_integers("plan_index", first, count);
+    for (std::size_t m = 0; m < count; ++m) {
+      if (index[m] < 0 || std::size_t(index[m]) >= plan.size())
         throw std::runtime_error("/members/plan_index is outside the plan");
-      stored.plan_index.push_back(std::size_t(i));
+      results[m].index = std::size_t(index[m]);
     }
   } else {
-    for (std::size_t i = 0; i < count; ++i) stored.plan_index.push_back(i);
+    if (first + count > plan.size()) throw std::runtime_error("/members holds more rows than the plan");
+    for (std::size_t m = 0; m < count; ++m) results[m].index = first + m;
   }
-  if (stored.plan_index.size() != count)
-    throw std::runtime_error("/members/plan_index and /members/status differ in length");
-  auto& results = stored.results;
-  results.resize(count);
-
-  const auto attractor = group.read_strings("attractor");
-  const auto settled = group.read_integers("settled");
-  const auto periods_run = group.read_integers("periods_run");
-  const auto accepted = group.read_integers("steps_accepted");
-  const auto rejected = group.read_integers("steps_rejected");
-  const auto deviation = group.read_doubles("sublattice_deviation");
-  const auto walls = group.read_integers("domain_walls");
-  const auto detached = group.read_integers("detached_rows");
-  const auto orbit = group.read_integers("orbit_period");
-  const auto groups = group.read_integers("angle_groups");
-  const auto stray = group.read_integers("stray_rows");
-  const auto sublattice = read_matrix(group, "sublattice_angles", count);
-  const auto theta = read_matrix(group, "theta_final", count);
+  const auto integers = [&](const char* name) { return group.read_rows_integers(name, first, count); };
+  const auto status = group.read_rows_strings("status", first, count);
+  const auto attractor = group.read_rows_strings("attractor", first, count);
+  const auto settled = integers("settled");
+  const auto periods_run = integers("periods_run");
+  const auto accepted = integers("steps_accepted");
+  const auto rejected = integers("steps_rejected");
+  const auto deviation = group.read_rows_doubles("sublattice_deviation", first, count);
+  const auto walls = integers("domain_walls");
+  const auto detached = integers("detached_rows");
+  const auto orbit = integers("orbit_period");
+  const auto groups = integers("angle_groups");
+  const auto stray = integers("stray_rows");
+  const auto sublattice = read_matrix(group, "sublattice_angles", first, count);
+  const auto theta = read_matrix(group, "theta_final", first, count);
   std::vector<std::string> regime;
-  if (scene.classifies_regimes()) regime = group.read_strings("regime");
+  if (scene.classifies_regimes()) regime = group.read_rows_strings("regime", first, count);
 
   for (std::size_t m = 0; m < count; ++m) {
     MemberResult& r = results[m];
-    r.index = stored.plan_index[m];
     r.status = status_from(status[m]);
     if (!regime.empty()) r.regime = regime_from(regime[m]);
     r.settled = settled[m] != 0;
@@ -109,8 +105,6 @@ StoredMembers read_member_results(const Hdf5Location& file, const ensemble::Scen
     f.attractor = attractor[m];
   }
 
-  const bool series = scene.period_series;
-  const auto periods = series ? std::optional(group.open_group("periods")) : std::nullopt;
   for (std::size_t i = 0; i < ensemble::observable_count; ++i) {
     if (!scene.has(ensemble::Observable(i))) continue;
     const auto& observable = ensemble::observables[i];
@@ -118,12 +112,12 @@ StoredMembers read_member_results(const Hdf5Location& file, const ensemble::Scen
       const auto& channel = observable.channels[c];
       for (std::size_t k = 0; k < channel.summary_count; ++k) {
         const auto& summary = channel.summaries[k];
-        const auto values = group.read_doubles(std::string(summary.column));
+        const auto values = group.read_rows_doubles(std::string(summary.column), first, count);
         for (std::size_t m = 0; m < count; ++m)
           results[m].summary(summary.summary, channel.channel) = values[m];
       }
-      if (!series) continue;
-      const auto matrix = read_matrix(*periods, std::string(channel.column), count);
+      if (!scene.period_series) continue;
+      const auto matrix = read_matrix(group, "periods/" + std::string(channel.column), first, count);
       for (std::size_t m = 0; m < count; ++m) {
         auto& records = results[m].periods;
         records.resize(std::size_t(results[m].periods_run));
@@ -132,7 +126,7 @@ StoredMembers read_member_results(const Hdf5Location& file, const ensemble::Scen
       }
     }
   }
-  return stored;
+  return results;
 }
 
 }  // namespace rotorsweep::io

@@ -1,5 +1,5 @@
-// Reads the members of a result file or shard (README "Output file") back into MemberResults:
-// every field the writer stores, so that writing them again gives the same datasets.
+// Reads the members of a result file, shard or partial file (README "Output file") back into
+// MemberResults, a block of rows at a time: every field the writer stores.
 #pragma once
 
 #include <cstddef>
@@ -16,16 +16,18 @@ namespace rotorsweep::io {
 /// "<version> (revision <revision>)" of the program that wrote `file`.
 std::string written_by(const Hdf5Location& file);
 
-struct StoredMembers {
-  std::vector<std::size_t> plan_index;          ///< the plan member of each result
-  std::vector<ensemble::MemberResult> results;  ///< results[i].index == plan_index[i]
-};
+/// Rows [first, first + count) of `file`'s /members as results; MemberResult::index is the plan
+/// index (the row itself, or /members/plan_index of a shard). `plan` is the file's own scene's.
+/// Throws std::runtime_error naming the column for one that is missing or holds a value the
+/// writer never writes.
+std::vector<ensemble::MemberResult> read_member_rows(const Hdf5Location& file, const ensemble::Scene& scene,
+                                                     const ensemble::MemberPlan& plan, std::size_t first,
+                                                     std::size_t count);
 
-/// The members in `file`'s /members group: all of the plan in order for a whole result, the
-/// members listed in /members/plan_index for a shard. `plan` is plan_members(scene) of the
-/// file's own scene. Throws std::runtime_error naming the file for a column that is missing or
-/// holds a value the writer never writes.
-StoredMembers read_member_results(const Hdf5Location& file, const ensemble::Scene& scene,
-                                  const std::vector<ensemble::Member>& plan);
+/// /members/done: 1 for the rows that hold a finished member.
+std::vector<char> read_done(const Hdf5Location& file);
+
+/// The number of rows of /members.
+std::size_t member_rows(const Hdf5Location& file);
 
 }  // namespace rotorsweep::io

@@ -35,7 +35,7 @@ void SweepJob::run(int threads) {
         &stop_);
     if (!outcome.interrupted) {
       done_.store(members_.size(), std::memory_order_relaxed);
-      file_->write_sweep(scene_, members_, outcome);
+      file_->write_sweep(members_, outcome);
       if (target_) {
         file_->close();
         target_->commit();

@@ -40,7 +40,7 @@ def _read(dataset):
     description = dataset.attrs.get("description", "")
     if isinstance(description, bytes):
         description = description.decode()
-    if dataset.dtype.kind == "O":
+    if dataset.dtype.kind in "OS":
         values = np.array(dataset.asstr()[()], dtype=object)
     else:
         values = dataset[()]
@@ -77,6 +77,8 @@ def from_hdf5(h5file, allow_incomplete=False):
     if members["A"].shape[0] != count:
         raise ValueError(f"'{name}': /members holds {members['A'].shape[0]} members, its scene plans {count}")
 
+    # rows not marked done (a run that stopped early) hold nothing: they are checked and shown as missing
+    done = np.asarray(members["done"][()], dtype=bool) if "done" in members else np.ones(count, dtype=bool)
     coords = {axis: (axis, np.asarray(values)) for axis, values in axes.items()}
     variables = {}
 
@@ -93,7 +95,7 @@ def from_hdf5(h5file, allow_incomplete=False):
         if column in AXES:
             grid = np.broadcast_to(
                 np.asarray(axes[column]).reshape([-1 if a == column else 1 for a in dims]), shape)
-            if not np.array_equal(values.reshape(shape), grid):
+            if not np.array_equal(values[done], grid.reshape(-1)[done]):
                 raise ValueError(f"'{name}': /members/{column} does not follow the scene's plan")
             continue
         add(column, values, description, shape, [_second_dimension(column)] if values.ndim == 2 else [])
@@ -129,5 +131,7 @@ def from_hdf5(h5file, allow_incomplete=False):
         dataset = dataset.assign_coords(row=np.arange(dataset.sizes["row"]))
     if "sublattice" in dataset.dims:
         dataset = dataset.assign_coords(sublattice=["even", "odd"])
+    if not done.all():
+        dataset = dataset.where(dataset["done"])
     single = [axis for axis in AXES if dataset.sizes[axis] == 1 and axis not in ALWAYS_DIMENSIONS]
     return dataset.squeeze(single)
