@@ -114,7 +114,8 @@ void for_each_block(const Hdf5Location& file, const ensemble::Scene& scene, cons
 
 }  // namespace
 
-void write_curves_from_members(const Hdf5Location& file, const ensemble::Scene& scene) {
+void write_curves_from_members(const Hdf5Location& file, const ensemble::Scene& scene,
+                               const std::function<void(double bytes)>& reserve) {
   const ensemble::MemberPlan plan(scene);
   const std::size_t replicas = std::size_t(scene.replicas);
   const hsize_t points = plan.size() / replicas;
@@ -129,8 +130,10 @@ void write_curves_from_members(const Hdf5Location& file, const ensemble::Scene& 
   std::size_t label_length = 1;
   for (const auto& l : labels) label_length = std::max(label_length, l.size());
 
-  const auto group = file.create_group("curves");
   const auto columns = curve_columns(scene);
+  reserve(double(points) * double(8 * columns.size() + 4 * 8 * labels.size()) +
+          double(labels.size() * label_length));
+  const auto group = file.create_group("curves");
   for (const auto& column : columns)
     group.create_column(column.name, column.type, {points, 0, kind_length()}, column.description);
   const auto attractors = group.create_group("attractors");

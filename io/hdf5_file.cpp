@@ -14,11 +14,11 @@ namespace {
 /// no library shutdown at exit. HDF5 1.10 crashes in that shutdown on a file whose last write
 /// failed (a full disk); our handles close every file themselves, so there is nothing left to do.
 void prepare_hdf5() {
-  static const bool prepared = [] {
-    H5dont_atexit();
-    return H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0;
-  }();
+  static const bool prepared = [] { return H5dont_atexit() >= 0; }();
+  // a thread-safe HDF5 keeps the error printing per thread: silence it in every thread that calls in
+  thread_local const bool silenced = H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0;
   (void)prepared;
+  (void)silenced;
 }
 
 /// The innermost entry of HDF5's error stack, or the OS reason it carries ("File too large"),
@@ -72,8 +72,16 @@ Hdf5Handle untimed(hid_t list_class) {
 
 Hdf5Handle scalar_space() { return Hdf5Handle(H5Screate(H5S_SCALAR), H5Sclose); }
 
+/// The attribute `name` of type `type`: the existing one when it has that type (so that writing it
+/// again changes bytes in place and allocates nothing), a new one otherwise.
 Hdf5Handle fresh_attribute(hid_t loc, const std::string& name, hid_t type) {
-  if (H5Aexists(loc, name.c_str()) > 0) H5Adelete(loc, name.c_str());
+  if (H5Aexists(loc, name.c_str()) > 0) {
+    Hdf5Handle existing(H5Aopen(loc, name.c_str(), H5P_DEFAULT), H5Aclose);
+    const Hdf5Handle existing_type(H5Aget_type(existing.id()), H5Tclose);
+    if (H5Tget_class(type) != H5T_STRING && H5Tequal(existing_type.id(), type) > 0) return existing;
+    existing = Hdf5Handle();
+    H5Adelete(loc, name.c_str());
+  }
   const auto space = scalar_space();
   return Hdf5Handle(H5Acreate2(loc, name.c_str(), type, space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
 }
@@ -172,6 +180,7 @@ std::vector<std::string> Hdf5Location::members() const {
 }
 
 void Hdf5Location::flush() const {
+  prepare_hdf5();
   if (H5Fflush(id(), H5F_SCOPE_GLOBAL) < 0) fail("flush", path_);
 }
 
@@ -253,7 +262,7 @@ void Hdf5Location::create_column(const std::string& name, ColumnType type, const
 void Hdf5Location::write_selected_rows(const std::string& name, const std::vector<hsize_t>& rows,
                                        hid_t memory_type, const void* data) const {
   if (rows.empty()) return;
-  const auto set = open_dataset(name);
+  auto set = open_dataset(name);
   const Hdf5Handle file_space(H5Dget_space(set.id()), H5Sclose);
   const int rank = H5Sget_simple_extent_ndims(file_space.id());
   hsize_t dims[2] = {0, 1};
@@ -273,6 +282,9 @@ void Hdf5Location::write_selected_rows(const std::string& name, const std::vecto
   const Hdf5Handle memory_space(H5Screate_simple(rank, memory_dims, nullptr), H5Sclose);
   if (H5Dwrite(set.id(), memory_type, memory_space.id(), file_space.id(), H5P_DEFAULT, data) < 0)
     fail("write rows of", name);
+  // closing writes the dataset's buffered rows: a failure there is a failed write too
+  auto closing = std::move(set);
+  if (H5Dclose(closing.release()) < 0) fail("write rows of", name);
 }
 
 void Hdf5Location::write_rows(const std::string& name, const std::vector<hsize_t>& rows,
@@ -378,6 +390,7 @@ std::vector<std::string> Hdf5Location::read_rows_strings(const std::string& name
 }
 
 Hdf5Handle Hdf5Location::open_dataset(const std::string& name) const {
+  prepare_hdf5();
   Hdf5Handle set(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), H5Dclose);
   if (set.id() < 0) fail("open dataset", name);
   return set;

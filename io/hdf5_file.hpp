@@ -120,6 +120,8 @@ class Hdf5Location {
   bool attribute_flag(const std::string& name) const;
 
   hid_t id() const { return handle_.id(); }
+  /// The file's path (its name, for a file in memory).
+  const std::string& path() const { return path_; }
 
  private:
   Hdf5Location(Hdf5Handle handle, std::string path) : handle_(std::move(handle)), path_(std::move(path)) {}

@@ -2,7 +2,13 @@
 // written after the rows it marks, /curves from the file at the end, the completion flag last.
 #include "io/result_file.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <numeric>
 
 #include "io/curve_table.hpp"
@@ -13,6 +19,10 @@ ResultFile::ResultFile(const std::string& path, const ensemble::Scene& scene, co
                        const std::optional<ShardLabel>& shard)
     : ResultFile(Hdf5Location::create_file(path), scene, shard) {
   create(provenance);
+  // closing sets the file's length to all it allocated: from here on nothing is allocated until finish()
+  file_.close();
+  file_ = Hdf5Location::open_file_for_writing(path);
+  on_disk_ = true;
 }
 
 ResultFile ResultFile::in_memory(const ensemble::Scene& scene, const Provenance& provenance) {
@@ -29,6 +39,7 @@ ResultFile ResultFile::reopen(const std::string& path, const ensemble::Scene& sc
                        std::size_t(location.attribute_double("shard_count")),
                        std::size_t(location.attribute_double("plan_members"))};
   ResultFile file(std::move(location), scene, shard);
+  file.on_disk_ = true;
   if (file.file_.open_group("members").shape("done").first != file.rows_)
     throw std::runtime_error("'" + path + "' does not have a row for every member of its scene's plan");
   return file;
@@ -51,6 +62,9 @@ void ResultFile::create(const Provenance& provenance) const {
   file_.set_attribute("version", provenance.version);
   file_.set_attribute("revision", provenance.revision);
   file_.set_attribute("plan_members", std::int64_t(scene_.member_count()));
+  // every attribute written later exists from the start, so that writing it changes bytes in place
+  file_.set_attribute("members_done", std::int64_t(0));
+  write_statistics({});
   const auto members = file_.create_group("members");
   create_member_columns(members, columns_, rows_);
   std::vector<hsize_t> all(rows_);
@@ -118,10 +132,26 @@ void ResultFile::keep_partial(std::size_t members_done, const ensemble::SweepSta
   file_.flush();
 }
 
+void ResultFile::reserve(double bytes) const {
+  if (!on_disk_) return;
+  const int fd = ::open(file_.path().c_str(), O_WRONLY);
+  if (fd < 0) return;
+  struct stat status {};
+  ::fstat(fd, &status);
+  // twice the data and 1 MiB for the groups' metadata, beyond the file's end, the length unchanged
+  const int failed =
+      ::fallocate(fd, FALLOC_FL_KEEP_SIZE, status.st_size, off_t(2 * bytes) + (off_t(1) << 20));
+  const int error = errno;
+  ::close(fd);
+  if (failed != 0 && error != EOPNOTSUPP)
+    throw std::runtime_error("cannot reserve " + std::to_string(long(bytes / 1e6) + 1) +
+                             " MB for /curves in " + file_.path() + ": " + std::strerror(error));
+}
+
 void ResultFile::finish(const ensemble::SweepStatistics& statistics) const {
-  if (!shard_) write_curves_from_members(file_, scene_);
+  if (!shard_) write_curves_from_members(file_, scene_, [this](double bytes) { reserve(bytes); });
+  file_.set_attribute("members_done", std::int64_t(rows_));
   write_statistics(statistics);
-  file_.remove_attribute("members_done");
   file_.flush();
   file_.set_flag("complete", true);
   file_.flush();

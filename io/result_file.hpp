@@ -54,7 +54,8 @@ class ResultFile {
   std::vector<char> done() const;
   /// Run statistics, /curves computed from the file (not for shards), then complete = TRUE.
   void finish(const ensemble::SweepStatistics& statistics) const;
-  /// Run statistics and members_done of a run that stopped early; complete stays FALSE.
+  /// Run statistics and members_done of a run that stopped early; complete stays FALSE. Like every
+  /// write before finish(), it changes bytes in place and allocates nothing.
   void keep_partial(std::size_t members_done, const ensemble::SweepStatistics& statistics) const;
   /// Every member of the file at once (results held in memory), then finish().
   void write_sweep(const std::vector<ensemble::Member>& members, const ensemble::SweepOutcome& outcome) const;
@@ -70,8 +71,12 @@ class ResultFile {
   void write_rows(std::vector<hsize_t> rows, const std::vector<ensemble::Member>& members,
                   const std::vector<ensemble::MemberResult>& results) const;
   void write_statistics(const ensemble::SweepStatistics& statistics) const;
+  /// Reserves disk blocks beyond the file's end for `bytes` of data still to come, so that a full
+  /// disk stops finish() before it touches the file; throws when the disk cannot hold them.
+  void reserve(double bytes) const;
 
   Hdf5Location file_;
+  bool on_disk_ = false;
   ensemble::Scene scene_;
   std::vector<MemberColumn> columns_;
   std::optional<ShardLabel> shard_;

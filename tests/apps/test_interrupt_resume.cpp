@@ -1,10 +1,14 @@
-// Interrupting `rotorsweep run` (SIGINT, SIGTERM) and `--resume`: exit codes 130 and 143, the
-// finished members kept in OUT.partial, resumed twice to a file whose datasets equal an
+// Interrupting `rotorsweep run` (SIGINT, SIGTERM, SIGKILL, a disk that fills up) and `--resume`:
+// the finished members stay in OUT.h5.partial, and resuming ends in datasets equal to an
 // uninterrupted run's byte for byte; a changed scene or a missing partial file is exit code 2.
+#include <sys/wait.h>
+
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <random>
 
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
@@ -28,6 +32,31 @@ std::string bytes_of(const fs::path& path) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+/// A delay for sleep(1) between 0.3 and 1.2 s, different in every test run (and reported).
+std::string random_delay() {
+  static std::mt19937 engine{std::random_device{}()};
+  return std::to_string(std::uniform_real_distribution<double>(0.3, 1.2)(engine));
+}
+
+std::size_t rows_done(const fs::path& path) {
+  std::size_t count = 0;
+  for (auto flag : Hdf5Location::open_file(path.string()).open_group("members").read_flags("done"))
+    count += flag != 0;
+  return count;
+}
+
+void check_same_datasets(const fs::path& expected, const fs::path& actual) {
+  const auto a = Hdf5Location::open_file(expected.string());
+  const auto b = Hdf5Location::open_file(actual.string());
+  const auto paths = dataset_paths(a);
+  CHECK(paths == dataset_paths(b));
+  for (const auto& path : paths) {
+    INFO(path);
+    CHECK(a.read_bytes(path) == b.read_bytes(path));
+  }
+  CHECK(b.attribute_flag("complete"));
+}
+
 }  // namespace
 
 TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[apps][run][resume]") {
@@ -42,21 +71,25 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
 
   CHECK(run_cli(base + " --resume", dir).exit_code == 2);  // nothing to resume yet
 
-  const auto first = run_cli_signalled(base, dir, "INT", "0.5");
+  const std::string delay = random_delay();
+  INFO("signal delay " << delay << " s");
+  const auto first = run_cli_signalled(base, dir, "INT", delay);
   INFO(first.output);
   REQUIRE(first.exit_code == 130);
   CHECK_THAT(first.output, Catch::Contains("stopped by SIGINT") && Catch::Contains("--resume"));
   REQUIRE(fs::exists(partial));
   CHECK_FALSE(fs::exists(dir / "out.h5"));
+  std::size_t kept = 0;
   {
     const auto file = Hdf5Location::open_file(partial.string());
     CHECK_FALSE(file.attribute_flag("complete"));
-    const double kept = file.attribute_double("members_done");
+    kept = std::size_t(file.attribute_double("members_done"));
+    CHECK(kept == rows_done(partial));
     CHECK(kept > 0);
     CHECK(kept < 2000);
   }
 
-  // a changed scene does not resume and leaves the partial file as it is
+  // a changed scene does not resume and leaves the partial file as it is; nor does a fresh run
   const std::string before = bytes_of(partial);
   write_text(scene, std::string(long_scene) + "[numerics]\nrtol = 1e-7\n");
   const auto changed = run_cli(base + " --resume", dir);
@@ -64,23 +97,94 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
   CHECK_THAT(changed.output, Catch::Contains("different scene"));
   CHECK(bytes_of(partial) == before);
   write_text(scene, long_scene);
+  const auto fresh = run_cli(base, dir);
+  CHECK(fresh.exit_code == 2);
+  CHECK_THAT(fresh.output, Catch::Contains("--resume") && Catch::Contains("--force"));
+  CHECK(bytes_of(partial) == before);
 
-  const auto second = run_cli_signalled(base + " --resume", dir, "TERM", "0.5");
+  const auto second = run_cli_signalled(base + " --resume", dir, "TERM", random_delay());
   INFO(second.output);
   REQUIRE(second.exit_code == 143);
   CHECK_THAT(second.output, Catch::Contains("resuming from") && Catch::Contains("stopped by SIGTERM"));
+  CHECK(rows_done(partial) > kept);
+  kept = rows_done(partial);
+
+  // SIGKILL: no handler runs; the batches flushed before it are in the file, which stays readable
+  const auto third = run_cli_signalled(base + " --resume --flush-seconds 0.1", dir, "KILL", random_delay());
+  INFO(third.output);
+  REQUIRE(third.exit_code == 137);
+  CHECK(rows_done(partial) > kept);
+  CHECK(rows_done(partial) < 2000);
 
   const auto last = run_cli(base + " --resume", dir);
   INFO(last.output);
   REQUIRE(last.exit_code == 0);
   CHECK_FALSE(fs::exists(partial));
-  const auto whole = Hdf5Location::open_file((dir / "whole.h5").string());
-  const auto resumed = Hdf5Location::open_file((dir / "out.h5").string());
-  const auto paths = dataset_paths(whole);
-  CHECK(paths == dataset_paths(resumed));
-  for (const auto& path : paths) {
-    INFO(path);
-    CHECK(whole.read_bytes(path) == resumed.read_bytes(path));
+  check_same_datasets(dir / "whole.h5", dir / "out.h5");
+}
+
+TEST_CASE("a killed shard resumes and merges to the unsharded file", "[apps][run][resume][merge]") {
+  const auto dir = scratch_directory("kill-shard");
+  const auto scene = dir / "long.toml";
+  write_text(scene, long_scene);
+  const auto run = [&](const std::string& arguments) {
+    return "run '" + scene.string() + "' -q " + arguments;
+  };
+  REQUIRE(run_cli(run("-o '" + (dir / "whole.h5").string() + "'"), dir).exit_code == 0);
+  const std::string shard = "--shard 1/2 -o '" + (dir / "one.h5").string() + "'";
+  const auto killed = run_cli_signalled(run(shard + " --flush-seconds 0.1"), dir, "KILL", random_delay());
+  REQUIRE(killed.exit_code == 137);
+  REQUIRE(fs::exists(dir / "one.h5.partial"));
+  CHECK(run_cli(run("--shard 2/2 -o '" + (dir / "one.h5").string() + "' --resume"), dir).exit_code == 2);
+  const auto resumed = run_cli(run(shard + " --resume"), dir);
+  INFO(resumed.output);
+  REQUIRE(resumed.exit_code == 0);
+  REQUIRE(run_cli(run("--shard 2/2 -o '" + (dir / "two.h5").string() + "'"), dir).exit_code == 0);
+  REQUIRE(run_cli("merge '" + (dir / "one.h5").string() + "' '" + (dir / "two.h5").string() + "' -o '" +
+                      (dir / "merged.h5").string() + "'",
+                  dir)
+              .exit_code == 0);
+  check_same_datasets(dir / "whole.h5", dir / "merged.h5");
+}
+
+TEST_CASE("a disk that fills up mid-run keeps the finished members for --resume",
+          "[apps][run][resume][files]") {
+  const auto dir = scratch_directory("disk-fills-up");
+  const auto scene = dir / "long.toml";
+  write_text(scene, long_scene);
+  const auto small = dir / "small";
+  fs::create_directories(small);
+  // a 4 MiB file system of our own (a private mount namespace), filled by another writer mid-run
+  const std::string mount =
+      "unshare -rm sh -c \"mount -t tmpfs -o size=4m tmpfs '" + small.string() + "' && ";
+  if (std::system((mount + "true\" 2>/dev/null").c_str()) != 0) {
+    WARN("skipped: no private tmpfs mount here (unshare -rm and mount -t tmpfs must work)");
+    return;
   }
-  CHECK(resumed.attribute_flag("complete"));
+  REQUIRE(
+      run_cli("run '" + scene.string() + "' -q -o '" + (dir / "whole.h5").string() + "'", dir).exit_code ==
+      0);
+  const auto log = dir / "full.txt";
+  const std::string command = mount + std::string(ROTORSWEEP_EXECUTABLE) + " run '" + scene.string() +
+                              "' -q --flush-members 100 -o '" + (small / "out.h5").string() + "' > '" +
+                              log.string() + "' 2>&1 & pid=\\$!; sleep 1; cat /dev/zero > '" +
+                              (small / "filler").string() + "' 2>/dev/null; wait \\$pid; rc=\\$?; cp '" +
+                              (small / "out.h5.partial").string() + "' '" +
+                              (dir / "out.h5.partial").string() + "'; ls '" + small.string() + "' >> '" +
+                              log.string() + "'; exit \\$rc\"";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  const std::string output{std::istreambuf_iterator<char>(in), {}};
+  INFO(output);
+  CHECK(WEXITSTATUS(status) == 1);
+  CHECK_THAT(output, Catch::Contains("No space left on device") && Catch::Contains("--resume"));
+  CHECK_THAT(output, !Catch::Contains("out.h5\n"));  // no complete file in the small file system
+  REQUIRE(fs::exists(dir / "out.h5.partial"));
+  CHECK_FALSE(Hdf5Location::open_file((dir / "out.h5.partial").string()).attribute_flag("complete"));
+  CHECK(rows_done(dir / "out.h5.partial") < 2000);
+  const auto resumed =
+      run_cli("run '" + scene.string() + "' -q -o '" + (dir / "out.h5").string() + "' --resume", dir);
+  INFO(resumed.output);
+  REQUIRE(resumed.exit_code == 0);
+  check_same_datasets(dir / "whole.h5", dir / "out.h5");
 }
