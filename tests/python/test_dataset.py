@@ -85,6 +85,22 @@ def test_open_refuses_an_incomplete_or_foreign_file(tmp_path):
         rotorsweep.open(tmp_path / "other.h5")
 
 
+def test_rows_not_done_of_a_partial_file_are_missing(tmp_path):
+    import h5py
+
+    rotorsweep.run(THREE_AXES, progress=False, output=tmp_path / "three.h5")
+    with h5py.File(tmp_path / "three.h5", "r+") as f:
+        f.attrs["complete"] = np.bool_(False)
+        f["members/done"][:5] = False
+        f["members/A"][:5] = -1.0  # rows not done hold whatever the disk held
+    partial = rotorsweep.open(tmp_path / "three.h5", allow_incomplete=True)
+    stacked = rotorsweep.members(partial)
+    missing = stacked.plan_index.values < 5
+    assert np.isnan(stacked.dissipation.values[missing]).all()
+    assert np.isfinite(stacked.dissipation.values[~missing]).all()
+    assert stacked.done.values[~missing].all()
+
+
 def test_scene_helpers():
     axes = rotorsweep.plan_axes(THREE_AXES)
     assert list(axes) == ["rows", "rtol", "A", "g", "noise", "offset", "ic", "replica"]
