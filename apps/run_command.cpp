@@ -22,10 +22,9 @@
 #include "kernels/lane.hpp"
 #include "kernels/stepper_list.hpp"
 #include "progress_line.hpp"
+#include "run_support.hpp"
 
 namespace rotorsweep::apps {
-
-namespace {
 
 /// -o, else output.path, else SCENE's stem + ".h5" in the working directory; a shard without -o
 /// gets ".shard-I-of-N" before the extension, so that shards do not overwrite each other.
@@ -43,6 +42,8 @@ std::string output_path(const RunOptions& options, const ensemble::Scene& scene,
   return path.string();
 }
 
+namespace {
+
 /// "I/N" with 1 ≤ I ≤ N; nothing for an empty text; throws std::invalid_argument otherwise.
 std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t plan_members) {
   if (text.empty()) return std::nullopt;
@@ -53,6 +54,8 @@ std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t p
     throw std::invalid_argument("--shard '" + text + "': must be I/N with 1 <= I <= N (e.g. 2/8)");
   return io::ShardLabel{index, count, plan_members};
 }
+
+}  // namespace
 
 /// Members that did not finish, by status, and finished members whose D is not resolved, read from
 /// the written file a block at a time.
@@ -86,37 +89,7 @@ void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene) 
                                     : "tighten numerics.rtol and atol");
 }
 
-/// SIGINT and SIGTERM raise the sweep's stop flag while an instance lives (the previous handlers
-/// come back after it); signal() names the signal that came, 0 for none.
-class StopOnSignals {
- public:
-  StopOnSignals() {
-    stop_ = false;
-    signal_ = 0;
-    previous_int_ = std::signal(SIGINT, &StopOnSignals::handle);
-    previous_term_ = std::signal(SIGTERM, &StopOnSignals::handle);
-  }
-  ~StopOnSignals() {
-    std::signal(SIGINT, previous_int_);
-    std::signal(SIGTERM, previous_term_);
-  }
-  StopOnSignals(const StopOnSignals&) = delete;
-  StopOnSignals& operator=(const StopOnSignals&) = delete;
-  const std::atomic<bool>* flag() const { return &stop_; }
-  /// Stops the sweep as a signal would, for another reason (signal() stays 0).
-  void stop() const { stop_ = true; }
-  int signal() const { return signal_; }
-
- private:
-  static void handle(int number) {
-    signal_ = number;
-    stop_ = true;
-  }
-  static inline std::atomic<bool> stop_{false};
-  static inline volatile std::sig_atomic_t signal_ = 0;
-  void (*previous_int_)(int) = SIG_DFL;
-  void (*previous_term_)(int) = SIG_DFL;
-};
+namespace {
 
 /// Checks that `partial` is an unfinished file of this scene, shard and program, and returns its
 /// done mask and the wall time spent on it so far.
@@ -149,6 +122,8 @@ std::vector<char> check_partial(const std::string& partial, const ensemble::Scen
   earlier_seconds = file.has_attribute("wall_seconds") ? file.attribute_double("wall_seconds") : 0.0;
   return io::read_done(file);
 }
+
+}  // namespace
 
 /// Whether the file fits on its disk (its columns are allocated up front); says how much it needs when not.
 bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, const std::string& partial) {
@@ -194,6 +169,8 @@ void print_header(const RunOptions& options, const ensemble::Scene& scene, std::
                kernels::stepper_names[std::size_t(scene.stepper)].data(), tolerances.c_str(), threads, lanes);
 }
 
+namespace {
+
 std::string resume_command(const RunOptions& options) {
   std::string command = "rotorsweep run " + options.scene;
   if (!options.output.empty()) command += " -o " + options.output;
@@ -212,6 +189,9 @@ int run_sweep_command(const RunOptions& options) {
     return 2;
   }
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+#if ROTORSWEEP_HAVE_MPI
+  if (launched_by_mpi()) return run_sweep_mpi(options, scene, threads);
+#endif
   std::optional<io::ShardLabel> shard;
   try {
     shard = parse_shard(options.shard, scene.member_count());
@@ -279,7 +259,7 @@ int run_sweep_command(const RunOptions& options) {
   const std::size_t rows = file->rows();
   const std::size_t to_run = options.resume ? remaining.size() : rows;
   const ensemble::MemberSource source{
-      to_run, [&](std::size_t k) { return plan[options.resume ? remaining[k] : plan_index_of_row(k)]; }};
+      to_run, [&](std::size_t k) { return plan[options.resume ? remaining[k] : plan_index_of_row(k)]; }, {}};
 
   print_header(options, scene, rows, threads, shard);
   if (options.resume)

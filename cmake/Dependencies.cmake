@@ -12,6 +12,15 @@ if(ROTORSWEEP_BUILD_TESTS)
   find_package(Catch2 2 REQUIRED)
 endif()
 
+# Distributed sweeps: Open MPI (openmpi-bin, libopenmpi-dev); without it `run` is one process.
+if(ROTORSWEEP_MPI)
+  find_package(MPI COMPONENTS CXX QUIET)
+  if(NOT MPI_CXX_FOUND)
+    message(STATUS "MPI not found: rotorsweep run is built without mpirun support")
+    set(ROTORSWEEP_MPI OFF)
+  endif()
+endif()
+
 # The Python module: Debian's interpreter (where python3-numpy, -h5py and -xarray live), pybind11.
 if(ROTORSWEEP_PYTHON)
   if(NOT DEFINED Python_EXECUTABLE AND EXISTS /usr/bin/python3)

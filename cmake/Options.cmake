@@ -8,3 +8,4 @@ option(ROTORSWEEP_PYTHON "Build the Python module (needs pybind11-dev and python
 if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
   set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
 endif()
+option(ROTORSWEEP_MPI "Let rotorsweep run share a plan between mpirun ranks (needs libopenmpi-dev; off when absent)" ON)

@@ -68,7 +68,7 @@ SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, i
                        const ProgressCallback& progress, const std::atomic<bool>* stop) {
   std::vector<MemberResult> results(members.size());
   std::vector<char> finished(members.size(), 0);
-  const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
+  const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
   auto outcome =
       run_members(scene, source, threads, SweepControl{progress, stop}, [&](MemberResult&& result) {
         // members are in plan order (sorted by index): find the result's position

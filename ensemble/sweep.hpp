@@ -44,10 +44,16 @@ struct SweepControl {
   bool stopped() const { return stop != nullptr && stop->load(std::memory_order_relaxed); }
 };
 
+struct VariantRange;
+
 /// The members a run takes, in plan order (ascending Member::index): how many, and the k-th.
 struct MemberSource {
   std::size_t count = 0;
   std::function<Member(std::size_t k)> at;
+  /// Optional: the next k of a range for this process to run (≥ range.end: none left), from a
+  /// counter shared with other processes; called from any thread. Without it the threads share
+  /// one counter per range.
+  std::function<std::size_t(const VariantRange&)> claim;
 };
 
 /// Members [begin, end) of a source, all of one variant.

@@ -36,7 +36,8 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, 
     LaneScheduler<Model, Integrator, Setup> scheduler(scene, variant, setup);
     const auto next_member = [&]() -> std::optional<Member> {
       if (control.stopped()) return std::nullopt;
-      const std::size_t k = next.fetch_add(1, std::memory_order_relaxed);
+      const std::size_t k =
+          range.source->claim ? range.source->claim(range) : next.fetch_add(1, std::memory_order_relaxed);
       if (k >= range.end) return std::nullopt;
       return range.source->at(k);
     };

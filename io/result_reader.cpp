@@ -52,12 +52,14 @@ std::vector<char> read_done(const Hdf5Location& file) {
 
 std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensemble::Scene& scene,
                                            const ensemble::MemberPlan& plan, std::size_t first,
-                                           std::size_t count) {
+                                           std::size_t count, const char* keep) {
+  const auto kept = [keep](std::size_t m) { return keep == nullptr || keep[m] != 0; };
   const auto group = file.open_group("members");
   std::vector<MemberResult> results(count);
   if (group.has("plan_index")) {
     const auto index = group.read_rows_integers("plan_index", first, count);
     for (std::size_t m = 0; m < count; ++m) {
+      if (!kept(m)) continue;
       if (index[m] < 0 || std::size_t(index[m]) >= plan.size())
         throw std::runtime_error("/members/plan_index is outside the plan");
       results[m].index = std::size_t(index[m]);
@@ -85,6 +87,7 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
   if (scene.classifies_regimes()) regime = group.read_rows_strings("regime", first, count);
 
   for (std::size_t m = 0; m < count; ++m) {
+    if (!kept(m)) continue;
     MemberResult& r = results[m];
     r.status = status_from(status[m]);
     if (!regime.empty()) r.regime = regime_from(regime[m]);
@@ -114,17 +117,27 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
         const auto& summary = channel.summaries[k];
         const auto values = group.read_rows_doubles(std::string(summary.column), first, count);
         for (std::size_t m = 0; m < count; ++m)
-          results[m].summary(summary.summary, channel.channel) = values[m];
+          if (kept(m)) results[m].summary(summary.summary, channel.channel) = values[m];
       }
       if (!scene.period_series) continue;
       const auto matrix = read_matrix(group, "periods/" + std::string(channel.column), first, count);
       for (std::size_t m = 0; m < count; ++m) {
+        if (!kept(m)) continue;
         auto& records = results[m].periods;
         records.resize(std::size_t(results[m].periods_run));
         for (std::size_t p = 0; p < records.size() && p < matrix.width; ++p)
           records[p][channel.channel] = matrix.row(m)[p];
       }
     }
+  }
+  if (keep) {
+    std::size_t out = 0;
+    for (std::size_t m = 0; m < count; ++m)
+      if (kept(m)) {
+        if (out != m) results[out] = std::move(results[m]);
+        ++out;
+      }
+    results.resize(out);
   }
   return results;
 }

@@ -18,11 +18,12 @@ std::string written_by(const Hdf5Location& file);
 
 /// Rows [first, first + count) of `file`'s /members as results; MemberResult::index is the plan
 /// index (the row itself, or /members/plan_index of a shard). `plan` is the file's own scene's.
+/// With `keep` (count flags), only the rows it marks are read back (the others may hold anything).
 /// Throws std::runtime_error naming the column for one that is missing or holds a value the
 /// writer never writes.
 std::vector<ensemble::MemberResult> read_member_rows(const Hdf5Location& file, const ensemble::Scene& scene,
                                                      const ensemble::MemberPlan& plan, std::size_t first,
-                                                     std::size_t count);
+                                                     std::size_t count, const char* keep = nullptr);
 
 /// /members/done: 1 for the rows that hold a finished member.
 std::vector<char> read_done(const Hdf5Location& file);

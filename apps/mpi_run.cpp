@@ -1,0 +1,273 @@
+// `mpirun -np K rotorsweep run SCENE`: the ranks take members from one counter per variant on rank 0
+// (MPI one-sided fetch-and-add), stream them into a file each, and rank 0 joins the rows.
+#include <mpi.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <mutex>
+
+#include "build_info.hpp"
+#include "ensemble/member_plan.hpp"
+#include "ensemble/sweep.hpp"
+#include "io/member_stream.hpp"
+#include "io/output_target.hpp"
+#include "io/result_reader.hpp"
+#include "progress_line.hpp"
+#include "run_support.hpp"
+
+namespace rotorsweep::apps {
+
+bool launched_by_mpi() {
+  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMIX_RANK") != nullptr ||
+         std::getenv("PMI_RANK") != nullptr;
+}
+
+namespace {
+
+/// MPI from construction to destruction; threads call MPI one at a time (MPI_THREAD_SERIALIZED).
+class MpiSession {
+ public:
+  MpiSession() {
+    int provided = 0;
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  }
+  ~MpiSession() { MPI_Finalize(); }
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  /// Rank 0's value of `value`, on every rank.
+  int broadcast(int value) const {
+    MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    return value;
+  }
+  std::string broadcast(std::string text) const {
+    int length = int(text.size());
+    MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    text.resize(std::size_t(length));
+    MPI_Bcast(text.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+    return text;
+  }
+
+ private:
+  int rank_ = 0, size_ = 1;
+};
+
+/// One counter per variant in a window on rank 0; every rank's threads fetch-and-add them.
+class SharedCounters {
+ public:
+  SharedCounters(std::size_t count, int rank) {
+    const MPI_Aint bytes = rank == 0 ? MPI_Aint(count * sizeof(std::uint64_t)) : 0;
+    MPI_Win_allocate(bytes, sizeof(std::uint64_t), MPI_INFO_NULL, MPI_COMM_WORLD, &base_, &window_);
+    if (rank == 0)
+      for (std::size_t i = 0; i < count; ++i) base_[i] = 0;
+    MPI_Barrier(MPI_COMM_WORLD);
+    MPI_Win_lock_all(0, window_);
+  }
+  ~SharedCounters() {
+    MPI_Win_unlock_all(window_);
+    MPI_Win_free(&window_);
+  }
+  SharedCounters(const SharedCounters&) = delete;
+  SharedCounters& operator=(const SharedCounters&) = delete;
+
+  /// The next value of counter `slot` for this process: taken from rank 0 `block` at a time
+  /// (one round trip per block), handed out one at a time.
+  std::uint64_t take(std::size_t slot) {
+    const std::lock_guard guard(lock_);
+    auto& [next, end] = pools_[slot];
+    if (next == end) {
+      const std::uint64_t count = block;
+      MPI_Fetch_and_op(&count, &next, MPI_UINT64_T, 0, MPI_Aint(slot), MPI_SUM, window_);
+      MPI_Win_flush(0, window_);
+      end = next + block;
+    }
+    return next++;
+  }
+
+  /// Members per round trip: a few lane refills' worth, small against a rank's share.
+  static constexpr std::uint64_t block = 32;
+
+ private:
+  std::map<std::size_t, std::pair<std::uint64_t, std::uint64_t>> pools_;  ///< per slot: [next, end)
+  std::uint64_t* base_ = nullptr;
+  MPI_Win window_ = MPI_WIN_NULL;
+  std::mutex lock_;
+};
+
+std::string rank_file(const std::string& partial, int rank) {
+  return partial + ".rank-" + std::to_string(rank);
+}
+
+/// Rank 0: the rows each rank marked done, read back a block at a time into `out`; returns the
+/// members joined and removes the rank files.
+std::size_t join_rank_files(const io::ResultFile& out, const ensemble::Scene& scene,
+                            const ensemble::MemberPlan& plan, const std::string& partial, int ranks,
+                            std::vector<std::size_t>& per_rank) {
+  constexpr std::size_t block = 4096;
+  std::size_t joined = 0;
+  for (int r = 0; r < ranks; ++r) {
+    const std::string path = rank_file(partial, r);
+    {
+      const auto file = io::Hdf5Location::open_file(path);
+      const auto done = io::read_done(file);
+      for (std::size_t first = 0; first < done.size(); first += block) {
+        const std::size_t count = std::min(block, done.size() - first);
+        auto results = io::read_member_rows(file, scene, plan, first, count, done.data() + first);
+        per_rank[std::size_t(r)] += results.size();
+        joined += results.size();
+        out.write_results(plan, std::move(results));
+      }
+    }
+    std::filesystem::remove(path);
+  }
+  return joined;
+}
+
+}  // namespace
+
+int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int threads) {
+  MpiSession mpi;
+  const bool root = mpi.rank() == 0;
+  if (options.resume || !options.shard.empty()) {
+    if (root)
+      std::cerr
+          << "error: --resume and --shard run in one process; under mpirun the ranks share the whole plan "
+             "(resume an MPI run's partial file without mpirun)\n";
+    return 2;
+  }
+  const std::string path = output_path(options, scene, std::nullopt);
+  std::optional<io::OutputTarget> target;
+  int status = 0;
+  std::string partial;
+  if (root) {
+    try {
+      target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force,
+                     true);
+      partial = target->temporary();
+      if (!options.force && std::filesystem::exists(partial)) {
+        std::cerr
+            << "error: " << partial
+            << " holds the finished members of an earlier run: continue it with --resume (without mpirun), "
+               "or start afresh with --force\n";
+        target->keep();
+        status = 2;
+      } else if (!fits_on_disk(scene, scene.member_count(), partial)) {
+        status = 2;
+      }
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << " (-o or output.path)\n";
+      status = 2;
+    }
+  }
+  if ((status = mpi.broadcast(status)) != 0) return status;
+  partial = mpi.broadcast(partial);
+
+  // every rank: the members it takes, streamed into a whole-plan file of its own
+  const ensemble::MemberPlan plan(scene);
+  const io::Provenance provenance{options.scene, version, revision};
+  std::string error;
+  ensemble::SweepOutcome outcome;
+  int signal_number = 0;
+  {
+    std::optional<io::ResultFile> file;
+    try {
+      file.emplace(rank_file(partial, mpi.rank()), scene, provenance);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    SharedCounters counters(scene.variants().size(), mpi.rank());
+    if (root) print_header(options, scene, plan.size(), threads, std::nullopt);
+    if (root) std::fprintf(stderr, "MPI: %d ranks share the plan\n", mpi.size());
+    ProgressLine progress(plan.size(), root && !options.quiet);
+    std::mutex progress_lock;
+    ensemble::MemberSource source{
+        plan.size(), [&](std::size_t k) { return plan[k]; },
+        [&](const ensemble::VariantRange& range) {
+          const std::size_t k = range.begin + counters.take(plan[range.begin].variant);
+          if (root && progress_lock.try_lock()) {
+            progress.update(std::min(k, plan.size()));  // members taken by all ranks
+            progress_lock.unlock();
+          }
+          return k;
+        }};
+    const StopOnSignals signals;
+    if (file) {
+      io::MemberStream stream(*file, plan, {options.flush_seconds, options.flush_members},
+                              [&signals] { signals.stop(); });
+      outcome = ensemble::run_members(scene, source, threads, {{}, signals.flag()},
+                                      [&stream](ensemble::MemberResult&& r) { stream.add(std::move(r)); });
+      try {
+        stream.flush();
+        file->keep_partial(stream.written(), outcome.statistics);
+        file->close();
+      } catch (const std::exception& e) {
+        error = e.what();
+      }
+    }
+    signal_number = signals.signal();
+    MPI_Barrier(MPI_COMM_WORLD);  // every rank is done with the counters
+    progress.finish();
+  }
+  if (!error.empty()) std::fprintf(stderr, "error: rank %d: %s\n", mpi.rank(), error.c_str());
+
+  // the run's statistics over all ranks
+  auto stats = outcome.statistics;
+  double busy = stats.lane_steps_busy, total = stats.lane_steps_total, wall = stats.wall_seconds;
+  int rank_threads = stats.threads, failed = error.empty() ? 0 : 1;
+  MPI_Allreduce(MPI_IN_PLACE, &busy, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &rank_threads, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &signal_number, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  stats.lane_steps_busy = busy;
+  stats.lane_steps_total = total;
+  stats.wall_seconds = wall;
+  stats.threads = rank_threads;
+
+  int code = 0;
+  if (root) {
+    std::vector<std::size_t> per_rank(std::size_t(mpi.size()), 0);
+    try {
+      io::ResultFile out(partial, scene, provenance);
+      const std::size_t joined = join_rank_files(out, scene, plan, partial, mpi.size(), per_rank);
+      std::string shares;
+      for (std::size_t r = 0; r < per_rank.size(); ++r)
+        shares += (r ? ", " : "") + std::to_string(per_rank[r]);
+      if (joined == plan.size() && !failed) {
+        out.finish(stats);
+        out.close();
+        report_outcome(io::Hdf5Location::open_file(partial), scene);
+        target->commit();
+        std::fprintf(stderr, "wrote %s: %zu members in %s (members per rank: %s; lane occupancy %.1f %%)\n",
+                     path.c_str(), plan.size(), format_duration(stats.wall_seconds).c_str(), shares.c_str(),
+                     100 * stats.occupancy());
+      } else {
+        out.keep_partial(joined, stats);
+        out.close();
+        target->keep();
+        std::fprintf(stderr,
+                     "%s: %zu of %zu members done (per rank: %s), kept in %s (complete = FALSE).\n"
+                     "resume with: rotorsweep run %s%s%s --resume\n",
+                     failed ? "error: a rank failed" : "stopped", joined, plan.size(), shares.c_str(),
+                     partial.c_str(), options.scene.c_str(), options.output.empty() ? "" : " -o ",
+                     options.output.c_str());
+        code = failed ? 1 : 128 + (signal_number ? signal_number : SIGINT);
+      }
+    } catch (const std::exception& e) {
+      std::cerr << "error: joining the ranks' files into " << partial << " failed: " << e.what() << "\n";
+      target->keep();
+      code = 1;
+    }
+  }
+  return mpi.broadcast(code);
+}
+
+}  // namespace rotorsweep::apps
