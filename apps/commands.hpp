@@ -41,6 +41,13 @@ struct MergeOptions {
 };
 int run_merge(const MergeOptions& options);
 
+struct CouplingsOptions {
+  std::size_t range = 1;                ///< rows u = 1 .. range
+  std::string row_length = "infinite";  ///< rotors per row, or "infinite"
+  std::string output;                   ///< CSV path; empty: stdout only
+};
+int run_couplings(const CouplingsOptions& options);
+
 struct InfoOptions {
   std::string file;
   bool scene = false;  ///< also print the scene text

@@ -112,6 +112,17 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100000000))
       ->capture_default_str();
 
+  CouplingsOptions couplings;
+  auto* couplings_cmd = app.add_subcommand(
+      "couplings",
+      "Print the point-dipole coupling table a, b_u, c_u (docs/model.md §8) that a range of rows gives");
+  couplings_cmd->add_option("--range", couplings.range, "Rows u = 1 .. M apart")
+      ->check(CLI::Range(std::size_t(1), std::size_t(100000)))
+      ->capture_default_str();
+  couplings_cmd->add_option("--row-length", couplings.row_length, "Rotors per row, or 'infinite'")
+      ->capture_default_str();
+  couplings_cmd->add_option("-o,--output", couplings.output, "Also write the table as CSV to this file");
+
   auto* bench_cmd = app.add_subcommand("bench", "Measure speed (single thread)");
   bench_cmd->require_subcommand(1);
   BenchKernelOptions bench;
@@ -124,7 +135,7 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-    for (const auto* cmd : {run_cmd, merge_cmd, table_cmd, chambers_cmd, curves_cmd, jump_cmd})
+    for (const auto* cmd : {run_cmd, merge_cmd, table_cmd, chambers_cmd, curves_cmd, jump_cmd, couplings_cmd})
       if (cmd->parsed() && cmd->count("-o") > 0 && cmd->get_option("-o")->as<std::string>().empty())
         throw CLI::ValidationError("--output", "the output path is empty");
   } catch (const CLI::ParseError& e) {
@@ -137,6 +148,7 @@ int main(int argc, char** argv) {
     if (*run_cmd) return run_sweep_command(run);
     if (*merge_cmd) return run_merge(merge);
     if (*info_cmd) return run_info(info);
+    if (*couplings_cmd) return run_couplings(couplings);
     if (*table_cmd) return run_table(table);
     if (*kernels_cmd) return run_bench_kernels(bench);
     if (*chambers_cmd) return run_landscape_chambers(landscape);
