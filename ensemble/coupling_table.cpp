@@ -61,6 +61,20 @@ CouplingTable dipolar_table(std::size_t range, std::size_t row_length) {
   return table;
 }
 
+CouplingTable RowCouplings::for_rows(std::size_t rows) const {
+  CouplingTable out;
+  switch (kind) {
+    case Kind::nearest: out = nearest_neighbour_table(); break;
+    case Kind::table: out = table; break;
+    case Kind::dipolar: out = dipolar_table(all_rows ? largest_range(rows, open) : range, row_length); break;
+  }
+  if (kind != Kind::nearest && !open && 2 * out.range() == rows) {
+    out.b.back() *= 0.5;
+    out.c.back() *= 0.5;
+  }
+  return out;
+}
+
 TwoAngleCoefficients two_angle_coefficients(const CouplingTable& table) {
   TwoAngleCoefficients out{table.a, 0.0, 0.0};
   for (std::size_t u = 1; u <= table.range(); ++u) {

@@ -23,6 +23,28 @@ CouplingTable nearest_neighbour_table();
 /// cos(θ1 + θ2)]; a finite row weighs offset k by its share of pairs, (L − |k|)/L.
 CouplingTable dipolar_table(std::size_t range, std::size_t row_length);
 
+/// The model section's couplings as a scene gives them (docs/model.md §1 "Extended couplings"):
+/// nearest neighbours, point dipoles over a range of rows, or an explicit table; periodic or open rows.
+struct RowCouplings {
+  enum class Kind { nearest, dipolar, table };
+  Kind kind = Kind::nearest;
+  std::size_t range = 1;       ///< dipolar: rows u = 1 .. range apart
+  bool all_rows = false;       ///< dipolar: range "all" (every row of the array)
+  std::size_t row_length = 0;  ///< dipolar: rotors per row; 0 is an infinite row
+  CouplingTable table;         ///< kind table: as given
+  bool open = false;           ///< open rows: pairs across an edge are dropped
+
+  /// Today's model (nearest neighbours, periodic rows), integrated by NearestNeighbourRows.
+  bool nearest_neighbour() const { return kind == Kind::nearest && !open; }
+  /// The largest range `rows` rows allow: N − 1 open, N/2 periodic (minimum image).
+  static std::size_t largest_range(std::size_t rows, bool open) { return open ? rows - 1 : rows / 2; }
+  /// The table for N = rows: range "all" resolved to largest_range. Periodic rows are a ring, each
+  /// pair at its shortest distance: a partner exactly N/2 away is reached both ways round, so its
+  /// b and c are halved (each pair once). Nearest neighbours keep today's model as it is (at N = 2
+  /// its two links join the same rows: the two-angle reduction).
+  CouplingTable for_rows(std::size_t rows) const;
+};
+
 /// The two-angle reduction with periodic rows alternating θe, θo: H_r = −a_M[cos 2θe + cos 2θo] +
 /// b_M cos(θe − θo) − c_M cos(θe + θo) + A[…], with a_M = a + Σ_{u even} c_u, b_M = 2 Σ_{u odd} b_u,
 /// c_M = 2 Σ_{u odd} c_u (nearest neighbours: 3/2, 2, 0).

@@ -1,5 +1,5 @@
-// How a member of a scene becomes a lane of the row model (docs/model.md §1, 2, 7): its initial
-// angles from its own stream, and its parameters A, g, the strict-FM mark and its disorder.
+// How a member of a scene becomes a lane of the row model (docs/model.md §1, 2, 7, 8): its initial
+// angles from its own stream, and its parameters A, g, the strict-FM mark, its disorder or couplings.
 #pragma once
 
 #include <algorithm>
@@ -24,17 +24,26 @@ struct RowSetup {
   }
 
   /// A member that starts with all rows equal is marked strict FM (symmetry protection). The
-  /// parameters point into this setup's buffer for the member's disorder, valid until the next call.
+  /// parameters point into this setup's buffers (its disorder, or the coupling table of its N).
   typename Model::Parameters parameters(const Member& member, const std::vector<double>& theta) {
     const bool strict_fm = std::all_of(theta.begin(), theta.end(), [&](double x) { return x == theta[0]; });
-    typename Model::Parameters p{member.A, member.g, strict_fm};
-    if (!scene->disorder.any()) return p;
-    deviations = row_deviations(scene->disorder, member.rows, member.replica);
-    const auto rows_or_null = [](const std::vector<double>& v) { return v.empty() ? nullptr : v.data(); };
-    p.A_rows = rows_or_null(deviations.A);
-    p.anisotropy_rows = rows_or_null(deviations.anisotropy);
-    p.coupling_rows = rows_or_null(deviations.coupling);
-    return p;
+    if constexpr (coupled) {
+      if (table_rows != member.rows) {
+        table = scene->couplings.for_rows(member.rows);
+        table_rows = member.rows;
+      }
+      return {member.A,       member.g,       strict_fm,     table.a,
+              table.b.data(), table.c.data(), table.range(), scene->couplings.open};
+    } else {
+      typename Model::Parameters p{member.A, member.g, strict_fm};
+      if (!scene->disorder.any()) return p;
+      deviations = row_deviations(scene->disorder, member.rows, member.replica);
+      const auto rows_or_null = [](const std::vector<double>& v) { return v.empty() ? nullptr : v.data(); };
+      p.A_rows = rows_or_null(deviations.A);
+      p.anisotropy_rows = rows_or_null(deviations.anisotropy);
+      p.coupling_rows = rows_or_null(deviations.coupling);
+      return p;
+    }
   }
 
   /// The key of the member's noise stream (thermal seed, replica).
@@ -43,6 +52,10 @@ struct RowSetup {
   }
 
   RowDeviations deviations;  ///< the last member's disorder
+  /// Whether the model takes a coupling table (CoupledRows) rather than per-row disorder.
+  static constexpr bool coupled = requires(typename Model::Parameters p) { p.range; };
+  CouplingTable table;  ///< the coupling table of N = table_rows
+  std::size_t table_rows = 0;
 };
 
 }  // namespace rotorsweep::ensemble

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ensemble/coupling_table.hpp"
 #include "ensemble/disorder.hpp"
 #include "ensemble/initial_conditions.hpp"
 #include "ensemble/observables.hpp"
@@ -37,6 +38,7 @@ struct Scene {
   std::string text;  ///< the scene file as written, stored in the output for provenance
 
   std::vector<std::size_t> row_counts{20};  ///< model.rows: every N to run
+  RowCouplings couplings;                   ///< model.couplings, range, row_length, coupling_table, boundary
   std::vector<double> rtol_values{1e-6};    ///< numerics.rtol, paired with atol_values
   std::vector<double> atol_values{1e-9};
   std::vector<double> g_values;  ///< drive: g = damping × drive speed

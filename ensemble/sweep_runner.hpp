@@ -13,6 +13,7 @@
 #include "ensemble/row_setup.hpp"
 #include "ensemble/sweep.hpp"
 #include "kernels/adaptive_integrator.hpp"
+#include "kernels/coupled_rows.hpp"
 #include "kernels/row_model.hpp"
 #include "kernels/stepper_list.hpp"
 
@@ -82,13 +83,18 @@ decltype(auto) with_integrals(kernels::Integrals needed, F&& f) {
 }
 
 /// Calls f.template operator()<Model>() with the row model in the scene's lane type and with the
-/// quadratures its observables need.
+/// quadratures its observables need: NearestNeighbourRows for today's model, CoupledRows for a
+/// coupling table or open rows.
 template <class F>
 decltype(auto) with_row_model(const Scene& scene, F&& f) {
   return with_flag(scene.lanes == LaneKind::simd, [&]<bool simd>() {
     using V = std::conditional_t<simd, kernels::simd_lane, double>;
-    return with_integrals(scene.observables.quadratures(), [&]<kernels::Integrals Q>() {
-      return f.template operator()<kernels::NearestNeighbourRows<V, Q>>();
+    return with_flag(!scene.couplings.nearest_neighbour(), [&]<bool coupled>() {
+      return with_integrals(scene.observables.quadratures(), [&]<kernels::Integrals Q>() {
+        using Model =
+            std::conditional_t<coupled, kernels::CoupledRows<V, Q>, kernels::NearestNeighbourRows<V, Q>>;
+        return f.template operator()<Model>();
+      });
     });
   });
 }

@@ -24,7 +24,7 @@ namespace {
 using ensemble::Scene;
 
 const std::map<std::string, std::set<std::string>> allowed_keys{
-    {"model", {"rows"}},
+    {"model", {"rows", "couplings", "range", "row_length", "coupling_table", "boundary"}},
     {"drive", {"g"}},
     {"sweep", {"A"}},
     {"initial", {"kinds", "noise", "offset", "angles", "replicas", "seed"}},
@@ -282,6 +282,66 @@ Section section(const toml::table& root, const std::string& name) {
   return Section(root[name].as_table(), name);
 }
 
+/// "all", or an integer from 1 to `limit`, at key k; 0 stands for "all".
+std::size_t range_or_all(const Section& model, std::string_view k, const char* what, std::size_t fallback) {
+  const toml::node* node = model.find(k);
+  if (!node) return fallback;
+  if (node->value_exact<std::string>() == std::optional<std::string>("all") ||
+      node->value_exact<std::string>() == std::optional<std::string>("infinite"))
+    return 0;
+  const auto v = node->value_exact<long long>();
+  if (!node->is_integer() || !v || *v < 1 || *v > 100000)
+    fail(model.key(k), std::string("must be ") + what + " (got " + describe(*node) + ")");
+  return std::size_t(*v);
+}
+
+/// model.couplings, range, row_length, coupling_table, boundary (docs/model.md §1, §8).
+void read_couplings(const Section& model, Scene& scene) {
+  auto& couplings = scene.couplings;
+  couplings.open = model.choice("boundary", "periodic", {"periodic", "open"}) == "open";
+  const std::string kind = model.choice("couplings", "nearest", {"nearest", "dipolar"});
+  const bool has_table = model.find("coupling_table") != nullptr;
+  if (has_table && model.find("couplings"))
+    fail(model.key("coupling_table"), "and model.couplings exclude each other: give one");
+  for (const char* k : {"range", "row_length"})
+    if (model.find(k) && kind != "dipolar") fail(model.key(k), "needs model.couplings = \"dipolar\"");
+  if (has_table) {
+    const auto* table = model.find("coupling_table")->as_table();
+    if (!table) fail(model.key("coupling_table"), "must be a table { a = …, b = [b_1, …], c = [c_1, …] }");
+    for (const auto& [name, value] : *table)
+      if (name != "a" && name != "b" && name != "c")
+        fail(model.key("coupling_table") + "." + std::string(name.str()),
+             "unknown key; the table has a, b, c");
+    const Section t(table, model.key("coupling_table"));
+    const auto finite = [](double) { return true; };
+    couplings.kind = ensemble::RowCouplings::Kind::table;
+    couplings.table.a = Section::checked_number(t.require("a", "a number"), t.key("a"), "a number", finite);
+    couplings.table.b = t.numbers("b", {}, "a number", finite);
+    couplings.table.c = t.numbers("c", {}, "a number", finite);
+    if (couplings.table.b.empty()) t.require("b", "a non-empty list of numbers b_1 … b_M");
+    if (couplings.table.c.size() != couplings.table.b.size())
+      fail(t.key("c"), "must be as long as " + t.key("b") + " (" + std::to_string(couplings.table.b.size()) +
+                           " values, c_u for u = 1 .. M)");
+  } else if (kind == "dipolar") {
+    couplings.kind = ensemble::RowCouplings::Kind::dipolar;
+    couplings.range = range_or_all(model, "range", "an integer from 1 to 100000, or \"all\"", 1);
+    couplings.all_rows = couplings.range == 0;
+    couplings.row_length =
+        range_or_all(model, "row_length", "an integer from 1 to 100000 (rotors per row), or \"infinite\"", 0);
+  }
+  const std::size_t range = couplings.kind == ensemble::RowCouplings::Kind::table ? couplings.table.range()
+                            : couplings.all_rows                                  ? 0
+                                                                                  : couplings.range;
+  for (std::size_t n : scene.row_counts) {
+    const std::size_t largest = ensemble::RowCouplings::largest_range(n, couplings.open);
+    if (range > largest)
+      fail(model.key(couplings.kind == ensemble::RowCouplings::Kind::table ? "coupling_table" : "range"),
+           "reaches " + std::to_string(range) + " rows, more than N = " + std::to_string(n) + " " +
+               (couplings.open ? "open rows have (at most N - 1)"
+                               : "periodic rows allow (at most N/2: each pair at its shortest distance)"));
+  }
+}
+
 Scene read_scene(const toml::table& root) {
   check_sections(root);
   Scene scene;
@@ -290,6 +350,7 @@ Scene read_scene(const toml::table& root) {
   for (long long n : model.integers("rows", "an even integer from 2 to 100000",
                                     [](long long n) { return n >= 2 && n <= 100000 && n % 2 == 0; }))
     scene.row_counts.push_back(std::size_t(n));
+  read_couplings(model, scene);
 
   scene.g_values = grid(section(root, "drive"), "g", "> 0", [](double g) { return g > 0; });
   scene.A_values = grid(section(root, "sweep"), "A", ">= 0", [](double A) { return A >= 0; });
@@ -417,6 +478,10 @@ Scene read_scene(const toml::table& root) {
       fail(output.key("path"), "must be a non-empty string (got " + describe(*path) + ")");
     scene.output_path = *v;
   }
+  if (!scene.couplings.nearest_neighbour() && scene.disorder.any())
+    fail("disorder",
+         "works with nearest-neighbour periodic rows only (model.couplings = \"nearest\", "
+         "model.boundary = \"periodic\")");
   if (scene.member_count() > max_members) fail_too_many_members(scene);
   return scene;
 }
