@@ -167,6 +167,18 @@ void print_header(const RunOptions& options, const ensemble::Scene& scene, std::
                scene.A_values.size(), scene.g_values.size(), scene.noise_values.size(),
                scene.offset_values.size(), scene.kinds.size(), scene.replicas, rows.c_str(),
                kernels::stepper_names[std::size_t(scene.stepper)].data(), tolerances.c_str(), threads, lanes);
+  const auto& couplings = scene.couplings;
+  if (couplings.nearest_neighbour()) return;
+  std::string what = "nearest neighbours";
+  if (couplings.kind == ensemble::RowCouplings::Kind::table)
+    what = "the table of model.coupling_table (range " + std::to_string(couplings.table.range()) + ")";
+  else if (couplings.kind == ensemble::RowCouplings::Kind::dipolar)
+    what = "point dipoles over " +
+           (couplings.all_rows ? std::string("all rows") : std::to_string(couplings.range) + " rows") +
+           ", rows " +
+           (couplings.row_length ? std::to_string(couplings.row_length) + " rotors long" : "infinite");
+  std::fprintf(stderr, "couplings: %s; %s boundary (dense Jacobian)\n", what.c_str(),
+               couplings.open ? "open" : "periodic");
 }
 
 namespace {
