@@ -175,8 +175,8 @@ void print_header(const RunOptions& options, const ensemble::Scene& scene, std::
   else if (couplings.kind == ensemble::RowCouplings::Kind::dipolar)
     what = "point dipoles over " +
            (couplings.all_rows ? std::string("all rows") : std::to_string(couplings.range) + " rows") +
-           ", rows " +
-           (couplings.row_length ? std::to_string(couplings.row_length) + " rotors long" : "infinite");
+           (couplings.row_length ? ", rows of " + std::to_string(couplings.row_length) + " rotors"
+                                 : std::string(", infinite rows"));
   std::fprintf(stderr, "couplings: %s; %s boundary (dense Jacobian)\n", what.c_str(),
                couplings.open ? "open" : "periodic");
 }
