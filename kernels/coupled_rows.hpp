@@ -13,6 +13,7 @@
 #include "kernels/lane_arena.hpp"
 #include "kernels/lane_math.hpp"
 #include "kernels/model_concept.hpp"
+#include "kernels/row_quadratures.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -29,14 +30,8 @@ class CoupledRows {
   static constexpr double period = two_pi;
   static constexpr Integrals integrals = Q;
   static constexpr std::size_t quadrature_count = Q.count();
-  /// As NearestNeighbourRows: R, ρ̄ and H steer the step; W and S are carried.
-  static constexpr std::array<bool, quadrature_count + 1> error_controlled = [] {
-    std::array<bool, quadrature_count + 1> c{};
-    if constexpr (Q.drive) c[Q.drive_index()] = true;
-    if constexpr (Q.alignment) c[Q.alignment_index()] = true;
-    if constexpr (Q.energy) c[Q.energy_index()] = true;
-    return c;
-  }();
+  /// Which quadratures steer the step size (kernels/row_quadratures.hpp).
+  static constexpr std::array<bool, quadrature_count + 1> error_controlled = row_error_controlled<Q>();
 
   /// One lane's parameters; the table (a, b[0 .. range), c[0 .. range)) and the boundary must be
   /// the same in every lane.
@@ -196,62 +191,15 @@ class CoupledRows {
   }
 
   ROTORSWEEP_HD void integrands(const Workspace& w, const V* f, V* qdot) const {
-    const std::size_t n = rows_;
-    if constexpr (Q.drive) {
-      V sum(0.0);
-      for (std::size_t j = 0; j < n; ++j) sum += w.sin_lag[j];
-      qdot[Q.drive_index()] = A_ * sum;
-    }
-    if constexpr (Q.work) {
-      V sum(0.0);
-      for (std::size_t j = 0; j < n; ++j) sum += w.sin_lag[j] * f[j];
-      qdot[Q.work_index()] = A_ * sum;
-    }
-    if constexpr (Q.stokes) {
-      V sum(0.0);
-      for (std::size_t j = 0; j < n; ++j) sum += f[j] * f[j];
-      qdot[Q.stokes_index()] = g_ * sum;
-    }
-    if constexpr (Q.alignment) qdot[Q.alignment_index()] = alignment_from_trigonometry(w);
-    if constexpr (Q.energy) qdot[Q.energy_index()] = energy_from_trigonometry(w);
+    row_integrands<Q>(
+        rows_, A_, g_, w.sin_lag, f, [&] { return alignment_from_trigonometry(w); },
+        [&] { return energy_from_trigonometry(w); }, qdot);
   }
 
   ROTORSWEEP_HD void integrand_gradients(Workspace& w, const V* f, const Jacobian& J, const V* df_dt,
                                          V* dq_dtheta, V* dq_dt) const {
     const std::size_t n = rows_;
-    if constexpr (Q.drive) {
-      V* grad = dq_dtheta + Q.drive_index() * n;
-      V sum(0.0);
-      for (std::size_t k = 0; k < n; ++k) {
-        grad[k] = A_ * w.cos_lag[k];
-        sum += w.cos_lag[k];
-      }
-      dq_dt[Q.drive_index()] = lane_neg(A_) * sum;
-    }
-    if constexpr (Q.work) {
-      V* grad = dq_dtheta + Q.work_index() * n;
-      for (std::size_t k = 0; k < n; ++k) w.product[k] = V(0.0);
-      J.multiply_add(w.sin_lag, w.product);  // J symmetric: Jᵀ sin_lag
-      V sum(0.0);
-      for (std::size_t k = 0; k < n; ++k) {
-        grad[k] = A_ * (w.cos_lag[k] * f[k] + w.product[k]);
-        sum += w.sin_lag[k] * df_dt[k] - w.cos_lag[k] * f[k];
-      }
-      dq_dt[Q.work_index()] = A_ * sum;
-    }
-    if constexpr (Q.stokes) {
-      V* grad = dq_dtheta + Q.stokes_index() * n;
-      for (std::size_t k = 0; k < n; ++k) w.product[k] = V(0.0);
-      J.multiply_add(f, w.product);
-      V sum(0.0);
-      for (std::size_t k = 0; k < n; ++k) {
-        grad[k] = V(2.0) * g_ * w.product[k];
-        sum += f[k] * df_dt[k];
-      }
-      dq_dt[Q.stokes_index()] = V(2.0) * g_ * sum;
-    }
-    if constexpr (Q.alignment) {
-      V* grad = dq_dtheta + Q.alignment_index() * n;
+    const auto alignment_gradient = [&](V* grad) {
       const V scale(0.5 / double(links()));
       for (std::size_t k = 0; k < n; ++k) grad[k] = V(0.0);
       for (std::size_t j = 0; j < links(); ++j) {
@@ -260,17 +208,10 @@ class CoupledRows {
         grad[j] -= scale * sin_link;
         grad[k] += scale * sin_link;
       }
-      dq_dt[Q.alignment_index()] = V(0.0);
-    }
-    if constexpr (Q.energy) {
-      V* grad = dq_dtheta + Q.energy_index() * n;
-      V sum(0.0);
-      for (std::size_t k = 0; k < n; ++k) {
-        grad[k] = lane_neg(g_) * f[k];
-        sum += w.sin_lag[k];
-      }
-      dq_dt[Q.energy_index()] = A_ * sum;
-    }
+    };
+    row_integrand_gradients<Q>(
+        n, A_, g_, w.sin_lag, [&](std::size_t k) { return w.cos_lag[k]; }, f, J, df_dt, w.product,
+        alignment_gradient, dq_dtheta, dq_dt);
   }
 
   std::size_t rows_;

@@ -13,6 +13,7 @@
 #include "kernels/lane_arena.hpp"
 #include "kernels/lane_math.hpp"
 #include "kernels/model_concept.hpp"
+#include "kernels/row_quadratures.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -33,16 +34,8 @@ class NearestNeighbourRows {
   static constexpr double period = two_pi;  ///< the drive period
   static constexpr Integrals integrals = Q;
   static constexpr std::size_t quadrature_count = Q.count();
-  /// Which quadratures steer the step size. W and S integrate θ̇ = f(θ, t), which the stages
-  /// sample off the slow manifold, with errors amplified by the stiffness (10 + A)/g that the
-  /// embedded estimate shares and so cannot see; they are carried but do not steer.
-  static constexpr std::array<bool, quadrature_count + 1> error_controlled = [] {
-    std::array<bool, quadrature_count + 1> c{};
-    if constexpr (Q.drive) c[Q.drive_index()] = true;
-    if constexpr (Q.alignment) c[Q.alignment_index()] = true;
-    if constexpr (Q.energy) c[Q.energy_index()] = true;
-    return c;
-  }();
+  /// Which quadratures steer the step size (kernels/row_quadratures.hpp).
+  static constexpr std::array<bool, quadrature_count + 1> error_controlled = row_error_controlled<Q>();
 
   /// One lane's parameters. `strict_fm` marks a member that starts exactly in the strict-FM set
   /// (all rows equal): its stage solves keep all-equal rows exactly equal (CyclicTridiagonal),
@@ -251,83 +244,25 @@ class NearestNeighbourRows {
 
   template <bool per_row>
   ROTORSWEEP_HD void integrands(const Workspace& w, const V* f, V* qdot) const {
-    const std::size_t n = rows_;
-    const V* lag = weighted_lag<per_row>(w);
-    if constexpr (Q.drive) {
-      V sum(0.0);
-      for (std::size_t j = 0; j < n; ++j) sum += lag[j];
-      qdot[Q.drive_index()] = A_ * sum;
-    }
-    if constexpr (Q.work) {
-      V sum(0.0);
-      for (std::size_t j = 0; j < n; ++j) sum += lag[j] * f[j];
-      qdot[Q.work_index()] = A_ * sum;
-    }
-    if constexpr (Q.stokes) {
-      V sum(0.0);
-      for (std::size_t j = 0; j < n; ++j) sum += f[j] * f[j];
-      qdot[Q.stokes_index()] = g_ * sum;
-    }
-    if constexpr (Q.alignment) qdot[Q.alignment_index()] = alignment_from_trigonometry(w);
-    if constexpr (Q.energy) qdot[Q.energy_index()] = energy_from_trigonometry<per_row>(w);
+    row_integrands<Q>(
+        rows_, A_, g_, weighted_lag<per_row>(w), f, [&] { return alignment_from_trigonometry(w); },
+        [&] { return energy_from_trigonometry<per_row>(w); }, qdot);
   }
 
   template <bool per_row>
   ROTORSWEEP_HD void integrand_gradients(Workspace& w, const V* f, const Jacobian& J, const V* df_dt,
                                          V* dq_dtheta, V* dq_dt) const {
     const std::size_t n = rows_;
-    const V* sin_lag = weighted_lag<per_row>(w);
-    if constexpr (Q.drive) {
-      V* grad = dq_dtheta + Q.drive_index() * n;
-      V sum(0.0);
-      for (std::size_t k = 0; k < n; ++k) {
-        const V lag = scaled<per_row>(A_row_, k, w.cos_lag[k]);
-        grad[k] = A_ * lag;
-        sum += lag;
-      }
-      dq_dt[Q.drive_index()] = lane_neg(A_) * sum;
-    }
-    if constexpr (Q.work) {
-      V* grad = dq_dtheta + Q.work_index() * n;
-      for (std::size_t k = 0; k < n; ++k) w.product[k] = V(0.0);
-      J.multiply_add(sin_lag, w.product);  // J symmetric: Jᵀ (1 + δ) sin_lag
-      V sum(0.0);
-      for (std::size_t k = 0; k < n; ++k) {
-        const V lag = scaled<per_row>(A_row_, k, w.cos_lag[k]);
-        grad[k] = A_ * (lag * f[k] + w.product[k]);
-        sum += sin_lag[k] * df_dt[k] - lag * f[k];
-      }
-      dq_dt[Q.work_index()] = A_ * sum;
-    }
-    if constexpr (Q.stokes) {
-      V* grad = dq_dtheta + Q.stokes_index() * n;
-      for (std::size_t k = 0; k < n; ++k) w.product[k] = V(0.0);
-      J.multiply_add(f, w.product);
-      V sum(0.0);
-      for (std::size_t k = 0; k < n; ++k) {
-        grad[k] = V(2.0) * g_ * w.product[k];
-        sum += f[k] * df_dt[k];
-      }
-      dq_dt[Q.stokes_index()] = V(2.0) * g_ * sum;
-    }
-    if constexpr (Q.alignment) {
-      V* grad = dq_dtheta + Q.alignment_index() * n;
+    const auto cos_lag = [&](std::size_t k) { return scaled<per_row>(A_row_, k, w.cos_lag[k]); };
+    const auto alignment_gradient = [&](V* grad) {
       const V scale(0.5 / double(n));
       for (std::size_t k = 0; k < n; ++k) {
         const std::size_t km = (k == 0) ? n - 1 : k - 1;
         grad[k] = scale * (w.sin_link[km] - w.sin_link[k]);
       }
-      dq_dt[Q.alignment_index()] = V(0.0);
-    }
-    if constexpr (Q.energy) {
-      V* grad = dq_dtheta + Q.energy_index() * n;
-      V sum(0.0);
-      for (std::size_t k = 0; k < n; ++k) {
-        grad[k] = lane_neg(g_) * f[k];
-        sum += sin_lag[k];
-      }
-      dq_dt[Q.energy_index()] = A_ * sum;
-    }
+    };
+    row_integrand_gradients<Q>(n, A_, g_, weighted_lag<per_row>(w), cos_lag, f, J, df_dt, w.product,
+                               alignment_gradient, dq_dtheta, dq_dt);
   }
 
   std::size_t rows_;
