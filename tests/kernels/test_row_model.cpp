@@ -9,6 +9,7 @@
 
 #include "kernels/row_model.hpp"
 #include "support/kernel_scratch.hpp"
+#include "support/linearization_check.hpp"
 
 using namespace rotorsweep::kernels;
 
@@ -62,35 +63,7 @@ TEST_CASE("Jacobian, df/dt and integrand gradients match central differences", "
                                 : rotorsweep::testing::model<Model>(n, 4.3, 0.37);
       INFO("disordered " << disordered);
       const auto theta = random_angles(n, unsigned(n));
-      const double t = 1.9, eps = 1e-6;
-
-      auto w = rotorsweep::testing::workspace(m);
-      std::vector<double> f(n), q(nq), df_dt(n), dq_dy(nq * n), dq_dt(nq);
-      auto J = rotorsweep::testing::jacobian<Model::Jacobian>(n);
-      m.linearize(w, theta.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
-
-      for (std::size_t k = 0; k < n; ++k) {
-        auto plus = theta, minus = theta;
-        plus[k] += eps;
-        minus[k] -= eps;
-        const auto ep = evaluate(m, plus, t), em = evaluate(m, minus, t);
-        std::vector<double> unit(n, 0.0), column(n, 0.0);
-        unit[k] = 1.0;
-        J.multiply_add(unit.data(), column.data());
-        for (std::size_t j = 0; j < n; ++j) {
-          INFO("n=" << n << " d f_" << j << " / d theta_" << k);
-          CHECK(column[j] == Approx((ep.f[j] - em.f[j]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
-        }
-        for (std::size_t p = 0; p < nq; ++p) {
-          INFO("n=" << n << " d q_" << p << " / d theta_" << k);
-          CHECK(dq_dy[p * n + k] == Approx((ep.q[p] - em.q[p]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
-        }
-      }
-      const auto ep = evaluate(m, theta, t + eps), em = evaluate(m, theta, t - eps);
-      for (std::size_t j = 0; j < n; ++j)
-        CHECK(df_dt[j] == Approx((ep.f[j] - em.f[j]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
-      for (std::size_t p = 0; p < nq; ++p)
-        CHECK(dq_dt[p] == Approx((ep.q[p] - em.q[p]) / (2 * eps)).epsilon(1e-6).margin(1e-6));
+      rotorsweep::testing::check_linearization(m, theta, 1.9);
     }
 }
 
