@@ -31,6 +31,7 @@ struct RunOptions {
   bool resume = false;               ///< continue from OUTPUT.partial, left by an interrupted run
   double flush_seconds = 5;          ///< finished members go to the file at least this often ...
   std::size_t flush_members = 4096;  ///< ... and whenever this many are waiting
+  std::string device;                ///< "cpu" or "gpu": overrides numerics.device; empty: the scene's
 };
 int run_sweep_command(const RunOptions& options);
 

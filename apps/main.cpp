@@ -56,6 +56,8 @@ int main(int argc, char** argv) {
                    "... and whenever this many finished members are waiting")
       ->check(CLI::Range(std::size_t(1), std::size_t(1) << 30))
       ->capture_default_str();
+  run_cmd->add_option("--device", run.device, "Where members run: cpu or gpu (overrides numerics.device)")
+      ->check(CLI::IsMember({"cpu", "gpu"}));
   run_cmd->add_option("--shard", run.shard,
                       "Run part I of N of the plan (I/N; members I-1, I-1+N, ...); `merge` joins the parts");
 

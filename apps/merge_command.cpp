@@ -21,7 +21,7 @@ namespace {
 
 /// A shard's identity as its attributes state it.
 struct ShardFile {
-  std::string path, scene_text, scene_path, version;
+  std::string path, scene_text, scene_path, version, device;
   std::size_t index = 0, count = 0, plan_members = 0;
   double wall_seconds = 0, threads = 1, lane_width = 1, lane_occupancy = 0;
 };
@@ -35,6 +35,7 @@ ShardFile describe(const std::string& path, const io::Hdf5Location& file) {
   shard.path = path;
   shard.scene_text = file.attribute_string("scene");
   shard.scene_path = file.attribute_string("scene_path");
+  shard.device = file.has_attribute("device") ? file.attribute_string("device") : "cpu";
   shard.version = io::written_by(file);
   shard.index = std::size_t(file.attribute_double("shard_index"));
   shard.count = std::size_t(file.attribute_double("shard_count"));
@@ -129,7 +130,7 @@ int run_merge(const MergeOptions& options) {
   // second pass: the shards' rows, a block at a time, into their plan rows of the output
   try {
     const ensemble::MemberPlan plan(scene);
-    io::ResultFile out(target->temporary(), scene, io::Provenance{first->scene_path, version, revision});
+    io::ResultFile out(target->temporary(), scene, io::Provenance{first->scene_path, version, revision, first->device});
     for (const auto& path : options.shards) {
       const auto file = io::Hdf5Location::open_file(path);
       const std::size_t rows = io::member_rows(file);

@@ -11,6 +11,7 @@
 #include <mutex>
 
 #include "build_info.hpp"
+#include "ensemble/gpu_backend.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/sweep.hpp"
 #include "io/member_stream.hpp"
@@ -171,7 +172,7 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
 
   // every rank: the members it takes, streamed into a whole-plan file of its own
   const ensemble::MemberPlan plan(scene);
-  const io::Provenance provenance{options.scene, version, revision};
+  const io::Provenance provenance{options.scene, version, revision, ensemble::device_label(scene)};
   std::string error;
   ensemble::SweepOutcome outcome;
   int signal_number = 0;

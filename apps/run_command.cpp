@@ -12,6 +12,7 @@
 
 #include "build_info.hpp"
 #include "commands.hpp"
+#include "ensemble/gpu_backend.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/sweep.hpp"
 #include "io/member_stream.hpp"
@@ -167,6 +168,9 @@ void print_header(const RunOptions& options, const ensemble::Scene& scene, std::
                scene.A_values.size(), scene.g_values.size(), scene.noise_values.size(),
                scene.offset_values.size(), scene.kinds.size(), scene.replicas, rows.c_str(),
                kernels::stepper_names[std::size_t(scene.stepper)].data(), tolerances.c_str(), threads, lanes);
+  if (scene.device == ensemble::Device::gpu)
+    std::fprintf(stderr, "device: %s, one member per GPU thread (%d host threads summarize)\n",
+                 ensemble::gpu_info().name.c_str(), threads);
   const auto& couplings = scene.couplings;
   if (couplings.nearest_neighbour()) return;
   std::string what = "nearest neighbours";
@@ -196,8 +200,17 @@ int run_sweep_command(const RunOptions& options) {
   ensemble::Scene scene;
   try {
     scene = io::parse_scene_file(options.scene);
+    if (!options.device.empty()) {
+      scene.device = options.device == "gpu" ? ensemble::Device::gpu : ensemble::Device::cpu;
+      io::check_device(scene);
+    }
   } catch (const io::SceneError& e) {
     std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+  if (scene.device == ensemble::Device::gpu && !ensemble::gpu_info().available) {
+    std::cerr << "error: numerics.device = \"gpu\" (or --device gpu): " << ensemble::gpu_info().why
+              << "; run with --device cpu\n";
     return 2;
   }
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
@@ -261,7 +274,8 @@ int run_sweep_command(const RunOptions& options) {
     }
   } else {
     try {
-      file.emplace(partial, scene, io::Provenance{options.scene, version, revision}, shard);
+      file.emplace(partial, scene, io::Provenance{options.scene, version, revision, ensemble::device_label(scene)},
+                   shard);
     } catch (const std::exception& e) {
       std::cerr << "error: creating " << partial << " failed: " << e.what() << "; "
                 << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";

@@ -6,11 +6,18 @@ set(CMAKE_CXX_EXTENSIONS OFF)
 # The libraries go into the Python module and into other projects' shared libraries as well.
 set(CMAKE_POSITION_INDEPENDENT_CODE ON)
 
-add_compile_options(-Wall -Wextra -Wpedantic -ffp-contract=off)
+add_compile_options($<$<COMPILE_LANGUAGE:CXX>:-Wall> $<$<COMPILE_LANGUAGE:CXX>:-Wextra>
+                    $<$<COMPILE_LANGUAGE:CXX>:-Wpedantic> $<$<COMPILE_LANGUAGE:CXX>:-ffp-contract=off>)
 # GCC 12 flags the self-initialised placeholders inside its own AVX-512 intrinsic headers.
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-  add_compile_options(-Wno-maybe-uninitialized -Wno-uninitialized)
+  add_compile_options($<$<COMPILE_LANGUAGE:CXX>:-Wno-maybe-uninitialized> $<$<COMPILE_LANGUAGE:CXX>:-Wno-uninitialized>)
 endif()
 if(ROTORSWEEP_NATIVE)
-  add_compile_options(-march=native)
+  add_compile_options($<$<COMPILE_LANGUAGE:CXX>:-march=native>)
 endif()
+# Device code: every operation rounded on its own (no fused multiply-add), like the host build, so
+# that a GPU thread gives the CPU lanes' bits; constexpr host functions (std::array) callable on it.
+set(CMAKE_CUDA_STANDARD 20)
+set(CMAKE_CUDA_STANDARD_REQUIRED ON)
+set(ROTORSWEEP_CUDA_FLAGS --fmad=false --expt-relaxed-constexpr -Xcompiler=-ffp-contract=off
+                          -diag-suppress=186)  # "pointless comparison" in loops over no quadratures

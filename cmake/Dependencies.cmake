@@ -36,3 +36,28 @@ if(ROTORSWEEP_PYTHON)
     set(ROTORSWEEP_PYTHON OFF)
   endif()
 endif()
+
+# The GPU backend: CUDA's nvcc (Debian's nvidia-cuda-toolkit, or NVIDIA's in /usr/local/cuda). No GPU is
+# needed to build or test it; without nvcc the backend is left out and numerics.device = "gpu" says so.
+if(ROTORSWEEP_CUDA)
+  if(NOT DEFINED CMAKE_CUDA_COMPILER AND NOT DEFINED ENV{CUDACXX} AND EXISTS /usr/local/cuda/bin/nvcc)
+    set(CMAKE_CUDA_COMPILER /usr/local/cuda/bin/nvcc)
+  endif()
+  include(CheckLanguage)
+  check_language(CUDA)
+  if(CMAKE_CUDA_COMPILER)
+    if(NOT DEFINED CMAKE_CUDA_ARCHITECTURES)
+      set(CMAKE_CUDA_ARCHITECTURES 90)  # H100 and H200; set e.g. -DCMAKE_CUDA_ARCHITECTURES=80 for an A100
+    endif()
+    enable_language(CUDA)
+    # CMake before 3.26 knows nvcc's dialects up to C++17 only; nvcc 12 and later take C++20
+    if(NOT CMAKE_CUDA20_STANDARD_COMPILE_OPTION)
+      set(CMAKE_CUDA20_STANDARD_COMPILE_OPTION "-std=c++20")
+      set(CMAKE_CUDA20_EXTENSION_COMPILE_OPTION "-std=c++20")
+    endif()
+    find_package(CUDAToolkit REQUIRED)
+  else()
+    message(STATUS "nvcc not found: rotorsweep is built without the GPU backend")
+    set(ROTORSWEEP_CUDA OFF)
+  endif()
+endif()

@@ -149,14 +149,8 @@ class LaneScheduler {
   template <class Retire>
   void close_period(std::size_t l, Retire& retire) {
     PeriodRecord record;
-    for (const auto& observable : observables)
-      for (std::size_t c = 0; c < observable.channel_count; ++c) {
-        const ChannelDeclaration& channel = observable.channels[c];
-        if (channel.source == Source::step_reducer || !Q.carries(channel.quadrature)) continue;
-        const double integral = loop_.quadrature(l, Q.index(channel.quadrature));
-        record[channel.channel] =
-            channel.source == Source::quadrature_mean ? integral / Loop::period : integral;
-      }
+    record_quadratures<Q>(
+        record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period);
     for_each_observer([&](auto& observer) { observer.end_period(l, record); });
     if constexpr (Loop::stochastic)
       record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
@@ -199,33 +193,29 @@ class LaneScheduler {
 
   MemberResult finish(std::size_t l, bool settled) {
     Lane& lane = lanes_[l];
-    MemberResult result;
-    result.index = lane.member.index;
-    result.status = loop_.status(l);
-    result.settled = settled;
-    result.periods_run = lane.periods;
-    result.steps_accepted = loop_.steps_accepted(l);
-    result.steps_rejected = loop_.steps_rejected(l);
-    result.theta_final.resize(loop_.dimension());
-    for (std::size_t k = 0; k < loop_.dimension(); ++k)
-      result.theta_final[k] = kernels::wrap_2pi(loop_.component(l, k));
-    const bool ok = result.status == kernels::LaneStatus::ok;
-    summarize(ok ? lane.history : std::vector<PeriodRecord>{}, scene_.average_periods,
-              scene_.classifies_regimes(), result);
+    RetiredLane retired{lane.member.index,
+                        loop_.status(l),
+                        settled,
+                        lane.periods,
+                        loop_.steps_accepted(l),
+                        loop_.steps_rejected(l),
+                        std::vector<double>(loop_.dimension()),
+                        std::move(lane.history),
+                        std::move(lane.end_states)};
+    for (std::size_t k = 0; k < loop_.dimension(); ++k) retired.theta[k] = loop_.component(l, k);
+    const std::size_t averaged =
+        std::min<std::size_t>(retired.history.size(), std::size_t(scene_.average_periods));
+    MemberResult result = retired_member_result(std::move(retired), scene_.average_periods,
+                                                scene_.classifies_regimes(), scene_.period_series);
     if constexpr (Loop::stochastic) {
       // D is a random quantity: its error is the standard error of the mean over the averaged periods
-      const double n =
-          double(std::min<std::size_t>(lane.history.size(), std::size_t(scene_.average_periods)));
+      const double n = double(averaged);
       result.summary(Summary::mean, Channel::dissipation_error) =
           n > 1 ? result.dissipation_std() / std::sqrt(n - 1) : std::numeric_limits<double>::infinity();
     }
-    if (ok && !lane.end_states.empty())
-      result.final_state = classify_final_state(lane.end_states, std::string(regime_name(result.regime)));
-    else
-      result.final_state.attractor = ok ? "unsettled:none:p0" : "failed";
-    if (scene_.period_series) result.periods = std::move(lane.history);
     lane.occupied = false;
     lane.history.clear();
+    lane.end_states.clear();
     loop_.release(l);
     --occupied_;
     return result;

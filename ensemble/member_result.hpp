@@ -6,10 +6,13 @@
 #include <cmath>
 #include <cstddef>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "ensemble/final_state.hpp"
 #include "ensemble/observables.hpp"
+#include "kernels/host_device.hpp"
+#include "kernels/integrals.hpp"
 #include "kernels/lane_status.hpp"
 
 namespace rotorsweep::ensemble {
@@ -18,13 +21,46 @@ namespace rotorsweep::ensemble {
 struct PeriodRecord {
   std::array<double, channel_count> values{};
 
-  double& operator[](Channel c) { return values[std::size_t(c)]; }
-  double operator[](Channel c) const { return values[std::size_t(c)]; }
-  double dissipation() const { return (*this)[Channel::dissipation]; }
+  ROTORSWEEP_HD double& operator[](Channel c) { return values[std::size_t(c)]; }
+  ROTORSWEEP_HD double operator[](Channel c) const { return values[std::size_t(c)]; }
+  ROTORSWEEP_HD double dissipation() const { return (*this)[Channel::dissipation]; }
   double alignment_min() const { return (*this)[Channel::alignment_min]; }
   double alignment_max() const { return (*this)[Channel::alignment_max]; }
   double slips() const { return (*this)[Channel::slips]; }
 };
+
+/// A channel that a period's quadrature gives: its integral, or its time mean.
+struct QuadratureChannel {
+  Channel channel;
+  kernels::Quadrature quadrature;
+  bool mean;
+};
+
+/// The quadrature channels of `observables` that a model carrying Q fills, and how many.
+template <kernels::Integrals Q>
+constexpr auto quadrature_channels() {
+  std::array<QuadratureChannel, channel_count> out{};
+  std::size_t count = 0;
+  for (const auto& observable : observables)
+    for (std::size_t c = 0; c < observable.channel_count; ++c) {
+      const ChannelDeclaration& channel = observable.channels[c];
+      if (channel.source == Source::step_reducer || !Q.carries(channel.quadrature)) continue;
+      out[count++] = {channel.channel, channel.quadrature, channel.source == Source::quadrature_mean};
+    }
+  return std::pair(out, count);
+}
+
+/// Writes the channels of a period of length `period` from its quadratures' integrals
+/// (integral(p) for quadrature p of Q), on the host and on a GPU thread alike.
+template <kernels::Integrals Q, class Integral>
+ROTORSWEEP_HD void record_quadratures(PeriodRecord& record, Integral&& integral, double period) {
+  constexpr auto channels = quadrature_channels<Q>();
+  for (std::size_t i = 0; i < channels.second; ++i) {
+    const QuadratureChannel c = channels.first[i];
+    const double value = integral(Q.index(c.quadrature));
+    record[c.channel] = c.mean ? value / period : value;
+  }
+}
 
 enum class Regime { fm, afm, cp, unsettled };
 

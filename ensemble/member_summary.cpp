@@ -6,12 +6,13 @@
 #include <cmath>
 #include <limits>
 
+#include "kernels/angles.hpp"
+
 namespace rotorsweep::ensemble {
 
 bool periods_agree(const std::vector<PeriodRecord>& history, double tol) {
   if (history.size() < 2) return false;
-  const double now = history.back().dissipation(), before = history[history.size() - 2].dissipation();
-  return std::fabs(now - before) <= tol * std::max(std::fabs(now), std::fabs(before));
+  return dissipations_agree(history[history.size() - 2].dissipation(), history.back().dissipation(), tol);
 }
 
 Regime classify_regime(const std::vector<PeriodRecord>& averaged) {
@@ -56,6 +57,26 @@ void summarize(const std::vector<PeriodRecord>& history, int average_periods, bo
     result.summary(Summary::maximum, channel) = high;
   }
   result.regime = (classify && result.settled) ? classify_regime(averaged) : Regime::unsettled;
+}
+
+MemberResult retired_member_result(RetiredLane&& lane, int average_periods, bool classify, bool period_series) {
+  MemberResult result;
+  result.index = lane.index;
+  result.status = lane.status;
+  result.settled = lane.settled;
+  result.periods_run = lane.periods;
+  result.steps_accepted = lane.steps_accepted;
+  result.steps_rejected = lane.steps_rejected;
+  result.theta_final.resize(lane.theta.size());
+  for (std::size_t k = 0; k < lane.theta.size(); ++k) result.theta_final[k] = kernels::wrap_2pi(lane.theta[k]);
+  const bool ok = result.status == kernels::LaneStatus::ok;
+  summarize(ok ? lane.history : std::vector<PeriodRecord>{}, average_periods, classify, result);
+  if (ok && !lane.end_states.empty())
+    result.final_state = classify_final_state(lane.end_states, std::string(regime_name(result.regime)));
+  else
+    result.final_state.attractor = ok ? "unsettled:none:p0" : "failed";
+  if (period_series) result.periods = std::move(lane.history);
+  return result;
 }
 
 }  // namespace rotorsweep::ensemble

@@ -34,20 +34,21 @@ enum class Source {
 /// How a member's averaged periods reduce to one number of /members.
 enum class Summary { mean, spread, minimum, maximum };
 
+// Every member has a default, so that a declaration's unused slots are constant expressions too.
 struct SummaryColumn {
-  Summary summary;
+  Summary summary{};
   std::string_view column;  ///< /members/<column>
   std::string_view description;
 };
 
 struct ChannelDeclaration {
-  Channel channel;
+  Channel channel{};
   std::string_view column;  ///< /members/periods/<column> (observables.period_series)
   std::string_view description;
-  Source source;
-  kernels::Quadrature quadrature;  ///< for the quadrature sources
-  std::array<SummaryColumn, 2> summaries;
-  std::size_t summary_count;
+  Source source{};
+  kernels::Quadrature quadrature{};  ///< for the quadrature sources
+  std::array<SummaryColumn, 2> summaries{};
+  std::size_t summary_count = 0;
 };
 
 /// One observable a scene switches on or off with observables.<key>.

@@ -16,6 +16,9 @@ namespace rotorsweep::ensemble {
 
 enum class LaneKind { simd, scalar };
 
+/// Where members run: CPU lanes, or one member per thread of a CUDA GPU (ensemble/gpu_backend.hpp).
+enum class Device { cpu, gpu };
+
 /// One (N, tolerances) setting of a scene; members of different variants run in separate
 /// lane blocks (a block shares its row count and tolerances). Member carries its variant's values.
 struct Variant {
@@ -66,6 +69,7 @@ struct Scene {
   double h_max = 0.5;
   double max_steps = 1e8;
   LaneKind lanes = LaneKind::simd;
+  Device device = Device::cpu;
   bool wrap_angles = false;  ///< restart every period at t = 0 with θ_j in [0, 2π)
 
   std::string output_path;

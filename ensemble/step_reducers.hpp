@@ -6,6 +6,7 @@
 #include <cstddef>
 
 #include "ensemble/member_result.hpp"
+#include "kernels/host_device.hpp"
 #include "kernels/lane.hpp"
 #include "kernels/lane_state.hpp"
 
@@ -17,20 +18,20 @@ struct AlignmentExtrema {
   V min = V(0.0), max = V(0.0), current = V(0.0);
 
   /// A lane starts (a new member, or a new period) at alignment rho.
-  void start_lane(std::size_t lane, double rho) {
+  ROTORSWEEP_HD void start_lane(std::size_t lane, double rho) {
     kernels::lane_set(min, lane, rho);
     kernels::lane_set(max, lane, rho);
     kernels::lane_set(current, lane, rho);
   }
 
-  void accumulate(kernels::lane_mask<V> accepted, V rho) {
+  ROTORSWEEP_HD void accumulate(kernels::lane_mask<V> accepted, V rho) {
     current = kernels::lane_select(accepted, rho, current);
     min = kernels::lane_select(accepted, kernels::lane_min(min, rho), min);
     max = kernels::lane_select(accepted, kernels::lane_max(max, rho), max);
   }
 
   /// Writes the lane's extremes into the period record; the next period starts where this ends.
-  void end_period(std::size_t lane, PeriodRecord& record) {
+  ROTORSWEEP_HD void end_period(std::size_t lane, PeriodRecord& record) {
     record[Channel::alignment_min] = kernels::lane_get(min, lane);
     record[Channel::alignment_max] = kernels::lane_get(max, lane);
     start_lane(lane, kernels::lane_get(current, lane));
@@ -42,19 +43,19 @@ struct AlignmentExtrema {
 /// steps, counted in the period where it begins. The rate may differ per lane (set_rate).
 template <class V>
 struct SlipCounter {
-  explicit SlipCounter(double slip_rate) : rate(slip_rate) {}
+  ROTORSWEEP_HD explicit SlipCounter(double slip_rate) : rate(slip_rate) {}
 
   V rate;
   V count = V(0.0);  ///< slips begun in the current period
   V fast = V(0.0);   ///< 1 while the lane is inside a slip
 
-  void start_lane(std::size_t lane) {
+  ROTORSWEEP_HD void start_lane(std::size_t lane) {
     kernels::lane_set(count, lane, 0.0);
     kernels::lane_set(fast, lane, 0.0);
   }
-  void set_rate(std::size_t lane, double slip_rate) { kernels::lane_set(rate, lane, slip_rate); }
+  ROTORSWEEP_HD void set_rate(std::size_t lane, double slip_rate) { kernels::lane_set(rate, lane, slip_rate); }
 
-  void accumulate(kernels::lane_mask<V> accepted, std::size_t rows, const V* theta_before,
+  ROTORSWEEP_HD void accumulate(kernels::lane_mask<V> accepted, std::size_t rows, const V* theta_before,
                   const V* theta_after, V dt) {
     V largest(0.0);
     for (std::size_t j = 0; j < rows; ++j)
@@ -66,7 +67,7 @@ struct SlipCounter {
     fast = kernels::lane_select(accepted, kernels::lane_select(is_fast, V(1.0), V(0.0)), fast);
   }
 
-  void end_period(std::size_t lane, PeriodRecord& record) {
+  ROTORSWEEP_HD void end_period(std::size_t lane, PeriodRecord& record) {
     record[Channel::slips] = kernels::lane_get(count, lane);
     kernels::lane_set(count, lane, 0.0);
   }
@@ -79,14 +80,14 @@ template <class V>
 struct DissipationSwing {
   V swing = V(0.0);  ///< max |R(t)| at the accepted step points of the current period
 
-  void start_lane(std::size_t lane) { kernels::lane_set(swing, lane, 0.0); }
+  ROTORSWEEP_HD void start_lane(std::size_t lane) { kernels::lane_set(swing, lane, 0.0); }
 
-  void accumulate(kernels::lane_mask<V> accepted, V running_integral) {
+  ROTORSWEEP_HD void accumulate(kernels::lane_mask<V> accepted, V running_integral) {
     swing =
         kernels::lane_select(accepted, kernels::lane_max(swing, kernels::lane_abs(running_integral)), swing);
   }
 
-  void end_period(std::size_t lane, double rtol, double atol, PeriodRecord& record) {
+  ROTORSWEEP_HD void end_period(std::size_t lane, double rtol, double atol, PeriodRecord& record) {
     record[Channel::dissipation_error] = rtol * kernels::lane_get(swing, lane) + atol;
     start_lane(lane);
   }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "ensemble/gpu_backend.hpp"
 #include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -53,7 +54,9 @@ SweepOutcome run_members(const Scene& scene, const MemberSource& source, int thr
                                       if (control.progress) control.progress(before + done);
                                     },
                                     control.stop};
-    if (scene.thermal.on())
+    if (scene.device == Device::gpu)
+      outcome.append(run_gpu_row_sweep(scene, range, threads, part_control, sink));
+    else if (scene.thermal.on())
       outcome.append(run_thermal_row_sweep(scene, range, threads, part_control, sink));
     else
       outcome.append(kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <mutex>
 
+#include "ensemble/compile_time_choice.hpp"
 #include "ensemble/lane_scheduler.hpp"
 #include "ensemble/row_setup.hpp"
 #include "ensemble/sweep.hpp"
@@ -58,28 +59,6 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, 
   stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.interrupted = control.stopped();
   return outcome;
-}
-
-/// Calls f.template operator()<b>() with the run-time flag b as a compile-time constant.
-template <class F>
-decltype(auto) with_flag(bool b, F&& f) {
-  return b ? f.template operator()<true>() : f.template operator()<false>();
-}
-
-/// Calls f.template operator()<Q>() with the quadratures `needed` as a compile-time Integrals,
-/// one instantiation per combination of the observables that carry quadratures.
-template <class F>
-decltype(auto) with_integrals(kernels::Integrals needed, F&& f) {
-  return with_flag(needed.drive, [&]<bool drive>() {
-    return with_flag(needed.work, [&]<bool estimators>() {
-      return with_flag(needed.alignment, [&]<bool alignment>() {
-        return with_flag(needed.energy, [&]<bool energy>() {
-          return f
-              .template operator()<kernels::Integrals{drive, estimators, estimators, alignment, energy}>();
-        });
-      });
-    });
-  });
 }
 
 /// Calls f.template operator()<Model>() with the row model in the scene's lane type and with the

@@ -19,6 +19,7 @@ struct Provenance {
   std::string scene_path;
   std::string version;
   std::string revision;  ///< source revision, "unknown" when the build could not tell
+  std::string device;    ///< where members ran: "cpu" or "gpu (<name>)"
 };
 
 /// Which part of a plan a shard file holds (ensemble::shard_members).

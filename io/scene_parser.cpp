@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 
+#include "ensemble/gpu_backend.hpp"
 #include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::io {
@@ -37,7 +38,7 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
        for (const auto& observable : ensemble::observables) keys.insert(std::string(observable.key));
        return keys;
      }()},
-    {"numerics", {"stepper", "rtol", "atol", "h_max", "max_steps", "lanes", "wrap_angles"}},
+    {"numerics", {"stepper", "rtol", "atol", "h_max", "max_steps", "lanes", "wrap_angles", "device"}},
     {"output", {"path"}},
 };
 
@@ -238,6 +239,22 @@ void read_disorder(const Section& disorder, Scene& scene) {
   d.A_rows = rows_of("A_rows", "A", d.A);
   d.anisotropy_rows = rows_of("anisotropy_rows", "anisotropy", d.anisotropy);
   d.coupling_rows = rows_of("coupling_rows", "coupling", d.coupling);
+}
+
+/// numerics.device = "gpu" runs the adaptive steppers on nearest-neighbour periodic rows without
+/// disorder, up to the rows one GPU thread's scratch holds.
+void check_gpu_scene(const Scene& scene) {
+  const std::string why = "; numerics.device = \"gpu\" runs nearest-neighbour periodic rows without disorder at "
+                          "T = 0 (set numerics.device = \"cpu\")";
+  if (scene.thermal.on()) fail("thermal.temperature", "must be 0 on the GPU" + why);
+  if (scene.disorder.any()) fail("disorder", "is not available on the GPU" + why);
+  if (!scene.couplings.nearest_neighbour())
+    fail(scene.couplings.open ? "model.boundary" : "model.couplings", "is not available on the GPU" + why);
+  const std::size_t limit = ensemble::gpu_max_rows(scene);
+  if (scene.max_rows() > limit)
+    fail("model.rows", "at most " + std::to_string(limit) + " rows run on the GPU with numerics.stepper = \"" +
+                           std::string(kernels::stepper_names[scene.stepper]) + "\" (got " +
+                           std::to_string(scene.max_rows()) + "); numerics.device = \"cpu\" has no limit");
 }
 
 constexpr std::size_t max_members = 100000000;
@@ -470,6 +487,8 @@ Scene read_scene(const toml::table& root) {
                                                                                : ensemble::LaneKind::scalar;
 
   scene.wrap_angles = numerics.boolean("wrap_angles", scene.wrap_angles);
+  scene.device = numerics.choice("device", "cpu", {"cpu", "gpu"}) == "gpu" ? ensemble::Device::gpu
+                                                                          : ensemble::Device::cpu;
 
   const Section output = section(root, "output");
   if (const toml::node* path = output.find("path")) {
@@ -483,10 +502,15 @@ Scene read_scene(const toml::table& root) {
          "works with nearest-neighbour periodic rows only (model.couplings = \"nearest\", "
          "model.boundary = \"periodic\")");
   if (scene.member_count() > max_members) fail_too_many_members(scene);
+  check_device(scene);
   return scene;
 }
 
 }  // namespace
+
+void check_device(const ensemble::Scene& scene) {
+  if (scene.device == ensemble::Device::gpu) check_gpu_scene(scene);
+}
 
 ensemble::Scene parse_scene_text(std::string_view text, std::string_view source) {
   toml::table root;

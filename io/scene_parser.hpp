@@ -22,4 +22,9 @@ ensemble::Scene parse_scene_file(const std::string& path);
 /// Parses and validates scene text; `source` names it in messages.
 ensemble::Scene parse_scene_text(std::string_view text, std::string_view source);
 
+/// Throws SceneError, naming the key, where the scene asks for a device that cannot run it
+/// (numerics.device = "gpu" with a model the GPU backend lacks). Parsing calls it; so does a
+/// command line that changes the device.
+void check_device(const ensemble::Scene& scene);
+
 }  // namespace rotorsweep::io

@@ -36,13 +36,24 @@ class AdaptiveIntegrator {
     StepLimits limits;
   };
 
+  /// The scale of the first step, 0.01 (atol + rtol)^(1/(p+1)) (see propose_first_steps). A device
+  /// driver computes it on the host and passes it in, since a GPU's pow may round differently.
+  ROTORSWEEP_HD static double first_step_scale(const Tolerances& tol) {
+    return 0.01 * std::pow(tol.atol + tol.rtol, 1.0 / (Stepper::order() + 1));
+  }
+
   ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Settings settings, LaneArena<V>& arena)
       : AdaptiveIntegrator(system, settings.tolerances, settings.limits, arena) {}
 
   ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Tolerances tol, StepLimits limits,
                                    LaneArena<V>& arena)
+      : AdaptiveIntegrator(system, tol, limits, first_step_scale(tol), arena) {}
+
+  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Tolerances tol, StepLimits limits,
+                                   double first_step_scale, LaneArena<V>& arena)
       : tol_(tol),
         limits_(limits),
+        first_step_scale_(first_step_scale),
         stepper_(system, arena),
         work_(system.dimension(), arena),
         y_new_(arena.take(system.dimension())),
@@ -105,8 +116,7 @@ class AdaptiveIntegrator {
     system.evaluate(work_, s.theta, s.t, y_new_, q_new_);
     V rate(1e-300);
     for (std::size_t k = 0; k < s.rows(); ++k) rate = lane_max(rate, lane_abs(y_new_[k]));
-    const double scale = 0.01 * std::pow(tol_.atol + tol_.rtol, 1.0 / (Stepper::order() + 1));
-    const V h0 = lane_min(V(limits_.h_max), V(scale) / rate);
+    const V h0 = lane_min(V(limits_.h_max), V(first_step_scale_) / rate);
     s.h = lane_select(fresh, lane_select(lane_isfinite(h0), h0, V(limits_.h_max)), s.h);
   }
 
@@ -123,6 +133,7 @@ class AdaptiveIntegrator {
 
   Tolerances tol_;
   StepLimits limits_;
+  double first_step_scale_;
   Stepper stepper_;
   typename System::Workspace work_;
   V *y_new_, *y_error_, *q_new_, *q_error_;

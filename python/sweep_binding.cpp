@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "ensemble/gpu_backend.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/paper_table.hpp"
 #include "io/scene_parser.hpp"
@@ -94,7 +95,7 @@ void bind_sweep(py::module_& m) {
                        bool force, const std::string& version, const std::string& revision) {
              const std::string source = is_path ? scene : std::string("<python>");
              return std::make_unique<SweepJob>(parse(scene, is_path), threads, output, force,
-                                               io::Provenance{source, version, revision});
+                                               io::Provenance{source, version, revision, ensemble::device_label(parse(scene, is_path))});
            }),
            py::arg("scene"), py::arg("is_path"), py::arg("threads"), py::arg("output"), py::arg("force"),
            py::arg("version"), py::arg("revision"))

@@ -1,0 +1,115 @@
+// The GPU backend on a GPU (ctest label gpu; skipped with a message where none is present): the
+// CPU lanes' bits for the paper's members and the demo scene, launch-shape invariance, and a
+// failing member that leaves the others untouched.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "ensemble/gpu_backend.hpp"
+#include "ensemble/member_plan.hpp"
+#include "ensemble/paper_table.hpp"
+#include "ensemble/sweep.hpp"
+#include "io/scene_parser.hpp"
+#include "support/same_results.hpp"
+
+using namespace rotorsweep;
+
+namespace {
+
+std::vector<ensemble::MemberResult> run_on(ensemble::Scene scene, ensemble::Device device,
+                                           const std::vector<ensemble::Member>& members) {
+  scene.device = device;
+  return ensemble::run_sweep(scene, members, 2, {}).results;
+}
+
+void check_gpu_matches_cpu(const ensemble::Scene& scene) {
+  const auto members = ensemble::plan_members(scene);
+  const auto cpu = run_on(scene, ensemble::Device::cpu, members);
+  const auto gpu = run_on(scene, ensemble::Device::gpu, members);
+  std::string first;
+  CHECK(testing::count_differences(cpu, gpu, first) == 0);
+  INFO(first);
+  CHECK(first.empty());
+}
+
+std::string curve_scene(const std::string& stepper, int rows, const std::string& rtol) {
+  return "[model]\nrows = " + std::to_string(rows) +
+         "\n[drive]\ng = [0.01, 0.1]\n[sweep]\nA = {from = 0.25, to = 16, count = 32}\n"
+         "[initial]\nkinds = [\"AFM\", \"random\", \"FM\"]\nreplicas = 2\n[schedule]\nrelax_periods = 2\n"
+         "average_periods = 2\n[numerics]\nstepper = \"" +
+         stepper + "\"\nrtol = " + rtol + "\natol = 1e-12\n";
+}
+
+}  // namespace
+
+TEST_CASE("the GPU gives the CPU lanes' bits for every stepper at N = 2, 20", "[gpu]") {
+  // tight tolerances for the higher-order methods; ros2 (order 2) and dopri5 (explicit) at looser ones
+  for (const auto& [stepper, rtol] :
+       {std::pair{"rodas4", "1e-8"}, std::pair{"ros2", "1e-5"}, std::pair{"dopri5", "1e-6"},
+        std::pair{"rodas4p2", "1e-8"}, std::pair{"rodas5p", "1e-8"}})
+    for (int rows : {2, 20}) {
+      INFO(stepper << " N = " << rows);
+      check_gpu_matches_cpu(io::parse_scene_text(curve_scene(stepper, rows, rtol), "gpu"));
+    }
+}
+
+TEST_CASE("the GPU gives the CPU's bits for the paper's table and the example scenes", "[gpu]") {
+  const auto paper = io::parse_scene_text(
+      "[model]\nrows = 20\n[drive]\ng = [0.0011]\n[sweep]\nA = [1, 4, 6, 8, 11]\n"
+      "[initial]\nkinds = [\"FM\", \"AFM\"]\n[schedule]\nrelax_periods = 2\naverage_periods = 2\n"
+      "[numerics]\nrtol = 1e-10\natol = 1e-12\n",
+      "paper");
+  check_gpu_matches_cpu(paper);
+  const auto members = ensemble::plan_members(paper);
+  const auto gpu = run_on(paper, ensemble::Device::gpu, members);
+  for (const auto& entry : ensemble::paper_table::entries) {
+    if (entry.cp) continue;  // the CP values depend on the noise draw
+    for (std::size_t i = 0; i < members.size(); ++i)
+      if (members[i].A == entry.A && members[i].kind == entry.kind) {
+        INFO("A = " << entry.A);
+        CHECK(gpu[i].dissipation() == Approx(entry.paper_R).epsilon(1e-5));
+      }
+  }
+  for (const char* path : {ROTORSWEEP_SOURCE_DIR "/examples/friction_curve.toml",
+                           ROTORSWEEP_SOURCE_DIR "/examples/robustness.toml"}) {
+    INFO(path);
+    check_gpu_matches_cpu(io::parse_scene_file(path));
+  }
+}
+
+TEST_CASE("the GPU's results do not depend on the launch shape", "[gpu]") {
+  const auto scene = io::parse_scene_text(curve_scene("rodas4", 20, "1e-6"), "launch");
+  const auto members = ensemble::plan_members(scene);
+  const auto reference = run_on(scene, ensemble::Device::gpu, members);
+  for (const auto& [block, blocks] : {std::pair{"32", "1"}, std::pair{"64", "7"}, std::pair{"256", "1000"}}) {
+    ::setenv("ROTORSWEEP_GPU_BLOCK", block, 1);
+    ::setenv("ROTORSWEEP_GPU_BLOCKS", blocks, 1);
+    const auto other = run_on(scene, ensemble::Device::gpu, members);
+    std::string first;
+    INFO(block << " threads × " << blocks << " blocks");
+    CHECK(testing::count_differences(reference, other, first) == 0);
+    INFO(first);
+    CHECK(first.empty());
+  }
+  ::unsetenv("ROTORSWEEP_GPU_BLOCK");
+  ::unsetenv("ROTORSWEEP_GPU_BLOCKS");
+}
+
+TEST_CASE("a member that fails on the GPU leaves the others' bits alone", "[gpu]") {
+  auto scene = io::parse_scene_text(curve_scene("rodas4", 20, "1e-6"), "failure");
+  scene.device = ensemble::Device::gpu;
+  auto members = ensemble::plan_members(scene);
+  const auto clean = ensemble::run_sweep(scene, members, 2, {}).results;
+  const std::size_t broken = members.size() / 3;
+  members[broken].A = std::numeric_limits<double>::quiet_NaN();
+  const auto with_failure = ensemble::run_sweep(scene, members, 2, {}).results;
+  CHECK(with_failure[broken].status == kernels::LaneStatus::non_finite);
+  CHECK(std::isnan(with_failure[broken].dissipation()));
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < members.size(); ++i)
+    if (i != broken) differ += !testing::result_difference(clean[i], with_failure[i]).empty();
+  CHECK(differ == 0);
+}
