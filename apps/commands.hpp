@@ -21,6 +21,15 @@ struct BenchKernelOptions {
 };
 int run_bench_kernels(const BenchKernelOptions& options);
 
+struct BenchGpuOptions {
+  std::string device = "gpu";  ///< "gpu", or "cpu" for this machine's figures beside
+  double scale = 1;            ///< fraction of each scene's replicas to run (at least one per A)
+  int threads = 0;             ///< host threads (OpenMP's default: 0)
+  bool curve = true;           ///< also the 10⁶-member friction curve
+  bool curve_only = false;
+};
+int run_bench_gpu(const BenchGpuOptions& options);
+
 struct RunOptions {
   std::string scene;
   std::string output;                ///< overrides the scene's output.path

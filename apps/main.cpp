@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   couplings_cmd->add_option("-o,--output", couplings.output, "Also write the table as CSV to this file");
 
-  auto* bench_cmd = app.add_subcommand("bench", "Measure speed (single thread)");
+  auto* bench_cmd = app.add_subcommand("bench", "Measure speed");
   bench_cmd->require_subcommand(1);
   BenchKernelOptions bench;
   auto* kernels_cmd = bench_cmd->add_subcommand(
@@ -134,6 +134,23 @@ int main(int argc, char** argv) {
   kernels_cmd->add_option("--repeats", bench.repeats, "Timed repeats (the median is reported)")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
+  BenchGpuOptions bench_gpu;
+  auto* gpu_cmd = bench_cmd->add_subcommand(
+      "gpu",
+      "Step attempts/s per member and per rotor of whole sweeps on the GPU (N = 2, 20, 128, each "
+      "stepper) and a 10^6-member friction curve");
+  gpu_cmd
+      ->add_option("--device", bench_gpu.device,
+                   "Where the sweeps run ('cpu': this machine's cores, for scale)")
+      ->check(CLI::IsMember({"gpu", "cpu"}))
+      ->capture_default_str();
+  gpu_cmd->add_option("--scale", bench_gpu.scale, "Fraction of each scene's random starts to run")
+      ->check(finite & CLI::Range(1e-6, 1.0))
+      ->capture_default_str();
+  gpu_cmd->add_option("--threads", bench_gpu.threads, "Host threads (0: OpenMP's default)")
+      ->check(CLI::Range(0, 4096));
+  gpu_cmd->add_flag("!--no-curve", bench_gpu.curve, "Skip the 10^6-member curve");
+  gpu_cmd->add_flag("--curve-only", bench_gpu.curve_only, "Only the 10^6-member curve");
 
   try {
     app.parse(argc, argv);
@@ -153,6 +170,7 @@ int main(int argc, char** argv) {
     if (*couplings_cmd) return run_couplings(couplings);
     if (*table_cmd) return run_table(table);
     if (*kernels_cmd) return run_bench_kernels(bench);
+    if (*gpu_cmd) return run_bench_gpu(bench_gpu);
     if (*chambers_cmd) return run_landscape_chambers(landscape);
     if (*curves_cmd) return run_landscape_curves(landscape);
     if (*jump_cmd) return run_landscape_jump_friction(landscape);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "ensemble/gpu_backend.hpp"
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
 #include "support/result_datasets.hpp"
@@ -221,4 +222,38 @@ TEST_CASE("plans too large to count or to hold are refused before any work", "[a
   CHECK_THAT(run.output, Catch::Contains("GiB"));
   CHECK_FALSE(std::filesystem::exists(dir / "o.h5"));
   CHECK_FALSE(std::filesystem::exists(dir / "m.h5"));
+}
+
+TEST_CASE("the GPU device: refusals exit 2 naming the key, and no GPU is a clear error", "[apps][run][gpu]") {
+  const auto dir = scratch_directory("run-gpu");
+  const std::string good = "[model]\nrows = 20\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n";
+  write_text(dir / "thermal.toml", good + "[thermal]\ntemperature = 0.01\n");
+  const auto out = dir / "out.h5";
+  const auto thermal =
+      run_cli("run '" + (dir / "thermal.toml").string() + "' --device gpu -o '" + out.string() + "'", dir);
+  CHECK(thermal.exit_code == 2);
+  CHECK_THAT(thermal.output, Catch::Contains("'thermal.temperature'"));
+  CHECK_FALSE(std::filesystem::exists(out));
+  const auto bad_device = run_cli("run '" + (dir / "thermal.toml").string() + "' --device tpu", dir);
+  CHECK(bad_device.exit_code == 2);
+  CHECK_THAT(bad_device.output, Catch::Contains("--device"));
+  if (rotorsweep::ensemble::gpu_info().available) return;  // the rest is about a machine without one
+  write_text(dir / "good.toml", good);
+  const auto run =
+      run_cli("run '" + (dir / "good.toml").string() + "' --device gpu -o '" + out.string() + "'", dir);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output,
+             Catch::Contains(rotorsweep::ensemble::gpu_info().why) && Catch::Contains("--device cpu"));
+  CHECK_FALSE(std::filesystem::exists(out));
+  const auto bench = run_cli("bench gpu", dir);
+  CHECK(bench.exit_code == 2);
+  CHECK_THAT(bench.output, Catch::Contains(rotorsweep::ensemble::gpu_info().why));
+}
+
+TEST_CASE("bench gpu on the CPU reports the curve's members and attempts", "[apps][bench]") {
+  const auto dir = scratch_directory("bench-gpu");
+  const auto bench = run_cli("bench gpu --device cpu --scale 1e-6 --curve-only", dir);
+  REQUIRE(bench.exit_code == 0);
+  CHECK_THAT(bench.output, Catch::Contains("rotor-attempts/s") && Catch::Contains("| 20 | rodas4 | 1000 |") &&
+                               Catch::EndsWith(" | 1000 |\n"));
 }

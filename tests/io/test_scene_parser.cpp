@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "ensemble/gpu_backend.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/stepper_list.hpp"
 #include "support/scene_text.hpp"
@@ -214,8 +215,8 @@ TEST_CASE("rows and tolerances may be lists: one variant each", "[io][scene]") {
 }
 
 TEST_CASE("disorder: drawn or per row, with the key named when wrong", "[io][scene]") {
-  const auto scene = parse_scene_text(minimal + "[disorder]\nA = 1e-6\nseed = 4\ncoupling_rows = [0.1, -0.1]\n",
-                                      "test.toml");
+  const auto scene = parse_scene_text(
+      minimal + "[disorder]\nA = 1e-6\nseed = 4\ncoupling_rows = [0.1, -0.1]\n", "test.toml");
   CHECK(scene.disorder.A == 1e-6);
   CHECK(scene.disorder.seed == 4);
   CHECK(scene.disorder.coupling_rows == std::vector<double>{0.1, -0.1});
@@ -233,8 +234,8 @@ TEST_CASE("disorder: drawn or per row, with the key named when wrong", "[io][sce
 }
 
 TEST_CASE("thermal: temperature, steps per period and seed, with the key named when wrong", "[io][scene]") {
-  const auto scene =
-      parse_scene_text(minimal + "[thermal]\ntemperature = 0.01\nsteps_per_period = 500\nseed = 2\n", "test.toml");
+  const auto scene = parse_scene_text(
+      minimal + "[thermal]\ntemperature = 0.01\nsteps_per_period = 500\nseed = 2\n", "test.toml");
   CHECK(scene.thermal.temperature == 0.01);
   CHECK(scene.thermal.steps_per_period == 500);
   CHECK(scene.thermal.seed == 2);
@@ -242,7 +243,34 @@ TEST_CASE("thermal: temperature, steps per period and seed, with the key named w
   CHECK_FALSE(parse_scene_text(minimal, "test.toml").thermal.on());
   CHECK_THAT(error_of(minimal + "[thermal]\ntemperature = -0.1\n"), Catch::Contains("'thermal.temperature'"));
   CHECK_THAT(error_of(minimal + "[thermal]\ntemperature = nan\n"), Catch::Contains("'thermal.temperature'"));
-  CHECK_THAT(error_of(minimal + "[thermal]\nsteps_per_period = 3\n"), Catch::Contains("'thermal.steps_per_period'"));
+  CHECK_THAT(error_of(minimal + "[thermal]\nsteps_per_period = 3\n"),
+             Catch::Contains("'thermal.steps_per_period'"));
   CHECK_THAT(error_of(minimal + "[thermal]\ntemperature = 0.1\n[observables]\nestimators = true\n"),
              Catch::Contains("'observables.estimators'"));
+}
+
+TEST_CASE("scenes the GPU does not run are refused with the key named", "[io][scene][gpu]") {
+  const std::string gpu = "[numerics]\ndevice = \"gpu\"\n";
+  CHECK(parse_scene_text(minimal + gpu, "test.toml").device == rotorsweep::ensemble::Device::gpu);
+  CHECK(parse_scene_text(minimal, "test.toml").device == rotorsweep::ensemble::Device::cpu);
+  CHECK_THAT(error_of(minimal + "[numerics]\ndevice = \"tpu\"\n"),
+             Catch::Contains("'numerics.device'") && Catch::Contains("cpu, gpu"));
+  CHECK_THAT(error_of(minimal + gpu + "[thermal]\ntemperature = 0.01\n"),
+             Catch::Contains("'thermal.temperature'") && Catch::Contains("numerics.device = \"cpu\""));
+  CHECK_THAT(error_of(minimal + gpu + "[disorder]\nA = 1e-6\n"), Catch::Contains("'disorder'"));
+  CHECK_THAT(
+      error_of(
+          "[model]\nrows = 20\ncouplings = \"dipolar\"\nrange = 2\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" +
+          gpu),
+      Catch::Contains("'model.couplings'"));
+  CHECK_THAT(
+      error_of("[model]\nrows = 20\nboundary = \"open\"\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" + gpu),
+      Catch::Contains("'model.boundary'"));
+  const auto limit = rotorsweep::ensemble::gpu_max_rows(parse_scene_text(minimal + gpu, "test.toml"));
+  CHECK(limit >= 128);
+  CHECK(error_of("[model]\nrows = " + std::to_string(limit) + "\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" +
+                 gpu) == "");
+  CHECK_THAT(error_of("[model]\nrows = " + std::to_string(limit + 2) +
+                      "\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" + gpu),
+             Catch::Contains("'model.rows'") && Catch::Contains("at most " + std::to_string(limit)));
 }

@@ -1,0 +1,90 @@
+// `rotorsweep bench gpu`: whole-sweep throughput on the GPU backend (or, with --device cpu, on this
+// machine's cores for scale): step attempts per second per member and per rotor, and a 10⁶-member curve.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "commands.hpp"
+#include "ensemble/gpu_backend.hpp"
+#include "ensemble/member_plan.hpp"
+#include "ensemble/sweep.hpp"
+#include "io/scene_parser.hpp"
+
+namespace rotorsweep::apps {
+
+namespace {
+
+struct BenchScene {
+  int rows;
+  const char* stepper;
+  int A_count;
+  int replicas;
+};
+
+/// The benchmark scenes of docs/performance.md "GPU": g = 0.01, A from 0.25 to 16, random starts,
+/// 2 + 2 periods, rtol 1e-6 (atol 1e-9).
+std::string scene_text(const BenchScene& s, const std::string& device) {
+  return "[model]\nrows = " + std::to_string(s.rows) +
+         "\n[drive]\ng = [0.01]\n[sweep]\nA = {from = 0.25, to = 16, count = " + std::to_string(s.A_count) +
+         "}\n[initial]\nkinds = [\"random\"]\nreplicas = " + std::to_string(s.replicas) +
+         "\n[schedule]\nrelax_periods = 2\naverage_periods = 2\n[numerics]\nstepper = \"" + s.stepper +
+         "\"\nrtol = 1e-6\natol = 1e-9\ndevice = \"" + device + "\"\n";
+}
+
+/// One sweep (plan, device work, host summaries; no file): a table row.
+void run_row(const BenchScene& s, const BenchGpuOptions& options) {
+  const auto scene = io::parse_scene_text(scene_text(s, options.device), "bench");
+  const auto members = ensemble::plan_members(scene);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto outcome = ensemble::run_sweep(scene, members, options.threads, {});
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  double attempts = 0;
+  std::size_t ok = 0;
+  for (const auto& r : outcome.results) {
+    attempts += r.steps_accepted + r.steps_rejected;
+    ok += r.status == kernels::LaneStatus::ok;
+  }
+  const double n = double(members.size());
+  std::printf("| %d | %s | %zu | %.2f | %.0f | %.3g | %.3g | %zu |\n", s.rows, s.stepper, members.size(),
+              wall, attempts / n, attempts / wall, s.rows * attempts / wall, ok);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int run_bench_gpu(const BenchGpuOptions& options) {
+  if (options.device == "gpu" && !ensemble::gpu_info().available) {
+    std::fprintf(stderr, "error: --device gpu: %s; run with --device cpu for this machine's figures\n",
+                 ensemble::gpu_info().why.c_str());
+    return 2;
+  }
+  const bool gpu = options.device == "gpu";
+  std::printf("rotorsweep bench gpu: device %s, %s, members × %.3g\n",
+              gpu ? ensemble::gpu_info().name.c_str() : "cpu",
+              gpu ? "one member per GPU thread" : "lanes on OpenMP threads", options.scale);
+  // replicas scaled, at least one per A value
+  const auto scaled = [&](BenchScene s) {
+    s.replicas = std::max(1, int(std::lround(s.replicas * options.scale)));
+    return s;
+  };
+  std::printf(
+      "| N | stepper | members | wall s | attempts/member | member-attempts/s | rotor-attempts/s | ok |\n");
+  std::printf("|---|---|---|---|---|---|---|---|\n");
+  if (!options.curve_only) {
+    for (const BenchScene s : {BenchScene{2, "rodas4", 1000, 100}, BenchScene{20, "rodas4", 1000, 100},
+                               BenchScene{20, "rodas5p", 1000, 100}, BenchScene{20, "ros2", 1000, 100},
+                               BenchScene{20, "rodas4p2", 1000, 100}, BenchScene{20, "dopri5", 1000, 100},
+                               BenchScene{128, "rodas4", 1000, 20}})
+      run_row(scaled(s), options);
+  }
+  if (options.curve || options.curve_only) {
+    std::printf("whole friction curve: 1000 A × 1000 random starts (× %.3g), N = 20, rodas4, 4 periods\n",
+                options.scale);
+    run_row(scaled({20, "rodas4", 1000, 1000}), options);
+  }
+  return 0;
+}
+
+}  // namespace rotorsweep::apps
