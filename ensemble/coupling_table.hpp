@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "landscape/two_angle_energy.hpp"
+
 namespace rotorsweep::ensemble {
 
 struct CouplingTable {
@@ -48,9 +50,7 @@ struct RowCouplings {
 /// The two-angle reduction with periodic rows alternating θe, θo: H_r = −a_M[cos 2θe + cos 2θo] +
 /// b_M cos(θe − θo) − c_M cos(θe + θo) + A[…], with a_M = a + Σ_{u even} c_u, b_M = 2 Σ_{u odd} b_u,
 /// c_M = 2 Σ_{u odd} c_u (nearest neighbours: 3/2, 2, 0).
-struct TwoAngleCoefficients {
-  double a = 1.5, b = 2.0, c = 0.0;
-};
+using landscape::TwoAngleCoefficients;
 TwoAngleCoefficients two_angle_coefficients(const CouplingTable& table);
 
 /// The interaction energy of one moment with every other moment of the 2-D lattice inside the square

@@ -56,8 +56,8 @@ int count_at_least(const std::vector<std::int32_t>& label, int components, int m
 
 }  // namespace
 
-ChamberCell chamber_cell(double A, double tau) {
-  const auto set = critical_points({A, tau});
+ChamberCell chamber_cell(double A, double tau, const TwoAngleCoefficients& k) {
+  const auto set = critical_points({A, tau, k});
   ChamberCell cell;
   cell.minima = std::int8_t(set.minima);
   cell.saddles = std::int8_t(set.saddles);
@@ -80,7 +80,7 @@ ChamberMap chamber_map(const ChamberGrid& grid, const std::function<void(int)>& 
 #pragma omp parallel for schedule(dynamic, 1)
   for (int i = 0; i < grid.A_cells; ++i) {
     for (int j = 0; j < grid.tau_cells; ++j)
-      map.cells[std::size_t(i) * grid.tau_cells + j] = chamber_cell(map.A[i], map.tau[j]);
+      map.cells[std::size_t(i) * grid.tau_cells + j] = chamber_cell(map.A[i], map.tau[j], grid.k);
 #pragma omp critical(chamber_map_progress)
     {
       ++finished;

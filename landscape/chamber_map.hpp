@@ -1,5 +1,6 @@
-// The chamber map of H_r: a raster over (A, τ ∈ [0, π/2]) of Morse signatures and alignment
-// classes (model.md §5; paper Fig. "Chamber decomposition"), with its connected zones counted.
+// The chamber map of H_r (any coefficients a, b, c): a raster over (A, τ ∈ [0, π/2]) of Morse signatures
+// and alignment classes (model.md §5, §8; paper Fig. "Chamber decomposition"), with its connected zones
+// counted.
 #pragma once
 
 #include <array>
@@ -7,11 +8,14 @@
 #include <functional>
 #include <vector>
 
+#include "landscape/two_angle_energy.hpp"
+
 namespace rotorsweep::landscape {
 
 struct ChamberGrid {
   double A_min = 0, A_max = 12;
   int A_cells = 400, tau_cells = 300;  ///< τ spans [0, π/2]; values at cell centres
+  TwoAngleCoefficients k{};            ///< the landscape's coefficients (nearest neighbours by default)
 };
 
 /// Counts of the critical points at one cell, on the torus (an exchange pair (θe, θo), (θo, θe)
@@ -41,7 +45,7 @@ struct ChamberMap {
   const ChamberCell& at(int i, int j) const { return cells[std::size_t(i) * grid.tau_cells + j]; }
 };
 
-ChamberCell chamber_cell(double A, double tau);
+ChamberCell chamber_cell(double A, double tau, const TwoAngleCoefficients& k = {});
 
 /// All cells (OpenMP over A rows), then the connected components. `rows_done`, if given, is
 /// called (serialised) with the number of finished A rows.

@@ -23,7 +23,7 @@ double torus_distance(double a, double b) {
 void classify(const TwoAngleEnergy& h, CriticalPoint& p) {
   const auto [ee, eo, oo] = h.hessian(p.even, p.odd);
   const double det = ee * oo - eo * eo, trace = ee + oo;
-  const double scale = 10 + h.A;
+  const double scale = h.k.hessian_scale() + h.A;
   if (std::fabs(det) < 1e-8 * scale * scale)
     p.type = MorseType::degenerate;
   else if (det < 0)
@@ -58,10 +58,12 @@ CriticalSet critical_points(const TwoAngleEnergy& h) {
   for (double chi : trig_polynomial_roots([&](double x) { return h.strict_fm_stationarity(x); }, 2))
     add(chi, chi, AlignmentClass::strict_fm);
 
-  const auto denominator = [](double x) { return 6 * std::cos(2 * x) - 4; };
+  const double a = h.k.a, b = h.k.b, c = h.k.c;
+  const auto denominator = [&](double x) { return 4 * a * std::cos(2 * x) - 2 * b; };
   const auto off_diagonal = [&](double x) {
-    const double d = denominator(x), c = std::cos(x - tau);
-    return 6 * std::sin(2 * x) * (2 * A * A * c * c - d * d) - 2 * A * A * std::sin(x - tau) * c * d;
+    const double d = denominator(x), drive = std::cos(x - tau), s = std::sin(2 * x);
+    return 4 * a * s * (2 * A * A * drive * drive - d * d) + 2 * c * s * d * d -
+           2 * A * A * std::sin(x - tau) * drive * d;
   };
   for (double chi : trig_polynomial_roots(off_diagonal, 6)) {
     const double d = denominator(chi);

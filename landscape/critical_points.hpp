@@ -28,11 +28,12 @@ struct CriticalSet {
 };
 
 /// All critical points. With θe = χ + φ, θo = χ − φ the gradient splits into
-///   sin φ · [(6 cos 2χ − 4) cos φ − A cos(χ − τ)] = 0   and
-///   6 sin 2χ cos 2φ − 2A sin(χ − τ) cos φ = 0.
-/// Strict FM (sin φ = 0): 3 sin 2χ = A sin(χ − τ), a trigonometric polynomial of degree 2.
-/// Off-diagonal: ζ = cos φ = A cos(χ − τ) / (6 cos 2χ − 4), and the second equation times
-/// (6 cos 2χ − 4)² is a trigonometric polynomial of degree 6 in χ; each root with |ζ| < 1
+///   sin φ · [(4a cos 2χ − 2b) cos φ − A cos(χ − τ)] = 0   and
+///   (4a cos 2φ + 2c) sin 2χ − 2A sin(χ − τ) cos φ = 0
+/// (nearest neighbours: 4a cos 2χ − 2b = 6 cos 2χ − 4, c = 0).
+/// Strict FM (sin φ = 0): (2a + c) sin 2χ = A sin(χ − τ), a trigonometric polynomial of degree 2.
+/// Off-diagonal: ζ = cos φ = A cos(χ − τ) / (4a cos 2χ − 2b), and the second equation times
+/// (4a cos 2χ − 2b)² is a trigonometric polynomial of degree 6 in χ; each root with |ζ| < 1
 /// gives the two points (χ ± φ, χ ∓ φ). Both polynomials are solved completely
 /// (trig_polynomial_roots), so no critical point is missed.
 CriticalSet critical_points(const TwoAngleEnergy& h);

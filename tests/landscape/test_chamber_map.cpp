@@ -15,16 +15,26 @@ namespace {
 constexpr double half_pi = std::numbers::pi / 2;
 constexpr double A_max = 12;
 
+/// Point-dipole rows with range 4 (infinite rows; `rotorsweep couplings --range 4`): their CP interval
+/// reaches A_* = 13.0, so their map spans A ≤ 16.
+const TwoAngleCoefficients dipolar4{2.1154969038, 2.3926076195, 2.1015765433};
+
 const ChamberMap& test_map() {
   static const ChamberMap map = chamber_map({0, A_max, 120, 90});
   return map;
 }
+const ChamberMap& dipolar_map() {
+  static const ChamberMap map = chamber_map({0, 16, 160, 90, dipolar4});
+  return map;
+}
 
 /// Points of the given curves in coordinates scaled to the unit square (A/A_max, τ/(π/2)).
-std::vector<std::array<double, 2>> scaled_points(const std::vector<Curve>& curves, int samples) {
+std::vector<std::array<double, 2>> scaled_points(const std::vector<Curve>& curves, int samples,
+                                                 const ChamberGrid& grid = test_map().grid) {
   std::vector<std::array<double, 2>> out;
   for (auto c : curves)
-    for (const auto& p : sample_curve(c, samples, A_max + 1)) out.push_back({p.A / A_max, p.tau / half_pi});
+    for (const auto& p : sample_curve(c, samples, grid.A_max + 1, grid.k))
+      out.push_back({p.A / grid.A_max, p.tau / half_pi});
   return out;
 }
 
@@ -43,9 +53,9 @@ std::vector<char> touched_cells(const ChamberGrid& grid, const std::vector<std::
 
 /// Every pair of neighbouring cells that `differ` has a curve point in one of the two cells.
 template <class Differ>
-void check_changes_only_on_curves(const std::vector<Curve>& curves, Differ differ) {
-  const auto& map = test_map();
-  const auto touched = touched_cells(map.grid, scaled_points(curves, 400000));
+void check_changes_only_on_curves(const std::vector<Curve>& curves, Differ differ,
+                                  const ChamberMap& map = test_map()) {
+  const auto touched = touched_cells(map.grid, scaled_points(curves, 400000, map.grid));
   const int rows = map.grid.A_cells, cols = map.grid.tau_cells;
   int changes = 0;
   for (int i = 0; i < rows; ++i)
@@ -75,6 +85,25 @@ TEST_CASE("the bifurcation set cuts the plane into the paper's seven zones", "[l
   }
   CHECK(map.at(119, 45).minima == 1);  // A ≈ 12: the strict-FM minimum alone
   CHECK(map.at(119, 45).by_type_and_class[0][0] == 1);
+}
+
+TEST_CASE("dipolar coefficients: Euler characteristic in every cell, changes only across their curves",
+          "[landscape][chambers]") {
+  const auto& map = dipolar_map();
+  for (const auto& cell : map.cells) {
+    REQUIRE(cell.degenerate == 0);
+    REQUIRE(cell.minima - cell.saddles + cell.maxima == 0);
+  }
+  CHECK(map.zones_at_least(10) == 6);  // one fewer than nearest neighbours (docs/model.md §8)
+  CHECK(map.at(159, 45).minima == 1);  // A ≈ 16: the strict-FM minimum alone
+  CHECK(map.at(159, 45).by_type_and_class[0][0] == 1);
+  check_changes_only_on_curves(
+      {Curve::fm_tangential, Curve::fm_transverse, Curve::off_diagonal_plus, Curve::off_diagonal_minus},
+      [](const ChamberCell& a, const ChamberCell& b) { return !a.same_morse_signature(b); }, map);
+  check_changes_only_on_curves(
+      {Curve::fm_tangential, Curve::fm_transverse, Curve::off_diagonal_plus, Curve::off_diagonal_minus,
+       Curve::alignment},
+      [](const ChamberCell& a, const ChamberCell& b) { return !(a == b); }, map);
 }
 
 TEST_CASE("Morse signatures change only across bifurcation curves", "[landscape][chambers]") {
