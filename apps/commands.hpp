@@ -51,6 +51,9 @@ struct MergeOptions {
 };
 int run_merge(const MergeOptions& options);
 
+/// Rotors per row from "infinite" (0) or a positive integer (checked by the command line).
+std::size_t row_length_value(const std::string& text);
+
 struct CouplingsOptions {
   std::size_t range = 1;                ///< rows u = 1 .. range
   std::string row_length = "infinite";  ///< rotors per row, or "infinite"
@@ -67,6 +70,10 @@ int run_info(const InfoOptions& options);
 struct LandscapeOptions {
   std::string output;
   bool quiet = false;
+  // whose landscape: nearest neighbours, point-dipole rows (range, row length) or (a, b, c) given
+  std::size_t range = 0;  ///< 0: nearest neighbours
+  std::string row_length = "infinite";
+  std::vector<double> coefficients;  ///< a, b, c; empty: from range
   // chambers
   double A_min = 0, A_max = 12;
   int A_cells = 400, tau_cells = 300;
@@ -74,7 +81,8 @@ struct LandscapeOptions {
   // curves
   int samples = 2000;
   // jump-friction
-  int count = 10000;
+  int count = 1000;
+  double J_A_min = 0, J_A_max = 0;  ///< A grid of jump-friction; both 0: [A_-, A_*]
 };
 int run_landscape_chambers(const LandscapeOptions& options);
 int run_landscape_curves(const LandscapeOptions& options);

@@ -13,23 +13,10 @@
 
 namespace rotorsweep::apps {
 
+std::size_t row_length_value(const std::string& text) { return text == "infinite" ? 0 : std::stoul(text); }
+
 int run_couplings(const CouplingsOptions& options) {
-  std::size_t row_length = 0;
-  if (options.row_length != "infinite") {
-    std::size_t used = 0;
-    unsigned long value = 0;
-    try {
-      value = std::stoul(options.row_length, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != options.row_length.size() || value < 1 || options.row_length[0] == '-') {
-      std::cerr << "error: --row-length '" << options.row_length
-                << "': must be a positive integer (rotors per row) or 'infinite'\n";
-      return 2;
-    }
-    row_length = value;
-  }
+  const std::size_t row_length = row_length_value(options.row_length);
   const auto table = ensemble::dipolar_table(options.range, row_length);
   const auto reduced = ensemble::two_angle_coefficients(table);
   std::printf("point dipoles, rows %s, range %zu rows\n",

@@ -9,11 +9,13 @@
 
 #include "build_info.hpp"
 #include "commands.hpp"
+#include "ensemble/coupling_table.hpp"
 #include "io/hdf5_file.hpp"
 #include "io/output_target.hpp"
 #include "landscape/bifurcation_curves.hpp"
 #include "landscape/chamber_map.hpp"
 #include "landscape/jump_friction.hpp"
+#include "landscape/quasi_static_cycle.hpp"
 #include "progress_line.hpp"
 
 namespace rotorsweep::apps {
@@ -59,11 +61,29 @@ int write_landscape_file(const std::string& path, const std::string& kind,
   return 0;
 }
 
-void write_closed_forms(const io::Hdf5Location& file) {
-  file.set_attribute("A_minus", landscape::A_minus());
-  file.set_attribute("A_star", landscape::A_star());
-  file.set_attribute("alignment_tau1", landscape::alignment_tau1());
-  file.set_attribute("alignment_tau2", landscape::alignment_tau2());
+/// The landscape's coefficients: given, from a point-dipole table, or nearest neighbours.
+landscape::TwoAngleCoefficients coefficients(const LandscapeOptions& o) {
+  if (o.coefficients.size() == 3) return {o.coefficients[0], o.coefficients[1], o.coefficients[2]};
+  if (o.range > 0)
+    return ensemble::two_angle_coefficients(ensemble::dipolar_table(o.range, row_length_value(o.row_length)));
+  return {};
+}
+
+/// The coefficients and the CP interval as file attributes; the alignment curve's type changes.
+void write_landscape_constants(const io::Hdf5Location& file, const LandscapeOptions& o) {
+  const auto k = coefficients(o);
+  file.set_attribute("a", k.a);
+  file.set_attribute("b", k.b);
+  file.set_attribute("c", k.c);
+  file.set_attribute("couplings", o.coefficients.size() == 3 ? std::string("coefficients given")
+                                  : o.range > 0 ? "point dipoles, range " + std::to_string(o.range) +
+                                                      ", row length " + o.row_length
+                                                : std::string("nearest neighbours"));
+  file.set_attribute("A_minus", landscape::A_minus(k));
+  file.set_attribute("A_star", landscape::A_star(k));
+  file.set_attribute("zeta0", landscape::lower_curve_zeta0(k));
+  file.write("alignment_type_changes", landscape::alignment_type_changes(k), {},
+             "folded phases τ where the alignment curve's ρ = 1/2 point changes Morse type");
 }
 
 std::vector<std::int64_t> cell_field(const landscape::ChamberMap& map,
@@ -82,7 +102,7 @@ int run_landscape_chambers(const LandscapeOptions& o) {
               << ")\n";
     return 2;
   }
-  const landscape::ChamberGrid grid{o.A_min, o.A_max, o.A_cells, o.tau_cells};
+  const landscape::ChamberGrid grid{o.A_min, o.A_max, o.A_cells, o.tau_cells, coefficients(o)};
   const std::size_t cells = std::size_t(grid.A_cells) * grid.tau_cells;
   const int min_cells =
       o.min_zone_cells > 0 ? o.min_zone_cells : int(std::max<std::size_t>(10, cells / 10000));
@@ -121,7 +141,7 @@ int run_landscape_chambers(const LandscapeOptions& o) {
     file.set_attribute("components_min_cells", std::int64_t(min_cells));
     file.set_attribute("zone_components_all", std::int64_t(map.zones));
     file.set_attribute("chamber_components_all", std::int64_t(map.chambers));
-    write_closed_forms(file);
+    write_landscape_constants(file, o);
     std::printf(
         "%d zones of constant Morse signature, %d chambers (components of >= %d cells; %d and %d "
         "counting slivers along the curves)\n",
@@ -132,39 +152,62 @@ int run_landscape_chambers(const LandscapeOptions& o) {
 int run_landscape_curves(const LandscapeOptions& o) {
   return write_landscape_file(o.output, "curves", [&](const io::Hdf5Location& file) {
     for (auto curve : landscape::all_curves) {
-      const auto points = landscape::sample_curve(curve, o.samples, o.A_max);
+      const auto points = landscape::sample_curve(curve, o.samples, o.A_max, coefficients(o));
       std::vector<double> A, tau, parameter;
       for (const auto& p : points) A.push_back(p.A), tau.push_back(p.tau), parameter.push_back(p.parameter);
       const auto group = file.create_group(std::string(landscape::curve_name(curve)));
       group.write("A", A, {}, "A along the curve");
       group.write("tau", tau, {}, "drive phase τ folded into [0, π/2]");
       group.write("parameter", parameter, {},
-                  curve == landscape::Curve::alignment ? "τ"
+                  curve == landscape::Curve::alignment ? "χ of the ρ = 1/2 point (χ ± π/4), in [0, π/2]"
                   : (curve == landscape::Curve::fm_tangential || curve == landscape::Curve::fm_transverse)
                       ? "strict-FM angle χ in [0, π/2]"
                       : "ζ = cos((θe − θo)/2) of the degenerate point");
     }
-    write_closed_forms(file);
+    write_landscape_constants(file, o);
   });
 }
 
 int run_landscape_jump_friction(const LandscapeOptions& o) {
+  const auto k = coefficients(o);
+  const bool cp_grid = o.J_A_min == 0 && o.J_A_max == 0;
+  const double lo = cp_grid ? landscape::A_minus(k) : o.J_A_min,
+               hi = cp_grid ? landscape::A_star(k) : o.J_A_max;
+  if (!(hi >= lo) || lo < 0) {
+    std::cerr << "error: --A-min, --A-max: need 0 <= A-min <= A-max (got " << lo << ", " << hi << ")\n";
+    return 2;
+  }
   return write_landscape_file(o.output, "jump-friction", [&](const io::Hdf5Location& file) {
-    const double lo = landscape::A_minus(), hi = landscape::A_star();
-    std::vector<double> A, J, drop_transverse, drop_low, zeta_low, zeta_landing, tau_transverse, tau_low;
+    std::vector<double> A, J, J_cycle, rho_cycle, drop_transverse, drop_low, zeta_low, zeta_landing,
+        tau_transverse, tau_low;
+    std::vector<std::int64_t> jumps;
+    ProgressLine progress(std::size_t(o.count), !o.quiet, "A values");
     for (int i = 0; i < o.count; ++i) {
-      const auto e = landscape::jump_events(o.count > 1 ? lo + (hi - lo) * i / (o.count - 1) : lo);
+      const auto e = landscape::jump_events(o.count > 1 ? lo + (hi - lo) * i / (o.count - 1) : lo, k);
+      const auto cycle = landscape::quasi_static_cycle(e.A, k);
       A.push_back(e.A);
       J.push_back(e.J);
+      J_cycle.push_back(cycle.J);
+      rho_cycle.push_back(cycle.mean_rho);
+      jumps.push_back(std::int64_t(cycle.jumps.size()));
       drop_transverse.push_back(e.energy_fm_transverse - e.landing_transverse);
       drop_low.push_back(e.energy_low - e.landing_low);
       zeta_low.push_back(e.zeta_low);
       zeta_landing.push_back(e.zeta_landing);
       tau_transverse.push_back(landscape::fundamental_phase(e.tau_transverse));
       tau_low.push_back(landscape::fundamental_phase(e.tau_low));
+      progress.update(std::size_t(i + 1));
     }
-    file.write("A", A, {}, "A, uniform on [A_-, A_*]");
-    file.write("J", J, {}, "quasi-static CP friction J(A): D/N → J as g → 0");
+    progress.finish();
+    file.write("A", A, {}, cp_grid ? "A, uniform on [A_-, A_*]" : "A, uniform on [A-min, A-max]");
+    file.write("J", J, {},
+               "quasi-static CP friction J(A) by the paper's recipe (NaN outside [A_-, A_*] and where its "
+               "sequence of jumps does not occur)");
+    file.write("J_cycle", J_cycle, {},
+               "friction of the quasi-static cycle from the AFM state: energy dropped per row and period "
+               "(D/N → J_cycle as g → 0)");
+    file.write("rho_cycle", rho_cycle, {}, "alignment averaged over the quasi-static cycle");
+    file.write("jumps_cycle", jumps, {}, "jumps per period of the quasi-static cycle");
     file.write("drop_transverse", drop_transverse, {},
                "energy drop when strict FM loses transverse stability");
     file.write("drop_low", drop_low, {}, "energy drop when the off-diagonal minimum ends on B_off^-");
@@ -173,8 +216,8 @@ int run_landscape_jump_friction(const LandscapeOptions& o) {
     file.write("zeta_landing", zeta_landing, {}, "ζ of the off-diagonal minimum reached from strict FM");
     file.write("tau_transverse", tau_transverse, {}, "phase of the transverse jump, folded into [0, π/2]");
     file.write("tau_low", tau_low, {}, "phase of the jump from B_off^-, folded into [0, π/2]");
-    write_closed_forms(file);
-    file.set_attribute("J_at_A_minus", landscape::jump_friction(lo));
+    write_landscape_constants(file, o);
+    file.set_attribute("J_at_A_minus", landscape::jump_friction(landscape::A_minus(k), k));
   });
 }
 

@@ -79,9 +79,30 @@ int main(int argc, char** argv) {
       "landscape",
       "The two-angle energy landscape: chamber map, bifurcation curves, quasi-static friction J(A)");
   landscape_cmd->require_subcommand(1);
+  const CLI::Validator row_length(
+      [](const std::string& text) {
+        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        return text == "infinite" || (digits && text.size() < 10 && std::stoul(text) >= 1)
+                   ? std::string()
+                   : "must be a positive integer (rotors per row) or 'infinite'";
+      },
+      "L|infinite");
   const auto output_option = [&](CLI::App* cmd) {
     cmd->add_option("-o,--output", landscape.output, "HDF5 file to write")->required();
     cmd->add_flag("-q,--quiet", landscape.quiet, "No progress line");
+    auto* range =
+        cmd->add_option("--range", landscape.range,
+                        "Point-dipole rows up to M apart (docs/model.md §8); default: nearest neighbours")
+            ->check(CLI::Range(std::size_t(1), std::size_t(100000)));
+    cmd->add_option("--row-length", landscape.row_length, "Rotors per row for --range, or 'infinite'")
+        ->check(row_length)
+        ->needs(range)
+        ->capture_default_str();
+    cmd->add_option("--coefficients", landscape.coefficients, "The two-angle coefficients a, b, c themselves")
+        ->expected(3)
+        ->delimiter(',')
+        ->check(finite)
+        ->excludes(range);
   };
   auto* chambers_cmd = landscape_cmd->add_subcommand(
       "chambers", "Raster over (A, τ ∈ [0, π/2]): Morse signature, alignment classes, zones and chambers");
@@ -113,6 +134,8 @@ int main(int argc, char** argv) {
   jump_cmd->add_option("--count", landscape.count, "Number of A values")
       ->check(CLI::Range(1, 100000000))
       ->capture_default_str();
+  jump_cmd->add_option("--A-min", landscape.J_A_min, "Smallest A (default: A_-)")->check(finite);
+  jump_cmd->add_option("--A-max", landscape.J_A_max, "Largest A (default: A_*)")->check(finite);
 
   CouplingsOptions couplings;
   auto* couplings_cmd = app.add_subcommand(
@@ -122,6 +145,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::size_t(1), std::size_t(100000)))
       ->capture_default_str();
   couplings_cmd->add_option("--row-length", couplings.row_length, "Rotors per row, or 'infinite'")
+      ->check(row_length)
       ->capture_default_str();
   couplings_cmd->add_option("-o,--output", couplings.output, "Also write the table as CSV to this file");
 

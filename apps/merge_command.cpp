@@ -130,7 +130,8 @@ int run_merge(const MergeOptions& options) {
   // second pass: the shards' rows, a block at a time, into their plan rows of the output
   try {
     const ensemble::MemberPlan plan(scene);
-    io::ResultFile out(target->temporary(), scene, io::Provenance{first->scene_path, version, revision, first->device});
+    io::ResultFile out(target->temporary(), scene,
+                       io::Provenance{first->scene_path, version, revision, first->device});
     for (const auto& path : options.shards) {
       const auto file = io::Hdf5Location::open_file(path);
       const std::size_t rows = io::member_rows(file);

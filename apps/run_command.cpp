@@ -274,8 +274,8 @@ int run_sweep_command(const RunOptions& options) {
     }
   } else {
     try {
-      file.emplace(partial, scene, io::Provenance{options.scene, version, revision, ensemble::device_label(scene)},
-                   shard);
+      file.emplace(partial, scene,
+                   io::Provenance{options.scene, version, revision, ensemble::device_label(scene)}, shard);
     } catch (const std::exception& e) {
       std::cerr << "error: creating " << partial << " failed: " << e.what() << "; "
                 << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";

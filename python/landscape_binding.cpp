@@ -5,10 +5,12 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "ensemble/coupling_table.hpp"
 #include "landscape/bifurcation_curves.hpp"
 #include "landscape/chamber_map.hpp"
 #include "landscape/critical_points.hpp"
 #include "landscape/jump_friction.hpp"
+#include "landscape/quasi_static_cycle.hpp"
 #include "numpy_vector.hpp"
 
 namespace py = pybind11;
@@ -124,7 +126,45 @@ void bind_landscape(py::module_& m) {
         py::arg("tau_cells"), "The chamber raster over (A, τ ∈ [0, π/2]) (cell centres).");
   m.def("jump_events", &jump_event_values, py::arg("A"),
         "The two jumps of half a period at A (NaN outside).");
-  m.def("jump_friction", py::vectorize(jump_friction), py::arg("A"), "J(A), NaN outside [A_-, A_*].");
+  m.def("jump_friction", py::vectorize([](double A, double a, double b, double c) {
+          return jump_friction(A, {a, b, c});
+        }),
+        py::arg("A"), py::arg("a") = 1.5, py::arg("b") = 2.0, py::arg("c") = 0.0,
+        "J(A) by the paper's recipe for coefficients (a, b, c); NaN outside [A_-, A_*].");
+  m.def(
+      "quasi_static_cycle",
+      [](const std::vector<double>& A, double a, double b, double c) {
+        std::vector<double> J(A.size()), rho(A.size());
+        {
+          const py::gil_scoped_release unlocked;
+          for (std::size_t i = 0; i < A.size(); ++i) {
+            const auto cycle = quasi_static_cycle(A[i], {a, b, c});
+            J[i] = cycle.J, rho[i] = cycle.mean_rho;
+          }
+        }
+        return py::make_tuple(to_numpy(std::move(J)), to_numpy(std::move(rho)));
+      },
+      py::arg("A"), py::arg("a"), py::arg("b"), py::arg("c"),
+      "Friction and mean alignment of the quasi-static cycle from the AFM state, per A.");
+  m.def(
+      "cp_interval",
+      [](double a, double b, double c) {
+        const auto& interval = cp_interval({a, b, c});
+        return py::make_tuple(interval.A_minus, interval.A_star);
+      },
+      py::arg("a"), py::arg("b"), py::arg("c"), "(A_-, A_*) for coefficients (a, b, c).");
+  m.def(
+      "two_angle_coefficients",
+      [](std::size_t range, bool all_rows, std::size_t row_length, std::size_t rows) {
+        ensemble::RowCouplings couplings;
+        couplings.kind = ensemble::RowCouplings::Kind::dipolar;
+        couplings.range = range, couplings.all_rows = all_rows, couplings.row_length = row_length;
+        const auto k = ensemble::two_angle_coefficients(
+            rows > 0 ? couplings.for_rows(rows) : ensemble::dipolar_table(range, row_length));
+        return py::make_tuple(k.a, k.b, k.c);
+      },
+      py::arg("range"), py::arg("all_rows"), py::arg("row_length"), py::arg("rows"),
+      "a_M, b_M, c_M of point-dipole rows (rows > 0: the periodic ring of that many rows).");
   m.def("bifurcation_curve", &curve_arrays, py::arg("name"), py::arg("count"), py::arg("A_max"),
         "Points of a bifurcation or alignment curve in the folded (A, τ) plane.");
   py::list curves;

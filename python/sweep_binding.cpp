@@ -94,8 +94,9 @@ void bind_sweep(py::module_& m) {
       .def(py::init([](const std::string& scene, bool is_path, int threads, const std::string& output,
                        bool force, const std::string& version, const std::string& revision) {
              const std::string source = is_path ? scene : std::string("<python>");
-             return std::make_unique<SweepJob>(parse(scene, is_path), threads, output, force,
-                                               io::Provenance{source, version, revision, ensemble::device_label(parse(scene, is_path))});
+             return std::make_unique<SweepJob>(
+                 parse(scene, is_path), threads, output, force,
+                 io::Provenance{source, version, revision, ensemble::device_label(parse(scene, is_path))});
            }),
            py::arg("scene"), py::arg("is_path"), py::arg("threads"), py::arg("output"), py::arg("force"),
            py::arg("version"), py::arg("revision"))

@@ -46,14 +46,24 @@ def main():
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     figure, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
-    rows = ["couplings,boundary,cp_from,cp_to,peak_A,peak_D_per_row"]
+    rows = ["couplings,boundary,cp_from,cp_to,peak_A,peak_D_per_row,a_M,b_M,c_M,A_minus,A_star,J_M_peak_A,"
+            "J_M_peak"]
+    A_fine = np.linspace(A_GRID["from"], A_GRID["to"], 621)
     for axis, boundary in zip(axes, ("periodic", "open")):
         for name, model in MODELS:
             A, d, cp = curve(model, boundary, args.threads)
-            axis.semilogy(A, np.maximum(d, 1e-8), marker=".", label=name)
+            line, = axis.semilogy(A, np.maximum(d, 1e-8), marker=".", label=name)
             peak = int(np.nanargmax(d))
             cp_from, cp_to = (A[cp].min(), A[cp].max()) if cp.any() else (np.nan, np.nan)
-            rows.append(f"{name},{boundary},{cp_from:.2f},{cp_to:.2f},{A[peak]:.2f},{d[peak]:.5g}")
+            landscape = ",,,,,,"
+            if boundary == "periodic":
+                k = (1.5, 2.0, 0.0) if not model else rotorsweep.two_angle_coefficients(model["range"], rows=20)
+                J, _ = rotorsweep.quasi_static_friction(A_fine, k)
+                axis.semilogy(A_fine[J > 0], J[J > 0], ls="--", lw=1, color=line.get_color())
+                lo, hi = rotorsweep.landscape.cp_interval(k)
+                j_peak = int(np.argmax(J))
+                landscape = f"{k[0]:.4f},{k[1]:.4f},{k[2]:.4f},{lo:.4f},{hi:.4f},{A_fine[j_peak]:.3f},{J[j_peak]:.5g}"
+            rows.append(f"{name},{boundary},{cp_from:.2f},{cp_to:.2f},{A[peak]:.2f},{d[peak]:.5g},{landscape}")
             print(rows[-1], flush=True)
         axis.set_title(f"{boundary} rows, N = 20, g = 0.0011")
         axis.set_xlabel("A")

@@ -12,14 +12,16 @@ import os
 import h5py
 
 from . import _core, _dataset, _progress, _scene
-from .landscape import A_minus, A_star, bifurcation_curve, chamber_map, critical_points, jump_events, jump_friction
+from .landscape import (A_minus, A_star, bifurcation_curve, chamber_map, critical_points, jump_events, jump_friction,
+                        quasi_static_friction, two_angle_coefficients)
 
 __version__ = _core.version
 #: the paper's table of dissipation integrals: its members (rows, g, relax_periods,
 #: average_periods; per entry A, ic, R and whether it is in CP, where R depends on the draw)
 paper_table = _core.paper_table
 __all__ = ["run", "open", "members", "scene_text", "plan_axes", "critical_points", "chamber_map",
-           "bifurcation_curve", "jump_events", "jump_friction", "A_minus", "A_star", "paper_table"]
+           "bifurcation_curve", "jump_events", "jump_friction", "quasi_static_friction", "two_angle_coefficients",
+           "A_minus", "A_star", "paper_table"]
 
 #: how often run() looks at the sweep (progress line, Ctrl-C), in seconds
 _POLL_SECONDS = 0.1

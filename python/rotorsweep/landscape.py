@@ -61,7 +61,37 @@ def jump_events(A):
     return _core.jump_events(float(A))
 
 
-def jump_friction(A):
-    """The quasi-static CP friction J(A) = ΔH⊥ + ΔH_low per half period (array in, array out; NaN
-    outside [A_−, A_*])."""
-    return _core.jump_friction(np.asarray(A, dtype=float))
+def jump_friction(A, coefficients=(1.5, 2.0, 0.0)):
+    """The quasi-static CP friction J(A) = ΔH⊥ + ΔH_low per half period by the paper's recipe (array
+    in, array out; NaN outside [A_−, A_*] and where its sequence of jumps does not occur). With
+    `coefficients` (a_M, b_M, c_M) the landscape of a coupling table (two_angle_coefficients)."""
+    a, b, c = (float(x) for x in coefficients)
+    return _core.jump_friction(np.asarray(A, dtype=float), a, b, c)
+
+
+def quasi_static_friction(A, coefficients=(1.5, 2.0, 0.0)):
+    """The friction J (energy per row and period, the g → 0 limit of D/N) and the mean alignment of
+    the quasi-static cycle from the AFM state, for each A: a pair of arrays. It follows a minimum of
+    H_r and jumps down the gradient flow where the minimum ends, so it holds also where the
+    recipe's sequence does not occur (docs/model.md §8)."""
+    a, b, c = (float(x) for x in coefficients)
+    A = np.atleast_1d(np.asarray(A, dtype=float))
+    return _core.quasi_static_cycle(A.tolist(), a, b, c)
+
+
+def cp_interval(coefficients=(1.5, 2.0, 0.0)):
+    """(A_−, A_*) of the landscape with coefficients (a, b, c): the minimum of the lower off-diagonal
+    curve and its end on the transverse strict-FM curve."""
+    a, b, c = (float(x) for x in coefficients)
+    return _core.cp_interval(a, b, c)
+
+
+def two_angle_coefficients(range, row_length="infinite", rows=None):
+    """(a_M, b_M, c_M) of point-dipole rows up to `range` rows apart ("all": every row of a ring of
+    `rows`), rows of `row_length` rotors (or "infinite"); with `rows`, the periodic ring of that many
+    rows as a sweep builds it (a partner exactly rows/2 away counted once)."""
+    all_rows = range == "all"
+    if all_rows and not rows:
+        raise ValueError("two_angle_coefficients: range 'all' needs rows")
+    length = 0 if row_length == "infinite" else int(row_length)
+    return _core.two_angle_coefficients(0 if all_rows else int(range), all_rows, length, int(rows or 0))

@@ -76,6 +76,12 @@ TEST_CASE("landscape rejects bad options with exit code 2", "[apps][landscape]")
   CHECK(run_cli("landscape curves --A-max nan" + out, dir).exit_code == 2);
   CHECK(run_cli("landscape curves --A-max -5" + out, dir).exit_code == 2);
   CHECK(run_cli("landscape curves -o ''", dir).exit_code == 2);
+  CHECK(run_cli("landscape curves --coefficients 1.5,2" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape curves --coefficients 1.5,2,nan" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape curves --range 2 --coefficients 1.5,2,0" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape curves --row-length 5" + out, dir).exit_code == 2);  // needs --range
+  CHECK(run_cli("landscape curves --range 2 --row-length 0" + out, dir).exit_code == 2);
+  CHECK(run_cli("landscape jump-friction --A-min 9 --A-max 3" + out, dir).exit_code == 2);
   CHECK(!std::filesystem::exists(dir / "x.h5"));
 }
 
@@ -86,4 +92,34 @@ TEST_CASE("landscape on a full disk: a clear error and no file", "[apps][landsca
   CHECK(run.exit_code == 1);
   CHECK_THAT(run.output, Catch::Contains("File too large"));
   CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 1);
+}
+
+TEST_CASE("landscape jump-friction for point-dipole rows: their coefficients, CP interval and cycle",
+          "[apps][landscape]") {
+  const auto dir = scratch_directory("landscape-dipolar");
+  const auto jump = (dir / "jump.h5").string(), nearest = (dir / "nearest.h5").string();
+  REQUIRE(run_cli("landscape jump-friction --range 4 --count 21 -q -o '" + jump + "'", dir).exit_code == 0);
+  const auto j = Hdf5Location::open_file(jump);
+  CHECK(j.attribute_double("a") == Approx(2.1154969038));  // `couplings --range 4`
+  CHECK(j.attribute_double("b") == Approx(2.3926076195));
+  CHECK(j.attribute_double("c") == Approx(2.1015765433));
+  CHECK(j.attribute_double("A_star") > 12);
+  const auto J_cycle = j.read_doubles("J_cycle"), rho = j.read_doubles("rho_cycle");
+  REQUIRE(J_cycle.size() == 21);
+  for (std::size_t i = 1; i + 1 < J_cycle.size(); ++i) CHECK(J_cycle[i] > 0);
+  REQUIRE(run_cli("landscape jump-friction --coefficients 1.5,2,0 --A-min 3 --A-max 10 --count 8 -q -o '" +
+                      nearest + "'",
+                  dir)
+              .exit_code == 0);
+  const auto n = Hdf5Location::open_file(nearest);
+  CHECK(n.attribute_double("A_star") == Approx(8.778365775883558));
+  const auto A = n.read_doubles("A"), J = n.read_doubles("J"), cycle = n.read_doubles("J_cycle");
+  REQUIRE(A.size() == 8);
+  for (std::size_t i = 0; i < A.size(); ++i) {
+    INFO("A = " << A[i]);
+    if (std::isnan(J[i]))
+      CHECK(cycle[i] == 0);  // outside [A_-, A_*]
+    else
+      CHECK(cycle[i] == Approx(J[i]).margin(1e-7));
+  }
 }

@@ -48,3 +48,21 @@ def test_curves():
     assert np.nanmin(curve["A"]) == pytest.approx(rotorsweep.A_minus, rel=1e-3)
     with pytest.raises(ValueError, match="alignment"):
         rotorsweep.bifurcation_curve("no_such_curve")
+
+
+def test_coupling_tables_landscape():
+    k = rotorsweep.two_angle_coefficients(4)
+    np.testing.assert_allclose(k, (2.1154969038, 2.3926076195, 2.1015765433), rtol=1e-9)
+    assert rotorsweep.two_angle_coefficients("all", rows=20)[0] > k[0]
+    with pytest.raises(ValueError):
+        rotorsweep.two_angle_coefficients("all")
+    lo, hi = rotorsweep.landscape.cp_interval()
+    assert (lo, hi) == (rotorsweep.A_minus, rotorsweep.A_star)
+    A = np.linspace(lo + 0.01, hi - 0.01, 7)
+    J, rho = rotorsweep.quasi_static_friction(A)
+    np.testing.assert_allclose(J, rotorsweep.jump_friction(A), atol=1e-7)
+    assert np.all((rho > 0.5) & (rho < 1))
+    lo4, hi4 = rotorsweep.landscape.cp_interval(k)
+    assert lo4 < lo and hi4 > hi + 4
+    J4, _ = rotorsweep.quasi_static_friction([lo4 - 0.5, 10.0, hi4 + 0.5], k)
+    assert J4[0] == 0 and J4[1] > 1 and J4[2] == 0
