@@ -181,7 +181,7 @@ void print_header(const RunOptions& options, const ensemble::Scene& scene, std::
            (couplings.all_rows ? std::string("all rows") : std::to_string(couplings.range) + " rows") +
            (couplings.row_length ? ", rows of " + std::to_string(couplings.row_length) + " rotors"
                                  : std::string(", infinite rows"));
-  std::fprintf(stderr, "couplings: %s; %s boundary (dense Jacobian)\n", what.c_str(),
+  std::fprintf(stderr, "couplings: %s; %s boundary (LDLT over the Jacobian's envelope)\n", what.c_str(),
                couplings.open ? "open" : "periodic");
 }
 

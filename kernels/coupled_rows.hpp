@@ -99,6 +99,7 @@ class CoupledRows {
     evaluate(w, theta, t, f, qdot);
     const std::size_t n = rows_;
     J.clear();
+    J.set_band(range_, !open_);  // pairs at most range_ apart, and round the ring when periodic
     for (std::size_t j = 0; j < n; ++j) {
       const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
       J.entry(j, j) += inv_g_ * (V(-4.0) * a_ * cos_2theta + A_ * w.cos_lag[j]);

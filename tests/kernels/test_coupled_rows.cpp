@@ -145,6 +145,35 @@ TEST_CASE("dense LDLT solve and inertia agree with Eigen", "[kernels][couplings]
   }
 }
 
+TEST_CASE("the envelope LDLT of banded and ring matrices gives the dense one's bits",
+          "[kernels][couplings]") {
+  const std::size_t n = 12;
+  for (bool wrap : {false, true})
+    for (std::size_t band :
+         {std::size_t(1), std::size_t(2), std::size_t(3), std::size_t(5), std::size_t(6)}) {
+      INFO("band " << band << (wrap ? ", ring" : ", open"));
+      auto dense = rotorsweep::testing::jacobian<DenseSymmetric<double>>(n);
+      auto banded = rotorsweep::testing::jacobian<DenseSymmetric<double>>(n);
+      banded.set_band(band, wrap);
+      const auto values = random_values(n * n, 31 + band, -1.0, 1.0);
+      for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t k = 0; k <= j; ++k) {
+          const bool coupled = j - k <= band || (wrap && j - k >= n - band);
+          const double x = coupled ? values[j * n + k] : 0.0;
+          dense.entry(j, k) = dense.entry(k, j) = banded.entry(j, k) = banded.entry(k, j) = x;
+        }
+      for (double shift : {-3.0, 0.4, 1.5, 6.0}) {
+        dense.factor(shift);
+        banded.factor(shift);
+        CHECK(bool(dense.positive_definite()) == bool(banded.positive_definite()));
+        auto a = random_values(n, 37, -1.0, 1.0), b = a;
+        dense.solve(a.data());
+        banded.solve(b.data());
+        for (std::size_t i = 0; i < n; ++i) REQUIRE(a[i] == b[i]);
+      }
+    }
+}
+
 TEST_CASE("coupled rows: SIMD lanes give the scalar bits", "[kernels][model][couplings][simd]") {
   using Simd = CoupledRows<simd_lane, every>;
   constexpr std::size_t width = lane_width<simd_lane>;
