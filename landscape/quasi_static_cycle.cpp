@@ -46,9 +46,10 @@ std::optional<Point> newton_minimum(const TwoAngleEnergy& h, Point p, double rea
 std::optional<Point> continue_minimum(const TwoAngleEnergy& from, double to, Point p) {
   const auto H = from.hessian(p[0], p[1]);
   const double det = H[0] * H[2] - H[1] * H[1];
-  const double te = from.A * std::cos(p[0] - from.tau), to_ = from.A * std::cos(p[1] - from.tau);
-  Point move{-(H[2] * te - H[1] * to_) / det * (to - from.tau),
-             -(H[0] * to_ - H[1] * te) / det * (to - from.tau)};
+  const double drive_even = from.A * std::cos(p[0] - from.tau),
+               drive_odd = from.A * std::cos(p[1] - from.tau);
+  Point move{-(H[2] * drive_even - H[1] * drive_odd) / det * (to - from.tau),
+             -(H[0] * drive_odd - H[1] * drive_even) / det * (to - from.tau)};
   const double length = std::hypot(move[0], move[1]);
   if (!(length <= 0.05))
     move = length > 0 ? Point{move[0] * 0.05 / length, move[1] * 0.05 / length} : Point{0, 0};

@@ -2,6 +2,7 @@
 // a jump down the gradient flow wherever it ends, and the friction J = energy dropped per period.
 #pragma once
 
+#include <numbers>
 #include <vector>
 
 #include "landscape/two_angle_energy.hpp"
@@ -28,6 +29,6 @@ struct QuasiStaticCycle {
 /// then the flow descends from the end point to the next minimum. After `periods` − 1 periods the
 /// last one is recorded. Outside any jump J = 0 (the AFM-like and FM states of model.md §4).
 QuasiStaticCycle quasi_static_cycle(double A, const TwoAngleCoefficients& k = {}, double even = 0,
-                                    double odd = 3.141592653589793, int periods = 3);
+                                    double odd = std::numbers::pi, int periods = 3);
 
 }  // namespace rotorsweep::landscape
