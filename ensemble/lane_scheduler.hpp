@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <deque>
 #include <limits>
 #include <optional>
 #include <tuple>
@@ -17,6 +18,7 @@
 #include "ensemble/member_result.hpp"
 #include "ensemble/member_summary.hpp"
 #include "ensemble/observables.hpp"
+#include "ensemble/row_profile_observer.hpp"
 #include "ensemble/scene.hpp"
 #include "kernels/angles.hpp"
 
@@ -72,6 +74,7 @@ class LaneScheduler {
         loop_(variant.rows, settings_),
         observers_(quadrature_observers<Loop>(variant)),
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
+        profiles_(variant.rows, scene.row_profiles),
         lanes_(width) {}
 
   /// Takes members from next_member() (a std::optional<Member>; empty when the plan is
@@ -105,6 +108,7 @@ class LaneScheduler {
     std::vector<PeriodRecord> history;            ///< every period with period_series, else the last ones
     int periods = 0;                              ///< periods closed
     std::vector<std::vector<double>> end_states;  ///< θ at the last period ends (up to 4, oldest first)
+    std::deque<std::vector<double>> profiles;     ///< row profiles of the last average_periods periods
   };
 
   template <class F>
@@ -132,16 +136,18 @@ class LaneScheduler {
       slips_.set_rate(l, thermal_slip_rate(member.g));
     }
     for_each_observer([&](auto& observer) { observer.start(loop_, l); });
+    profiles_.start(loop_, l);
     lanes_[l].occupied = true;
     lanes_[l].member = member;
     lanes_[l].history.clear();
     lanes_[l].periods = 0;
     lanes_[l].end_states.clear();
+    lanes_[l].profiles.clear();
     ++occupied_;
   }
 
   void step() {
-    std::apply([&](auto&... observer) { loop_.step(observer..., slips_); }, observers_);
+    std::apply([&](auto&... observer) { loop_.step(observer..., slips_, profiles_); }, observers_);
     busy_ += double(occupied_);
     total_ += double(width);
   }
@@ -159,6 +165,12 @@ class LaneScheduler {
     if (ends.size() == 4) ends.erase(ends.begin());
     ends.emplace_back(loop_.dimension());
     for (std::size_t k = 0; k < loop_.dimension(); ++k) ends.back()[k] = loop_.component(l, k);
+
+    if (profiles_.enabled()) {
+      auto& profiles = lanes_[l].profiles;
+      profiles.push_back(profiles_.take_period(l));
+      if (profiles.size() > std::size_t(scene_.average_periods)) profiles.pop_front();
+    }
 
     auto& history = lanes_[l].history;
     history.push_back(record);
@@ -213,12 +225,30 @@ class LaneScheduler {
       result.summary(Summary::mean, Channel::dissipation_error) =
           n > 1 ? result.dissipation_std() / std::sqrt(n - 1) : std::numeric_limits<double>::infinity();
     }
+    if (profiles_.enabled()) average_profiles(lane.profiles, result);
     lane.occupied = false;
     lane.history.clear();
     lane.end_states.clear();
+    lane.profiles.clear();
     loop_.release(l);
     --occupied_;
     return result;
+  }
+
+  /// Means over the averaged periods of D_j and of each link's alignment (NaN when the member failed).
+  void average_profiles(const std::deque<std::vector<double>>& profiles, MemberResult& result) const {
+    const std::size_t n = loop_.dimension(), links = profiles_.links();
+    const bool ok = result.status == kernels::LaneStatus::ok && !profiles.empty();
+    result.row_dissipation.assign(n, ok ? 0.0 : std::numeric_limits<double>::quiet_NaN());
+    result.link_alignment.assign(links, ok ? 0.0 : std::numeric_limits<double>::quiet_NaN());
+    if (!ok) return;
+    for (const auto& values : profiles) {
+      for (std::size_t j = 0; j < n; ++j) result.row_dissipation[j] += values[j];
+      for (std::size_t j = 0; j < links; ++j) result.link_alignment[j] += values[n + j];
+    }
+    const double count = double(profiles.size());
+    for (double& d : result.row_dissipation) d /= count;
+    for (double& rho : result.link_alignment) rho /= count * Loop::period;
   }
 
   const Scene& scene_;
@@ -227,6 +257,7 @@ class LaneScheduler {
   Loop loop_;
   decltype(quadrature_observers<Loop>(std::declval<const Member&>())) observers_;
   SlipObserver<Loop> slips_;
+  RowProfileObserver<Loop> profiles_;
   std::vector<Lane> lanes_;
   std::size_t occupied_ = 0;
   bool plan_exhausted_ = false;

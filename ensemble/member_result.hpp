@@ -88,6 +88,9 @@ struct MemberResult {
   std::vector<double> theta_final;    ///< θ_j at the end, wrapped to [0, 2π)
   std::vector<PeriodRecord> periods;  ///< every period, kept only for period_series
   FinalState final_state;             ///< the kind of state it ended in (attractor "failed" if it failed)
+  /// With observables.row_profiles, means over the averaged periods (NaN when it failed): D_j, row
+  /// j's share of D, and the time mean of cos²((θ_j − θ_{j+1})/2) for each link (docs/model.md §3).
+  std::vector<double> row_dissipation, link_alignment;
 
   double& summary(Summary s, Channel c) { return summaries[std::size_t(c)][std::size_t(s)]; }
   double summary(Summary s, Channel c) const { return summaries[std::size_t(c)][std::size_t(s)]; }

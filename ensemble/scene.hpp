@@ -63,7 +63,8 @@ struct Scene {
 
   ObservableSet observables = ObservableSet::defaults();  ///< observables.<key> of each declaration
   bool period_series = false;
-  double slip_rate = 10.0;  ///< a step with max_j |Δθ_j|/Δt above this is part of a slip
+  bool row_profiles = false;  ///< R_j per row and the alignment per link (default: on for open rows)
+  double slip_rate = 10.0;    ///< a step with max_j |Δθ_j|/Δt above this is part of a slip
 
   std::size_t stepper = 0;  ///< position in kernels::steppers (rodas4)
   double h_max = 0.5;

@@ -146,6 +146,22 @@ void add_angles_and_disorder(std::vector<MemberColumn>& columns, const ensemble:
                                  [deviations](const Member& m, auto&) { return deviations(m).coupling; }));
 }
 
+/// R_j per row and the alignment per link (docs/model.md §3, "Row profiles").
+void add_row_profiles(std::vector<MemberColumn>& columns, const ensemble::Scene& scene) {
+  const hsize_t width = scene.max_rows();
+  const std::string averaged =
+      ", mean over the averaged periods (members × largest N; NaN beyond a member's ";
+  columns.push_back(row_vector("row_dissipation", width,
+                               "D_j = A_j ∫ sin(θ_j - t) dt per period, row j's share of D" + averaged +
+                                   "rows, or when status is not ok)",
+                               [](auto&, const MemberResult& r) { return r.row_dissipation; }));
+  columns.push_back(
+      row_vector("link_alignment", width,
+                 "time mean of cos²((θ_j - θ_{j+1})/2) on link j (N links periodic, N - 1 open)" + averaged +
+                     "links, or when status is not ok)",
+                 [](auto&, const MemberResult& r) { return r.link_alignment; }));
+}
+
 /// The final-state classification of every member (docs/model.md §3, "Final states").
 void add_final_state(std::vector<MemberColumn>& columns, const ensemble::Scene& scene) {
   columns.push_back(real("sublattice_deviation",
@@ -202,6 +218,7 @@ std::vector<MemberColumn> member_columns(const ensemble::Scene& scene) {
   add_plan_axes(columns);
   add_outcome(columns, scene);
   add_angles_and_disorder(columns, scene);
+  if (scene.row_profiles) add_row_profiles(columns, scene);
   add_final_state(columns, scene);
   if (scene.period_series) add_period_series(columns, scene);
   return columns;

@@ -2,6 +2,7 @@
 // every declared summary column, the schedule counters, final angles and states, period series.
 #include "io/result_reader.hpp"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -85,6 +86,11 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
   const auto theta = read_matrix(group, "theta_final", first, count);
   std::vector<std::string> regime;
   if (scene.classifies_regimes()) regime = group.read_rows_strings("regime", first, count);
+  std::optional<Matrix> row_dissipation, link_alignment;
+  if (scene.row_profiles) {
+    row_dissipation = read_matrix(group, "row_dissipation", first, count);
+    link_alignment = read_matrix(group, "link_alignment", first, count);
+  }
 
   for (std::size_t m = 0; m < count; ++m) {
     if (!kept(m)) continue;
@@ -106,6 +112,11 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
     f.sublattice_even = sublattice.row(m)[0];
     f.sublattice_odd = sublattice.row(m)[1];
     f.attractor = attractor[m];
+    if (row_dissipation) {
+      const std::size_t rows = plan[r.index].rows, links = scene.couplings.open ? rows - 1 : rows;
+      r.row_dissipation.assign(row_dissipation->row(m), row_dissipation->row(m) + rows);
+      r.link_alignment.assign(link_alignment->row(m), link_alignment->row(m) + links);
+    }
   }
 
   for (std::size_t i = 0; i < ensemble::observable_count; ++i) {

@@ -34,7 +34,7 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
     {"schedule", {"relax_periods", "average_periods", "steady_tol", "max_periods", "refill"}},
     {"observables",
      [] {
-       std::set<std::string> keys{"period_series", "slip_rate"};
+       std::set<std::string> keys{"period_series", "row_profiles", "slip_rate"};
        for (const auto& observable : ensemble::observables) keys.insert(std::string(observable.key));
        return keys;
      }()},
@@ -250,6 +250,7 @@ void check_gpu_scene(const Scene& scene) {
   if (scene.disorder.any()) fail("disorder", "is not available on the GPU" + why);
   if (!scene.couplings.nearest_neighbour())
     fail(scene.couplings.open ? "model.boundary" : "model.couplings", "is not available on the GPU" + why);
+  if (scene.row_profiles) fail("observables.row_profiles", "must be false on the GPU" + why);
   const std::size_t limit = ensemble::gpu_max_rows(scene);
   if (scene.max_rows() > limit)
     fail("model.rows", "at most " + std::to_string(limit) + " rows run on the GPU with numerics.stepper = \"" +
@@ -457,6 +458,7 @@ Scene read_scene(const toml::table& root) {
                           observables.boolean(ensemble::declaration(observable).key, scene.has(observable)));
   }
   scene.period_series = observables.boolean("period_series", scene.period_series);
+  scene.row_profiles = observables.boolean("row_profiles", scene.couplings.open);
   scene.slip_rate = observables.number("slip_rate", scene.slip_rate, "a number > 0 (rows' angular velocity)",
                                        [](double x) { return x > 0; });
   if (scene.steady_tol > 0 && !scene.has(ensemble::Observable::dissipation))

@@ -130,6 +130,20 @@ class CoupledRows {
     return alignment_from_trigonometry(w);
   }
 
+  /// Links between neighbouring rows: N periodic, N − 1 open.
+  ROTORSWEEP_HD std::size_t links() const { return open_ ? rows_ - 1 : rows_; }
+
+  /// The row profile at (θ, t): drive[j] = A sin(θ_j − t), row j's share of the drive integrand R,
+  /// and link[j] = cos²((θ_j − θ_{j+1})/2) for each link, whose mean is ρ̄.
+  ROTORSWEEP_HD void row_profile(Workspace& w, const V* theta, V t, V* drive, V* link) const {
+    trigonometry(w, theta, t);
+    for (std::size_t j = 0; j < rows_; ++j) drive[j] = A_ * w.sin_lag[j];
+    for (std::size_t j = 0; j < links(); ++j) {
+      const std::size_t k = (j + 1) % rows_;
+      link[j] = V(0.5) + V(0.5) * (w.cos_row[j] * w.cos_row[k] + w.sin_row[j] * w.sin_row[k]);
+    }
+  }
+
  private:
   /// Calls f(j, k, u − 1) for every coupled pair k = j + u (wrapped when periodic), each once.
   template <class F>
@@ -141,8 +155,6 @@ class CoupledRows {
         f(j, (j + u) % n, u - 1);
       }
   }
-
-  ROTORSWEEP_HD std::size_t links() const { return open_ ? rows_ - 1 : rows_; }
 
   ROTORSWEEP_HD void trigonometry(Workspace& w, const V* theta, V t) const {
     V sin_t, cos_t;

@@ -79,4 +79,14 @@ concept ReportsAlignmentAndEnergy = LaneModel<M> &&
   { model.energy(work, y, t) } -> std::convertible_to<typename M::lane_type>;
 };
 
+/// A model that reports its row profile (docs/model.md §3 "Row profiles"): each row's share of the
+/// drive integrand and the alignment of each link, links() of them.
+template <class M>
+concept ReportsRowProfile = LaneModel<M> &&
+    requires(const M& model, typename M::Workspace& work, const typename M::lane_type* y,
+             typename M::lane_type t, typename M::lane_type* out) {
+  { model.links() } -> std::same_as<std::size_t>;
+  model.row_profile(work, y, t, out, out);
+};
+
 }  // namespace rotorsweep::kernels

@@ -146,6 +146,19 @@ class NearestNeighbourRows {
     return alignment_from_trigonometry(w);
   }
 
+  /// The N links of the ring.
+  ROTORSWEEP_HD std::size_t links() const { return rows_; }
+
+  /// The row profile at (θ, t): drive[j] = A (1 + δ_j) sin(θ_j - t), row j's share of the drive
+  /// integrand R, and link[j] = cos²((θ_j - θ_{j+1})/2), whose mean over the links is ρ̄.
+  ROTORSWEEP_HD void row_profile(Workspace& w, const V* theta, V t, V* drive, V* link) const {
+    trigonometry<false>(w, theta, t);
+    for (std::size_t j = 0; j < rows_; ++j) {
+      drive[j] = A_ * (A_row_[j] * w.sin_lag[j]);
+      link[j] = V(0.5) + V(0.5) * w.cos_link[j];
+    }
+  }
+
  private:
   // Every loop below is written once for both cases: per_row = false is the uniform model (the
   // factors are not read), per_row = true multiplies each term by its row's factor.

@@ -20,7 +20,7 @@ def _units(name):
     bare = name.removeprefix("curve_").removeprefix("period_")
     if bare.startswith(("theta_", "sublattice_angles", "sublattice_deviation")) or bare in ("noise", "offset"):
         return ANGLE
-    if bare.startswith(("dissipation", "energy_mean")) and "resolved" not in bare or bare == "A":
+    if bare.startswith(("dissipation", "energy_mean", "row_dissipation")) and "resolved" not in bare or bare == "A":
         return ENERGY
     if bare == "g":
         return "ε/ṽ (damping × drive speed)"
@@ -28,8 +28,10 @@ def _units(name):
 
 
 def _second_dimension(name):
-    if name.startswith(("theta_", "disorder_")):
+    if name.startswith(("theta_", "disorder_")) or name == "row_dissipation":
         return "row"
+    if name == "link_alignment":
+        return "link"
     if name == "sublattice_angles":
         return "sublattice"
     return name + "_index"
@@ -127,8 +129,9 @@ def from_hdf5(h5file, allow_incomplete=False):
     dataset["plan_index"].attrs["description"] = "the member's index in the plan (row of /members)"
     for axis in AXES:
         dataset[axis].attrs["units"] = _units(axis)
-    if "row" in dataset.dims:
-        dataset = dataset.assign_coords(row=np.arange(dataset.sizes["row"]))
+    for index in ("row", "link"):
+        if index in dataset.dims:
+            dataset = dataset.assign_coords({index: np.arange(dataset.sizes[index])})
     if "sublattice" in dataset.dims:
         dataset = dataset.assign_coords(sublattice=["even", "odd"])
     if not done.all():

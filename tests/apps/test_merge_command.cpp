@@ -1,6 +1,6 @@
 // Shards (`run --shard I/N`) and `merge`: three shards merged give the unsharded file's datasets
-// byte for byte (period series, estimators, random starts included); missing, doubled or foreign
-// shards and bad --shard values exit with code 2 and write nothing.
+// byte for byte (period series, estimators, row profiles, random starts included); missing, doubled or
+// foreign shards and bad --shard values exit with code 2 and write nothing.
 #include <catch2/catch.hpp>
 #include <filesystem>
 
@@ -16,9 +16,8 @@ namespace {
 
 const char* shard_scene =
     "[model]\nrows = [4, 10]\n[drive]\ng = [0.001, 0.01]\n[sweep]\nA = { from = 0.5, to = 12, count = 12 }\n"
-    "[initial]\nkinds = [\"AFM\", \"random\"]\nreplicas = 3\n[observables]\nperiod_series = true\nestimators "
-    "= "
-    "true\n[schedule]\nsteady_tol = 1e-3\nmax_periods = 12\n";
+    "[initial]\nkinds = [\"AFM\", \"random\"]\nreplicas = 3\n[observables]\nperiod_series = true\n"
+    "estimators = true\nrow_profiles = true\n[schedule]\nsteady_tol = 1e-3\nmax_periods = 12\n";
 
 std::string quoted(const std::filesystem::path& path) {
   std::string text(1, '\'');  // built piecewise: GCC 12 warns falsely (-Wrestrict) on "'" + s + "'"

@@ -258,6 +258,8 @@ TEST_CASE("scenes the GPU does not run are refused with the key named", "[io][sc
   CHECK_THAT(error_of(minimal + gpu + "[thermal]\ntemperature = 0.01\n"),
              Catch::Contains("'thermal.temperature'") && Catch::Contains("numerics.device = \"cpu\""));
   CHECK_THAT(error_of(minimal + gpu + "[disorder]\nA = 1e-6\n"), Catch::Contains("'disorder'"));
+  CHECK_THAT(error_of(minimal + gpu + "[observables]\nrow_profiles = true\n"),
+             Catch::Contains("'observables.row_profiles'") && Catch::Contains("cpu"));
   CHECK_THAT(
       error_of(
           "[model]\nrows = 20\ncouplings = \"dipolar\"\nrange = 2\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" +

@@ -1,6 +1,7 @@
 """Sweeps with an explicit coupling table (docs/model.md §1 "Extended couplings") against an
 independent integration: the equations written out with numpy, a dense Jacobian, scipy's Radau
-at rtol 1e-12; D over the averaged periods agrees to 1e-7 for members outside CP, periodic and open."""
+at rtol 1e-12; D over the averaged periods agrees to 1e-7 for members outside CP, periodic and open,
+and so do the row profiles (each row's share of D, each link's alignment) carried as extra quadratures."""
 
 import numpy as np
 import pytest
@@ -27,8 +28,11 @@ def pair_arrays(n, open_rows):
     return np.array(js), np.array(ks), np.array(bs), np.array(cs)
 
 
-def reference_dissipation(theta0, A, g, open_rows):
+def reference_profiles(theta0, A, g, open_rows):
+    """D, D_j per row and the links' mean alignment over periods 3 and 4 (states: θ, then R, R_j and
+    the link integrals as quadratures)."""
     n = len(theta0)
+    links = n - 1 if open_rows else n
     a = TABLE["a"]
     j, k, b, c = pair_arrays(n, open_rows)
 
@@ -38,11 +42,12 @@ def reference_dissipation(theta0, A, g, open_rows):
         difference, total = np.sin(th[j] - th[k]), np.sin(th[j] + th[k])
         np.add.at(f, j, b * difference - c * total)
         np.add.at(f, k, -b * difference - c * total)
-        return np.append(f / g, A * np.sin(th - t).sum())
+        link = np.cos(th[:links] - np.roll(th, -1)[:links])
+        return np.concatenate([f / g, [A * np.sin(th - t).sum()], A * np.sin(th - t), 0.5 + 0.5 * link])
 
     def jac(t, y):
         th = y[:n]
-        J = np.zeros((n + 1, n + 1))
+        J = np.zeros((2 * n + 1 + links, 2 * n + 1 + links))
         diagonal = -4 * a * np.cos(2 * th) + A * np.cos(th - t)
         difference, total = np.cos(th[j] - th[k]), np.cos(th[j] + th[k])
         np.add.at(diagonal, j, b * difference - c * total)
@@ -51,21 +56,28 @@ def reference_dissipation(theta0, A, g, open_rows):
         np.add.at(J, (j, k), (-b * difference - c * total) / g)
         np.add.at(J, (k, j), (-b * difference - c * total) / g)
         J[n, :n] = A * np.cos(th - t)
+        J[range(n + 1, 2 * n + 1), range(n)] = A * np.cos(th - t)
+        sin_link = np.sin(th[:links] - np.roll(th, -1)[:links])
+        rows = range(2 * n + 1, 2 * n + 1 + links)
+        J[rows, range(links)] = -0.5 * sin_link
+        J[rows, [(i + 1) % n for i in range(links)]] = 0.5 * sin_link
         return J
 
     period = 2 * np.pi
-    y = np.append(theta0, 0.0)
+    y = np.concatenate([theta0, np.zeros(n + 1 + links)])
     first = solve_ivp(rhs, (0, 2 * period), y, method="Radau", rtol=1e-12, atol=1e-14, jac=jac)
     second = solve_ivp(rhs, (2 * period, 4 * period), first.y[:, -1], method="Radau", rtol=1e-12,
                        atol=1e-14, jac=jac)
     assert first.status == 0 and second.status == 0
-    return (second.y[n, -1] - first.y[n, -1]) / 2
+    integrals = (second.y[n:, -1] - first.y[n:, -1]) / 2
+    return integrals[0], integrals[1 : n + 1], integrals[n + 1 :] / period
 
 
 @pytest.mark.parametrize("boundary", ["periodic", "open"])
 def test_an_explicit_table_matches_an_independent_integration(boundary):
     scene = {
         "model": {"rows": 6, "coupling_table": TABLE, "boundary": boundary},
+        "observables": {"row_profiles": True},
         "drive": {"g": [0.2]},
         "sweep": {"A": A_VALUES},
         "initial": {"kinds": ["AFM", "random"]},
@@ -76,6 +88,10 @@ def test_an_explicit_table_matches_an_independent_integration(boundary):
     for i in range(ds.sizes["member"]):
         member = ds.isel(member=i)
         assert member.regime.item() != "CP"
-        expected = reference_dissipation(member.theta_initial.values, float(member.A), 0.2,
-                                         boundary == "open")
-        assert float(member.dissipation) == pytest.approx(expected, rel=1e-7, abs=1e-12), i
+        dissipation, rows, links = reference_profiles(member.theta_initial.values, float(member.A), 0.2,
+                                                      boundary == "open")
+        assert float(member.dissipation) == pytest.approx(dissipation, rel=1e-7, abs=1e-12), i
+        scale = np.abs(rows).max()
+        assert member.row_dissipation.values == pytest.approx(rows, rel=1e-7, abs=1e-9 * scale), i
+        measured_links = member.link_alignment.values[: len(links)]
+        assert measured_links == pytest.approx(links, rel=1e-9), i

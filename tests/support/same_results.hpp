@@ -1,5 +1,5 @@
 // Test support: whether two member results are the same bits (summaries, counts, final angles,
-// period records and final state), for backend and lane-type agreement tests.
+// period records, final state and row profiles), for backend and lane-type agreement tests.
 #pragma once
 
 #include <cstring>
@@ -34,6 +34,12 @@ inline std::string result_difference(const ensemble::MemberResult& a, const ense
       if (!same_bits(a.periods[p].values[c], b.periods[p].values[c]))
         return "period record " + std::to_string(p);
   if (a.final_state.attractor != b.final_state.attractor) return "attractor";
+  for (const auto profile :
+       {&ensemble::MemberResult::row_dissipation, &ensemble::MemberResult::link_alignment}) {
+    if ((a.*profile).size() != (b.*profile).size()) return "row profile size";
+    for (std::size_t j = 0; j < (a.*profile).size(); ++j)
+      if (!same_bits((a.*profile)[j], (b.*profile)[j])) return "row profile entry " + std::to_string(j);
+  }
   return "";
 }
 
