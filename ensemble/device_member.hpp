@@ -37,7 +37,8 @@ struct DeviceMember {
     const std::size_t n = s.rows;
     kernels::LaneArena<double> arena(storage, capacity);
     Model model(n, arena);
-    Integrator integrator(model, {s.rtol, s.atol}, {.h_max = s.h_max, .max_steps = s.max_steps},
+    Integrator integrator(model, {s.rtol, s.atol},
+                          {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
                           s.first_step_scale, arena);
     kernels::LaneState<double> state(n, nq, arena);
     typename Model::Workspace work(n, arena);

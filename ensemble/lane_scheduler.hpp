@@ -52,7 +52,8 @@ typename Integrator::Settings integrator_settings(const Scene& scene, const Memb
   if constexpr (Integrator::stochastic)
     return {scene.thermal.temperature, scene.thermal.steps_per_period, scene.thermal.step_fraction};
   else
-    return {{variant.rtol, variant.atol}, {.h_max = scene.h_max, .max_steps = scene.max_steps}};
+    return {{variant.rtol, variant.atol},
+            {.h_max = scene.h_max, .max_steps = scene.max_steps, .controller = scene.controller}};
 }
 
 /// Runs members of one variant (one dimension and tolerances) through the lanes of an

@@ -23,6 +23,7 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   s.atol = variant.atol;
   s.h_max = scene.h_max;
   s.max_steps = scene.max_steps;
+  s.controller = scene.controller;
   s.first_step_scale = first_step_scale;
   // the averaged periods and the two the steady test compares; every period with period_series
   s.record_capacity = std::size_t(std::max(scene.average_periods, 2));

@@ -11,6 +11,7 @@
 #include "ensemble/disorder.hpp"
 #include "ensemble/initial_conditions.hpp"
 #include "ensemble/observables.hpp"
+#include "kernels/step_control.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -69,6 +70,7 @@ struct Scene {
   std::size_t stepper = 0;  ///< position in kernels::steppers (rodas4)
   double h_max = 0.5;
   double max_steps = 1e8;
+  kernels::StepController controller = kernels::StepController::integral;  ///< numerics.controller
   LaneKind lanes = LaneKind::simd;
   Device device = Device::cpu;
   bool wrap_angles = false;  ///< restart every period at t = 0 with θ_j in [0, 2π)

@@ -38,7 +38,8 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
        for (const auto& observable : ensemble::observables) keys.insert(std::string(observable.key));
        return keys;
      }()},
-    {"numerics", {"stepper", "rtol", "atol", "h_max", "max_steps", "lanes", "wrap_angles", "device"}},
+    {"numerics",
+     {"stepper", "rtol", "atol", "h_max", "max_steps", "controller", "lanes", "wrap_angles", "device"}},
     {"output", {"path"}},
 };
 
@@ -485,6 +486,12 @@ Scene read_scene(const toml::table& root) {
                                 [](double x) { return x > 0 && x <= 6.283185307179586; });
   scene.max_steps =
       double(numerics.integer("max_steps", 100000000, "an integer >= 1", [](long long n) { return n >= 1; }));
+  scene.controller = numerics.choice("controller", "integral", {"integral", "pi"}) == "pi"
+                         ? kernels::StepController::pi
+                         : kernels::StepController::integral;
+  if (scene.thermal.on() && scene.controller == kernels::StepController::pi)
+    fail(numerics.key("controller"),
+         "must be \"integral\" when thermal.temperature > 0 (the Langevin stepper takes fixed steps)");
   scene.lanes = numerics.choice("lanes", "simd", {"simd", "scalar"}) == "simd" ? ensemble::LaneKind::simd
                                                                                : ensemble::LaneKind::scalar;
 

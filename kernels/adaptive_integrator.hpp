@@ -89,7 +89,8 @@ class AdaptiveIntegrator {
     s.t = lane_select(accept, lane_select(clipped, s.t_stop, s.t + h), s.t);
 
     V h_next = h * step_factor(limits_, Stepper::embedded_order(),
-                               lane_select(finite, err, err + V(INFINITY)), accept);
+                               lane_select(finite, err, err + V(INFINITY)), error_previous_, accept);
+    error_previous_ = lane_select(accept, lane_max(err, V(pi_error_floor)), error_previous_);
     h_next = lane_select(accept & clipped, lane_max(h_next, s.h), h_next);
     h_next = lane_select(resolved, h_next, h * V(limits_.shrink_min));
     s.h = lane_select(active, lane_min(h_next, V(limits_.h_max)), s.h);
@@ -109,10 +110,12 @@ class AdaptiveIntegrator {
   }
 
  private:
-  // Lanes with h <= 0 get h = min(h_max, 0.01 (atol + rtol)^(1/(p+1)) / max_j |f_j|).
+  // Lanes with h <= 0 get h = min(h_max, 0.01 (atol + rtol)^(1/(p+1)) / max_j |f_j|) and no
+  // previous error.
   ROTORSWEEP_HD void propose_first_steps(const System& system, LaneState<V>& s, lane_mask<V> active) {
     const lane_mask<V> fresh = active & (s.h <= V(0.0));
     if (!lane_any(fresh)) return;
+    error_previous_ = lane_select(fresh, V(1.0), error_previous_);
     system.evaluate(work_, s.theta, s.t, y_new_, q_new_);
     V rate(1e-300);
     for (std::size_t k = 0; k < s.rows(); ++k) rate = lane_max(rate, lane_abs(y_new_[k]));
@@ -134,6 +137,7 @@ class AdaptiveIntegrator {
   Tolerances tol_;
   StepLimits limits_;
   double first_step_scale_;
+  V error_previous_ = V(1.0);  ///< per lane: the last accepted step's error (PI controller)
   Stepper stepper_;
   typename System::Workspace work_;
   V *y_new_, *y_error_, *q_new_, *q_error_;

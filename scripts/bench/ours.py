@@ -3,7 +3,8 @@
 (SIMD lanes), and writes one CSV row per member: D and the wall time per member (the run's
 wall_seconds / members, median over repeats; runs over 5 s only once).
 Usage: ours.py ROTORSWEEP SCENE.toml OUT.csv --ladder rodas4:1e-3,1e-5 dopri5:1e-3 [--repeats 3]
-       [--threads 1] [--workdir DIR]   (atol = rtol × 1e-3)"""
+       [--threads 1] [--workdir DIR]   (atol = rtol × 1e-3; a method "rodas4+pi" runs the stepper with
+       numerics.controller = "pi")"""
 import argparse
 import csv
 import os
@@ -13,8 +14,10 @@ import h5py
 from timed_run import timed_run
 
 
-def scene_with(scene_text, stepper, rtol):
-    text = re.sub(r'(?m)^stepper = .*$', f'stepper = "{stepper}"', scene_text)
+def scene_with(scene_text, method, rtol):
+    stepper, _, controller = method.partition("+")
+    text = re.sub(r'(?m)^stepper = .*$', f'stepper = "{stepper}"' + (f'\ncontroller = "{controller}"' if controller else ""),
+                  scene_text)
     text = re.sub(r'(?m)^rtol = .*$', f"rtol = {rtol!r}", text)
     return re.sub(r'(?m)^atol = .*$', f"atol = {rtol * 1e-3!r}", text)
 

@@ -105,3 +105,9 @@ TEST_CASE("the device member driver at N = 2 and N = 20, without the slip counte
                              "device-member-rows"));
   }
 }
+
+TEST_CASE("the device member driver with the PI step controller", "[device_member][controller]") {
+  check_backends_agree(io::parse_scene_text(
+      scene_text("rodas4", 6, "relax_periods = 1\naverage_periods = 2", "controller = \"pi\"\n"),
+      "device-member-pi"));
+}

@@ -112,6 +112,12 @@ TEST_CASE("a wrong type is named with what is allowed", "[io][scene]") {
              Catch::Contains("'observables.alignment'") && Catch::Contains("true or false"));
   CHECK_THAT(error_of(minimal + "[numerics]\nstepper = \"euler\"\n"),
              Catch::Contains("'numerics.stepper'") && Catch::Contains("rodas4"));
+  CHECK_THAT(error_of(minimal + "[numerics]\ncontroller = \"PID\"\n"),
+             Catch::Contains("'numerics.controller'") && Catch::Contains("integral, pi"));
+  CHECK_THAT(error_of(minimal + "[thermal]\ntemperature = 0.1\n[numerics]\ncontroller = \"pi\"\n"),
+             Catch::Contains("'numerics.controller'") && Catch::Contains("Langevin"));
+  CHECK(parse_scene_text(minimal + "[numerics]\ncontroller = \"pi\"\n", "test.toml").controller ==
+        rotorsweep::kernels::StepController::pi);
   CHECK_THAT(error_of("[model]\nrows = 20\n[drive]\ng = 0.001\n[sweep]\nA = [1]\n"),
              Catch::Contains("'drive.g'") && Catch::Contains("list of numbers"));
   CHECK_THAT(error_of(minimal + "[initial]\nkinds = [\"ferro\"]\n"),
