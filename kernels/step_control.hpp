@@ -63,7 +63,7 @@ ROTORSWEEP_HD V error_norm(const Model& model, const Tolerances& tol, const V* y
 /// hold the next ones back).
 inline constexpr double pi_error_floor = 1e-4;
 /// The PI controller's weight of the previous error (0.04, the DOPRI5 code's; the textbook
-/// 0.4/k with 0.7/k on the current error measured 1.2-1.3 times slower here, docs/numerics.md).
+/// 0.4/k with 0.7/k on the current error took 1.6 times the steps here, docs/numerics.md).
 inline constexpr double pi_beta = 0.04;
 
 /// Factor by which to scale h after an attempt with this error norm; non-finite errors shrink as
