@@ -18,7 +18,8 @@ $rs bench kernels --rows 20 --repeats 5 | tee "$out/kernels.txt"
 echo "== work-precision: rotorsweep"
 /usr/bin/python3 scripts/bench/ours.py $rs scripts/bench/reference.toml "$out/ours.csv" --workdir "$out/ours" \
   --ladder rodas4:1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10,1e-11 \
-  rodas4p2:1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10,1e-11,1e-12 ros2:1e-3,1e-4,1e-5,1e-6,1e-7 \
+  rodas4p2:1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10,1e-11,1e-12 \
+  rodas5p:1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10,1e-11,1e-12 ros2:1e-3,1e-4,1e-5,1e-6,1e-7 \
   dopri5:1e-3,1e-5
 members=$out/ours/rodas4_0.001.h5
 
