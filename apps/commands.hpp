@@ -88,4 +88,7 @@ int run_landscape_chambers(const LandscapeOptions& options);
 int run_landscape_curves(const LandscapeOptions& options);
 int run_landscape_jump_friction(const LandscapeOptions& options);
 
+/// The text of `rotorsweep --version` (program, instruction set, the sets built and runnable).
+std::string version_text(const char* argv0);
+
 }  // namespace rotorsweep::apps

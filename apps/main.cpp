@@ -6,12 +6,22 @@
 #include <cstdio>
 
 #include "commands.hpp"
+#include "ensemble/instruction_set.hpp"
 #include "kernels/stepper_list.hpp"
 
 int main(int argc, char** argv) {
   using namespace rotorsweep::apps;
   CLI::App app{"rotorsweep: ensemble sweeper for magnetic rotor arrays over a magnetic substrate"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", version_text(argv[0]));
+  const auto own_isa = rotorsweep::ensemble::instruction_set().name;
+  std::string isa = "auto";
+  if (own_isa != "native")
+    app.add_option("--isa", isa,
+                   "Instruction set to run (auto: the widest this CPU runs); the rotorsweep launcher reads it, "
+                   "as it reads ROTORSWEEP_ISA")
+        ->check(CLI::IsMember({"auto", "sse2", "avx2", "avx512"}))
+        ->capture_default_str();
   const CLI::Validator finite(
       [](const std::string& text) {
         double x = 0;
@@ -181,6 +191,9 @@ int main(int argc, char** argv) {
     for (const auto* cmd : {run_cmd, merge_cmd, table_cmd, chambers_cmd, curves_cmd, jump_cmd, couplings_cmd})
       if (cmd->parsed() && cmd->count("-o") > 0 && cmd->get_option("-o")->as<std::string>().empty())
         throw CLI::ValidationError("--output", "the output path is empty");
+    if (isa != "auto" && isa != own_isa)
+      throw CLI::ValidationError("--isa", "this is rotorsweep-" + own_isa + "; the rotorsweep launcher runs " +
+                                              "rotorsweep-" + isa);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;

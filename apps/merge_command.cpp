@@ -4,8 +4,10 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 
+#include "apps/launcher/isa_choice.hpp"
 #include "build_info.hpp"
 #include "commands.hpp"
 #include "ensemble/member_plan.hpp"
@@ -21,7 +23,7 @@ namespace {
 
 /// A shard's identity as its attributes state it.
 struct ShardFile {
-  std::string path, scene_text, scene_path, version, device;
+  std::string path, scene_text, scene_path, version, device, isa;
   std::size_t index = 0, count = 0, plan_members = 0;
   double wall_seconds = 0, threads = 1, lane_width = 1, lane_occupancy = 0;
 };
@@ -36,6 +38,7 @@ ShardFile describe(const std::string& path, const io::Hdf5Location& file) {
   shard.scene_text = file.attribute_string("scene");
   shard.scene_path = file.attribute_string("scene_path");
   shard.device = file.has_attribute("device") ? file.attribute_string("device") : "cpu";
+  shard.isa = file.has_attribute("isa") ? file.attribute_string("isa") : "unknown";
   shard.version = io::written_by(file);
   shard.index = std::size_t(file.attribute_double("shard_index"));
   shard.count = std::size_t(file.attribute_double("shard_count"));
@@ -66,6 +69,7 @@ int run_merge(const MergeOptions& options) {
   // first pass: the shards' attributes and plan indices, checked to make one plan exactly once
   ensemble::Scene scene;
   std::optional<ShardFile> first;
+  std::set<std::string> isas;  // shards run by different binaries give the same bits; all are named
   ensemble::SweepStatistics stats;
   try {
     std::map<std::size_t, std::string> seen;  // shard index → file
@@ -86,6 +90,7 @@ int run_merge(const MergeOptions& options) {
         covered.assign(scene.member_count(), 0);
       }
       check_same_plan(*first, shard);
+      isas.insert(shard.isa);
       if (const auto [at, fresh] = seen.emplace(shard.index, path); !fresh)
         throw std::runtime_error("'" + path + "' and '" + at->second + "' are both shard " +
                                  std::to_string(shard.index) + "/" + std::to_string(shard.count));
@@ -131,7 +136,8 @@ int run_merge(const MergeOptions& options) {
   try {
     const ensemble::MemberPlan plan(scene);
     io::ResultFile out(target->temporary(), scene,
-                       io::Provenance{first->scene_path, version, revision, first->device});
+                       io::Provenance{first->scene_path, version, revision, first->device, 
+                                      launcher::joined({isas.begin(), isas.end()})});
     for (const auto& path : options.shards) {
       const auto file = io::Hdf5Location::open_file(path);
       const std::size_t rows = io::member_rows(file);

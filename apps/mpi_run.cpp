@@ -12,6 +12,7 @@
 
 #include "build_info.hpp"
 #include "ensemble/gpu_backend.hpp"
+#include "ensemble/instruction_set.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/sweep.hpp"
 #include "io/member_stream.hpp"
@@ -172,7 +173,8 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
 
   // every rank: the members it takes, streamed into a whole-plan file of its own
   const ensemble::MemberPlan plan(scene);
-  const io::Provenance provenance{options.scene, version, revision, ensemble::device_label(scene)};
+  const io::Provenance provenance{options.scene, version, revision, ensemble::device_label(scene),
+                                  ensemble::instruction_set().name};
   std::string error;
   ensemble::SweepOutcome outcome;
   int signal_number = 0;

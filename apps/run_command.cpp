@@ -13,6 +13,7 @@
 #include "build_info.hpp"
 #include "commands.hpp"
 #include "ensemble/gpu_backend.hpp"
+#include "ensemble/instruction_set.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/sweep.hpp"
 #include "io/member_stream.hpp"
@@ -275,7 +276,8 @@ int run_sweep_command(const RunOptions& options) {
   } else {
     try {
       file.emplace(partial, scene,
-                   io::Provenance{options.scene, version, revision, ensemble::device_label(scene)}, shard);
+                   io::Provenance{options.scene, version, revision, ensemble::device_label(scene),
+                                  ensemble::instruction_set().name}, shard);
     } catch (const std::exception& e) {
       std::cerr << "error: creating " << partial << " failed: " << e.what() << "; "
                 << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";

@@ -1,6 +1,5 @@
 # Every build option of rotorsweep, declared in one place.
-# Defaults give a native, optimised build with tests.
-option(ROTORSWEEP_NATIVE "Compile for the host CPU (-march=native): widest SIMD lanes" ON)
+# Defaults give an optimised, portable build with tests (instruction sets: cmake/InstructionSets.cmake).
 option(ROTORSWEEP_BUILD_TESTS "Build the Catch2 test suite" ON)
 option(ROTORSWEEP_BUILD_BENCH "Build the peer benchmarks in bench/ (needs libsundials-dev)" OFF)
 option(ROTORSWEEP_PYTHON "Build the Python module (needs pybind11-dev and python3-dev; off when absent)" ON)

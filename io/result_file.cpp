@@ -62,6 +62,7 @@ void ResultFile::create(const Provenance& provenance) const {
   file_.set_attribute("version", provenance.version);
   file_.set_attribute("revision", provenance.revision);
   file_.set_attribute("device", provenance.device);
+  file_.set_attribute("isa", provenance.isa);
   file_.set_attribute("plan_members", std::int64_t(scene_.member_count()));
   // every attribute written later exists from the start, so that writing it changes bytes in place
   file_.set_attribute("members_done", std::int64_t(0));

@@ -20,6 +20,7 @@ struct Provenance {
   std::string version;
   std::string revision;  ///< source revision, "unknown" when the build could not tell
   std::string device;    ///< where members ran: "cpu" or "gpu (<name>)"
+  std::string isa;       ///< instruction set of the sweeps' binary (ensemble::instruction_set), or a list
 };
 
 /// Which part of a plan a shard file holds (ensemble::shard_members).

@@ -98,7 +98,9 @@ ROTORSWEEP_HD inline void lane_sincos(const V& self, V& s, V& c) {
   const V cos_r = V(1.0) - horner(z, cos_k) * z;
   const V sin_x = lane_select(swap == V(0.0), sin_r, cos_r);
   const V cos_x = lane_select(swap != V(0.0), sin_r, cos_r);
-  s = lane_select(lane_signbit(self) != (upper != V(0.0)), lane_neg(sin_x), sin_x);
+  // two flips, not a comparison of two masks: xsimd 8's SSE2 compares masks as doubles (NaNs)
+  s = lane_select(upper != V(0.0), lane_neg(sin_x), sin_x);
+  s = lane_select(lane_signbit(self), lane_neg(s), s);
   c = lane_select(swap != upper, lane_neg(cos_x), cos_x);
 
   const auto far = x > V(medium_pi);

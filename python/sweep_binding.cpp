@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 #include "ensemble/gpu_backend.hpp"
+#include "ensemble/instruction_set.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/paper_table.hpp"
 #include "io/scene_parser.hpp"
@@ -85,6 +86,7 @@ void bind_sweep(py::module_& m) {
       "The validated scene: its text, output.path ('' when not given) and member count.");
   m.attr("paper_table") = paper_table();
   m.attr("lane_width") = kernels::lane_width<kernels::simd_lane>;
+  m.attr("instruction_set") = ensemble::instruction_set().name;
   py::list steppers;
   for (auto name : kernels::stepper_names) steppers.append(std::string(name));
   m.attr("steppers") = steppers;
@@ -96,7 +98,8 @@ void bind_sweep(py::module_& m) {
              const std::string source = is_path ? scene : std::string("<python>");
              return std::make_unique<SweepJob>(
                  parse(scene, is_path), threads, output, force,
-                 io::Provenance{source, version, revision, ensemble::device_label(parse(scene, is_path))});
+                 io::Provenance{source, version, revision, ensemble::device_label(parse(scene, is_path)),
+                                ensemble::instruction_set().name});
            }),
            py::arg("scene"), py::arg("is_path"), py::arg("threads"), py::arg("output"), py::arg("force"),
            py::arg("version"), py::arg("revision"))

@@ -16,6 +16,9 @@ from .landscape import (A_minus, A_star, bifurcation_curve, chamber_map, critica
                         quasi_static_friction, two_angle_coefficients)
 
 __version__ = _core.version
+#: the instruction set this module's sweeps were compiled for (the widest the building machine
+#: runs); result files written from Python record it as the attribute "isa"
+instruction_set = _core.instruction_set
 #: the paper's table of dissipation integrals: its members (rows, g, relax_periods,
 #: average_periods; per entry A, ic, R and whether it is in CP, where R depends on the draw)
 paper_table = _core.paper_table

@@ -54,6 +54,8 @@ def test_results_equal_the_command_line_file_bit_for_bit(small_scene, tmp_path, 
     written = rotorsweep.run(scene, progress=False, output=tmp_path / "module.h5")
     assert hdf5_datasets(tmp_path / "module.h5") == cli
     assert written.attrs["complete"]
+    assert written.attrs["isa"] == rotorsweep.instruction_set  # the command line's widest set too, here
+    assert h5py.File(tmp_path / "cli.h5", "r").attrs["isa"] == rotorsweep.instruction_set
     # the in-memory result holds the same datasets as well
     job = rotorsweep._core.SweepJob(str(scene), True, 0, "", False, "test", "test")
     assert job.wait(-1)
