@@ -30,7 +30,7 @@ TEST_CASE("info flags incomplete files and rejects others", "[apps][info]") {
   const auto dir = scratch_directory("info-incomplete");
   const auto scene =
       rotorsweep::io::parse_scene_text("[model]\nrows = 4\n[drive]\ng = [0.01]\n[sweep]\nA = [1]\n", "s");
-  { rotorsweep::io::ResultFile started((dir / "started.h5").string(), scene, {"s", "0", "unknown", "cpu"}); }
+  { rotorsweep::io::ResultFile started((dir / "started.h5").string(), scene, {"s", "0", "unknown", "cpu", "sse2"}); }
   const auto info = run_cli("info '" + (dir / "started.h5").string() + "'", dir);
   CHECK(info.exit_code == 1);
   CHECK_THAT(info.output, Catch::Contains("INCOMPLETE"));
