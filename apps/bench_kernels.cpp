@@ -118,9 +118,9 @@ double step_rate(kernels::StepperId id, std::size_t rows, int repeats, bool diso
 int run_bench_kernels(const BenchKernelOptions& options) {
   const auto rows = std::size_t(options.rows);
   const auto W = kernels::lane_width<simd_lane>;
+  const auto isa = ensemble::instruction_set();
   std::printf("rotorsweep bench kernels: N = %zu rows, SIMD width %zu doubles (%s, %s), 1 thread, median of %d\n",
-              rows, W, ensemble::instruction_set().name.c_str(), ensemble::instruction_set().simd.c_str(),
-              options.repeats);
+              rows, W, isa.name.c_str(), isa.simd.c_str(), options.repeats);
   const double sincos = sincos_rate(rows, options.repeats);
   const double bound = sincos / double(rows + 1);  // an RHS needs N + 1 sincos
   const double scalar = rhs_rate<double>(rows, options.repeats);

@@ -5,6 +5,7 @@
 #include <csignal>
 #include <cstdio>
 
+#include "apps/launcher/isa_choice.hpp"
 #include "commands.hpp"
 #include "ensemble/instruction_set.hpp"
 #include "kernels/stepper_list.hpp"
@@ -20,7 +21,7 @@ int main(int argc, char** argv) {
     app.add_option("--isa", isa,
                    "Instruction set to run (auto: the widest this CPU runs); the rotorsweep launcher reads it, "
                    "as it reads ROTORSWEEP_ISA")
-        ->check(CLI::IsMember({"auto", "sse2", "avx2", "avx512"}))
+        ->check(CLI::IsMember(rotorsweep::launcher::allowed_requests()))
         ->capture_default_str();
   const CLI::Validator finite(
       [](const std::string& text) {

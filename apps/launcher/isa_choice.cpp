@@ -25,6 +25,12 @@ std::string joined(const std::vector<std::string>& names) {
   return text;
 }
 
+std::vector<std::string> allowed_requests() {
+  std::vector<std::string> allowed{"auto"};
+  allowed.insert(allowed.end(), known_isas.begin(), known_isas.end());
+  return allowed;
+}
+
 IsaChoice choose_isa(std::string_view request, std::string_view source,
                      const std::vector<std::string>& runnable, const std::vector<std::string>& built) {
   const std::string said = std::string(source) + " = '" + std::string(request) + "'";
@@ -35,7 +41,7 @@ IsaChoice choose_isa(std::string_view request, std::string_view source,
                     ") runs on this CPU (it runs: " + joined(runnable) + ")"};
   }
   if (std::find(known_isas.begin(), known_isas.end(), request) == known_isas.end())
-    return {"", said + " is not an instruction set; allowed: auto, sse2, avx2, avx512"};
+    return {"", said + " is not an instruction set; allowed: " + joined(allowed_requests())};
   if (!contains(runnable, request))
     return {"", said + ": this CPU cannot execute it (it runs: " + joined(runnable) + ")"};
   if (!contains(built, request))

@@ -31,4 +31,7 @@ std::filesystem::path executable_directory(const char* argv0);
 /// "a, b, c" (or "none").
 std::string joined(const std::vector<std::string>& names);
 
+/// What a request may name: "auto" and the known sets, narrowest first.
+std::vector<std::string> allowed_requests();
+
 }  // namespace rotorsweep::launcher

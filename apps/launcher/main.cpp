@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
   std::vector<char*> arguments(argv, argv + argc);
   if (argc >= 2 && std::strcmp(argv[1], "--isa") == 0) {
     if (argc < 3) {
-      std::fprintf(stderr, "rotorsweep: --isa needs a value; allowed: auto, sse2, avx2, avx512\n");
+      std::fprintf(stderr, "rotorsweep: --isa needs a value; allowed: %s\n",
+                   joined(allowed_requests()).c_str());
       return 2;
     }
     request = argv[2], source = "--isa";
