@@ -44,6 +44,15 @@ struct RunOptions {
 };
 int run_sweep_command(const RunOptions& options);
 
+struct SliderOptions {
+  std::string scene;
+  std::string output;  ///< overrides the scene's output.path
+  int threads = 0;     ///< 0: OpenMP's default
+  bool quiet = false;  ///< no progress line
+  bool force = false;  ///< replace an existing file that is not an HDF5 file
+};
+int run_slider(const SliderOptions& options);
+
 struct MergeOptions {
   std::vector<std::string> shards;
   std::string output;

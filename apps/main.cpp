@@ -18,9 +18,10 @@ int main(int argc, char** argv) {
   const auto own_isa = rotorsweep::ensemble::instruction_set().name;
   std::string isa = "auto";
   if (own_isa != "native")
-    app.add_option("--isa", isa,
-                   "Instruction set to run (auto: the widest this CPU runs); the rotorsweep launcher reads it, "
-                   "as it reads ROTORSWEEP_ISA")
+    app.add_option(
+           "--isa", isa,
+           "Instruction set to run (auto: the widest this CPU runs); the rotorsweep launcher reads it, "
+           "as it reads ROTORSWEEP_ISA")
         ->check(CLI::IsMember(rotorsweep::launcher::allowed_requests()))
         ->capture_default_str();
   const CLI::Validator finite(
@@ -71,6 +72,17 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"cpu", "gpu"}));
   run_cmd->add_option("--shard", run.shard,
                       "Run part I of N of the plan (I/N; members I-1, I-1+N, ...); `merge` joins the parts");
+
+  SliderOptions slider;
+  auto* slider_cmd = app.add_subcommand(
+      "slider", "Run the experiment's many-body slider over the separations a slider scene describes");
+  slider_cmd->add_option("scene", slider.scene, "Slider scene file (TOML)")->required();
+  slider_cmd->add_option("-o,--output", slider.output, "Result file (overrides the scene's output.path)");
+  slider_cmd->add_option("--threads", slider.threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::Range(1, 4096));
+  slider_cmd->add_flag("-q,--quiet", slider.quiet, "No progress line");
+  slider_cmd->add_flag("--force", slider.force,
+                       "Replace an existing output file even if it is not an HDF5 file");
 
   InfoOptions info;
   MergeOptions merge;
@@ -189,12 +201,13 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-    for (const auto* cmd : {run_cmd, merge_cmd, table_cmd, chambers_cmd, curves_cmd, jump_cmd, couplings_cmd})
+    for (const auto* cmd :
+         {run_cmd, slider_cmd, merge_cmd, table_cmd, chambers_cmd, curves_cmd, jump_cmd, couplings_cmd})
       if (cmd->parsed() && cmd->count("-o") > 0 && cmd->get_option("-o")->as<std::string>().empty())
         throw CLI::ValidationError("--output", "the output path is empty");
     if (isa != "auto" && isa != own_isa)
-      throw CLI::ValidationError("--isa", "this is rotorsweep-" + own_isa + "; the rotorsweep launcher runs " +
-                                              "rotorsweep-" + isa);
+      throw CLI::ValidationError(
+          "--isa", "this is rotorsweep-" + own_isa + "; the rotorsweep launcher runs " + "rotorsweep-" + isa);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
@@ -203,6 +216,7 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   try {
     if (*run_cmd) return run_sweep_command(run);
+    if (*slider_cmd) return run_slider(slider);
     if (*merge_cmd) return run_merge(merge);
     if (*info_cmd) return run_info(info);
     if (*couplings_cmd) return run_couplings(couplings);

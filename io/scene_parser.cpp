@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "ensemble/gpu_backend.hpp"
+#include "io/toml_section.hpp"
 #include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::io {
@@ -42,170 +43,6 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
      {"stepper", "rtol", "atol", "h_max", "max_steps", "controller", "lanes", "wrap_angles", "device"}},
     {"output", {"path"}},
 };
-
-std::string join(const std::set<std::string>& names) {
-  std::string out;
-  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
-/// s cut to about `limit` bytes at a character boundary, saying how long it was.
-std::string shortened(const std::string& s, std::size_t limit = 80) {
-  if (s.size() <= limit) return s;
-  std::size_t cut = limit;
-  while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;  // UTF-8 continuation
-  return s.substr(0, cut) + "… (" + std::to_string(s.size()) + " bytes)";
-}
-
-[[noreturn]] void fail(const std::string& key, const std::string& message) {
-  throw SceneError("scene key '" + shortened(key) + "': " + message);
-}
-
-std::string describe(const toml::node& node) {
-  std::ostringstream out;
-  if (node.is_string())
-    out << '"' << node.value<std::string>().value_or("") << '"';
-  else if (node.is_table())
-    out << "a table";
-  else if (node.is_array())
-    out << "an array";
-  else
-    node.visit([&](const auto& value) { out << value; });
-  return shortened(out.str());
-}
-
-/// Typed access to one section of the scene, keys named "section.key" in messages.
-class Section {
- public:
-  Section(const toml::table* table, std::string name) : table_(table), name_(std::move(name)) {}
-
-  std::string key(std::string_view k) const { return name_ + "." + std::string(k); }
-  const toml::node* find(std::string_view k) const { return table_ ? table_->get(k) : nullptr; }
-  const toml::node& require(std::string_view k, const std::string& what) const {
-    const toml::node* node = find(k);
-    if (!node) fail(key(k), "is missing; it must be " + what);
-    return *node;
-  }
-
-  double number(std::string_view k, double fallback, const std::string& what, bool (*valid)(double)) const {
-    const toml::node* node = find(k);
-    return node ? checked_number(*node, key(k), what, valid) : fallback;
-  }
-
-  long long integer(std::string_view k, long long fallback, const std::string& what,
-                    bool (*valid)(long long)) const {
-    const toml::node* node = find(k);
-    if (!node) return fallback;
-    const auto v = node->value_exact<long long>();
-    if (!node->is_integer() || !v || !valid(*v))
-      fail(key(k), "must be " + what + " (got " + describe(*node) + ")");
-    return *v;
-  }
-
-  /// A number, or a non-empty list of numbers, each valid.
-  std::vector<double> numbers(std::string_view k, std::vector<double> fallback, const std::string& what,
-                              bool (*valid)(double)) const {
-    const toml::node* node = find(k);
-    if (!node) return fallback;
-    const auto* list = node->as_array();
-    if (!list) return {checked_number(*node, key(k), what + ", or a list of them", valid)};
-    if (list->empty()) fail(key(k), "must be " + what + ", or a non-empty list of them");
-    std::vector<double> values;
-    for (const auto& element : *list) values.push_back(checked_number(element, key(k), what, valid));
-    return values;
-  }
-
-  /// An integer, or a non-empty list of distinct integers, each valid.
-  std::vector<long long> integers(std::string_view k, const std::string& what,
-                                  bool (*valid)(long long)) const {
-    const toml::node& node = require(k, what + ", or a list of them");
-    const auto* list = node.as_array();
-    std::vector<long long> values;
-    const auto check = [&](const toml::node& n) {
-      const auto v = n.value_exact<long long>();
-      if (!n.is_integer() || !v || !valid(*v) || std::count(values.begin(), values.end(), *v))
-        fail(key(k), "must be " + what + ", or a list of distinct ones (got " + describe(n) + ")");
-      values.push_back(*v);
-    };
-    if (!list)
-      check(node);
-    else if (list->empty())
-      fail(key(k), "must be " + what + ", or a non-empty list of them");
-    else
-      for (const auto& element : *list) check(element);
-    return values;
-  }
-
-  bool boolean(std::string_view k, bool fallback) const {
-    const toml::node* node = find(k);
-    if (!node) return fallback;
-    if (!node->is_boolean()) fail(key(k), "must be true or false (got " + describe(*node) + ")");
-    return *node->value<bool>();
-  }
-
-  std::string choice(std::string_view k, std::string fallback, const std::set<std::string>& allowed) const {
-    const toml::node* node = find(k);
-    if (!node) return fallback;
-    const auto v = node->value_exact<std::string>();
-    if (!v || !allowed.count(*v))
-      fail(key(k), "must be one of " + join(allowed) + " (got " + describe(*node) + ")");
-    return *v;
-  }
-
-  static double checked_number(const toml::node& node, const std::string& key, const std::string& what,
-                               bool (*valid)(double)) {
-    std::optional<double> v;
-    if (node.is_floating_point() || node.is_integer()) v = node.value<double>();
-    if (!v || !std::isfinite(*v) || !valid(*v))
-      fail(key, "must be " + what + " (got " + describe(node) + ")");
-    return *v;
-  }
-
- private:
-  const toml::table* table_;
-  std::string name_;
-};
-
-/// A list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a `fallback` also a
-/// single number, and the fallback when the key is absent.
-std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
-                         bool (*valid)(double), const std::vector<double>& fallback = {}) {
-  const std::string key = section.key(k);
-  const std::string shape = (fallback.empty() ? "a list of numbers " : "a number, a list of numbers ") +
-                            what + ", or { from, to, count, spacing = \"linear\"|\"log\" }";
-  if (!fallback.empty() && !section.find(k)) return fallback;
-  const toml::node& node = section.require(k, shape);
-  if (!fallback.empty() && (node.is_floating_point() || node.is_integer()))
-    return {Section::checked_number(node, key, what, valid)};
-  std::vector<double> values;
-  if (const auto* list = node.as_array()) {
-    if (list->empty()) fail(key, "must not be empty; it must be " + shape);
-    for (const auto& element : *list) values.push_back(Section::checked_number(element, key, what, valid));
-    return values;
-  }
-  const auto* range = node.as_table();
-  if (!range) fail(key, "must be " + shape + " (got " + describe(node) + ")");
-  for (const auto& [name, value] : *range)
-    if (name != "from" && name != "to" && name != "count" && name != "spacing")
-      fail(key + "." + std::string(name.str()), "unknown key; a range has from, to, count, spacing");
-  const Section r(range, key);
-  const double from =
-      Section::checked_number(r.require("from", "a number " + what), r.key("from"), what, valid);
-  const double to = Section::checked_number(r.require("to", "a number " + what), r.key("to"), what, valid);
-  r.require("count", "an integer >= 1");
-  const long long count = r.integer("count", 1, "an integer from 1 to 10000000",
-                                    [](long long c) { return c >= 1 && c <= 10000000; });
-  const bool log = r.choice("spacing", "linear", {"linear", "log"}) == "log";
-  if (to < from) fail(r.key("to"), "must be >= from (" + std::to_string(from) + ")");
-  if (log && from <= 0) fail(r.key("from"), "must be > 0 with spacing = \"log\"");
-  for (long long i = 0; i < count; ++i) {
-    const double s = count == 1 ? 0.0 : double(i) / double(count - 1);
-    values.push_back(log ? std::exp(std::log(from) + s * (std::log(to) - std::log(from)))
-                         : from + s * (to - from));
-  }
-  values.back() = to;
-  return values;
-}
 
 /// [disorder]: σ of each quantity, or its deviations per row, and the realizations' seed.
 void read_disorder(const Section& disorder, Scene& scene) {
@@ -245,8 +82,9 @@ void read_disorder(const Section& disorder, Scene& scene) {
 /// numerics.device = "gpu" runs the adaptive steppers on nearest-neighbour periodic rows without
 /// disorder, up to the rows one GPU thread's scratch holds.
 void check_gpu_scene(const Scene& scene) {
-  const std::string why = "; numerics.device = \"gpu\" runs nearest-neighbour periodic rows without disorder at "
-                          "T = 0 (set numerics.device = \"cpu\")";
+  const std::string why =
+      "; numerics.device = \"gpu\" runs nearest-neighbour periodic rows without disorder at "
+      "T = 0 (set numerics.device = \"cpu\")";
   if (scene.thermal.on()) fail("thermal.temperature", "must be 0 on the GPU" + why);
   if (scene.disorder.any()) fail("disorder", "is not available on the GPU" + why);
   if (!scene.couplings.nearest_neighbour())
@@ -254,7 +92,8 @@ void check_gpu_scene(const Scene& scene) {
   if (scene.row_profiles) fail("observables.row_profiles", "must be false on the GPU" + why);
   const std::size_t limit = ensemble::gpu_max_rows(scene);
   if (scene.max_rows() > limit)
-    fail("model.rows", "at most " + std::to_string(limit) + " rows run on the GPU with numerics.stepper = \"" +
+    fail("model.rows", "at most " + std::to_string(limit) +
+                           " rows run on the GPU with numerics.stepper = \"" +
                            std::string(kernels::stepper_names[scene.stepper]) + "\" (got " +
                            std::to_string(scene.max_rows()) + "); numerics.device = \"cpu\" has no limit");
 }
@@ -279,26 +118,6 @@ constexpr std::size_t max_members = 100000000;
   std::snprintf(total, sizeof total, "%.3g", count);
   fail(axis_keys[largest], "the plan has " + std::string(total) + " members (" + product + "); at most " +
                                std::to_string(max_members) + " are allowed");
-}
-
-void check_sections(const toml::table& root) {
-  std::set<std::string> sections;
-  for (const auto& [name, keys] : allowed_keys) sections.insert(name);
-  for (const auto& [name, node] : root) {
-    const std::string section(name.str());
-    const auto it = allowed_keys.find(section);
-    if (it == allowed_keys.end()) fail(section, "unknown; the scene sections are " + join(sections));
-    const auto* table = node.as_table();
-    if (!table) fail(section, "must be a table [" + section + "]");
-    for (const auto& [key, value] : *table)
-      if (!it->second.count(std::string(key.str())))
-        fail(section + "." + std::string(key.str()),
-             "unknown key; [" + section + "] allows " + join(it->second));
-  }
-}
-
-Section section(const toml::table& root, const std::string& name) {
-  return Section(root[name].as_table(), name);
 }
 
 /// "all", or an integer from 1 to `limit`, at key k; 0 stands for "all".
@@ -362,7 +181,10 @@ void read_couplings(const Section& model, Scene& scene) {
 }
 
 Scene read_scene(const toml::table& root) {
-  check_sections(root);
+  for (const char* name : {"slider", "substrate"})
+    if (root.contains(name))
+      fail(name, "is a section of slider scenes (docs/model.md §9): run them with `rotorsweep slider FILE`");
+  check_sections(root, allowed_keys);
   Scene scene;
   const Section model = section(root, "model");
   scene.row_counts.clear();
@@ -497,15 +319,10 @@ Scene read_scene(const toml::table& root) {
 
   scene.wrap_angles = numerics.boolean("wrap_angles", scene.wrap_angles);
   scene.device = numerics.choice("device", "cpu", {"cpu", "gpu"}) == "gpu" ? ensemble::Device::gpu
-                                                                          : ensemble::Device::cpu;
+                                                                           : ensemble::Device::cpu;
 
   const Section output = section(root, "output");
-  if (const toml::node* path = output.find("path")) {
-    const auto v = path->value_exact<std::string>();
-    if (!v || v->empty())
-      fail(output.key("path"), "must be a non-empty string (got " + describe(*path) + ")");
-    scene.output_path = *v;
-  }
+  scene.output_path = output.text("path", scene.output_path);
   if (!scene.couplings.nearest_neighbour() && scene.disorder.any())
     fail("disorder",
          "works with nearest-neighbour periodic rows only (model.couplings = \"nearest\", "
@@ -522,32 +339,14 @@ void check_device(const ensemble::Scene& scene) {
 }
 
 ensemble::Scene parse_scene_text(std::string_view text, std::string_view source) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream message;
-    message << "scene file '" << source << "' line " << e.source().begin.line << ": " << e.description();
-    throw SceneError(message.str());
-  }
+  const toml::table root = parse_toml(text, source);
   Scene scene = read_scene(root);
   scene.text = std::string(text);
   return scene;
 }
 
 ensemble::Scene parse_scene_file(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);
-  const std::string what = "cannot read scene file '" + shortened(path, 200) + "': ";
-  if (!fs::exists(status)) throw SceneError(what + (error ? error.message() : "no such file"));
-  if (fs::is_directory(status)) throw SceneError(what + "it is a directory");
-  if (!fs::is_regular_file(status)) throw SceneError(what + "not a regular file (a FIFO, socket or device)");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw SceneError(what + std::strerror(errno));
-  return parse_scene_text(text.str(), path);
+  return parse_scene_text(read_scene_file(path), path);
 }
 
 }  // namespace rotorsweep::io

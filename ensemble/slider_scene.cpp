@@ -1,0 +1,75 @@
+// The slider scene's units, substrate, field tables, scaled parameters and starting angles
+// (docs/model.md §9 "Scaled form" and "Initial conditions").
+#include "ensemble/slider_scene.hpp"
+
+#include <cmath>
+
+#include "kernels/angles.hpp"
+#include "kernels/counter_random.hpp"
+
+namespace rotorsweep::ensemble {
+
+namespace {
+constexpr double mu0_over_4pi = 1e-7;  // T m / A
+}
+
+SliderUnits::SliderUnits(const SliderScene& scene)
+    : energy(mu0_over_4pi * scene.moment * scene.moment / std::pow(scene.spacing, 3)),
+      time(scene.spacing / (kernels::two_pi * scene.speed)),
+      length(scene.spacing),
+      force(energy / scene.spacing),
+      power(energy / time) {}
+
+kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, double separation) {
+  const auto centre_offset = [](std::size_t slider, std::size_t substrate) {
+    return 0.5 * double(slider - 1) - 0.5 * double(substrate - 1);
+  };
+  return {scene.substrate_columns, scene.substrate_rows,
+          centre_offset(scene.columns, scene.substrate_columns),
+          centre_offset(scene.rows, scene.substrate_rows), separation / scene.spacing};
+}
+
+double final_displacement(const SliderScene& scene) {
+  return std::max(0.0, scene.end - scene.rest) * scene.speed / scene.spacing;
+}
+
+kernels::SubstrateTable substrate_table(const SliderScene& scene, double separation) {
+  const double depth = separation / scene.spacing;
+  // half a lattice constant beyond both ends of the path, so that no step's stage leaves the table
+  return kernels::SubstrateTable(substrate_lattice(scene, separation), scene.rows, -0.5,
+                                 double(scene.columns - 1) + final_displacement(scene) + 0.5,
+                                 depth / scene.nodes_per_depth);
+}
+
+kernels::SliderModel<double, true>::Parameters slider_parameters(const SliderScene& scene,
+                                                                 const kernels::SubstrateTable& table) {
+  const SliderUnits units(scene);
+  kernels::SliderModel<double, true>::Parameters p;
+  p.substrate = table.view();
+  p.moment_ratio = scene.substrate_moment / scene.moment;
+  p.inertia = scene.inertia / (units.energy * units.time * units.time);
+  p.damping = scene.damping / (units.energy * units.time);
+  p.speed = 1.0 / kernels::two_pi;
+  p.rest = scene.rest / units.time;
+  return p;
+}
+
+std::vector<double> slider_start(const SliderScene& scene, std::size_t separation_index,
+                                 std::size_t replica) {
+  const kernels::RandomStream stream(scene.seed, std::uint64_t(separation_index) * scene.replicas + replica);
+  const std::size_t n = scene.columns * scene.rows;
+  std::vector<double> theta(n);
+  for (std::size_t r = 0; r < n; ++r) {
+    const double u = stream.draw(r);
+    switch (scene.start) {
+      case SliderStart::alternating_rows:
+        theta[r] = ((r / scene.columns) % 2 ? 3.141592653589793 : 0.0) + scene.noise * (u - 0.5);
+        break;
+      case SliderStart::aligned: theta[r] = scene.noise * (u - 0.5); break;
+      case SliderStart::random: theta[r] = kernels::two_pi * u; break;
+    }
+  }
+  return theta;
+}
+
+}  // namespace rotorsweep::ensemble

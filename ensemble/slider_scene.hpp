@@ -1,0 +1,91 @@
+// A slider scene as data (docs/model.md §9): the experiment's rotor grid, substrate, drive and scan in SI
+// units, and their scaled form (length a, energy μ0 m²/(4π a³), time a/(2π v)) that the kernel integrates.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernels/slider_model.hpp"
+#include "kernels/step_control.hpp"
+#include "kernels/stepper_list.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// How a member's angles start: rows (along x, fixed y) alternately near 0 and π, all near 0, or
+/// every angle uniform on [0, 2π); the first two with uniform noise of full width `noise`.
+enum class SliderStart { alternating_rows, aligned, random };
+
+struct SliderScene {
+  // [slider]
+  std::size_t columns = 7;    ///< rotors along x, the sliding direction
+  std::size_t rows = 7;       ///< rotors along y
+  double spacing = 16e-3;     ///< a, m (slider and substrate)
+  double moment = 4.57e-2;    ///< m, A m²
+  double inertia = 7.48e-10;  ///< I, kg m²
+  double damping = 2.5e-6;    ///< γ, kg m²/s
+  bool overdamped = false;    ///< γ θ̇ = τ instead of I θ̈ = τ − γ θ̇
+
+  // [substrate]
+  std::size_t substrate_columns = 35;
+  std::size_t substrate_rows = 35;
+  double substrate_moment = 5.03e-2;  ///< m_sub, A m²
+  double nodes_per_depth = 16.0;      ///< table nodes per separation h along x (error ∝ (h / nodes)⁶)
+
+  // [drive]
+  double speed = 8e-3;  ///< v, m/s
+  double rest = 0.5;    ///< s at rest before sliding
+  double end = 10.5;    ///< s, end of the run
+
+  // [sweep]
+  std::vector<double> separations{8e-3};  ///< h, m
+
+  // [initial]
+  SliderStart start = SliderStart::alternating_rows;
+  double noise = 3.141592653589793 / 24.0;  ///< full width of the uniform noise, rad
+  std::size_t replicas = 1;
+  std::uint64_t seed = 1;
+
+  // [observables]
+  std::size_t samples_per_period = 50;  ///< time series resolution (a period is a / v)
+  bool series = true;                   ///< store the time series (friction, order parameters, energy)
+  bool angles = false;                  ///< store every rotor's angle at every sample
+
+  // [numerics]
+  kernels::StepperId stepper = 0;
+  double rtol = 1e-6;
+  double atol = 1e-6;
+  double max_steps = 1e8;
+
+  std::string output_path = "results/slider.h5";
+  std::string text;  ///< the scene file as read
+
+  std::size_t member_count() const { return separations.size() * replicas; }
+};
+
+/// The scene's units: energy E0 = μ0 m²/(4π a³) in J, time T0 = a/(2π v) in s, so that one substrate
+/// period a/v is 2π; forces in E0/a, power in E0/T0.
+struct SliderUnits {
+  double energy, time, length, force, power;
+  explicit SliderUnits(const SliderScene& scene);
+};
+
+/// The substrate lattice under the scene's slider, centred, at separation h (m).
+kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, double separation);
+
+/// The slider's displacement at the end of the run, in units of a.
+double final_displacement(const SliderScene& scene);
+
+/// The table of the substrate field over the slider's whole path at separation h (m).
+kernels::SubstrateTable substrate_table(const SliderScene& scene, double separation);
+
+/// One lane's scaled parameters over `table`.
+kernels::SliderModel<double, true>::Parameters slider_parameters(const SliderScene& scene,
+                                                                 const kernels::SubstrateTable& table);
+
+/// The angles member (separation, replica) starts from: seed, separation index and replica pick the
+/// stream, so a member's start does not depend on the others in the scene.
+std::vector<double> slider_start(const SliderScene& scene, std::size_t separation_index, std::size_t replica);
+
+}  // namespace rotorsweep::ensemble

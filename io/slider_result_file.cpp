@@ -1,0 +1,133 @@
+// Writes a slider scan: /members (one row per member), /series (members × samples), /curve (per separation:
+// replica mean and spread of the friction and order parameters) and the provenance attributes.
+#include "io/slider_result_file.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "io/hdf5_file.hpp"
+
+namespace rotorsweep::io {
+
+namespace {
+
+using ensemble::SliderMember;
+
+/// One value per member.
+template <class F>
+std::vector<double> column(const ensemble::SliderResult& result, F&& value) {
+  std::vector<double> out;
+  for (const auto& m : result.members) out.push_back(value(m));
+  return out;
+}
+
+/// A members × width table from one vector per member.
+std::vector<double> table(const ensemble::SliderResult& result, std::vector<double> SliderMember::*field) {
+  std::vector<double> out;
+  for (const auto& m : result.members) out.insert(out.end(), (m.*field).begin(), (m.*field).end());
+  return out;
+}
+
+void write_curve(const Hdf5Location& curve, const ensemble::SliderScene& scene,
+                 const ensemble::SliderResult& result) {
+  std::vector<double> friction, spread, order_x, order_y;
+  std::vector<std::int64_t> valid;
+  for (std::size_t s = 0; s < scene.separations.size(); ++s) {
+    double sum = 0, sum2 = 0, sx = 0, sy = 0;
+    std::int64_t count = 0;
+    for (std::size_t r = 0; r < scene.replicas; ++r) {
+      const auto& m = result.members[s * scene.replicas + r];
+      if (m.status != "ok") continue;
+      sum += m.friction;
+      sum2 += m.friction * m.friction;
+      sx += m.order_x;
+      sy += m.order_y;
+      ++count;
+    }
+    const double n = double(count);
+    friction.push_back(count ? sum / n : std::nan(""));
+    spread.push_back(count > 1 ? std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1))) : std::nan(""));
+    order_x.push_back(count ? sx / n : std::nan(""));
+    order_y.push_back(count ? sy / n : std::nan(""));
+    valid.push_back(count);
+  }
+  curve.write("separation", scene.separations, {}, "layer separation h, m");
+  curve.write("friction", friction, {}, "mean drive force over the replicas, N (NaN: no replica finished)");
+  curve.write("friction_std", spread, {}, "standard deviation over the replicas, N (NaN below 2 replicas)");
+  curve.write("order_x", order_x, {}, "mean alignment of x-neighbours, cos(θ_i − θ_j), while sliding");
+  curve.write("order_y", order_y, {}, "mean alignment of y-neighbours while sliding");
+  curve.write("replicas", valid, "replicas that finished (status ok)");
+}
+
+}  // namespace
+
+void write_slider_result(const std::string& path, const ensemble::SliderScene& scene,
+                         const ensemble::SliderResult& result, const Provenance& provenance, int threads) {
+  auto file = Hdf5Location::create_file(path);
+  const ensemble::SliderUnits units(scene);
+  file.set_attribute("kind", std::string("slider"));
+  file.set_attribute("scene", scene.text);
+  file.set_attribute("scene_path", provenance.scene_path);
+  file.set_attribute("version", provenance.version);
+  file.set_attribute("revision", provenance.revision);
+  file.set_attribute("device", provenance.device);
+  file.set_attribute("isa", provenance.isa);
+  file.set_attribute("period", result.period);
+  file.set_attribute("periods", std::int64_t(result.periods));
+  file.set_attribute("energy_unit", units.energy);
+  file.set_attribute("time_unit", units.time);
+  file.set_attribute("wall_seconds", result.seconds);
+  file.set_attribute("threads", std::int64_t(threads));
+
+  const auto members = file.create_group("members");
+  const hsize_t count = result.members.size(), periods = result.periods;
+  members.write("separation", column(result, [](const SliderMember& m) { return m.separation; }), {},
+                "layer separation h, m");
+  members.write("replica", column(result, [](const SliderMember& m) { return double(m.replica); }), {},
+                "replica index at this separation");
+  members.write("friction", column(result, [](const SliderMember& m) { return m.friction; }), {},
+                "mean drive force over the whole periods of sliding, N (NaN where status is not ok)");
+  members.write("order_x", column(result, [](const SliderMember& m) { return m.order_x; }), {},
+                "mean over the sliding samples of cos(θ_i − θ_j) for x-neighbours");
+  members.write("order_y", column(result, [](const SliderMember& m) { return m.order_y; }), {},
+                "mean over the sliding samples of cos(θ_i − θ_j) for y-neighbours");
+  members.write("steps_accepted", column(result, [](const SliderMember& m) { return m.steps_accepted; }));
+  members.write("steps_rejected", column(result, [](const SliderMember& m) { return m.steps_rejected; }));
+  std::vector<std::string> status;
+  for (const auto& m : result.members) status.push_back(m.status);
+  members.write("status", status, "ok, or why the member stopped (its values are then NaN or partial)");
+  members.write("period_friction", table(result, &SliderMember::period_friction), {count, periods},
+                "mean drive force per substrate period a/v, N");
+  members.write("period_work", table(result, &SliderMember::period_work), {count, periods},
+                "work of the drive per period, J");
+  members.write("period_dissipation", table(result, &SliderMember::period_dissipation), {count, periods},
+                "γ ∫ Σ θ̇² dt per period, J");
+  members.write("period_stored", table(result, &SliderMember::period_stored), {count, periods},
+                "change of magnetic plus kinetic energy over the period, J");
+  members.write("period_balance", table(result, &SliderMember::period_balance), {count, periods},
+                "(work − dissipation − stored) / max(|work|, dissipation): the energy balance's residual");
+
+  if (scene.series) {
+    const auto series = file.create_group("series");
+    const hsize_t samples = result.sample_times.size();
+    series.write("time", result.sample_times, {},
+                 "s since the start of the rest; sliding starts at drive.rest");
+    series.write("friction", table(result, &SliderMember::friction_series), {count, samples},
+                 "drive force F = ∂E/∂x_s, N");
+    series.write("order_x", table(result, &SliderMember::order_x_series), {count, samples},
+                 "mean cos(θ_i − θ_j) over x-neighbours");
+    series.write("order_y", table(result, &SliderMember::order_y_series), {count, samples},
+                 "mean cos(θ_i − θ_j) over y-neighbours");
+    series.write("energy", table(result, &SliderMember::energy_series), {count, samples},
+                 "magnetic plus kinetic energy, J");
+    if (scene.angles)
+      series.write("angles", table(result, &SliderMember::angles),
+                   {count, samples, hsize_t(scene.columns * scene.rows)},
+                   "θ of rotor j·columns + i (column i along x, row j), rad, unwrapped");
+  }
+  write_curve(file.create_group("curve"), scene, result);
+  file.close();
+}
+
+}  // namespace rotorsweep::io

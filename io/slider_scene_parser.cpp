@@ -1,0 +1,123 @@
+// Slider scene parsing with the shared section readers (io/toml_section.hpp): SI values with their
+// allowed ranges, the separation scan as a grid, and the limits that keep a run meaningful (README "Slider").
+#include "io/slider_scene_parser.hpp"
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "io/toml_section.hpp"
+#include "kernels/stepper_list.hpp"
+
+namespace rotorsweep::io {
+
+namespace {
+
+using ensemble::SliderScene;
+
+const std::map<std::string, std::set<std::string>> slider_keys{
+    {"slider", {"columns", "rows", "spacing", "moment", "inertia", "damping", "dynamics"}},
+    {"substrate", {"columns", "rows", "moment", "nodes_per_depth"}},
+    {"drive", {"speed", "rest", "end"}},
+    {"sweep", {"separation"}},
+    {"initial", {"kind", "noise", "replicas", "seed"}},
+    {"observables", {"samples_per_period", "series", "angles"}},
+    {"numerics", {"stepper", "rtol", "atol", "max_steps"}},
+    {"output", {"path"}},
+};
+
+bool positive(double x) { return x > 0; }
+
+bool up_to_100(long long v) { return v >= 1 && v <= 100; }
+bool up_to_100000(long long v) { return v >= 1 && v <= 100000; }
+
+/// A count from 1 to 100 (small) or to 100000.
+std::size_t count(const Section& s, std::string_view k, std::size_t fallback, bool small) {
+  return std::size_t(s.integer(k, (long long)fallback,
+                               small ? "an integer from 1 to 100" : "an integer from 1 to 100000",
+                               small ? up_to_100 : up_to_100000));
+}
+
+SliderScene read_slider_scene(const toml::table& root) {
+  check_sections(root, slider_keys);
+  SliderScene scene;
+  const Section slider = section(root, "slider");
+  scene.columns = count(slider, "columns", scene.columns, true);
+  scene.rows = count(slider, "rows", scene.rows, true);
+  scene.spacing = slider.number("spacing", scene.spacing, "a number > 0 (lattice constant a, m)", positive);
+  scene.moment = slider.number("moment", scene.moment, "a number > 0 (A m²)", positive);
+  scene.inertia = slider.number("inertia", scene.inertia, "a number > 0 (kg m²)", positive);
+  scene.damping = slider.number("damping", scene.damping, "a number > 0 (kg m²/s)", positive);
+  scene.overdamped = slider.choice("dynamics", "inertial", {"inertial", "overdamped"}) == "overdamped";
+  if (scene.columns * scene.rows < 2)
+    fail(slider.key("columns"), "and slider.rows must give at least 2 rotors");
+
+  const Section substrate = section(root, "substrate");
+  scene.substrate_columns = count(substrate, "columns", scene.substrate_columns, false);
+  scene.substrate_rows = count(substrate, "rows", scene.substrate_rows, false);
+  scene.substrate_moment =
+      substrate.number("moment", scene.substrate_moment, "a number > 0 (A m²)", positive);
+  scene.nodes_per_depth = substrate.number("nodes_per_depth", scene.nodes_per_depth,
+                                           "a number from 2 to 1000 (table nodes per separation h)",
+                                           [](double x) { return x >= 2 && x <= 1000; });
+
+  const Section drive = section(root, "drive");
+  scene.speed = drive.number("speed", scene.speed, "a number > 0 (m/s)", positive);
+  scene.rest = drive.number("rest", scene.rest, "a number >= 0 (s)", [](double x) { return x >= 0; });
+  scene.end = drive.number("end", scene.end, "a number > 0 (s)", positive);
+  if (scene.end <= scene.rest) fail(drive.key("end"), "must be later than drive.rest");
+  if (scene.end - scene.rest > 1e4 * scene.spacing / scene.speed)
+    fail(drive.key("end"), "gives more than 10000 substrate periods of sliding");
+
+  scene.separations = grid(section(root, "sweep"), "separation", "> 0 (layer separation h, m)", positive);
+  for (const double h : scene.separations)
+    if (h < 0.05 * scene.spacing)
+      fail("sweep.separation", "must be at least 0.05 a = " + std::to_string(0.05 * scene.spacing) +
+                                   " m (closer, the point dipoles are no model of magnets)");
+
+  const Section initial = section(root, "initial");
+  const std::string kind =
+      initial.choice("kind", "alternating_rows", {"alternating_rows", "aligned", "random"});
+  scene.start = kind == "aligned"  ? ensemble::SliderStart::aligned
+                : kind == "random" ? ensemble::SliderStart::random
+                                   : ensemble::SliderStart::alternating_rows;
+  scene.noise = initial.number("noise", scene.noise, "a number from 0 to 2π (full width, rad)",
+                               [](double x) { return x >= 0 && x <= 6.283185307179586; });
+  scene.replicas = count(initial, "replicas", scene.replicas, false);
+  scene.seed =
+      std::uint64_t(initial.integer("seed", 1, "an integer >= 0", [](long long s) { return s >= 0; }));
+
+  const Section observables = section(root, "observables");
+  scene.samples_per_period = count(observables, "samples_per_period", scene.samples_per_period, false);
+  scene.series = observables.boolean("series", scene.series);
+  scene.angles = observables.boolean("angles", scene.angles);
+
+  const Section numerics = section(root, "numerics");
+  std::set<std::string> steppers(kernels::stepper_names.begin(), kernels::stepper_names.end());
+  scene.stepper = *kernels::parse_stepper(numerics.choice("stepper", "rodas4", steppers));
+  scene.rtol = numerics.number("rtol", scene.rtol, "a number from 1e-14 to 1e-2",
+                               [](double x) { return x >= 1e-14 && x <= 1e-2; });
+  scene.atol = numerics.number("atol", scene.atol, "a number from 1e-16 to 1e-2",
+                               [](double x) { return x >= 1e-16 && x <= 1e-2; });
+  scene.max_steps =
+      double(numerics.integer("max_steps", 100000000, "an integer >= 1", [](long long n) { return n >= 1; }));
+
+  const Section output = section(root, "output");
+  scene.output_path = output.text("path", scene.output_path);
+  if (scene.member_count() > 10000000) fail("initial.replicas", "gives more than 10000000 members");
+  return scene;
+}
+
+}  // namespace
+
+ensemble::SliderScene parse_slider_scene_text(std::string_view text, std::string_view source) {
+  SliderScene scene = read_slider_scene(parse_toml(text, source));
+  scene.text = std::string(text);
+  return scene;
+}
+
+ensemble::SliderScene parse_slider_scene_file(const std::string& path) {
+  return parse_slider_scene_text(read_scene_file(path), path);
+}
+
+}  // namespace rotorsweep::io

@@ -1,0 +1,126 @@
+// Typed, validated access to the sections of a TOML scene file: the shared helpers, the range grid
+// { from, to, count, spacing }, the section check and reading the file (README "Scene files").
+#include "io/toml_section.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace rotorsweep::io {
+
+std::string join(const std::set<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+std::string shortened(const std::string& s, std::size_t limit) {
+  if (s.size() <= limit) return s;
+  std::size_t cut = limit;
+  while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;  // UTF-8 continuation
+  return s.substr(0, cut) + "… (" + std::to_string(s.size()) + " bytes)";
+}
+
+[[noreturn]] void fail(const std::string& key, const std::string& message) {
+  throw SceneError("scene key '" + shortened(key) + "': " + message);
+}
+
+std::string describe(const toml::node& node) {
+  std::ostringstream out;
+  if (node.is_string())
+    out << '"' << node.value<std::string>().value_or("") << '"';
+  else if (node.is_table())
+    out << "a table";
+  else if (node.is_array())
+    out << "an array";
+  else
+    node.visit([&](const auto& value) { out << value; });
+  return shortened(out.str());
+}
+
+/// A list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a `fallback` also a
+/// single number, and the fallback when the key is absent.
+std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
+                         bool (*valid)(double), const std::vector<double>& fallback) {
+  const std::string key = section.key(k);
+  const std::string shape = (fallback.empty() ? "a list of numbers " : "a number, a list of numbers ") +
+                            what + ", or { from, to, count, spacing = \"linear\"|\"log\" }";
+  if (!fallback.empty() && !section.find(k)) return fallback;
+  const toml::node& node = section.require(k, shape);
+  if (!fallback.empty() && (node.is_floating_point() || node.is_integer()))
+    return {Section::checked_number(node, key, what, valid)};
+  std::vector<double> values;
+  if (const auto* list = node.as_array()) {
+    if (list->empty()) fail(key, "must not be empty; it must be " + shape);
+    for (const auto& element : *list) values.push_back(Section::checked_number(element, key, what, valid));
+    return values;
+  }
+  const auto* range = node.as_table();
+  if (!range) fail(key, "must be " + shape + " (got " + describe(node) + ")");
+  for (const auto& [name, value] : *range)
+    if (name != "from" && name != "to" && name != "count" && name != "spacing")
+      fail(key + "." + std::string(name.str()), "unknown key; a range has from, to, count, spacing");
+  const Section r(range, key);
+  const double from =
+      Section::checked_number(r.require("from", "a number " + what), r.key("from"), what, valid);
+  const double to = Section::checked_number(r.require("to", "a number " + what), r.key("to"), what, valid);
+  r.require("count", "an integer >= 1");
+  const long long count = r.integer("count", 1, "an integer from 1 to 10000000",
+                                    [](long long c) { return c >= 1 && c <= 10000000; });
+  const bool log = r.choice("spacing", "linear", {"linear", "log"}) == "log";
+  if (to < from) fail(r.key("to"), "must be >= from (" + std::to_string(from) + ")");
+  if (log && from <= 0) fail(r.key("from"), "must be > 0 with spacing = \"log\"");
+  for (long long i = 0; i < count; ++i) {
+    const double s = count == 1 ? 0.0 : double(i) / double(count - 1);
+    values.push_back(log ? std::exp(std::log(from) + s * (std::log(to) - std::log(from)))
+                         : from + s * (to - from));
+  }
+  values.back() = to;
+  return values;
+}
+
+void check_sections(const toml::table& root,
+                    const std::map<std::string, std::set<std::string>>& allowed_keys) {
+  std::set<std::string> sections;
+  for (const auto& [name, keys] : allowed_keys) sections.insert(name);
+  for (const auto& [name, node] : root) {
+    const std::string section(name.str());
+    const auto it = allowed_keys.find(section);
+    if (it == allowed_keys.end()) fail(section, "unknown; the scene sections are " + join(sections));
+    const auto* table = node.as_table();
+    if (!table) fail(section, "must be a table [" + section + "]");
+    for (const auto& [key, value] : *table)
+      if (!it->second.count(std::string(key.str())))
+        fail(section + "." + std::string(key.str()),
+             "unknown key; [" + section + "] allows " + join(it->second));
+  }
+}
+
+toml::table parse_toml(std::string_view text, std::string_view source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream message;
+    message << "scene file '" << source << "' line " << e.source().begin.line << ": " << e.description();
+    throw SceneError(message.str());
+  }
+}
+
+std::string read_scene_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  const std::string what = "cannot read scene file '" + shortened(path, 200) + "': ";
+  if (!fs::exists(status)) throw SceneError(what + (error ? error.message() : "no such file"));
+  if (fs::is_directory(status)) throw SceneError(what + "it is a directory");
+  if (!fs::is_regular_file(status)) throw SceneError(what + "not a regular file (a FIFO, socket or device)");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw SceneError(what + std::strerror(errno));
+  return text.str();
+}
+
+}  // namespace rotorsweep::io
