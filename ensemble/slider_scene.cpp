@@ -3,6 +3,7 @@
 #include "ensemble/slider_scene.hpp"
 
 #include <cmath>
+#include <complex>
 
 #include "kernels/angles.hpp"
 #include "kernels/counter_random.hpp"
@@ -39,6 +40,24 @@ kernels::SubstrateTable substrate_table(const SliderScene& scene, double separat
   return kernels::SubstrateTable(substrate_lattice(scene, separation), scene.rows, -0.5,
                                  double(scene.columns - 1) + final_displacement(scene) + 0.5,
                                  depth / scene.nodes_per_depth);
+}
+
+double paper_drive_amplitude(const SliderScene& scene, double separation) {
+  return std::pow(scene.spacing / separation, 3) * scene.substrate_moment / scene.moment;
+}
+
+double field_drive_amplitude(const SliderScene& scene, double separation) {
+  const auto lattice = substrate_lattice(scene, separation);
+  const double row = double(scene.rows / 2), column = double(scene.columns / 2);
+  constexpr int points = 64;
+  std::complex<double> bx(0.0), bz(0.0);  // Σ B e^{iφ}: the harmonic's amplitude whatever its phase
+  for (int k = 0; k < points; ++k) {
+    const double phase = kernels::two_pi * double(k) / points;
+    const auto field = kernels::substrate_field(lattice, column + double(k) / points, row);
+    bx += field.x.value * std::polar(1.0, phase);
+    bz += field.z.value * std::polar(1.0, phase);
+  }
+  return scene.substrate_moment / scene.moment * (std::abs(bx) + std::abs(bz)) / points;
 }
 
 kernels::SliderModel<double, true>::Parameters slider_parameters(const SliderScene& scene,

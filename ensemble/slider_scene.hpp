@@ -80,6 +80,13 @@ double final_displacement(const SliderScene& scene);
 /// The table of the substrate field over the slider's whole path at separation h (m).
 kernels::SubstrateTable substrate_table(const SliderScene& scene, double separation);
 
+/// The row model's substrate strength A at separation h (docs/model.md §9 "Mapping onto the row model"):
+/// the paper's point-dipole estimate (a/h)³ m_sub/m ...
+double paper_drive_amplitude(const SliderScene& scene, double separation);
+/// ... and the first harmonic of the substrate field along the slider's middle row, μ B₁ with
+/// B₁ = (|B_x,1| + |B_z,1|)/2 over one lattice period (64 points), in units of μ0 m²/(4π a³).
+double field_drive_amplitude(const SliderScene& scene, double separation);
+
 /// One lane's scaled parameters over `table`.
 kernels::SliderModel<double, true>::Parameters slider_parameters(const SliderScene& scene,
                                                                  const kernels::SubstrateTable& table);

@@ -53,6 +53,14 @@ void write_curve(const Hdf5Location& curve, const ensemble::SliderScene& scene,
     valid.push_back(count);
   }
   curve.write("separation", scene.separations, {}, "layer separation h, m");
+  std::vector<double> paper_A, field_A;
+  for (const double h : scene.separations) {
+    paper_A.push_back(ensemble::paper_drive_amplitude(scene, h));
+    field_A.push_back(ensemble::field_drive_amplitude(scene, h));
+  }
+  curve.write("A_paper", paper_A, {}, "row model's A = (a/h)³ m_sub/m (docs/model.md §9)");
+  curve.write("A_field", field_A, {},
+              "row model's A from the substrate field's first harmonic (docs/model.md §9)");
   curve.write("friction", friction, {}, "mean drive force over the replicas, N (NaN: no replica finished)");
   curve.write("friction_std", spread, {}, "standard deviation over the replicas, N (NaN below 2 replicas)");
   curve.write("order_x", order_x, {}, "mean alignment of x-neighbours, cos(θ_i − θ_j), while sliding");
@@ -74,6 +82,10 @@ void write_slider_result(const std::string& path, const ensemble::SliderScene& s
   file.set_attribute("device", provenance.device);
   file.set_attribute("isa", provenance.isa);
   file.set_attribute("period", result.period);
+  file.set_attribute("spacing", scene.spacing);
+  file.set_attribute("columns", std::int64_t(scene.columns));
+  file.set_attribute("rows", std::int64_t(scene.rows));
+  file.set_attribute("g", scene.damping / (units.energy * units.time));
   file.set_attribute("periods", std::int64_t(result.periods));
   file.set_attribute("energy_unit", units.energy);
   file.set_attribute("time_unit", units.time);
