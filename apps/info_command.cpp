@@ -1,5 +1,5 @@
 // `rotorsweep info OUT.h5`: a human summary of a result file (provenance, completeness, the grid,
-// status and regime counts, the range of the dissipation) or of a `landscape` file.
+// status and regime counts, the range of the dissipation), of a `landscape` file or of a slider scan.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -44,6 +44,28 @@ void print_landscape(const io::Hdf5Location& file) {
   std::printf("\n");
 }
 
+/// A file of `rotorsweep slider`: the scan, the status counts, the friction's range and peak.
+void print_slider(const io::Hdf5Location& file) {
+  const auto members = file.open_group("members");
+  const auto separation = members.read_doubles("separation");
+  std::printf("%-12s %zu\n", "members", separation.size());
+  std::vector<double> millimetres;
+  for (double h : separation) millimetres.push_back(h * 1e3);
+  print_range("h (mm)", millimetres);
+  print_counts("status", members.read_strings("status"));
+  const auto friction = members.read_doubles("friction");
+  std::size_t peak = friction.size();
+  for (std::size_t i = 0; i < friction.size(); ++i)
+    if (std::isfinite(friction[i]) && (peak == friction.size() || friction[i] > friction[peak])) peak = i;
+  if (peak < friction.size()) {
+    const auto least = std::min_element(friction.begin(), friction.end(), [](double a, double b) {
+      return std::isfinite(a) && (!std::isfinite(b) || a < b);
+    });
+    std::printf("%-12s from %.6g N to %.6g N (peak at h = %.4g mm)\n", "friction", *least, friction[peak],
+                millimetres[peak]);
+  }
+}
+
 }  // namespace
 
 int run_info(const InfoOptions& options) {
@@ -62,6 +84,7 @@ int run_info(const InfoOptions& options) {
                   file.attribute_string("isa").c_str());
     if (file.has_attribute("kind")) {
       print_landscape(file);
+      if (file.attribute_string("kind") == "slider") print_slider(file);
       return complete ? 0 : 1;
     }
     if (!file.has("members")) return complete ? 0 : 1;

@@ -139,6 +139,7 @@ void write_slider_result(const std::string& path, const ensemble::SliderScene& s
                    "θ of rotor j·columns + i (column i along x, row j), rad, unwrapped");
   }
   write_curve(file.create_group("curve"), scene, result);
+  file.set_flag("complete", true);  // written whole, and put in place only after this
   file.close();
 }
 

@@ -1,0 +1,63 @@
+// `rotorsweep slider` end to end (README "The experiment's slider"): scene in, complete HDF5 file out with
+// its datasets and units, `info` on it; bad keys and the wrong kind of scene as exit code 2, no file written.
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "io/hdf5_file.hpp"
+#include "support/cli.hpp"
+#include "support/scene_text.hpp"
+
+using namespace rotorsweep::testing;
+
+namespace {
+
+const std::string small_slider =
+    "[slider]\ncolumns = 3\nrows = 2\n[substrate]\ncolumns = 9\nrows = 9\n[drive]\nrest = 0.5\nend = 2.5\n"
+    "[sweep]\nseparation = { from = 7e-3, to = 9e-3, count = 3 }\n[observables]\nangles = true\n";
+
+}  // namespace
+
+TEST_CASE("slider writes a complete result file that info summarises", "[apps][slider]") {
+  const auto dir = scratch_directory("slider");
+  const auto scene = write_text(dir / "slider.toml", small_slider);
+  const auto out = dir / "slider.h5";
+  const auto run = run_cli("slider -q '" + scene.string() + "' -o '" + out.string() + "'", dir);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("3 members (3 separations h = 7 … 9 mm"));
+  const auto file = rotorsweep::io::Hdf5Location::open_file(out.string());
+  CHECK(file.attribute_flag("complete"));
+  CHECK(file.attribute_string("kind") == "slider");
+  CHECK(file.attribute_double("period") == Catch::Detail::Approx(2.0));
+  const auto members = file.open_group("members");
+  CHECK(members.read_doubles("friction").size() == 3);
+  CHECK(members.shape("period_friction") == std::pair<hsize_t, hsize_t>{3, 1});
+  CHECK(members.read_strings("status") == std::vector<std::string>{"ok", "ok", "ok"});
+  std::vector<hsize_t> dims;
+  file.open_group("series").read_doubles("angles", &dims);
+  CHECK(dims == std::vector<hsize_t>{3, 64, 6});  // t = 0, 12 more during the rest, 51 while sliding
+  CHECK(file.open_group("curve").read_doubles("A_paper").size() == 3);
+
+  const auto info = run_cli("info '" + out.string() + "'", dir);
+  CHECK(info.exit_code == 0);
+  CHECK_THAT(info.output, Catch::Contains("kind         slider") && Catch::Contains("status       ok 3") &&
+                              Catch::Contains("peak at h = "));
+}
+
+TEST_CASE("slider refuses bad scenes with exit code 2 and writes nothing", "[apps][slider]") {
+  const auto dir = scratch_directory("slider-bad");
+  const auto out = dir / "never.h5";
+  const auto expect_refusal = [&](const std::string& command, const std::string& text,
+                                  const std::string& key) {
+    const auto scene = write_text(dir / "scene.toml", text);
+    const auto run = run_cli(command + " -q '" + scene.string() + "' -o '" + out.string() + "'", dir);
+    INFO(run.output);
+    CHECK(run.exit_code == 2);
+    CHECK_THAT(run.output, Catch::Contains(key));
+    CHECK_FALSE(std::filesystem::exists(out));
+  };
+  expect_refusal("slider", small_slider + "[numerics]\nrtol = 0.5\n", "numerics.rtol");
+  expect_refusal("slider", "[slider]\nspeed = 1.0\n[sweep]\nseparation = [8e-3]\n", "slider.speed");
+  expect_refusal("slider", "[model]\nrows = 20\n", "unknown; the scene sections are");
+  expect_refusal("run", small_slider, "run them with `rotorsweep slider FILE`");
+}
