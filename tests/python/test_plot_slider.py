@@ -1,0 +1,68 @@
+"""scripts/plot_slider.py on a small slider scan and the row model of it (README "The experiment's
+slider"): the figure is written, and a file of another kind is refused with a clear message."""
+
+import pathlib
+import subprocess
+import sys
+
+from conftest import run_cli
+
+SCRIPT = pathlib.Path(__file__).resolve().parents[2] / "scripts" / "plot_slider.py"
+
+SLIDER = """
+[slider]
+columns = 3
+rows = 2
+[substrate]
+columns = 9
+rows = 9
+[drive]
+rest = 0.5
+end = 2.5
+[sweep]
+separation = { from = 6e-3, to = 10e-3, count = 5 }
+[initial]
+replicas = 2
+"""
+
+ROWS = """
+[model]
+rows = 2
+couplings = "dipolar"
+range = "all"
+row_length = 3
+boundary = "open"
+[drive]
+g = [0.154]
+[sweep]
+A = { from = 0.5, to = 25.0, count = 12, spacing = "log" }
+[initial]
+kinds = ["AFM"]
+[schedule]
+relax_periods = 1
+average_periods = 1
+"""
+
+
+def test_plot_slider_with_the_row_model(tmp_path, executable):
+    (tmp_path / "slider.toml").write_text(SLIDER)
+    slider = tmp_path / "slider.h5"
+    completed = subprocess.run([executable, "slider", str(tmp_path / "slider.toml"), "-o", str(slider), "-q"],
+                               capture_output=True, text=True)
+    assert completed.returncode == 0, completed.stderr
+    (tmp_path / "rows.toml").write_text(ROWS)
+    rows = run_cli(executable, tmp_path / "rows.toml", tmp_path / "rows.h5")
+    png = tmp_path / "slider.png"
+    done = subprocess.run([sys.executable, str(SCRIPT), str(slider), str(png), "--rows", str(rows)],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert png.stat().st_size > 10000
+
+
+def test_plot_slider_refuses_a_row_model_file(tmp_path, executable):
+    (tmp_path / "rows.toml").write_text(ROWS)
+    rows = run_cli(executable, tmp_path / "rows.toml", tmp_path / "rows.h5")
+    done = subprocess.run([sys.executable, str(SCRIPT), str(rows), str(tmp_path / "x.png")],
+                          capture_output=True, text=True)
+    assert done.returncode != 0
+    assert "is not a slider result" in done.stderr
