@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <string>
 
 #include "build_info.hpp"
 #include "commands.hpp"
@@ -38,14 +39,18 @@ int run_slider(const SliderOptions& options) {
   }
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const auto [closest, farthest] = std::minmax_element(scene.separations.begin(), scene.separations.end());
+  std::string sizes;
+  for (const auto& size : scene.sizes)
+    sizes += (sizes.empty() ? "" : ", ") + std::to_string(size.columns) + " × " + std::to_string(size.rows);
   std::fprintf(
       stderr,
-      "rotorsweep slider %s: %zu members (%zu separations h = %g … %g mm × %zu replicas), %zu × %zu rotors "
-      "over %zu × %zu, %s, %s rtol %g, %d threads × %zu lanes\n",
-      options.scene.c_str(), scene.member_count(), scene.separations.size(), *closest * 1e3, *farthest * 1e3,
-      scene.replicas, scene.columns, scene.rows, scene.substrate_columns, scene.substrate_rows,
-      scene.overdamped ? "overdamped" : "inertial", kernels::stepper_names[scene.stepper].data(), scene.rtol,
-      threads, kernels::lane_width<kernels::simd_lane>);
+      "rotorsweep slider %s: %zu members (%zu sizes × %zu separations h = %g … %g mm × %zu replicas), rotors "
+      "%s over %zu × %zu, %s, %s rtol %g, %d threads × %zu lanes\n",
+      options.scene.c_str(), scene.member_count(), scene.sizes.size(), scene.separations.size(),
+      *closest * 1e3, *farthest * 1e3, scene.replicas, sizes.c_str(), scene.substrate_columns,
+      scene.substrate_rows, scene.overdamped ? "overdamped" : "inertial",
+      kernels::stepper_names[scene.stepper].data(), scene.rtol, threads,
+      kernels::lane_width<kernels::simd_lane>);
   ProgressLine progress(scene.member_count(), !options.quiet);
   const auto result = ensemble::run_slider_scan(
       scene, threads, [&](std::size_t done, std::size_t) { progress.update(done); });

@@ -21,24 +21,23 @@ SliderUnits::SliderUnits(const SliderScene& scene)
       force(energy / scene.spacing),
       power(energy / time) {}
 
-kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, double separation) {
+kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, SliderSize size, double separation) {
   const auto centre_offset = [](std::size_t slider, std::size_t substrate) {
     return 0.5 * double(slider - 1) - 0.5 * double(substrate - 1);
   };
-  return {scene.substrate_columns, scene.substrate_rows,
-          centre_offset(scene.columns, scene.substrate_columns),
-          centre_offset(scene.rows, scene.substrate_rows), separation / scene.spacing};
+  return {scene.substrate_columns, scene.substrate_rows, centre_offset(size.columns, scene.substrate_columns),
+          centre_offset(size.rows, scene.substrate_rows), separation / scene.spacing};
 }
 
 double final_displacement(const SliderScene& scene) {
   return std::max(0.0, scene.end - scene.rest) * scene.speed / scene.spacing;
 }
 
-kernels::SubstrateTable substrate_table(const SliderScene& scene, double separation) {
+kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation) {
   const double depth = separation / scene.spacing;
   // half a lattice constant beyond both ends of the path, so that no step's stage leaves the table
-  return kernels::SubstrateTable(substrate_lattice(scene, separation), scene.rows, -0.5,
-                                 double(scene.columns - 1) + final_displacement(scene) + 0.5,
+  return kernels::SubstrateTable(substrate_lattice(scene, size, separation), size.rows, -0.5,
+                                 double(size.columns - 1) + final_displacement(scene) + 0.5,
                                  depth / scene.nodes_per_depth);
 }
 
@@ -46,9 +45,9 @@ double paper_drive_amplitude(const SliderScene& scene, double separation) {
   return std::pow(scene.spacing / separation, 3) * scene.substrate_moment / scene.moment;
 }
 
-double field_drive_amplitude(const SliderScene& scene, double separation) {
-  const auto lattice = substrate_lattice(scene, separation);
-  const double row = double(scene.rows / 2), column = double(scene.columns / 2);
+double field_drive_amplitude(const SliderScene& scene, SliderSize size, double separation) {
+  const auto lattice = substrate_lattice(scene, size, separation);
+  const double row = double(size.rows / 2), column = double(size.columns / 2);
   constexpr int points = 64;
   std::complex<double> bx(0.0), bz(0.0);  // Σ B e^{iφ}: the harmonic's amplitude whatever its phase
   for (int k = 0; k < points; ++k) {
@@ -73,16 +72,19 @@ kernels::SliderModel<double, true>::Parameters slider_parameters(const SliderSce
   return p;
 }
 
-std::vector<double> slider_start(const SliderScene& scene, std::size_t separation_index,
-                                 std::size_t replica) {
-  const kernels::RandomStream stream(scene.seed, std::uint64_t(separation_index) * scene.replicas + replica);
-  const std::size_t n = scene.columns * scene.rows;
+std::vector<double> slider_start(const SliderScene& scene, SliderMemberIndex member) {
+  const kernels::RandomStream stream(
+      scene.seed,
+      (std::uint64_t(member.size) * scene.separations.size() + member.separation) * scene.replicas +
+          member.replica);
+  const SliderSize size = scene.sizes[member.size];
+  const std::size_t n = size.rotors();
   std::vector<double> theta(n);
   for (std::size_t r = 0; r < n; ++r) {
     const double u = stream.draw(r);
     switch (scene.start) {
       case SliderStart::alternating_rows:
-        theta[r] = ((r / scene.columns) % 2 ? 3.141592653589793 : 0.0) + scene.noise * (u - 0.5);
+        theta[r] = ((r / size.columns) % 2 ? 3.141592653589793 : 0.0) + scene.noise * (u - 0.5);
         break;
       case SliderStart::aligned: theta[r] = scene.noise * (u - 0.5); break;
       case SliderStart::random: theta[r] = kernels::two_pi * u; break;

@@ -17,15 +17,22 @@ namespace rotorsweep::ensemble {
 /// every angle uniform on [0, 2π); the first two with uniform noise of full width `noise`.
 enum class SliderStart { alternating_rows, aligned, random };
 
+/// A slider's rotor grid.
+struct SliderSize {
+  std::size_t columns = 7;  ///< rotors along x, the sliding direction
+  std::size_t rows = 7;     ///< rotors along y
+  std::size_t rotors() const { return columns * rows; }
+  bool operator==(const SliderSize&) const = default;
+};
+
 struct SliderScene {
   // [slider]
-  std::size_t columns = 7;    ///< rotors along x, the sliding direction
-  std::size_t rows = 7;       ///< rotors along y
-  double spacing = 16e-3;     ///< a, m (slider and substrate)
-  double moment = 4.57e-2;    ///< m, A m²
-  double inertia = 7.48e-10;  ///< I, kg m²
-  double damping = 2.5e-6;    ///< γ, kg m²/s
-  bool overdamped = false;    ///< γ θ̇ = τ instead of I θ̈ = τ − γ θ̇
+  std::vector<SliderSize> sizes{{7, 7}};  ///< one or more grids (a sweep axis)
+  double spacing = 16e-3;                 ///< a, m (slider and substrate)
+  double moment = 4.57e-2;                ///< m, A m²
+  double inertia = 7.48e-10;              ///< I, kg m²
+  double damping = 2.5e-6;                ///< γ, kg m²/s
+  bool overdamped = false;                ///< γ θ̇ = τ instead of I θ̈ = τ − γ θ̇
 
   // [substrate]
   std::size_t substrate_columns = 35;
@@ -61,7 +68,7 @@ struct SliderScene {
   std::string output_path = "results/slider.h5";
   std::string text;  ///< the scene file as read
 
-  std::size_t member_count() const { return separations.size() * replicas; }
+  std::size_t member_count() const { return sizes.size() * separations.size() * replicas; }
 };
 
 /// The scene's units: energy E0 = μ0 m²/(4π a³) in J, time T0 = a/(2π v) in s, so that one substrate
@@ -71,28 +78,33 @@ struct SliderUnits {
   explicit SliderUnits(const SliderScene& scene);
 };
 
-/// The substrate lattice under the scene's slider, centred, at separation h (m).
-kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, double separation);
+/// The substrate lattice under a slider of `size`, centred, at separation h (m).
+kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, SliderSize size, double separation);
 
 /// The slider's displacement at the end of the run, in units of a.
 double final_displacement(const SliderScene& scene);
 
-/// The table of the substrate field over the slider's whole path at separation h (m).
-kernels::SubstrateTable substrate_table(const SliderScene& scene, double separation);
+/// The table of the substrate field over the whole path of a slider of `size` at separation h (m).
+kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation);
 
 /// The row model's substrate strength A at separation h (docs/model.md §9 "Mapping onto the row model"):
 /// the paper's point-dipole estimate (a/h)³ m_sub/m ...
 double paper_drive_amplitude(const SliderScene& scene, double separation);
 /// ... and the first harmonic of the substrate field along the slider's middle row, μ B₁ with
 /// B₁ = (|B_x,1| + |B_z,1|)/2 over one lattice period (64 points), in units of μ0 m²/(4π a³).
-double field_drive_amplitude(const SliderScene& scene, double separation);
+double field_drive_amplitude(const SliderScene& scene, SliderSize size, double separation);
 
 /// One lane's scaled parameters over `table`.
 kernels::SliderModel<double, true>::Parameters slider_parameters(const SliderScene& scene,
                                                                  const kernels::SubstrateTable& table);
 
-/// The angles member (separation, replica) starts from: seed, separation index and replica pick the
-/// stream, so a member's start does not depend on the others in the scene.
-std::vector<double> slider_start(const SliderScene& scene, std::size_t separation_index, std::size_t replica);
+/// Where a member sits in the scene's plan: size-major, then separation, then replica.
+struct SliderMemberIndex {
+  std::size_t size = 0, separation = 0, replica = 0;
+};
+
+/// The angles a member starts from: seed and (size, separation, replica) pick its stream, so a
+/// member's start does not depend on the others in the scene.
+std::vector<double> slider_start(const SliderScene& scene, SliderMemberIndex member);
 
 }  // namespace rotorsweep::ensemble

@@ -61,13 +61,14 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
   using Model = kernels::SliderModel<V, Inertial>;
   using Integrator = kernels::AdaptiveIntegrator<Model, Stepper>;
   const SliderUnits units(scene);
-  const kernels::SliderGrid grid{scene.columns, scene.rows};
+  const SliderSize size = members[block.front()].size;
+  const kernels::SliderGrid grid{size.columns, size.rows};
   const std::size_t n = grid.rotors(), dim = Inertial ? 2 * n : n;
 
   std::vector<std::unique_ptr<kernels::SubstrateTable>> tables;
   for (std::size_t l = 0; l < block.size(); ++l)
-    tables.push_back(
-        std::make_unique<kernels::SubstrateTable>(substrate_table(scene, members[block[l]].separation)));
+    tables.push_back(std::make_unique<kernels::SubstrateTable>(
+        substrate_table(scene, size, members[block[l]].separation)));
 
   const std::size_t storage = Model::storage_size(n) + Integrator::storage_size(dim) +
                               kernels::LaneState<V>::storage_size(dim, Model::quadrature_count) +
@@ -90,7 +91,7 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
 
   for (std::size_t l = 0; l < W; ++l) {
     const auto& m = members[block[std::min(l, block.size() - 1)]];
-    const auto theta = slider_start(scene, m.separation_index, m.replica);
+    const auto theta = slider_start(scene, m.index);
     for (std::size_t r = 0; r < n; ++r) kernels::lane_set(state.theta[r], l, theta[r]);
   }
 
@@ -194,18 +195,23 @@ SliderResult run_slider_scan(const SliderScene& scene, int threads,
   result.period = scene.spacing / scene.speed;
   result.periods = schedule.periods;
   for (const double t : schedule.stops) result.sample_times.push_back(t * units.time);
-  for (std::size_t s = 0; s < scene.separations.size(); ++s)
-    for (std::size_t r = 0; r < scene.replicas; ++r) {
-      SliderMember m;
-      m.separation = scene.separations[s];
-      m.separation_index = s;
-      m.replica = r;
-      result.members.push_back(std::move(m));
-    }
+  for (std::size_t z = 0; z < scene.sizes.size(); ++z)
+    for (std::size_t s = 0; s < scene.separations.size(); ++s)
+      for (std::size_t r = 0; r < scene.replicas; ++r) {
+        SliderMember m;
+        m.index = {z, s, r};
+        m.size = scene.sizes[z];
+        m.separation = scene.separations[s];
+        result.members.push_back(std::move(m));
+      }
+  // lane blocks of members of one size (a block shares its grid)
   std::vector<std::vector<std::size_t>> blocks;
-  for (std::size_t i = 0; i < result.members.size(); i += W) {
+  for (std::size_t i = 0; i < result.members.size();) {
     std::vector<std::size_t> block;
-    for (std::size_t l = i; l < std::min(i + W, result.members.size()); ++l) block.push_back(l);
+    for (; i < result.members.size() && block.size() < W; ++i) {
+      if (!block.empty() && !(result.members[i].size == result.members[block.front()].size)) break;
+      block.push_back(i);
+    }
     blocks.push_back(std::move(block));
   }
   if (threads <= 0) threads = omp_get_max_threads();

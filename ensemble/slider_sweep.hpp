@@ -13,9 +13,10 @@ namespace rotorsweep::ensemble {
 
 /// One member's results, SI units.
 struct SliderMember {
+  SliderMemberIndex index;  ///< its place in the plan (size, separation, replica)
+  SliderSize size;
   double separation = 0.0;  ///< h, m
-  std::size_t separation_index = 0, replica = 0;
-  double friction = 0.0;  ///< mean drive force over the whole periods of sliding, N
+  double friction = 0.0;    ///< mean drive force over the whole periods of sliding, N
   std::vector<double> period_friction, period_work, period_dissipation, period_stored;  ///< N, J, J, J
   std::vector<double> period_balance;   ///< (work − dissipation − stored) / max(|work|, dissipation)
   double order_x = 0.0, order_y = 0.0;  ///< mean over the samples while sliding
@@ -29,7 +30,7 @@ struct SliderResult {
   std::vector<double> sample_times;   ///< s (0 = start of the rest)
   std::size_t periods = 0;            ///< whole substrate periods of sliding
   double period = 0.0;                ///< a / v, s
-  std::vector<SliderMember> members;  ///< separation-major: member = separation_index · replicas + replica
+  std::vector<SliderMember> members;  ///< size-major, then separation, then replica
   double seconds = 0.0;               ///< wall time of the integration
 };
 

@@ -29,43 +29,50 @@ std::vector<double> table(const ensemble::SliderResult& result, std::vector<doub
   return out;
 }
 
+/// Per (size, separation): the replicas' mean and spread of the friction, the order parameters, and the
+/// row model's A at that separation.
 void write_curve(const Hdf5Location& curve, const ensemble::SliderScene& scene,
                  const ensemble::SliderResult& result) {
-  std::vector<double> friction, spread, order_x, order_y;
-  std::vector<std::int64_t> valid;
-  for (std::size_t s = 0; s < scene.separations.size(); ++s) {
-    double sum = 0, sum2 = 0, sx = 0, sy = 0;
-    std::int64_t count = 0;
-    for (std::size_t r = 0; r < scene.replicas; ++r) {
-      const auto& m = result.members[s * scene.replicas + r];
-      if (m.status != "ok") continue;
-      sum += m.friction;
-      sum2 += m.friction * m.friction;
-      sx += m.order_x;
-      sy += m.order_y;
-      ++count;
+  std::vector<double> separation, friction, spread, order_x, order_y, paper_A, field_A;
+  std::vector<std::int64_t> columns, rows, valid;
+  for (std::size_t z = 0; z < scene.sizes.size(); ++z)
+    for (std::size_t s = 0; s < scene.separations.size(); ++s) {
+      const auto size = scene.sizes[z];
+      const double h = scene.separations[s];
+      double sum = 0, sum2 = 0, sx = 0, sy = 0;
+      std::int64_t count = 0;
+      for (std::size_t r = 0; r < scene.replicas; ++r) {
+        const auto& m = result.members[(z * scene.separations.size() + s) * scene.replicas + r];
+        if (m.status != "ok") continue;
+        sum += m.friction;
+        sum2 += m.friction * m.friction;
+        sx += m.order_x;
+        sy += m.order_y;
+        ++count;
+      }
+      const double n = double(count);
+      separation.push_back(h);
+      columns.push_back(std::int64_t(size.columns));
+      rows.push_back(std::int64_t(size.rows));
+      friction.push_back(count ? sum / n : std::nan(""));
+      spread.push_back(count > 1 ? std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1))) : std::nan(""));
+      order_x.push_back(count ? sx / n : std::nan(""));
+      order_y.push_back(count ? sy / n : std::nan(""));
+      valid.push_back(count);
+      paper_A.push_back(ensemble::paper_drive_amplitude(scene, h));
+      field_A.push_back(ensemble::field_drive_amplitude(scene, size, h));
     }
-    const double n = double(count);
-    friction.push_back(count ? sum / n : std::nan(""));
-    spread.push_back(count > 1 ? std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1))) : std::nan(""));
-    order_x.push_back(count ? sx / n : std::nan(""));
-    order_y.push_back(count ? sy / n : std::nan(""));
-    valid.push_back(count);
-  }
-  curve.write("separation", scene.separations, {}, "layer separation h, m");
-  std::vector<double> paper_A, field_A;
-  for (const double h : scene.separations) {
-    paper_A.push_back(ensemble::paper_drive_amplitude(scene, h));
-    field_A.push_back(ensemble::field_drive_amplitude(scene, h));
-  }
-  curve.write("A_paper", paper_A, {}, "row model's A = (a/h)³ m_sub/m (docs/model.md §9)");
-  curve.write("A_field", field_A, {},
-              "row model's A from the substrate field's first harmonic (docs/model.md §9)");
+  curve.write("separation", separation, {}, "layer separation h, m");
+  curve.write("columns", columns, "the slider's rotors along x");
+  curve.write("rows", rows, "the slider's rotors along y");
   curve.write("friction", friction, {}, "mean drive force over the replicas, N (NaN: no replica finished)");
   curve.write("friction_std", spread, {}, "standard deviation over the replicas, N (NaN below 2 replicas)");
   curve.write("order_x", order_x, {}, "mean alignment of x-neighbours, cos(θ_i − θ_j), while sliding");
   curve.write("order_y", order_y, {}, "mean alignment of y-neighbours while sliding");
   curve.write("replicas", valid, "replicas that finished (status ok)");
+  curve.write("A_paper", paper_A, {}, "row model's A = (a/h)³ m_sub/m (docs/model.md §9)");
+  curve.write("A_field", field_A, {},
+              "row model's A from the substrate field's first harmonic (docs/model.md §9)");
 }
 
 }  // namespace
@@ -83,8 +90,6 @@ void write_slider_result(const std::string& path, const ensemble::SliderScene& s
   file.set_attribute("isa", provenance.isa);
   file.set_attribute("period", result.period);
   file.set_attribute("spacing", scene.spacing);
-  file.set_attribute("columns", std::int64_t(scene.columns));
-  file.set_attribute("rows", std::int64_t(scene.rows));
   file.set_attribute("g", scene.damping / (units.energy * units.time));
   file.set_attribute("periods", std::int64_t(result.periods));
   file.set_attribute("energy_unit", units.energy);
@@ -96,8 +101,15 @@ void write_slider_result(const std::string& path, const ensemble::SliderScene& s
   const hsize_t count = result.members.size(), periods = result.periods;
   members.write("separation", column(result, [](const SliderMember& m) { return m.separation; }), {},
                 "layer separation h, m");
-  members.write("replica", column(result, [](const SliderMember& m) { return double(m.replica); }), {},
-                "replica index at this separation");
+  std::vector<std::int64_t> columns, rows, replica;
+  for (const auto& m : result.members) {
+    columns.push_back(std::int64_t(m.size.columns));
+    rows.push_back(std::int64_t(m.size.rows));
+    replica.push_back(std::int64_t(m.index.replica));
+  }
+  members.write("columns", columns, "the slider's rotors along x");
+  members.write("rows", rows, "the slider's rotors along y");
+  members.write("replica", replica, "replica index at this size and separation");
   members.write("friction", column(result, [](const SliderMember& m) { return m.friction; }), {},
                 "mean drive force over the whole periods of sliding, N (NaN where status is not ok)");
   members.write("order_x", column(result, [](const SliderMember& m) { return m.order_x; }), {},
@@ -135,7 +147,7 @@ void write_slider_result(const std::string& path, const ensemble::SliderScene& s
                  "magnetic plus kinetic energy, J");
     if (scene.angles)
       series.write("angles", table(result, &SliderMember::angles),
-                   {count, samples, hsize_t(scene.columns * scene.rows)},
+                   {count, samples, hsize_t(scene.sizes.front().rotors())},
                    "θ of rotor j·columns + i (column i along x, row j), rad, unwrapped");
   }
   write_curve(file.create_group("curve"), scene, result);

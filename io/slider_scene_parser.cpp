@@ -2,6 +2,7 @@
 // allowed ranges, the separation scan as a grid, and the limits that keep a run meaningful (README "Slider").
 #include "io/slider_scene_parser.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -38,19 +39,54 @@ std::size_t count(const Section& s, std::string_view k, std::size_t fallback, bo
                                small ? up_to_100 : up_to_100000));
 }
 
+/// slider.columns and slider.rows: integers from 1 to 100, or lists of them paired one to one (a single
+/// value goes with every value of the other list); each size has at least two rotors.
+std::vector<ensemble::SliderSize> read_sizes(const Section& slider) {
+  const auto read = [&](std::string_view k) {
+    std::vector<std::size_t> values;
+    const toml::node* node = slider.find(k);
+    if (!node) return std::vector<std::size_t>{7};
+    const std::string what = "an integer from 1 to 100, or a non-empty list of them";
+    const auto take = [&](const toml::node& n) {
+      const auto v = n.value_exact<long long>();
+      if (!n.is_integer() || !v || !up_to_100(*v))
+        fail(slider.key(k), "must be " + what + " (got " + describe(n) + ")");
+      values.push_back(std::size_t(*v));
+    };
+    if (const auto* list = node->as_array()) {
+      if (list->empty()) fail(slider.key(k), "must be " + what);
+      for (const auto& element : *list) take(element);
+    } else {
+      take(*node);
+    }
+    return values;
+  };
+  const auto columns = read("columns"), rows = read("rows");
+  if (columns.size() > 1 && rows.size() > 1 && columns.size() != rows.size())
+    fail(slider.key("rows"), "must be one integer or a list as long as slider.columns (" +
+                                 std::to_string(columns.size()) + " values, paired with them)");
+  std::vector<ensemble::SliderSize> sizes;
+  for (std::size_t i = 0; i < std::max(columns.size(), rows.size()); ++i) {
+    const ensemble::SliderSize size{columns[columns.size() > 1 ? i : 0], rows[rows.size() > 1 ? i : 0]};
+    if (size.rotors() < 2) fail(slider.key("columns"), "and slider.rows must give at least 2 rotors");
+    if (std::find(sizes.begin(), sizes.end(), size) != sizes.end())
+      fail(slider.key("columns"), "and slider.rows give the size " + std::to_string(size.columns) + " × " +
+                                      std::to_string(size.rows) + " twice");
+    sizes.push_back(size);
+  }
+  return sizes;
+}
+
 SliderScene read_slider_scene(const toml::table& root) {
   check_sections(root, slider_keys);
   SliderScene scene;
   const Section slider = section(root, "slider");
-  scene.columns = count(slider, "columns", scene.columns, true);
-  scene.rows = count(slider, "rows", scene.rows, true);
+  scene.sizes = read_sizes(slider);
   scene.spacing = slider.number("spacing", scene.spacing, "a number > 0 (lattice constant a, m)", positive);
   scene.moment = slider.number("moment", scene.moment, "a number > 0 (A m²)", positive);
   scene.inertia = slider.number("inertia", scene.inertia, "a number > 0 (kg m²)", positive);
   scene.damping = slider.number("damping", scene.damping, "a number > 0 (kg m²/s)", positive);
   scene.overdamped = slider.choice("dynamics", "inertial", {"inertial", "overdamped"}) == "overdamped";
-  if (scene.columns * scene.rows < 2)
-    fail(slider.key("columns"), "and slider.rows must give at least 2 rotors");
 
   const Section substrate = section(root, "substrate");
   scene.substrate_columns = count(substrate, "columns", scene.substrate_columns, false);
@@ -91,6 +127,8 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.samples_per_period = count(observables, "samples_per_period", scene.samples_per_period, false);
   scene.series = observables.boolean("series", scene.series);
   scene.angles = observables.boolean("angles", scene.angles);
+  if (scene.angles && scene.sizes.size() > 1)
+    fail(observables.key("angles"), "needs a single slider size (each size has its own number of rotors)");
 
   const Section numerics = section(root, "numerics");
   std::set<std::string> steppers(kernels::stepper_names.begin(), kernels::stepper_names.end());

@@ -2,11 +2,12 @@
 """The slider scan of `rotorsweep slider` (docs/model.md §9): friction force against the layer separation h
 (the experiment's curve), the order parameters against h, and the friction's time series at three
 separations (the closest, the friction peak, the farthest). With --rows, the friction the row model
-predicts for the same slider (a `rotorsweep run` result whose rows have as many rotors as the slider's
-columns), its A mapped to h both ways of docs/model.md §9: the paper's (a/h)³ m_sub/m and the substrate
+predicts for the slider size whose columns equal its model.row_length (a `rotorsweep run` result), its
+A mapped to h both ways of docs/model.md §9: the paper's (a/h)³ m_sub/m and the substrate
 field's first harmonic.
 Usage: plot_slider.py RESULT.h5 OUT.png [--rows ROWS.h5]"""
 import argparse
+import re
 import sys
 
 import h5py
@@ -17,11 +18,18 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 
-def row_model_curves(rows_path, h, A_paper, A_field, force_per_row_unit, slider_rows):
-    """The row model's mean friction against h for both mappings of A, as the slider's total force."""
+def row_length(rows_path):
+    """Rotors per row of a row-model result (its scene's model.row_length), or None."""
     with h5py.File(rows_path, "r") as f:
         if not f.attrs.get("complete", False):
             sys.exit(f"error: {rows_path} is incomplete (the run did not finish)")
+        found = re.search(r"(?m)^\s*row_length\s*=\s*(\d+)", f.attrs.get("scene", ""))
+    return int(found.group(1)) if found else None
+
+
+def row_model_curves(rows_path, h, A_paper, A_field, force_per_row_unit, slider_rows):
+    """The row model's mean friction against h for both mappings of A, as the slider's total force."""
+    with h5py.File(rows_path, "r") as f:
         c = f["curves"]
         A, D, N = c["A"][:], c["dissipation_mean"][:], c["rows"][:]
     order = np.argsort(A)
@@ -38,55 +46,69 @@ def main(h5_path, png_path, rows_path=None):
         if f.attrs.get("kind", b"") not in ("slider", b"slider"):
             sys.exit(f"error: {h5_path} is not a slider result (rotorsweep slider writes those)")
         c = f["curve"]
-        h = c["separation"][:] * 1e3
-        friction, spread = c["friction"][:], c["friction_std"][:]
-        order_x, order_y = c["order_x"][:], c["order_y"][:]
-        A_paper, A_field = c["A_paper"][:], c["A_field"][:]
-        # a row of `columns` rotors has the energy unit columns · μ0 m²/(4π a³); F = D ε / a
-        force_per_row_unit = f.attrs["columns"] * f.attrs["energy_unit"] / f.attrs["spacing"]
-        slider_rows = int(f.attrs["rows"])
+        curve = {name: c[name][:] for name in ("separation", "columns", "rows", "friction", "friction_std",
+                                                "order_x", "order_y", "A_paper", "A_field")}
+        curve["separation"] = curve["separation"] * 1e3
+        energy_unit, spacing, period = f.attrs["energy_unit"], f.attrs["spacing"], f.attrs["period"]
         series = None
         if "series" in f:
-            s = f["series"]
-            time = s["time"][:]
-            members_h = f["members/separation"][:] * 1e3
-            series = (time, s["friction"][:], members_h)
-        period = f.attrs["period"]
-    fig, axes = plt.subplots(1, 3, figsize=(17, 4.6))
-    ax = axes[0]
-    ax.plot(h, friction, "o-", ms=3, color="tab:red", label="slider")
-    if np.isfinite(spread).any():
-        ax.fill_between(h, friction - spread, friction + spread, color="tab:red", alpha=0.25, label="± replica std")
+            m = f["members"]
+            series = (f["series/time"][:], f["series/friction"][:], m["separation"][:] * 1e3, m["columns"][:],
+                      m["rows"][:])
+    sizes = sorted(set(zip(curve["columns"], curve["rows"])), key=lambda size: size[0] * size[1])
+    compared = None  # the size the row model stands for: rows as long as the slider's
     if rows_path:
-        for (label, hh, force), style in zip(row_model_curves(rows_path, h, A_paper, A_field, force_per_row_unit,
-                                                              slider_rows), ("--", ":")):
-            ax.plot(hh, force, style, color="black", label="row model, " + label)
-    ax.legend(fontsize=8)
+        length = row_length(rows_path)
+        matching = [size for size in sizes if size[0] == length]
+        if not matching:
+            sys.exit(f"error: {rows_path} has rows of {length} rotors (model.row_length); the slider has "
+                     f"{sorted(int(c) for c, _ in sizes)} columns")
+        compared = matching[-1]
+    fig, axes = plt.subplots(1, 3, figsize=(17, 4.6))
+    for columns, rows in sizes:
+        sel = (curve["columns"] == columns) & (curve["rows"] == rows)
+        h, friction, spread = curve["separation"][sel], curve["friction"][sel], curve["friction_std"][sel]
+        label = f"slider {columns} × {rows}"
+        line, = axes[0].plot(h, friction, "o-", ms=3, label=label)
+        if np.isfinite(spread).any():
+            axes[0].fill_between(h, friction - spread, friction + spread, color=line.get_color(), alpha=0.25)
+        axes[1].plot(h, curve["order_x"][sel], "o-", ms=3, color=line.get_color(), label=f"{label}: x-neighbours")
+        axes[1].plot(h, curve["order_y"][sel], "s--", ms=3, color=line.get_color(), label=f"{label}: y-neighbours")
+        if (columns, rows) == compared:
+            # a row of `columns` rotors has the energy unit columns · μ0 m²/(4π a³); F = D ε / a
+            for (name, hh, force), style in zip(
+                    row_model_curves(rows_path, h, curve["A_paper"][sel], curve["A_field"][sel],
+                                     columns * energy_unit / spacing, rows), ("--", ":")):
+                axes[0].plot(hh, force, style, color="black", label=f"row model ({columns} × {rows}), {name}")
+    ax = axes[0]
     ax.set_xlabel("layer separation h (mm)")
     ax.set_ylabel("mean friction force (N)")
     ax.set_title("friction against separation")
+    ax.legend(fontsize=8)
     ax = axes[1]
-    ax.plot(h, order_x, "o-", ms=3, label="x-neighbours (sliding direction)")
-    ax.plot(h, order_y, "s-", ms=3, label="y-neighbours")
     ax.axhline(0, color="gray", lw=0.5)
     ax.set_ylim(-1.05, 1.05)
     ax.set_xlabel("layer separation h (mm)")
     ax.set_ylabel("mean cos(θ_i − θ_j)")
     ax.set_title("order parameters (+1 FM, −1 AFM)")
-    ax.legend()
+    ax.legend(fontsize=8)
     ax = axes[2]
     if series is None:
         ax.text(0.5, 0.5, "no time series stored\n(observables.series = false)", ha="center", va="center")
     else:
-        time, force, members_h = series
-        peak = h[np.nanargmax(friction)]
+        time, force, members_h, members_columns, members_rows = series
+        columns, rows = sizes[-1]
+        sel = (curve["columns"] == columns) & (curve["rows"] == rows)
+        h, friction = curve["separation"][sel], curve["friction"][sel]
+        peak = h[np.nanargmax(friction)] if np.isfinite(friction).any() else h[0]
+        of_size = np.flatnonzero((members_columns == columns) & (members_rows == rows))
         for target, colour in ((h.min(), "tab:blue"), (peak, "tab:red"), (h.max(), "tab:green")):
-            member = int(np.argmin(np.abs(members_h - target)))
+            member = of_size[int(np.argmin(np.abs(members_h[of_size] - target)))]
             ax.plot(time, force[member], lw=0.8, color=colour, label=f"h = {members_h[member]:.1f} mm")
         ax.set_xlabel("time (s)")
         ax.set_ylabel("friction force F(t) (N)")
-        ax.set_title(f"time series (substrate period {period:g} s)")
-        ax.legend()
+        ax.set_title(f"time series, {columns} × {rows} (substrate period {period:g} s)")
+        ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(png_path, dpi=120)
     print(f"wrote {png_path}")

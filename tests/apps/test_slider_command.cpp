@@ -24,13 +24,14 @@ TEST_CASE("slider writes a complete result file that info summarises", "[apps][s
   const auto run = run_cli("slider -q '" + scene.string() + "' -o '" + out.string() + "'", dir);
   INFO(run.output);
   REQUIRE(run.exit_code == 0);
-  CHECK_THAT(run.output, Catch::Contains("3 members (3 separations h = 7 … 9 mm"));
+  CHECK_THAT(run.output, Catch::Contains("3 members (1 sizes × 3 separations h = 7 … 9 mm"));
   const auto file = rotorsweep::io::Hdf5Location::open_file(out.string());
   CHECK(file.attribute_flag("complete"));
   CHECK(file.attribute_string("kind") == "slider");
   CHECK(file.attribute_double("period") == Catch::Detail::Approx(2.0));
   const auto members = file.open_group("members");
   CHECK(members.read_doubles("friction").size() == 3);
+  CHECK(members.read_integers("columns") == std::vector<std::int64_t>{3, 3, 3});
   CHECK(members.shape("period_friction") == std::pair<hsize_t, hsize_t>{3, 1});
   CHECK(members.read_strings("status") == std::vector<std::string>{"ok", "ok", "ok"});
   std::vector<hsize_t> dims;

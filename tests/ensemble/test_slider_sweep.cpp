@@ -34,7 +34,7 @@ TEST_CASE("slider units: the experiment's energy and time scales", "[ensemble][s
   CHECK(units.energy == Approx(1e-7 * 4.57e-2 * 4.57e-2 / std::pow(16e-3, 3)));  // μ0 m²/(4π a³) = 5.10e-5 J
   CHECK(units.time == Approx(16e-3 / (2 * 3.141592653589793 * 8e-3)));           // a/(2π v) = 0.318 s
   CHECK(units.force == Approx(units.energy / 16e-3));
-  const auto lattice = substrate_lattice(SliderScene{}, 8e-3);
+  const auto lattice = substrate_lattice(SliderScene{}, {7, 7}, 8e-3);
   CHECK(lattice.x_offset == -14.0);  // substrate column 17 (the middle of 35) under slider column 3
   CHECK(lattice.depth == 0.5);
 }
@@ -74,6 +74,22 @@ TEST_CASE("slider scan: the mean friction converges with the tolerance and the t
   }
 }
 
+TEST_CASE("slider scan: sizes are a sweep axis", "[ensemble][slider]") {
+  const std::string two_sizes =
+      "[slider]\ncolumns = [2, 3]\nrows = [2, 2]\n[substrate]\ncolumns = 11\nrows = 11\n"
+      "[drive]\nrest = 0.5\nend = 2.5\n[sweep]\nseparation = [8e-3]\n[initial]\nreplicas = 2\n";
+  const auto both = scan(two_sizes);
+  REQUIRE(both.members.size() == 4);
+  CHECK(both.members[0].size == SliderSize{2, 2});
+  CHECK(both.members[3].size == SliderSize{3, 2});
+  CHECK(both.members[3].index.replica == 1);
+  for (const auto& m : both.members) CHECK(m.status == "ok");
+  CHECK(both.members[0].friction != both.members[2].friction);
+  const auto threaded = scan(two_sizes, 2);  // blocks of one size each, on two threads: the same bits
+  for (std::size_t k = 0; k < 4; ++k) CHECK(threaded.members[k].friction == both.members[k].friction);
+  CHECK(both.members[0].friction_series.size() == both.members[2].friction_series.size());
+}
+
 TEST_CASE("slider scan: one thread or two give the same bits", "[ensemble][slider]") {
   const auto one = scan(small_scene(), 1), two = scan(small_scene(), 2);
   for (std::size_t k = 0; k < one.members.size(); ++k) {
@@ -99,6 +115,12 @@ TEST_CASE("slider scenes: bad keys are named with what they must be", "[ensemble
   CHECK_THAT(message("[drive]\nrest = 2.0\nend = 1.0\n"), Catch::Contains("drive.end"));
   CHECK_THAT(message("[sweep]\nseparation = [0.1e-3]\n"), Catch::Contains("sweep.separation"));
   CHECK_THAT(message("[substrate]\nnodes_per_depth = 1\n"), Catch::Contains("from 2 to 1000"));
+  CHECK_THAT(message("[slider]\ncolumns = [3, 5]\nrows = [2, 2, 2]\n"), Catch::Contains("paired"));
+  CHECK_THAT(message("[slider]\ncolumns = [3, 3]\nrows = 2\n"), Catch::Contains("twice"));
+  CHECK_THAT(message("[slider]\ncolumns = 1\nrows = 1\n"), Catch::Contains("at least 2 rotors"));
+  CHECK_THAT(
+      message("[slider]\ncolumns = [3, 4]\n[sweep]\nseparation = [8e-3]\n[observables]\nangles = true\n"),
+      Catch::Contains("observables.angles"));
   CHECK_THAT(message("[model]\nrows = 3\n"), Catch::Contains("the scene sections are"));
   CHECK_THAT(message(""), Catch::Contains("sweep.separation") && Catch::Contains("is missing"));
   CHECK(message("[sweep]\nseparation = [8e-3]\n") ==
