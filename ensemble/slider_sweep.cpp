@@ -164,8 +164,12 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
     }
     m.order_x = count ? sum_x / double(count) : std::nan("");
     m.order_y = count ? sum_y / double(count) : std::nan("");
-    if (m.status != "ok") {
-      m.friction = std::nan("");
+    if (m.status != "ok") {  // a stopped lane's values would describe a frozen state: flag them all
+      const double nan = std::nan("");
+      m.friction = m.order_x = m.order_y = nan;
+      for (auto* period :
+           {&m.period_friction, &m.period_work, &m.period_dissipation, &m.period_stored, &m.period_balance})
+        std::fill(period->begin(), period->end(), nan);
     }
   }
 }

@@ -74,6 +74,17 @@ TEST_CASE("slider scan: the mean friction converges with the tolerance and the t
   }
 }
 
+TEST_CASE("slider scan: a member that runs out of steps is flagged and its values are NaN",
+          "[ensemble][slider]") {
+  const auto result = scan(small_scene("rtol = 1e-7\natol = 1e-7\nmax_steps = 50\n"));
+  for (const auto& m : result.members) {
+    CHECK(m.status == "step_budget");
+    CHECK(std::isnan(m.friction));
+    CHECK(std::isnan(m.order_x));
+    CHECK(std::isnan(m.period_balance.front()));
+  }
+}
+
 TEST_CASE("slider scan: sizes are a sweep axis", "[ensemble][slider]") {
   const std::string two_sizes =
       "[slider]\ncolumns = [2, 3]\nrows = [2, 2]\n[substrate]\ncolumns = 11\nrows = 11\n"
