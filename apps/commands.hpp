@@ -30,12 +30,16 @@ struct BenchGpuOptions {
 };
 int run_bench_gpu(const BenchGpuOptions& options);
 
-struct RunOptions {
+/// What every command that runs a scene file takes.
+struct SceneCommandOptions {
   std::string scene;
-  std::string output;                ///< overrides the scene's output.path
-  int threads = 0;                   ///< 0: OpenMP's default
-  bool quiet = false;                ///< no progress line
-  bool force = false;                ///< replace an existing file that is not an HDF5 file
+  std::string output;  ///< overrides the scene's output.path
+  int threads = 0;     ///< 0: OpenMP's default
+  bool quiet = false;  ///< no progress line
+  bool force = false;  ///< replace an existing file that is not an HDF5 file
+};
+
+struct RunOptions : SceneCommandOptions {
   std::string shard;                 ///< "I/N": run part I of N of the plan (ensemble::shard_members)
   bool resume = false;               ///< continue from OUTPUT.partial, left by an interrupted run
   double flush_seconds = 5;          ///< finished members go to the file at least this often ...
@@ -44,14 +48,7 @@ struct RunOptions {
 };
 int run_sweep_command(const RunOptions& options);
 
-struct SliderOptions {
-  std::string scene;
-  std::string output;  ///< overrides the scene's output.path
-  int threads = 0;     ///< 0: OpenMP's default
-  bool quiet = false;  ///< no progress line
-  bool force = false;  ///< replace an existing file that is not an HDF5 file
-};
-int run_slider(const SliderOptions& options);
+int run_slider(const SceneCommandOptions& options);
 
 struct MergeOptions {
   std::vector<std::string> shards;

@@ -46,15 +46,20 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   table_cmd->add_option("-o,--output", table.output, "Write the table as CSV to this file");
 
+  // the scene, -o, --threads, -q and --force of a command that runs a scene file
+  const auto add_scene_options = [](CLI::App* cmd, SceneCommandOptions& options, const char* scene_help,
+                                    const char* force_help) {
+    cmd->add_option("scene", options.scene, scene_help)->required();
+    cmd->add_option("-o,--output", options.output, "Result file (overrides the scene's output.path)");
+    cmd->add_option("--threads", options.threads, "OpenMP threads (default: all cores)")
+        ->check(CLI::Range(1, 4096));
+    cmd->add_flag("-q,--quiet", options.quiet, "No progress line");
+    cmd->add_flag("--force", options.force, force_help);
+  };
   RunOptions run;
   auto* run_cmd =
       app.add_subcommand("run", "Run the sweep a scene file describes and write its HDF5 result file");
-  run_cmd->add_option("scene", run.scene, "Scene file (TOML)")->required();
-  run_cmd->add_option("-o,--output", run.output, "Result file (overrides the scene's output.path)");
-  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::Range(1, 4096));
-  run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line");
-  run_cmd->add_flag("--force", run.force,
+  add_scene_options(run_cmd, run, "Scene file (TOML)",
                     "Replace an existing output file even if it is not an HDF5 file, or a partial file");
   run_cmd->add_flag("--resume", run.resume,
                     "Continue the run that stopped early (from OUT.h5.partial): same scene, same program");
@@ -73,16 +78,11 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--shard", run.shard,
                       "Run part I of N of the plan (I/N; members I-1, I-1+N, ...); `merge` joins the parts");
 
-  SliderOptions slider;
+  SceneCommandOptions slider;
   auto* slider_cmd = app.add_subcommand(
       "slider", "Run the experiment's many-body slider over the separations a slider scene describes");
-  slider_cmd->add_option("scene", slider.scene, "Slider scene file (TOML)")->required();
-  slider_cmd->add_option("-o,--output", slider.output, "Result file (overrides the scene's output.path)");
-  slider_cmd->add_option("--threads", slider.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::Range(1, 4096));
-  slider_cmd->add_flag("-q,--quiet", slider.quiet, "No progress line");
-  slider_cmd->add_flag("--force", slider.force,
-                       "Replace an existing output file even if it is not an HDF5 file");
+  add_scene_options(slider_cmd, slider, "Slider scene file (TOML)",
+                    "Replace an existing output file even if it is not an HDF5 file");
 
   InfoOptions info;
   MergeOptions merge;

@@ -21,7 +21,7 @@
 
 namespace rotorsweep::apps {
 
-int run_slider(const SliderOptions& options) {
+int run_slider(const SceneCommandOptions& options) {
   ensemble::SliderScene scene;
   try {
     scene = io::parse_slider_scene_file(options.scene);

@@ -55,14 +55,18 @@ hsize_t ResultFile::row_of(std::size_t plan_index) const {
   return shard_ ? (plan_index - (shard_->index - 1)) / shard_->count : plan_index;
 }
 
+void write_provenance(const Hdf5Location& file, const std::string& scene_text, const Provenance& provenance) {
+  file.set_attribute("scene", scene_text);
+  file.set_attribute("scene_path", provenance.scene_path);
+  file.set_attribute("version", provenance.version);
+  file.set_attribute("revision", provenance.revision);
+  file.set_attribute("device", provenance.device);
+  file.set_attribute("isa", provenance.isa);
+}
+
 void ResultFile::create(const Provenance& provenance) const {
   file_.set_flag("complete", false);
-  file_.set_attribute("scene", scene_.text);
-  file_.set_attribute("scene_path", provenance.scene_path);
-  file_.set_attribute("version", provenance.version);
-  file_.set_attribute("revision", provenance.revision);
-  file_.set_attribute("device", provenance.device);
-  file_.set_attribute("isa", provenance.isa);
+  write_provenance(file_, scene_.text, provenance);
   file_.set_attribute("plan_members", std::int64_t(scene_.member_count()));
   // every attribute written later exists from the start, so that writing it changes bytes in place
   file_.set_attribute("members_done", std::int64_t(0));

@@ -23,6 +23,10 @@ struct Provenance {
   std::string isa;       ///< instruction set of the sweeps' binary (ensemble::instruction_set), or a list
 };
 
+/// Writes the scene text and the provenance as attributes of a result file (scene, scene_path, version,
+/// revision, device, isa).
+void write_provenance(const Hdf5Location& file, const std::string& scene_text, const Provenance& provenance);
+
 /// Which part of a plan a shard file holds (ensemble::shard_members).
 struct ShardLabel {
   std::size_t index = 1, count = 1;  ///< part index of count, 1-based

@@ -82,12 +82,7 @@ void write_slider_result(const std::string& path, const ensemble::SliderScene& s
   auto file = Hdf5Location::create_file(path);
   const ensemble::SliderUnits units(scene);
   file.set_attribute("kind", std::string("slider"));
-  file.set_attribute("scene", scene.text);
-  file.set_attribute("scene_path", provenance.scene_path);
-  file.set_attribute("version", provenance.version);
-  file.set_attribute("revision", provenance.revision);
-  file.set_attribute("device", provenance.device);
-  file.set_attribute("isa", provenance.isa);
+  write_provenance(file, scene.text, provenance);
   file.set_attribute("period", result.period);
   file.set_attribute("spacing", scene.spacing);
   file.set_attribute("g", scene.damping / (units.energy * units.time));

@@ -66,6 +66,7 @@ TEST_CASE("every instruction set this machine runs writes the same result file b
   const struct {
     const char* name;
     std::string text;
+    const char* command = "run";
   } scenes[] = {
       {"rodas4", small_row_scene},
       {"rodas5p", small_row_scene + "[numerics]\nstepper = \"rodas5p\"\nrtol = 1e-8\natol = 1e-11\n"},
@@ -77,6 +78,10 @@ TEST_CASE("every instruction set this machine runs writes the same result file b
        "1\n"},
       {"disorder", small_row_scene + "[disorder]\nA = 0.01\nanisotropy = 0.01\nseed = 4\n"},
       {"thermal", small_row_scene + "[thermal]\ntemperature = 0.01\nseed = 5\n"},
+      {"slider",
+       "[slider]\ncolumns = [3, 2]\nrows = 2\n[substrate]\ncolumns = 9\nrows = 9\n[drive]\nrest = 0.5\nend = "
+       "2.5\n[sweep]\nseparation = [7e-3, 9e-3]\n[initial]\nreplicas = 5\n",
+       "slider"},
   };
   for (const auto& scene : scenes) {
     INFO(scene.name);
@@ -84,8 +89,9 @@ TEST_CASE("every instruction set this machine runs writes the same result file b
     std::vector<std::filesystem::path> files;
     for (const auto& isa : isas) {
       files.push_back(dir / (std::string(scene.name) + "-" + isa + ".h5"));
-      const auto run = run_cli("run -q '" + scene_path.string() + "' -o '" + files.back().string() + "'", dir,
-                               "ROTORSWEEP_ISA=" + isa + " ");
+      const auto run = run_cli(
+          std::string(scene.command) + " -q '" + scene_path.string() + "' -o '" + files.back().string() + "'",
+          dir, "ROTORSWEEP_ISA=" + isa + " ");
       INFO(run.output);
       REQUIRE(run.exit_code == 0);
       CHECK(Hdf5Location::open_file(files.back().string()).attribute_string("isa") == isa);

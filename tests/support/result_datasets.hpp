@@ -11,7 +11,8 @@ namespace rotorsweep::testing {
 
 inline std::vector<std::string> dataset_paths(const io::Hdf5Location& file) {
   std::vector<std::string> paths;
-  for (const std::string group : {"members", "members/periods", "curves", "curves/attractors"}) {
+  for (const std::string group :
+       {"members", "members/periods", "curves", "curves/attractors", "curve", "series"}) {
     if (!file.has(group)) continue;
     const auto location = file.open_group(group);
     for (const auto& name : location.members())
