@@ -101,7 +101,10 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.speed = drive.number("speed", scene.speed, "a number > 0 (m/s)", positive);
   scene.rest = drive.number("rest", scene.rest, "a number >= 0 (s)", [](double x) { return x >= 0; });
   scene.end = drive.number("end", scene.end, "a number > 0 (s)", positive);
-  if (scene.end <= scene.rest) fail(drive.key("end"), "must be later than drive.rest");
+  const double period = scene.spacing / scene.speed;
+  if (scene.end - scene.rest < period * (1 - 1e-9))
+    fail(drive.key("end"), "must leave at least one substrate period a/v = " + std::to_string(period) +
+                               " s of sliding after drive.rest (the friction is a mean over whole periods)");
   if (scene.end - scene.rest > 1e4 * scene.spacing / scene.speed)
     fail(drive.key("end"), "gives more than 10000 substrate periods of sliding");
 

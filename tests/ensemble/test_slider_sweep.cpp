@@ -124,6 +124,7 @@ TEST_CASE("slider scenes: bad keys are named with what they must be", "[ensemble
              Catch::Contains("slider.colums") && Catch::Contains("columns"));
   CHECK_THAT(message("[slider]\ndynamics = \"fast\"\n"), Catch::Contains("inertial, overdamped"));
   CHECK_THAT(message("[drive]\nrest = 2.0\nend = 1.0\n"), Catch::Contains("drive.end"));
+  CHECK_THAT(message("[drive]\nrest = 0.5\nend = 2.0\n"), Catch::Contains("at least one substrate period"));
   CHECK_THAT(message("[sweep]\nseparation = [0.1e-3]\n"), Catch::Contains("sweep.separation"));
   CHECK_THAT(message("[substrate]\nnodes_per_depth = 1\n"), Catch::Contains("from 2 to 1000"));
   CHECK_THAT(message("[slider]\ncolumns = [3, 5]\nrows = [2, 2, 2]\n"), Catch::Contains("paired"));

@@ -222,7 +222,7 @@ std::pair<std::vector<double>, double> dense_reference(const SubstrateLattice& l
   y.push_back(0.0);  // ∫F dt
   std::vector<double> k1(5), k2(5), k3(5), k4(5), tmp(5);
   // two legs, so that the start of sliding (a kink in ξ) falls on a step boundary
-  for (const auto [begin, end] : {std::pair{0.0, rest}, {rest, t1}}) {
+  for (const auto& [begin, end] : {std::pair{0.0, rest}, {rest, t1}}) {
     const auto steps = std::size_t(std::ceil((end - begin) / h));
     const double dt = (end - begin) / double(steps);
     for (std::size_t i = 0; i < steps; ++i) {
