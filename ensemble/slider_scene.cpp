@@ -59,10 +59,9 @@ double field_drive_amplitude(const SliderScene& scene, SliderSize size, double s
   return scene.substrate_moment / scene.moment * (std::abs(bx) + std::abs(bz)) / points;
 }
 
-kernels::SliderModel<double, true>::Parameters slider_parameters(const SliderScene& scene,
-                                                                 const kernels::SubstrateTable& table) {
+kernels::SliderParameters slider_parameters(const SliderScene& scene, const kernels::SubstrateTable& table) {
   const SliderUnits units(scene);
-  kernels::SliderModel<double, true>::Parameters p;
+  kernels::SliderParameters p;
   p.substrate = table.view();
   p.moment_ratio = scene.substrate_moment / scene.moment;
   p.inertia = scene.inertia / (units.energy * units.time * units.time);

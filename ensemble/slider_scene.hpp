@@ -95,8 +95,7 @@ double paper_drive_amplitude(const SliderScene& scene, double separation);
 double field_drive_amplitude(const SliderScene& scene, SliderSize size, double separation);
 
 /// One lane's scaled parameters over `table`.
-kernels::SliderModel<double, true>::Parameters slider_parameters(const SliderScene& scene,
-                                                                 const kernels::SubstrateTable& table);
+kernels::SliderParameters slider_parameters(const SliderScene& scene, const kernels::SubstrateTable& table);
 
 /// Where a member sits in the scene's plan: size-major, then separation, then replica.
 struct SliderMemberIndex {

@@ -77,8 +77,7 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
   kernels::LaneArena<V> arena(memory.data(), storage);
   Model model(grid, arena);
   for (std::size_t l = 0; l < W; ++l) {
-    const auto p = slider_parameters(scene, *tables[std::min(l, block.size() - 1)]);
-    model.set_lane(l, {p.substrate, p.moment_ratio, p.inertia, p.damping, p.speed, p.rest});
+    model.set_lane(l, slider_parameters(scene, *tables[std::min(l, block.size() - 1)]));
   }
   kernels::StepLimits limits;
   limits.h_max = kernels::two_pi / double(scene.samples_per_period);

@@ -293,12 +293,9 @@ Scene read_scene(const toml::table& root) {
          "diverges (D is the drive's work R; see docs/model.md §7)");
 
   const Section numerics = section(root, "numerics");
-  std::set<std::string> steppers(kernels::stepper_names.begin(), kernels::stepper_names.end());
-  scene.stepper = *kernels::parse_stepper(numerics.choice("stepper", "rodas4", steppers));
-  scene.rtol_values = numerics.numbers("rtol", scene.rtol_values, "a number from 1e-14 to 1e-2",
-                                       [](double x) { return x >= 1e-14 && x <= 1e-2; });
-  scene.atol_values = numerics.numbers("atol", scene.atol_values, "a number from 1e-16 to 1e-2",
-                                       [](double x) { return x >= 1e-16 && x <= 1e-2; });
+  scene.stepper = read_stepper(numerics);
+  scene.rtol_values = numerics.numbers("rtol", scene.rtol_values, rtol_range, valid_rtol);
+  scene.atol_values = numerics.numbers("atol", scene.atol_values, atol_range, valid_atol);
   if (scene.atol_values.size() == 1)
     scene.atol_values.assign(scene.rtol_values.size(), scene.atol_values.front());
   if (scene.atol_values.size() != scene.rtol_values.size())
@@ -306,8 +303,7 @@ Scene read_scene(const toml::table& root) {
                                    std::to_string(scene.rtol_values.size()) + " values, paired with them)");
   scene.h_max = numerics.number("h_max", scene.h_max, "a number > 0 and <= 2π (the drive period)",
                                 [](double x) { return x > 0 && x <= 6.283185307179586; });
-  scene.max_steps =
-      double(numerics.integer("max_steps", 100000000, "an integer >= 1", [](long long n) { return n >= 1; }));
+  scene.max_steps = read_max_steps(numerics);
   scene.controller = numerics.choice("controller", "integral", {"integral", "pi"}) == "pi"
                          ? kernels::StepController::pi
                          : kernels::StepController::integral;

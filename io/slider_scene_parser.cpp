@@ -8,7 +8,6 @@
 #include <set>
 
 #include "io/toml_section.hpp"
-#include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::io {
 
@@ -134,14 +133,10 @@ SliderScene read_slider_scene(const toml::table& root) {
     fail(observables.key("angles"), "needs a single slider size (each size has its own number of rotors)");
 
   const Section numerics = section(root, "numerics");
-  std::set<std::string> steppers(kernels::stepper_names.begin(), kernels::stepper_names.end());
-  scene.stepper = *kernels::parse_stepper(numerics.choice("stepper", "rodas4", steppers));
-  scene.rtol = numerics.number("rtol", scene.rtol, "a number from 1e-14 to 1e-2",
-                               [](double x) { return x >= 1e-14 && x <= 1e-2; });
-  scene.atol = numerics.number("atol", scene.atol, "a number from 1e-16 to 1e-2",
-                               [](double x) { return x >= 1e-16 && x <= 1e-2; });
-  scene.max_steps =
-      double(numerics.integer("max_steps", 100000000, "an integer >= 1", [](long long n) { return n >= 1; }));
+  scene.stepper = read_stepper(numerics);
+  scene.rtol = numerics.number("rtol", scene.rtol, rtol_range, valid_rtol);
+  scene.atol = numerics.number("atol", scene.atol, atol_range, valid_atol);
+  scene.max_steps = read_max_steps(numerics);
 
   const Section output = section(root, "output");
   scene.output_path = output.text("path", scene.output_path);

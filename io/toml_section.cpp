@@ -98,6 +98,16 @@ void check_sections(const toml::table& root,
   }
 }
 
+kernels::StepperId read_stepper(const Section& numerics) {
+  const std::set<std::string> names(kernels::stepper_names.begin(), kernels::stepper_names.end());
+  return *kernels::parse_stepper(numerics.choice("stepper", "rodas4", names));
+}
+
+double read_max_steps(const Section& numerics) {
+  return double(
+      numerics.integer("max_steps", 100000000, "an integer >= 1", [](long long n) { return n >= 1; }));
+}
+
 toml::table parse_toml(std::string_view text, std::string_view source) {
   try {
     return toml::parse(text, source);

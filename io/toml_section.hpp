@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "io/scene_parser.hpp"
+#include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::io {
 
@@ -136,6 +137,16 @@ inline Section section(const toml::table& root, const std::string& name) {
 /// single number, and the fallback when the key is absent.
 std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
                          bool (*valid)(double), const std::vector<double>& fallback = {});
+
+/// numerics.stepper: a name from the stepper list (default rodas4).
+kernels::StepperId read_stepper(const Section& numerics);
+/// The tolerances every scene allows, with the words its messages use.
+inline constexpr const char* rtol_range = "a number from 1e-14 to 1e-2";
+inline constexpr const char* atol_range = "a number from 1e-16 to 1e-2";
+inline bool valid_rtol(double x) { return x >= 1e-14 && x <= 1e-2; }
+inline bool valid_atol(double x) { return x >= 1e-16 && x <= 1e-2; }
+/// numerics.max_steps: attempted steps per member (default 1e8).
+double read_max_steps(const Section& numerics);
 
 /// Every top-level entry is a table named in `allowed`, and every key in it is allowed there.
 void check_sections(const toml::table& root, const std::map<std::string, std::set<std::string>>& allowed);

@@ -26,6 +26,16 @@ struct SliderGrid {
   std::size_t rotors() const { return columns * rows; }
 };
 
+/// One lane's parameters, scaled (the same for every lane type and both dynamics).
+struct SliderParameters {
+  SubstrateTableView substrate;  ///< the field along each row at this lane's separation
+  double moment_ratio = 1.1;     ///< μ = m_sub / m
+  double inertia = 1e-4;         ///< I (ignored when overdamped)
+  double damping = 0.1;          ///< γ
+  double speed = 0.0;            ///< v, in a per unit time
+  double rest = 0.0;             ///< t_rest, before which the slider stands still
+};
+
 /// Scaled units (docs/model.md §9): length a, energy μ0 m²/(4π a³), the substrate field in units of
 /// μ0 m_sub/(4π a³) times μ = m_sub/m. Per rotor r:
 ///   E = Σ_{r<q} (P c_r c_q + Q s_r s_q) − μ Σ_r (B_x c_r − B_z s_r),  τ_r = −∂E/∂θ_r,
@@ -42,14 +52,7 @@ class SliderModel {
   static constexpr std::array<bool, 3> error_controlled{true, false, false};
   static constexpr std::size_t impulse_index = 0, dissipation_index = 1;
 
-  struct Parameters {
-    SubstrateTableView substrate;  ///< the field along each row at this lane's separation
-    double moment_ratio = 1.1;     ///< μ = m_sub / m
-    double inertia = 1e-4;         ///< I (ignored when overdamped)
-    double damping = 0.1;          ///< γ
-    double speed = 0.0;            ///< v, in a per unit time
-    double rest = 0.0;             ///< t_rest, before which the slider stands still
-  };
+  using Parameters = SliderParameters;
 
   static constexpr std::size_t storage_size(std::size_t rotors) { return 2 * rotors * rotors; }
 
