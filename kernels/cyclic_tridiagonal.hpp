@@ -14,9 +14,12 @@ namespace rotorsweep::kernels {
 /// factorisation of shift·I - J. Link k couples rows k and (k+1) mod n: J(k, k+1) = J(k+1, k)
 /// = off[k]. With n = 2 both links couple rows 0 and 1 and their entries add up.
 ///
-/// The elimination keeps a spike in the last column and eliminates the corner of the last
-/// row front to back (no fill-in beyond two vectors, no pivoting). It is stable for the
-/// diagonally dominant and the symmetric positive definite matrices the steppers build near
+/// Two border rows, the middle row p = (n - 1)/2 and the last row m = n - 1, cut the ring into
+/// two plain tridiagonal chains, rows 0 .. p-1 and p+1 .. m-1. Each chain is eliminated on its
+/// own (no pivoting); a chain couples to the borders only at its two ends, so it adds one spike
+/// per border, and the borders are solved from their 2 × 2 Schur complement. The two chains are
+/// independent recurrences of half the length, so their latencies overlap. This is stable for
+/// the diagonally dominant and the symmetric positive definite matrices the steppers build near
 /// stable states; a vanishing pivot elsewhere yields non-finite stages, which the step
 /// controller rejects.
 ///
@@ -30,7 +33,7 @@ template <class V>
 class CyclicTridiagonal {
  public:
   using lane_type = V;
-  static constexpr std::size_t storage_size(std::size_t n) { return 6 * n; }
+  static constexpr std::size_t storage_size(std::size_t n) { return 7 * n; }
 
   ROTORSWEEP_HD CyclicTridiagonal(std::size_t n, LaneArena<V>& arena)
       : n_(n),
@@ -38,8 +41,9 @@ class CyclicTridiagonal {
         off_(arena.take(n)),
         inv_pivot_(arena.take(n)),
         upper_(arena.take(n)),
-        spike_(arena.take(n)),
-        corner_(arena.take(n)) {}
+        lower_(arena.take(n)),
+        spike_p_(arena.take(n)),
+        spike_m_(arena.take(n)) {}
 
   ROTORSWEEP_HD std::size_t size() const { return n_; }
   ROTORSWEEP_HD V& diag(std::size_t i) { return diag_[i]; }
@@ -68,29 +72,33 @@ class CyclicTridiagonal {
 
   /// Factorises M = shift·I - J for the following solve() calls.
   ROTORSWEEP_HD void factor(V shift) {
-    const std::size_t m = n_ - 1;  // index of the last row
-    // rows 0 .. m-1:  x_i + upper_i x_{i+1} + spike_i x_m = y_i
-    V d = shift - diag_[0];
-    inv_pivot_[0] = V(1.0) / d;
-    upper_[0] = lane_neg(off_[0]) * inv_pivot_[0];
-    spike_[0] = lane_neg(off_[m]) * inv_pivot_[0];
-    for (std::size_t i = 1; i < m; ++i) {
-      const V sub = lane_neg(off_[i - 1]);
-      d = shift - diag_[i] - sub * upper_[i - 1];
-      inv_pivot_[i] = V(1.0) / d;
-      upper_[i] = lane_neg(off_[i]) * inv_pivot_[i];
-      spike_[i] = lane_neg(sub) * spike_[i - 1] * inv_pivot_[i];
+    const std::size_t m = n_ - 1, p = m / 2;
+    // chain A (rows 0 .. p-1) couples to border m at row 0 and to border p at row p-1; chain B
+    // (rows p+1 .. m-1) to border p at row p+1 and to border m at row m-1
+    factor_chain(shift, 0, p);
+    factor_chain(shift, p + 1, m);
+    positive_definite_ = shift == shift;
+    for (std::size_t i = 0; i < p; ++i) positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
+    for (std::size_t i = p + 1; i < m; ++i) positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
+    spike_chain(0, p, m_side_of_a(), p_side_of_a(), spike_m_, spike_p_);
+    spike_chain(p + 1, m, p_side_of_b(), m_side_of_b(), spike_p_, spike_m_);
+
+    // Schur complement of the borders: S = M_BB - M_BI M_II⁻¹ M_IB, factorised as LDLᵀ
+    V s_pp = shift - diag_[p], s_mm = shift - diag_[m], s_pm = border_coupling();
+    if (p > 0) {
+      s_pp -= p_side_of_a() * spike_p_[p - 1];
+      s_mm -= m_side_of_a() * spike_m_[0];
+      s_pm -= p_side_of_a() * spike_m_[p - 1];
     }
-    spike_[m - 1] += upper_[m - 1];  // x_{(m-1)+1} is x_m itself
-    // last row: corner_k is the coefficient that multiplies x_k while x_0 .. x_{m-1} are eliminated
-    corner_[0] = lane_neg(off_[m]);
-    for (std::size_t k = 0; k + 2 <= m; ++k) corner_[k + 1] = lane_neg(corner_[k]) * upper_[k];
-    corner_[m - 1] -= off_[m - 1];
-    V beta = shift - diag_[m];
-    for (std::size_t k = 0; k < m; ++k) beta -= corner_[k] * spike_[k];
-    inv_pivot_[m] = V(1.0) / beta;
-    positive_definite_ = inv_pivot_[0] > V(0.0);
-    for (std::size_t i = 1; i < n_; ++i) positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
+    if (p + 1 < m) {
+      s_pp -= p_side_of_b() * spike_p_[p + 1];
+      s_mm -= m_side_of_b() * spike_m_[m - 1];
+      s_pm -= p_side_of_b() * spike_m_[p + 1];
+    }
+    inv_pivot_[p] = V(1.0) / s_pp;
+    border_multiplier_ = s_pm * inv_pivot_[p];
+    inv_pivot_[m] = V(1.0) / (s_mm - border_multiplier_ * s_pm);
+    positive_definite_ = positive_definite_ & (inv_pivot_[p] > V(0.0)) & (inv_pivot_[m] > V(0.0));
 
     circulant_ = keep_constant_;
     if (lane_any(circulant_))
@@ -101,18 +109,29 @@ class CyclicTridiagonal {
 
   /// Solves M x = r in place (r becomes x), with M from the last factor().
   ROTORSWEEP_HD void solve(V* r) const {
-    const std::size_t m = n_ - 1;
+    const std::size_t m = n_ - 1, p = m / 2;
     const V r0 = r[0];
     lane_mask<V> constant = circulant_;
     if (lane_any(constant))
       for (std::size_t i = 1; i < n_; ++i) constant = constant & (r[i] == r0);
-    r[0] *= inv_pivot_[0];
-    for (std::size_t i = 1; i < m; ++i) r[i] = (r[i] + off_[i - 1] * r[i - 1]) * inv_pivot_[i];
-    V rho = r[m];
-    for (std::size_t k = 0; k < m; ++k) rho -= corner_[k] * r[k];
-    r[m] = rho * inv_pivot_[m];
-    r[m - 1] -= spike_[m - 1] * r[m];
-    for (std::size_t i = m - 1; i-- > 0;) r[i] -= upper_[i] * r[i + 1] + spike_[i] * r[m];
+    solve_chain(r, 0, p);
+    solve_chain(r, p + 1, m);
+    // borders: g = r_B - M_BI z, then the 2 × 2 LDLᵀ solve
+    V g_p = r[p], g_m = r[m];
+    if (p > 0) {
+      g_p -= p_side_of_a() * r[p - 1];
+      g_m -= m_side_of_a() * r[0];
+    }
+    if (p + 1 < m) {
+      g_p -= p_side_of_b() * r[p + 1];
+      g_m -= m_side_of_b() * r[m - 1];
+    }
+    const V x_m = (g_m - border_multiplier_ * g_p) * inv_pivot_[m];
+    const V x_p = g_p * inv_pivot_[p] - border_multiplier_ * x_m;
+    r[p] = x_p;
+    r[m] = x_m;
+    for (std::size_t i = 0; i < p; ++i) r[i] -= spike_p_[i] * x_p + spike_m_[i] * x_m;
+    for (std::size_t i = p + 1; i < m; ++i) r[i] -= spike_p_[i] * x_p + spike_m_[i] * x_m;
     if (lane_any(constant)) {
       const V x = r0 * constant_inverse_;
       for (std::size_t i = 0; i < n_; ++i) r[i] = lane_select(constant, x, r[i]);
@@ -120,9 +139,64 @@ class CyclicTridiagonal {
   }
 
  private:
+  // Entries of M that couple a chain's end rows to the borders (M = shift·I - J).
+  ROTORSWEEP_HD V m_side_of_a() const { return lane_neg(off_[n_ - 1]); }          // M(0, m)
+  ROTORSWEEP_HD V p_side_of_a() const { return lane_neg(off_[(n_ - 1) / 2 - 1]); }  // M(p-1, p)
+  ROTORSWEEP_HD V p_side_of_b() const { return lane_neg(off_[(n_ - 1) / 2]); }      // M(p+1, p)
+  ROTORSWEEP_HD V m_side_of_b() const { return lane_neg(off_[n_ - 2]); }            // M(m-1, m)
+  /// M(p, m): the links that join the borders directly (chain B empty, chain A empty, or both).
+  ROTORSWEEP_HD V border_coupling() const {
+    const std::size_t m = n_ - 1, p = m / 2;
+    V c(0.0);
+    if (p + 1 == m) c -= off_[p];
+    if (p == 0) c -= off_[m];
+    return c;
+  }
+
+  /// LU of the plain tridiagonal chain rows [first, end): pivots d_i = shift - diag_i -
+  /// off_{i-1}² / d_{i-1}, upper_i = -off_i / d_i, lower_i = off_{i-1} / d_i.
+  ROTORSWEEP_HD void factor_chain(V shift, std::size_t first, std::size_t end) {
+    if (first >= end) return;
+    inv_pivot_[first] = V(1.0) / (shift - diag_[first]);
+    for (std::size_t i = first + 1; i < end; ++i) {
+      const V coupling_squared = off_[i - 1] * off_[i - 1];
+      inv_pivot_[i] = V(1.0) / ((shift - diag_[i]) - coupling_squared * inv_pivot_[i - 1]);
+      lower_[i] = off_[i - 1] * inv_pivot_[i];
+    }
+    for (std::size_t i = first; i + 1 < end; ++i) upper_[i] = lane_neg(off_[i]) * inv_pivot_[i];
+  }
+
+  /// The chain's spikes: T⁻¹ (c_first e_first) into `from_first` and T⁻¹ (c_last e_last) into
+  /// `from_last`, over rows [first, end).
+  ROTORSWEEP_HD void spike_chain(std::size_t first, std::size_t end, V c_first, V c_last, V* from_first,
+                                 V* from_last) const {
+    if (first >= end) return;
+    const std::size_t last = end - 1;
+    from_first[first] = c_first * inv_pivot_[first];
+    for (std::size_t i = first + 1; i < end; ++i) from_first[i] = lower_[i] * from_first[i - 1];
+    for (std::size_t i = first; i < last; ++i) from_last[i] = V(0.0);
+    from_last[last] = c_last * inv_pivot_[last];
+    for (std::size_t i = last; i-- > first;) {
+      from_first[i] -= upper_[i] * from_first[i + 1];
+      from_last[i] -= upper_[i] * from_last[i + 1];
+    }
+  }
+
+  /// z = T⁻¹ r over the chain rows [first, end), in place: one multiply and one add per row on
+  /// each substitution's dependency chain.
+  ROTORSWEEP_HD void solve_chain(V* r, std::size_t first, std::size_t end) const {
+    if (first >= end) return;
+    for (std::size_t i = first; i < end; ++i) r[i] *= inv_pivot_[i];
+    for (std::size_t i = first + 1; i < end; ++i) r[i] += lower_[i] * r[i - 1];
+    for (std::size_t i = end - 1; i-- > first;) r[i] -= upper_[i] * r[i + 1];
+  }
+
   std::size_t n_;
   V *diag_, *off_;
-  V *inv_pivot_, *upper_, *spike_, *corner_;
+  V *inv_pivot_;  ///< 1 / pivot per row; at the borders p and m, of the Schur complement's LDLᵀ
+  V *upper_, *lower_;  ///< the chains' LU multipliers
+  V *spike_p_, *spike_m_;  ///< per chain row, M_II⁻¹ times the column of border p, of border m
+  V border_multiplier_ = V(0.0);  ///< S_pm / S_pp
   lane_mask<V> positive_definite_{};
   lane_mask<V> keep_constant_{};  ///< lanes marked by keep_constant_solutions()
   lane_mask<V> circulant_{};      ///< marked lanes whose rows are all equal

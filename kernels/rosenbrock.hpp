@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
 
 #include "kernels/host_device.hpp"
 #include "kernels/lane.hpp"
@@ -52,45 +53,12 @@ class RosenbrockStepper {
   /// and the embedded estimate shares the error); such a lane must retry with a smaller h.
   ROTORSWEEP_HD lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new,
                                      V* q_new, V* y_error, V* q_error) {
-    constexpr RosenbrockTableau T = Table;  // device code reads a local copy, never the host object
-    const std::size_t n = n_;
     system.linearize(work_, y, t, f_, qdot_, jacobian_, df_dt_, dq_dy_, dq_dt_);
-    const V h_gamma = h * V(T.gamma);
-    const V inv_h = V(1.0) / h;
-    jacobian_.factor(V(1.0) / h_gamma);
-
-    for (int i = 0; i < T.stages; ++i) {
-      if (i > 0) {
-        for (std::size_t k = 0; k < n; ++k) argument_[k] = y[k];
-        for (int j = 0; j < i; ++j) {
-          if (T.a[i][j] == 0.0) continue;
-          const V* u = stage(j);
-          const V a(T.a[i][j]);
-          for (std::size_t k = 0; k < n; ++k) argument_[k] += a * u[k];
-        }
-        system.evaluate(work_, argument_, t + V(T.alpha[i]) * h, f_, qdot_);
-      }
-      V* u = stage(i);
-      const V time_weight = V(T.gamma_sum[i]) * h;
-      for (std::size_t k = 0; k < n; ++k) u[k] = f_[k] + time_weight * df_dt_[k];
-      for (int j = 0; j < i; ++j) {
-        const V cj = V(T.c[i][j]) * inv_h;
-        const V* uj = stage(j);
-        for (std::size_t k = 0; k < n; ++k) u[k] += cj * uj[k];
-      }
-      jacobian_.solve(u);
-
-      for (std::size_t p = 0; p < nq; ++p) {
-        const V* grad = dq_dy_ + p * n;
-        V sum = qdot_[p] + time_weight * dq_dt_[p];
-        for (std::size_t k = 0; k < n; ++k) sum += grad[k] * u[k];
-        for (int j = 0; j < i; ++j) sum += V(T.c[i][j]) * inv_h * quad_stages_[std::size_t(j) * nq + p];
-        quad_stages_[std::size_t(i) * nq + p] = h_gamma * sum;
-      }
-    }
-
-    combine(y, n, stages_, n, y_new, y_error);
-    combine(q, nq, quad_stages_, nq, q_new, q_error);
+    const StageScalars scalars{t, h, h * V(Table.gamma), V(1.0) / h};
+    jacobian_.factor(V(1.0) / scalars.h_gamma);
+    run_stages(system, scalars, y, std::make_integer_sequence<int, Table.stages>{});
+    combine(y, n_, stages_, n_, y_new, y_error, std::make_integer_sequence<int, Table.stages>{});
+    combine(q, nq, quad_stages_, nq, q_new, q_error, std::make_integer_sequence<int, Table.stages>{});
     if constexpr (JacobianWithInertia<typename System::Jacobian>)
       return jacobian_.positive_definite();
     else
@@ -98,19 +66,103 @@ class RosenbrockStepper {
   }
 
  private:
+  // The stage loops are unrolled at compile time: every tableau coefficient is a literal, zero
+  // coefficients cost nothing, and each stage reads and writes its vectors once (one pass over
+  // the components sums all earlier stages), with the same order of additions as the formulas.
+
+  struct StageScalars {
+    V t, h, h_gamma, inv_h;
+  };
+
+  template <int... I>
+  ROTORSWEEP_HD void run_stages(const System& system, const StageScalars& s, const V* y,
+                                std::integer_sequence<int, I...>) {
+    (run_stage<I>(system, s, y, std::make_integer_sequence<int, I>{}), ...);
+  }
+
+  /// Stage I: evaluate f at y + Σ a_Ij U_j, form its right-hand side, solve for U_I.
+  template <int I, int... J>
+  ROTORSWEEP_HD void run_stage(const System& system, const StageScalars& s, const V* y,
+                               std::integer_sequence<int, J...>) {
+    const std::size_t n = n_;
+    if constexpr (I > 0) {
+      for (std::size_t k = 0; k < n; ++k) {
+        V sum = y[k];
+        ((sum = add_argument_term<I, J>(sum, k)), ...);
+        argument_[k] = sum;
+      }
+      constexpr double alpha = Table.alpha[I];
+      system.evaluate(work_, argument_, s.t + V(alpha) * s.h, f_, qdot_);
+    }
+    constexpr double gamma_sum = Table.gamma_sum[I];
+    const V time_weight = V(gamma_sum) * s.h;
+    [[maybe_unused]] const V weight[sizeof...(J) + 1] = {stage_weight<I, J>(s.inv_h)..., V(0.0)};
+    V* u = stage(I);
+    for (std::size_t k = 0; k < n; ++k) {
+      V sum = f_[k] + time_weight * df_dt_[k];
+      ((sum += weight[J] * stages_[std::size_t(J) * n + k]), ...);
+      u[k] = sum;
+    }
+    jacobian_.solve(u);
+
+    for (std::size_t p = 0; p < nq; ++p) {
+      const V* grad = dq_dy_ + p * n;
+      V sum = qdot_[p] + time_weight * dq_dt_[p];
+      for (std::size_t k = 0; k < n; ++k) sum += grad[k] * u[k];
+      ((sum += weight[J] * quad_stages_[std::size_t(J) * nq + p]), ...);
+      quad_stages_[std::size_t(I) * nq + p] = s.h_gamma * sum;
+    }
+  }
+
+  /// sum + a_IJ U_J[k], or sum where a_IJ = 0.
+  template <int I, int J>
+  ROTORSWEEP_HD V add_argument_term(V sum, std::size_t k) const {
+    constexpr double a = Table.a[I][J];
+    if constexpr (a == 0.0)
+      return sum;
+    else
+      return sum + V(a) * stages_[std::size_t(J) * n_ + k];
+  }
+
+  /// c_IJ / h, the weight of U_J in stage I's right-hand side.
+  template <int I, int J>
+  ROTORSWEEP_HD static V stage_weight(V inv_h) {
+    constexpr double c = Table.c[I][J];
+    return V(c) * inv_h;
+  }
+
+  /// sum + m_I u, or sum where m_I = 0.
+  template <int I>
+  ROTORSWEEP_HD static V add_solution_term(V sum, const V& u) {
+    constexpr double m = Table.m[I];
+    if constexpr (m == 0.0)
+      return sum;
+    else
+      return sum + V(m) * u;
+  }
+
+  /// sum + e_I u, or sum where e_I = 0.
+  template <int I>
+  ROTORSWEEP_HD static V add_error_term(V sum, const V& u) {
+    constexpr double e = Table.e[I];
+    if constexpr (e == 0.0)
+      return sum;
+    else
+      return sum + V(e) * u;
+  }
+
   ROTORSWEEP_HD V* stage(int i) { return stages_ + std::size_t(i) * n_; }
 
+  /// result = start + Σ m_i U_i and error = Σ e_i U_i over `count` components.
+  template <int... I>
   ROTORSWEEP_HD static void combine(const V* start, std::size_t count, const V* stages, std::size_t stride,
-                                    V* result, V* error) {
-    constexpr RosenbrockTableau T = Table;
+                                    V* result, V* error, std::integer_sequence<int, I...>) {
     for (std::size_t k = 0; k < count; ++k) {
       V sum = start[k];
       V err(0.0);
-      for (int i = 0; i < T.stages; ++i) {
-        const V u = stages[std::size_t(i) * stride + k];
-        if (T.m[i] != 0.0) sum += V(T.m[i]) * u;
-        if (T.e[i] != 0.0) err += V(T.e[i]) * u;
-      }
+      ((sum = add_solution_term<I>(sum, stages[std::size_t(I) * stride + k]),
+        err = add_error_term<I>(err, stages[std::size_t(I) * stride + k])),
+       ...);
       result[k] = sum;
       error[k] = err;
     }
