@@ -79,7 +79,8 @@ class CyclicTridiagonal {
     factor_chain(shift, p + 1, m);
     positive_definite_ = shift == shift;
     for (std::size_t i = 0; i < p; ++i) positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
-    for (std::size_t i = p + 1; i < m; ++i) positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
+    for (std::size_t i = p + 1; i < m; ++i)
+      positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
     spike_chain(0, p, m_side_of_a(), p_side_of_a(), spike_m_, spike_p_);
     spike_chain(p + 1, m, p_side_of_b(), m_side_of_b(), spike_p_, spike_m_);
 
@@ -140,7 +141,7 @@ class CyclicTridiagonal {
 
  private:
   // Entries of M that couple a chain's end rows to the borders (M = shift·I - J).
-  ROTORSWEEP_HD V m_side_of_a() const { return lane_neg(off_[n_ - 1]); }          // M(0, m)
+  ROTORSWEEP_HD V m_side_of_a() const { return lane_neg(off_[n_ - 1]); }            // M(0, m)
   ROTORSWEEP_HD V p_side_of_a() const { return lane_neg(off_[(n_ - 1) / 2 - 1]); }  // M(p-1, p)
   ROTORSWEEP_HD V p_side_of_b() const { return lane_neg(off_[(n_ - 1) / 2]); }      // M(p+1, p)
   ROTORSWEEP_HD V m_side_of_b() const { return lane_neg(off_[n_ - 2]); }            // M(m-1, m)
@@ -193,8 +194,8 @@ class CyclicTridiagonal {
 
   std::size_t n_;
   V *diag_, *off_;
-  V *inv_pivot_;  ///< 1 / pivot per row; at the borders p and m, of the Schur complement's LDLᵀ
-  V *upper_, *lower_;  ///< the chains' LU multipliers
+  V* inv_pivot_;           ///< 1 / pivot per row; at the borders p and m, of the Schur complement's LDLᵀ
+  V *upper_, *lower_;      ///< the chains' LU multipliers
   V *spike_p_, *spike_m_;  ///< per chain row, M_II⁻¹ times the column of border p, of border m
   V border_multiplier_ = V(0.0);  ///< S_pm / S_pp
   lane_mask<V> positive_definite_{};

@@ -1,5 +1,6 @@
 // Tests of the cyclic tridiagonal solve (kernels/cyclic_tridiagonal.hpp) against a dense
-// Eigen LU on the same matrix, for every size down to the two-row case.
+// Eigen LU on the same matrix, for every size down to the two-row case (where the two-chain
+// elimination has no chains) and for chains of equal and unequal length.
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <random>
@@ -28,7 +29,7 @@ Eigen::MatrixXd dense_jacobian(const CyclicTridiagonal<double>& J) {
 TEST_CASE("cyclic tridiagonal solve matches a dense LU", "[kernels][linear]") {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (std::size_t n : {2u, 3u, 4u, 5u, 8u, 20u, 64u}) {
+  for (std::size_t n : {2u, 3u, 4u, 5u, 6u, 7u, 8u, 20u, 21u, 64u}) {  // both chains empty, one, uneven, even
     for (double shift : {3.0, 40.0, 1e4}) {
       auto J = rotorsweep::testing::jacobian<CyclicTridiagonal<double>>(n);
       for (std::size_t k = 0; k < n; ++k) {
