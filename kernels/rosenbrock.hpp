@@ -131,24 +131,14 @@ class RosenbrockStepper {
     return V(c) * inv_h;
   }
 
-  /// sum + m_I u, or sum where m_I = 0.
-  template <int I>
-  ROTORSWEEP_HD static V add_solution_term(V sum, const V& u) {
-    constexpr double m = Table.m[I];
-    if constexpr (m == 0.0)
+  /// sum + m_I u (the solution) or sum + e_I u (the error estimate), or sum where that weight is 0.
+  template <int I, bool Error>
+  ROTORSWEEP_HD static V add_combination_term(V sum, const V& u) {
+    constexpr double weight = Error ? Table.e[I] : Table.m[I];
+    if constexpr (weight == 0.0)
       return sum;
     else
-      return sum + V(m) * u;
-  }
-
-  /// sum + e_I u, or sum where e_I = 0.
-  template <int I>
-  ROTORSWEEP_HD static V add_error_term(V sum, const V& u) {
-    constexpr double e = Table.e[I];
-    if constexpr (e == 0.0)
-      return sum;
-    else
-      return sum + V(e) * u;
+      return sum + V(weight) * u;
   }
 
   ROTORSWEEP_HD V* stage(int i) { return stages_ + std::size_t(i) * n_; }
@@ -160,8 +150,8 @@ class RosenbrockStepper {
     for (std::size_t k = 0; k < count; ++k) {
       V sum = start[k];
       V err(0.0);
-      ((sum = add_solution_term<I>(sum, stages[std::size_t(I) * stride + k]),
-        err = add_error_term<I>(err, stages[std::size_t(I) * stride + k])),
+      ((sum = add_combination_term<I, false>(sum, stages[std::size_t(I) * stride + k]),
+        err = add_combination_term<I, true>(err, stages[std::size_t(I) * stride + k])),
        ...);
       result[k] = sum;
       error[k] = err;
