@@ -77,10 +77,6 @@ class CyclicTridiagonal {
     // (rows p+1 .. m-1) to border p at row p+1 and to border m at row m-1
     factor_chain(shift, 0, p);
     factor_chain(shift, p + 1, m);
-    positive_definite_ = shift == shift;
-    for (std::size_t i = 0; i < p; ++i) positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
-    for (std::size_t i = p + 1; i < m; ++i)
-      positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
     spike_chain(0, p, m_side_of_a(), p_side_of_a(), spike_m_, spike_p_);
     spike_chain(p + 1, m, p_side_of_b(), m_side_of_b(), spike_p_, spike_m_);
 
@@ -99,7 +95,9 @@ class CyclicTridiagonal {
     inv_pivot_[p] = V(1.0) / s_pp;
     border_multiplier_ = s_pm * inv_pivot_[p];
     inv_pivot_[m] = V(1.0) / (s_mm - border_multiplier_ * s_pm);
-    positive_definite_ = positive_definite_ & (inv_pivot_[p] > V(0.0)) & (inv_pivot_[m] > V(0.0));
+    // every row's pivot is now set: the chains' and the Schur complement's (rows p and m)
+    positive_definite_ = inv_pivot_[0] > V(0.0);
+    for (std::size_t i = 1; i < n_; ++i) positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
 
     circulant_ = keep_constant_;
     if (lane_any(circulant_))
