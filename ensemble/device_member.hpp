@@ -73,7 +73,7 @@ struct DeviceMember {
       record_quadratures<Q>(
           record, [&](std::size_t p) { return state.quad[p]; }, Model::period);
       if constexpr (Q.alignment) alignment.end_period(0, record);
-      if constexpr (Q.drive) swing.end_period(0, s.rtol, s.atol, record);
+      if constexpr (Q.drive) swing.end_period(0, s.error_rtol, s.atol, record);
       if (s.slips) slips.end_period(0, record);
       double* end = slots.end_states + (k * 4 + std::size_t(periods % 4)) * n;
       for (std::size_t j = 0; j < n; ++j) end[j] = state.theta[j];

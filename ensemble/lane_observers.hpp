@@ -63,23 +63,26 @@ class SlipObserver {
   bool enabled_;
 };
 
-/// The swing of the dissipation integral (channel dissipation_error) at the member's tolerances.
+/// The swing of the dissipation integral (channel dissipation_error) at the member's tolerances;
+/// error_rtol is rtol times the stepper's swing_error_factor.
 template <class Loop>
 class DissipationErrorObserver {
  public:
   using V = typename Loop::V;
-  DissipationErrorObserver(double rtol, double atol) : rtol_(rtol), atol_(atol) {}
+  DissipationErrorObserver(double error_rtol, double atol) : error_rtol_(error_rtol), atol_(atol) {}
 
   void start(Loop&, std::size_t lane) { swing_.start_lane(lane); }
   void before_step(Loop&) {}
   void after_step(Loop& loop, kernels::lane_mask<V> accepted) {
     swing_.accumulate(accepted, loop.state().quad[Loop::model_type::integrals.drive_index()]);
   }
-  void end_period(std::size_t lane, PeriodRecord& record) { swing_.end_period(lane, rtol_, atol_, record); }
+  void end_period(std::size_t lane, PeriodRecord& record) {
+    swing_.end_period(lane, error_rtol_, atol_, record);
+  }
 
  private:
   DissipationSwing<V> swing_;
-  double rtol_, atol_;
+  double error_rtol_, atol_;
 };
 
 }  // namespace rotorsweep::ensemble

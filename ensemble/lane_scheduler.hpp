@@ -21,6 +21,7 @@
 #include "ensemble/row_profile_observer.hpp"
 #include "ensemble/scene.hpp"
 #include "kernels/angles.hpp"
+#include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -28,7 +29,7 @@ namespace rotorsweep::ensemble {
 /// dissipation's error estimate where it integrates R with error control (the slip counter is
 /// always there; at T > 0 the error of D is statistical and comes from the periods, see finish()).
 template <class Loop>
-auto quadrature_observers(const Member& variant) {
+auto quadrature_observers(const Scene& scene, const Member& variant) {
   constexpr kernels::Integrals Q = Loop::model_type::integrals;
   const auto alignment = [] {
     if constexpr (Q.alignment)
@@ -38,7 +39,8 @@ auto quadrature_observers(const Member& variant) {
   };
   const auto dissipation = [&] {
     if constexpr (Q.drive && !Loop::stochastic)
-      return std::tuple(DissipationErrorObserver<Loop>(variant.rtol, variant.atol));
+      return std::tuple(DissipationErrorObserver<Loop>(
+          swing_error_factor(kernels::stepper_names[scene.stepper]) * variant.rtol, variant.atol));
     else
       return std::tuple<>();
   };
@@ -73,7 +75,7 @@ class LaneScheduler {
         setup_(std::move(setup)),
         settings_(integrator_settings<Integrator>(scene, variant)),
         loop_(variant.rows, settings_),
-        observers_(quadrature_observers<Loop>(variant)),
+        observers_(quadrature_observers<Loop>(scene, variant)),
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
         profiles_(variant.rows, scene.row_profiles),
         lanes_(width) {}
@@ -256,7 +258,8 @@ class LaneScheduler {
   Setup setup_;
   typename Loop::Settings settings_;
   Loop loop_;
-  decltype(quadrature_observers<Loop>(std::declval<const Member&>())) observers_;
+  decltype(quadrature_observers<Loop>(std::declval<const Scene&>(),
+                                      std::declval<const Member&>())) observers_;
   SlipObserver<Loop> slips_;
   RowProfileObserver<Loop> profiles_;
   std::vector<Lane> lanes_;

@@ -24,6 +24,7 @@ struct SlotSchedule {
   bool slips = false;  ///< the slip counter is on
   double slip_rate = 0;
   double rtol = 0, atol = 0, h_max = 0, max_steps = 0;
+  double error_rtol = 0;  ///< rtol × the stepper's swing_error_factor (channel dissipation_error)
   kernels::StepController controller = kernels::StepController::integral;
   double first_step_scale = 0;      ///< computed on the host (kernels::AdaptiveIntegrator)
   std::size_t record_capacity = 0;  ///< period records a slot keeps (a ring)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string_view>
 
 #include "ensemble/member_result.hpp"
 #include "kernels/host_device.hpp"
@@ -53,10 +54,12 @@ struct SlipCounter {
     kernels::lane_set(count, lane, 0.0);
     kernels::lane_set(fast, lane, 0.0);
   }
-  ROTORSWEEP_HD void set_rate(std::size_t lane, double slip_rate) { kernels::lane_set(rate, lane, slip_rate); }
+  ROTORSWEEP_HD void set_rate(std::size_t lane, double slip_rate) {
+    kernels::lane_set(rate, lane, slip_rate);
+  }
 
   ROTORSWEEP_HD void accumulate(kernels::lane_mask<V> accepted, std::size_t rows, const V* theta_before,
-                  const V* theta_after, V dt) {
+                                const V* theta_after, V dt) {
     V largest(0.0);
     for (std::size_t j = 0; j < rows; ++j)
       largest = kernels::lane_max(largest, kernels::lane_abs(theta_after[j] - theta_before[j]));
@@ -73,9 +76,16 @@ struct SlipCounter {
   }
 };
 
+/// How many times rtol max_t |R(t)| the error of R_k reaches with a stepper: 3 for rodas5p, whose
+/// error estimate is the least pessimistic (its actual error of D reached 2.5 times rtol · swing),
+/// 1 for the others (at most 1.0 at rtol <= 1e-6); measured by scripts/bench/error_calibration.py,
+/// table in docs/numerics.md "The error of D".
+inline double swing_error_factor(std::string_view stepper) { return stepper == "rodas5p" ? 3.0 : 1.0; }
+
 /// The error of a period's dissipation R_k. The step control holds the local error of the running
 /// integral R(t) below atol + rtol |R(t)|, and R(t) swings far above its final value R_k (D is a
-/// small remainder of that swing), so the error of R_k is estimated as rtol max_t |R(t)| + atol.
+/// small remainder of that swing), so the error of R_k is estimated as error_rtol max_t |R(t)| +
+/// atol, with error_rtol = swing_error_factor(stepper) · rtol.
 template <class V>
 struct DissipationSwing {
   V swing = V(0.0);  ///< max |R(t)| at the accepted step points of the current period
@@ -87,8 +97,8 @@ struct DissipationSwing {
         kernels::lane_select(accepted, kernels::lane_max(swing, kernels::lane_abs(running_integral)), swing);
   }
 
-  ROTORSWEEP_HD void end_period(std::size_t lane, double rtol, double atol, PeriodRecord& record) {
-    record[Channel::dissipation_error] = rtol * kernels::lane_get(swing, lane) + atol;
+  ROTORSWEEP_HD void end_period(std::size_t lane, double error_rtol, double atol, PeriodRecord& record) {
+    record[Channel::dissipation_error] = error_rtol * kernels::lane_get(swing, lane) + atol;
     start_lane(lane);
   }
 };

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The benchmark harness end to end on a few members (no timing is checked): our steppers and
-# scipy's Radau from the same starts both land near the stored reference, and the report is written.
+# scipy's Radau from the same starts both land near the stored reference, and the report is written;
+# the error calibration of D on a few members: rodas5p's reported error bounds its actual error.
 # Usage: bench_smoke.sh ROTORSWEEP SOURCE_DIR SCRATCH_DIR
 set -euo pipefail
 rs=$1 src=$2 work=$3
@@ -21,4 +22,15 @@ for method, bound in (("rodas4", 1e-3), ("rodas4p2", 1e-3), ("Radau", 3e-6)):
     error = float(rows[method]["median_error"])
     assert error < bound, f"{method}: median error {error} against the reference"
 print("bench harness ok:", {m: float(r["median_error"]) for m, r in rows.items()})
+CHECK
+$py "$src/scripts/bench/error_calibration.py" --rotorsweep "$rs" --workdir "$work/calibration" --count 8 \
+  --steppers rodas5p > "$work/calibration.md"
+$py - "$work/calibration.md" <<'CHECK'
+import sys
+rows = [line.split("|")[1:-1] for line in open(sys.argv[1]) if line.startswith("| rodas5p")]
+assert len(rows) == 6, rows
+for row in rows:
+    ratio, missed = float(row[5]), int(row[8])
+    assert ratio <= 1 and missed == 0, f"rodas5p at g {row[1]}, rtol {row[2]}: max ratio {ratio}, {missed} missed"
+print("error calibration ok:", [float(r[5]) for r in rows])
 CHECK
