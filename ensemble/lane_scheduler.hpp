@@ -40,7 +40,7 @@ auto quadrature_observers(const Scene& scene, const Member& variant) {
   const auto dissipation = [&] {
     if constexpr (Q.drive && !Loop::stochastic)
       return std::tuple(DissipationErrorObserver<Loop>(
-          swing_error_factor(kernels::stepper_names[scene.stepper]) * variant.rtol, variant.atol));
+          kernels::stepper_swing_error_factors[scene.stepper] * variant.rtol, variant.atol));
     else
       return std::tuple<>();
   };

@@ -6,7 +6,6 @@
 
 #include "ensemble/member_plan.hpp"
 #include "ensemble/member_summary.hpp"
-#include "ensemble/step_reducers.hpp"
 #include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -23,7 +22,7 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   s.slip_rate = scene.slip_rate;
   s.rtol = variant.rtol;
   s.atol = variant.atol;
-  s.error_rtol = swing_error_factor(kernels::stepper_names[scene.stepper]) * variant.rtol;
+  s.error_rtol = kernels::stepper_swing_error_factors[scene.stepper] * variant.rtol;
   s.h_max = scene.h_max;
   s.max_steps = scene.max_steps;
   s.controller = scene.controller;

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstddef>
-#include <string_view>
 
 #include "ensemble/member_result.hpp"
 #include "kernels/host_device.hpp"
@@ -76,16 +75,10 @@ struct SlipCounter {
   }
 };
 
-/// How many times rtol max_t |R(t)| the error of R_k reaches with a stepper: 3 for rodas5p, whose
-/// error estimate is the least pessimistic (its actual error of D reached 2.5 times rtol · swing),
-/// 1 for the others (at most 1.0 at rtol <= 1e-6); measured by scripts/bench/error_calibration.py,
-/// table in docs/numerics.md "The error of D".
-inline double swing_error_factor(std::string_view stepper) { return stepper == "rodas5p" ? 3.0 : 1.0; }
-
 /// The error of a period's dissipation R_k. The step control holds the local error of the running
 /// integral R(t) below atol + rtol |R(t)|, and R(t) swings far above its final value R_k (D is a
 /// small remainder of that swing), so the error of R_k is estimated as error_rtol max_t |R(t)| +
-/// atol, with error_rtol = swing_error_factor(stepper) · rtol.
+/// atol, with error_rtol = κ · rtol and κ the stepper's swing_error_factor (kernels/stepper_list.hpp).
 template <class V>
 struct DissipationSwing {
   V swing = V(0.0);  ///< max |R(t)| at the accepted step points of the current period

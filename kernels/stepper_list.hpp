@@ -20,10 +20,15 @@ RosenbrockStepper<System, T> stepper_family_of(const RosenbrockTableau&);
 template <LaneModel System, const ExplicitTableau& T>
 DormandPrince5<System> stepper_family_of(const ExplicitTableau&);
 
-/// One entry of the list: `type<System>` is the stepper on a model.
-template <const auto& Tableau>
+/// One entry of the list: `type<System>` is the stepper on a model. `swing_error_factor` κ is how
+/// many times rtol · max_t |R(t)| the error of a period's dissipation reaches with this stepper
+/// (the channel dissipation_error, docs/numerics.md "The error of D", measured by
+/// scripts/bench/error_calibration.py): 3 for rodas5p, whose error estimate is the least
+/// pessimistic (its error of D reached 2.5 times rtol · swing), 1 for the others.
+template <const auto& Tableau, double SwingErrorFactor = 1.0>
 struct StepperEntry {
   static constexpr std::string_view name = Tableau.name;
+  static constexpr double swing_error_factor = SwingErrorFactor;
   template <class System>
   using type = decltype(stepper_family_of<System, Tableau>(Tableau));
 };
@@ -32,14 +37,16 @@ template <class... Entries>
 struct StepperList {
   static constexpr std::size_t size = sizeof...(Entries);
   static constexpr std::array<std::string_view, size> names{Entries::name...};
+  static constexpr std::array<double, size> swing_error_factors{Entries::swing_error_factor...};
 };
 
 // Adding a stepper: its tableau, and one entry here (the build makes a translation unit per entry).
 using steppers = StepperList<StepperEntry<rodas4_tableau>, StepperEntry<ros2_tableau>,
                              StepperEntry<dormand_prince5_tableau>, StepperEntry<rodas4p2_tableau>,
-                             StepperEntry<rodas5p_tableau>>;
+                             StepperEntry<rodas5p_tableau, 3.0>>;
 
 inline constexpr auto stepper_names = steppers::names;
+inline constexpr auto stepper_swing_error_factors = steppers::swing_error_factors;
 
 /// Position of a stepper in the list (its identity in scenes and dispatch).
 using StepperId = std::size_t;
