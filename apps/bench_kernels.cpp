@@ -1,6 +1,6 @@
 // `rotorsweep bench kernels`: single-thread throughput of the kernels, scalar and SIMD: RHS
-// evaluations, the bare vectorised sincos that bounds them, step attempts per stepper, and the
-// cost of per-row disorder (docs/model.md §7) on both.
+// evaluations (at a new point and at a stage's displacement), the bare vectorised sincos that
+// bounds them, step attempts per stepper, and the cost of per-row disorder (docs/model.md §7).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -68,17 +68,26 @@ struct BenchDisorder {
   }
 };
 
+/// RHS evaluations per second at a new point, or (displaced) at a Rosenbrock stage's distance
+/// 1e-3 from the last linearisation point, where each sincos comes by angle addition.
 template <class V>
-double rhs_rate(std::size_t rows, int repeats, bool disordered = false) {
+double rhs_rate(std::size_t rows, int repeats, bool disordered = false, bool displaced = false) {
   using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
-  lane_vector<V> storage(Model::storage_size(rows) + Model::Workspace::storage_size(rows));
+  lane_vector<V> storage(Model::storage_size(rows) + Model::Workspace::storage_size(rows) +
+                         Model::Jacobian::storage_size(rows));
   kernels::LaneArena<V> arena(storage.data(), storage.size());
   const Model model(rows, arena, BenchDisorder(rows, disordered).parameters<typename Model::Parameters>());
   typename Model::Workspace work(rows, arena);
+  typename Model::Jacobian jacobian(rows, arena);
   auto theta = afm_angles<V>(rows);
-  lane_vector<V> f(rows), q(2);
+  lane_vector<V> f(rows), q(2), df_dt(rows), dq_dtheta(2 * rows), dq_dt(2), delta(rows, V(1e-3));
+  model.linearize(work, theta.data(), V(0.3), f.data(), q.data(), jacobian, df_dt.data(), dq_dtheta.data(),
+                  dq_dt.data());
   return median_rate(repeats, double(kernels::lane_width<V>), [&] {
-    model.evaluate(work, theta.data(), V(0.3), f.data(), q.data());
+    if (displaced)
+      model.evaluate_displaced(work, theta.data(), delta.data(), V(0.3), V(1e-3), f.data(), q.data());
+    else
+      model.evaluate(work, theta.data(), V(0.3), f.data(), q.data());
     sink = kernels::lane_get(f[0], 0);
   });
 }
@@ -119,8 +128,9 @@ int run_bench_kernels(const BenchKernelOptions& options) {
   const auto rows = std::size_t(options.rows);
   const auto W = kernels::lane_width<simd_lane>;
   const auto isa = ensemble::instruction_set();
-  std::printf("rotorsweep bench kernels: N = %zu rows, SIMD width %zu doubles (%s, %s), 1 thread, median of %d\n",
-              rows, W, isa.name.c_str(), isa.simd.c_str(), options.repeats);
+  std::printf(
+      "rotorsweep bench kernels: N = %zu rows, SIMD width %zu doubles (%s, %s), 1 thread, median of %d\n",
+      rows, W, isa.name.c_str(), isa.simd.c_str(), options.repeats);
   const double sincos = sincos_rate(rows, options.repeats);
   const double bound = sincos / double(rows + 1);  // an RHS needs N + 1 sincos
   const double scalar = rhs_rate<double>(rows, options.repeats);
@@ -130,6 +140,9 @@ int run_bench_kernels(const BenchKernelOptions& options) {
   std::printf("  RHS scalar                  %12.4g evaluations/s (%.2f of bound)\n", scalar, scalar / bound);
   std::printf("  RHS SIMD                    %12.4g evaluations/s (%.2f of bound, %.1fx scalar)\n", simd,
               simd / bound, simd / scalar);
+  const double stage = rhs_rate<simd_lane>(rows, options.repeats, false, true);
+  std::printf("  stage RHS SIMD (displaced)  %12.4g evaluations/s (%.2f of bound, %.2fx RHS)\n", stage,
+              stage / bound, stage / simd);
   for (std::size_t k = 0; k < kernels::stepper_names.size(); ++k) {
     const double s = step_rate<double>(k, rows, options.repeats);
     const double v = step_rate<simd_lane>(k, rows, options.repeats);

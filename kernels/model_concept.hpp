@@ -70,6 +70,16 @@ concept LaneModel = requires(const M& model, M& mutable_model, typename M::Works
   model.linearize(work, y, t, out, out, jacobian, out, out, out);
 };
 
+/// A model that evaluates at a small displacement from the point of its last linearize() on the
+/// same workspace more cheaply than at a new point: evaluate_displaced(work, y, δ, t, τ, f, qdot)
+/// is evaluate() at (y + δ, t + τ), where (y, t) is that point (a Rosenbrock stage argument).
+template <class M>
+concept EvaluatesDisplaced = LaneModel<M> &&
+    requires(const M& model, typename M::Workspace& work, const typename M::lane_type* y,
+             typename M::lane_type* out, typename M::lane_type t) {
+  model.evaluate_displaced(work, y, y, t, t, out, out);
+};
+
 /// A model that reports the alignment ρ̄ and the energy H of a state (docs/model.md §3).
 template <class M>
 concept ReportsAlignmentAndEnergy = LaneModel<M> &&

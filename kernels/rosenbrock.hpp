@@ -80,19 +80,24 @@ class RosenbrockStepper {
     (run_stage<I>(system, s, y, std::make_integer_sequence<int, I>{}), ...);
   }
 
-  /// Stage I: evaluate f at y + Σ a_Ij U_j, form its right-hand side, solve for U_I.
+  /// Stage I: evaluate f at y + Σ a_Ij U_j, form its right-hand side, solve for U_I. A model that
+  /// EvaluatesDisplaced gets the displacement Σ a_Ij U_j from the step's start instead.
   template <int I, int... J>
   ROTORSWEEP_HD void run_stage(const System& system, const StageScalars& s, const V* y,
                                std::integer_sequence<int, J...>) {
     const std::size_t n = n_;
     if constexpr (I > 0) {
+      constexpr double alpha = Table.alpha[I];
+      constexpr bool displaced = EvaluatesDisplaced<System>;
       for (std::size_t k = 0; k < n; ++k) {
-        V sum = y[k];
+        V sum = displaced ? V(0.0) : y[k];
         ((sum = add_argument_term<I, J>(sum, k)), ...);
         argument_[k] = sum;
       }
-      constexpr double alpha = Table.alpha[I];
-      system.evaluate(work_, argument_, s.t + V(alpha) * s.h, f_, qdot_);
+      if constexpr (displaced)
+        system.evaluate_displaced(work_, y, argument_, s.t, V(alpha) * s.h, f_, qdot_);
+      else
+        system.evaluate(work_, argument_, s.t + V(alpha) * s.h, f_, qdot_);
     }
     constexpr double gamma_sum = Table.gamma_sum[I];
     const V time_weight = V(gamma_sum) * s.h;
@@ -161,7 +166,9 @@ class RosenbrockStepper {
   std::size_t n_;
   typename System::Workspace work_;
   typename System::Jacobian jacobian_;
-  V *f_, *df_dt_, *argument_, *stages_;
+  V *f_, *df_dt_;
+  V* argument_;  ///< a stage's argument y + Σ a_Ij U_j, or its displacement Σ a_Ij U_j from y
+  V* stages_;
   V *dq_dy_, *qdot_, *dq_dt_, *quad_stages_;
 };
 

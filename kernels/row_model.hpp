@@ -7,6 +7,7 @@
 
 #include "kernels/angles.hpp"
 #include "kernels/cyclic_tridiagonal.hpp"
+#include "kernels/displaced_sincos.hpp"
 #include "kernels/host_device.hpp"
 #include "kernels/integrals.hpp"
 #include "kernels/lane.hpp"
@@ -22,7 +23,8 @@ namespace rotorsweep::kernels {
 /// (b_j couples rows j and j+1). A, g and the deviations are per lane; all deviations zero is the
 /// uniform model with the same bits (a factor 1 multiplies exactly). Every evaluation takes one
 /// sincos per row and one for the drive phase; all other trigonometry follows from sums
-/// and products of those.
+/// and products of those. A Rosenbrock stage, close to the step's start, gets its sincos from
+/// those of the start by angle addition (evaluate_displaced).
 ///
 /// Scratch lives in a Workspace, the per-row factors in storage_size(N) lane values of
 /// caller-owned storage. It satisfies LaneModel (kernels/model_concept.hpp).
@@ -54,7 +56,7 @@ class NearestNeighbourRows {
   static constexpr std::size_t storage_size(std::size_t n) { return 3 * n; }
 
   struct Workspace {
-    static constexpr std::size_t storage_size(std::size_t n) { return 8 * n; }
+    static constexpr std::size_t storage_size(std::size_t n) { return 10 * n; }
     ROTORSWEEP_HD Workspace(std::size_t n, LaneArena<V>& arena)
         : sin_row(arena.take(n)),
           cos_row(arena.take(n)),
@@ -63,12 +65,17 @@ class NearestNeighbourRows {
           sin_link(arena.take(n)),
           cos_link(arena.take(n)),
           product(arena.take(n)),
-          weighted_lag(arena.take(n)) {}
-    V *sin_row, *cos_row;    // sin θ_j, cos θ_j
-    V *sin_lag, *cos_lag;    // sin(θ_j - t), cos(θ_j - t)
-    V *sin_link, *cos_link;  // sin(θ_j - θ_{j+1}), cos(θ_j - θ_{j+1})
-    V* product;              // J·v products for the integrand gradients
-    V* weighted_lag;         // (1 + δ_j) sin(θ_j - t)
+          weighted_lag(arena.take(n)),
+          start_sin_row(arena.take(n)),
+          start_cos_row(arena.take(n)) {}
+    V *sin_row, *cos_row;                          // sin θ_j, cos θ_j
+    V *sin_lag, *cos_lag;                          // sin(θ_j - t), cos(θ_j - t)
+    V *sin_link, *cos_link;                        // sin(θ_j - θ_{j+1}), cos(θ_j - θ_{j+1})
+    V* product;                                    // J·v products for the integrand gradients
+    V* weighted_lag;                               // (1 + δ_j) sin(θ_j - t)
+    V *start_sin_row, *start_cos_row;              // sin θ_j, cos θ_j at the last linearize()
+    V sin_t = V(0.0), cos_t = V(0.0);              // sin t, cos t
+    V start_sin_t = V(0.0), start_cos_t = V(0.0);  // at the last linearize()
   };
 
   /// A uniform model (every factor 1) over storage_size(rows) values of `arena`.
@@ -118,6 +125,16 @@ class NearestNeighbourRows {
       evaluate_rows<true>(w, theta, t, f, qdot);
     else
       evaluate_rows<false>(w, theta, t, f, qdot);
+  }
+
+  /// evaluate() at (θ + δ, t + τ), where (θ, t) is the point of the last linearize() on `w`: each
+  /// sincos comes from the one at (θ, t) by angle addition (kernels/displaced_sincos.hpp).
+  ROTORSWEEP_HD void evaluate_displaced(Workspace& w, const V* theta, const V* delta, V t, V tau, V* f,
+                                        V* qdot) const {
+    if (disordered_)
+      evaluate_displaced_rows<true>(w, theta, delta, t, tau, f, qdot);
+    else
+      evaluate_displaced_rows<false>(w, theta, delta, t, tau, f, qdot);
   }
 
   /// evaluate() plus the Jacobian J = ∂f/∂θ, ∂f/∂t, and the gradients of the integrands
@@ -189,6 +206,18 @@ class NearestNeighbourRows {
   }
 
   template <bool per_row>
+  ROTORSWEEP_HD void evaluate_displaced_rows(Workspace& w, const V* theta, const V* delta, V t, V tau, V* f,
+                                             V* qdot) const {
+    lane_sincos_displaced(t, tau, w.start_sin_t, w.start_cos_t, w.sin_t, w.cos_t);
+    trigonometry_from<per_row>(w, [&](std::size_t j) {
+      lane_sincos_displaced(theta[j], delta[j], w.start_sin_row[j], w.start_cos_row[j], w.sin_row[j],
+                            w.cos_row[j]);
+    });
+    torques<per_row>(w, f);
+    integrands<per_row>(w, f, qdot);
+  }
+
+  template <bool per_row>
   ROTORSWEEP_HD void linearize_rows(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt,
                                     V* dq_dtheta, V* dq_dt) const {
     evaluate_rows<per_row>(w, theta, t, f, qdot);
@@ -205,15 +234,28 @@ class NearestNeighbourRows {
     }
     J.keep_constant_solutions(strict_fm_ != V(0.0));
     integrand_gradients<per_row>(w, f, J, df_dt, dq_dtheta, dq_dt);
+    for (std::size_t j = 0; j < n; ++j) {  // the start of evaluate_displaced()
+      w.start_sin_row[j] = w.sin_row[j];
+      w.start_cos_row[j] = w.cos_row[j];
+    }
+    w.start_sin_t = w.sin_t;
+    w.start_cos_t = w.cos_t;
   }
 
   template <bool per_row>
   ROTORSWEEP_HD void trigonometry(Workspace& w, const V* theta, V t) const {
+    lane_sincos(t, w.sin_t, w.cos_t);
+    trigonometry_from<per_row>(w, [&](std::size_t j) { lane_sincos(theta[j], w.sin_row[j], w.cos_row[j]); });
+  }
+
+  /// The lags and links from w.sin_t, w.cos_t and each row's sincos, which row_sincos(j) writes
+  /// to w.sin_row[j], w.cos_row[j].
+  template <bool per_row, class RowSincos>
+  ROTORSWEEP_HD void trigonometry_from(Workspace& w, RowSincos&& row_sincos) const {
     const std::size_t n = rows_;
-    V sin_t, cos_t;
-    lane_sincos(t, sin_t, cos_t);
+    const V sin_t = w.sin_t, cos_t = w.cos_t;
     for (std::size_t j = 0; j < n; ++j) {
-      lane_sincos(theta[j], w.sin_row[j], w.cos_row[j]);
+      row_sincos(j);
       w.sin_lag[j] = w.sin_row[j] * cos_t - w.cos_row[j] * sin_t;
       w.cos_lag[j] = w.cos_row[j] * cos_t + w.sin_row[j] * sin_t;
       if constexpr (per_row) w.weighted_lag[j] = A_row_[j] * w.sin_lag[j];

@@ -1,7 +1,7 @@
 // Tests of the row model (kernels/row_model.hpp, docs/model.md §1, §3, §7): the Jacobian, ∂f/∂t and
 // the integrand gradients against central differences, uniform and with per-row disorder;
 // f = -∇H/g; N = 2 is the two-angle H_r; the disordered equations written out; zero deviations
-// give the uniform model's bits.
+// give the uniform model's bits; a displaced stage evaluation agrees with evaluate().
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -143,6 +143,48 @@ TEST_CASE("a lane with zero deviations beside a disordered lane keeps the unifor
     for (std::size_t k = 0; k < nq * n; ++k) CHECK(lane_get(dq_dy_v[k], l) == dq_dy[k]);
   }
   CHECK(lane_get(f_v[0], 0) != f[0]);  // lane 0 is disordered
+}
+
+TEST_CASE("a stage evaluation displaced from the linearisation point is evaluate() there",
+          "[kernels][model]") {
+  // within the Taylor reach to rounding; beyond it (every |δ| > 1/16) the same bits, since then each
+  // sincos is lane_sincos(θ_j + δ_j) and lane_sincos(t + τ)
+  const std::size_t n = 20;
+  const double t = 7.9;
+  const Deviations d(n);
+  for (bool disordered : {false, true})
+    for (double size : {1e-9, 3e-3, 0.06, 0.3}) {
+      INFO("disordered " << disordered << ", |delta| up to " << size);
+      const auto m = disordered ? rotorsweep::testing::model<Model>(n, d.parameters(4.3, 0.01))
+                                : rotorsweep::testing::model<Model>(n, 4.3, 0.01);
+      const auto theta = random_angles(n, 17);
+      std::vector<double> delta(n), moved(n);
+      for (std::size_t j = 0; j < n; ++j) {
+        delta[j] = size * (j % 2 ? 1.0 : -1.0) * (0.5 + 0.5 * std::fabs(std::sin(double(j))));
+        if (size > displaced_sincos_reach) delta[j] = std::copysign(size, delta[j]);
+        moved[j] = theta[j] + delta[j];
+      }
+      const double tau = -0.7 * size;
+      auto w = rotorsweep::testing::workspace(m);
+      auto J = rotorsweep::testing::jacobian<Model::Jacobian>(n);
+      std::vector<double> f(n), q(nq), df_dt(n), dq_dy(nq * n), dq_dt(nq);
+      m.linearize(w, theta.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
+      m.evaluate_displaced(w, theta.data(), delta.data(), t, tau, f.data(), q.data());
+      const auto e = evaluate(m, moved, t + tau);
+      const double scale = (4.3 * 1.3 + 6.0) / 0.01;  // bound on |f|
+      for (std::size_t j = 0; j < n; ++j) {
+        if (size > displaced_sincos_reach)
+          CHECK(f[j] == e.f[j]);
+        else
+          CHECK(std::fabs(f[j] - e.f[j]) <= 1e-14 * scale);
+      }
+      for (std::size_t p = 0; p < nq; ++p) {
+        if (size > displaced_sincos_reach)
+          CHECK(q[p] == e.q[p]);
+        else
+          CHECK(q[p] == Approx(e.q[p]).epsilon(1e-12).margin(1e-12));
+      }
+    }
 }
 
 TEST_CASE("two rows reduce to the two-angle landscape H_r and its alignment", "[kernels][model]") {
