@@ -87,6 +87,9 @@ class CoupledRows {
 
   ROTORSWEEP_HD std::size_t dimension() const { return rows_; }
   ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
+  ROTORSWEEP_HD static constexpr StateScale quadrature_scale(std::size_t p) {
+    return row_quadrature_scale<Q>(p);
+  }
 
   ROTORSWEEP_HD void evaluate(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
     trigonometry(w, theta, t);

@@ -11,10 +11,12 @@
 
 namespace rotorsweep::kernels {
 
-/// How the error of one state component is measured against the tolerances: angles (and other
-/// quantities that live on a fixed scale) absolutely, s = atol + rtol; velocities and other
-/// components that can be large relatively, s = atol + rtol·max(|y|, |y_new|).
-enum class StateScale { absolute, relative };
+/// How the error of one state component or quadrature is measured against the tolerances: angles
+/// (and other quantities that live on a fixed scale) absolutely, s = atol + rtol; velocities and
+/// other components that can be large relatively, s = atol + rtol·max(|y|, |y_new|); a quantity
+/// whose wanted accuracy does not grow with its running value relatively but never more loosely
+/// than absolutely (capped_relative), s = atol + rtol·min(1, max(|y|, |y_new|)).
+enum class StateScale { absolute, relative, capped_relative };
 
 /// The Jacobian of a model, one per lane, and the solve of the stage matrix M = shift·I - J.
 template <class J>
@@ -44,6 +46,7 @@ concept JacobianWithInertia = LaneJacobian<J> && requires(const J& factored) {
 ///   integrals       the quadratures it carries (quadrature_count of them, in Integrals order)
 ///   error_controlled[p]: which quadratures steer the step
 ///   scale(k)        how component k's error is weighted
+///   quadrature_scale(p)  how quadrature p's error is weighted, where it steers the step
 ///   evaluate        f and the quadrature integrands at (y, t)
 ///   linearize       evaluate() plus J, ∂f/∂t and the integrands' gradients
 template <class M>
@@ -65,6 +68,7 @@ concept LaneModel = requires(const M& model, M& mutable_model, typename M::Works
   & > ;
   { model.dimension() } -> std::same_as<std::size_t>;
   { model.scale(k) } -> std::same_as<StateScale>;
+  { model.quadrature_scale(k) } -> std::same_as<StateScale>;
   mutable_model.set_lane(k, parameters);
   model.evaluate(work, y, t, out, out);
   model.linearize(work, y, t, out, out, jacobian, out, out, out);

@@ -118,6 +118,9 @@ class NearestNeighbourRows {
   ROTORSWEEP_HD std::size_t dimension() const { return rows_; }
   /// Every state component is an angle: its error is measured absolutely.
   ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
+  ROTORSWEEP_HD static constexpr StateScale quadrature_scale(std::size_t p) {
+    return row_quadrature_scale<Q>(p);
+  }
 
   /// f = dθ/dt and the quadrature integrands qdot at (θ, t).
   ROTORSWEEP_HD void evaluate(Workspace& w, const V* theta, V t, V* f, V* qdot) const {

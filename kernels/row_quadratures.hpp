@@ -1,5 +1,5 @@
-// The quadratures the row models share (docs/model.md §3): which of them steer the step, the
-// integrands of R, W, S, ρ̄, H and their gradients, written once for every row model.
+// The quadratures the row models share (docs/model.md §3): which of them steer the step and how
+// their errors are weighed, the integrands of R, W, S, ρ̄, H and their gradients, for every row model.
 #pragma once
 
 #include <array>
@@ -8,6 +8,7 @@
 #include "kernels/host_device.hpp"
 #include "kernels/integrals.hpp"
 #include "kernels/lane.hpp"
+#include "kernels/model_concept.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -21,6 +22,15 @@ constexpr std::array<bool, Q.count() + 1> row_error_controlled() {
   if constexpr (Q.alignment) c[Q.alignment_index()] = true;
   if constexpr (Q.energy) c[Q.energy_index()] = true;
   return c;
+}
+
+/// How a steering quadrature's error is weighed (docs/numerics.md "The error of D"): R relatively
+/// but never more loosely than the angles (capped_relative), since D is a small remainder of R's
+/// swing over a period and a tolerance relative to |R(t)| follows the swing, not D; ρ̄ and H
+/// relatively.
+template <Integrals Q>
+ROTORSWEEP_HD constexpr StateScale row_quadrature_scale(std::size_t p) {
+  return Q.drive && p == Q.drive_index() ? StateScale::capped_relative : StateScale::relative;
 }
 
 /// The integrands at one point: R = A Σ lag_j, W = A Σ lag_j f_j, S = g Σ f_j², and ρ̄ and H from

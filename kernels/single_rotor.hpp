@@ -47,6 +47,10 @@ class SingleRotor {
   }
   ROTORSWEEP_HD std::size_t dimension() const { return 1; }
   ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
+  /// R is weighed as the row models' R (kernels/row_quadratures.hpp).
+  ROTORSWEEP_HD static constexpr StateScale quadrature_scale(std::size_t) {
+    return StateScale::capped_relative;
+  }
 
   ROTORSWEEP_HD void evaluate(Workspace&, const V* theta, V t, V* f, V* qdot) const {
     V s, c;

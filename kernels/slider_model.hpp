@@ -108,6 +108,7 @@ class SliderModel {
   ROTORSWEEP_HD std::size_t rotors() const { return n_; }
   ROTORSWEEP_HD std::size_t dimension() const { return Inertial ? 2 * n_ : n_; }
   ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
+  ROTORSWEEP_HD static constexpr StateScale quadrature_scale(std::size_t) { return StateScale::relative; }
 
   /// ξ(t), the slider's displacement.
   ROTORSWEEP_HD V displacement(V t) const { return speed_ * lane_max(V(0.0), t - rest_); }

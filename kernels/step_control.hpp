@@ -30,9 +30,19 @@ struct StepLimits {
   StepController controller = StepController::integral;
 };
 
-/// sqrt(mean((e_i / s_i)²)) over the state components (s by the model's scale(): absolute
-/// s = atol + rtol, relative s = atol + rtol·max(|y|, |y_new|)) and the quadratures flagged in
-/// `controlled` (s = atol + rtol·max(|q|, |q_new|)).
+/// e / s for an error e of a component that went from y to y_new, with s by `kind` (StateScale);
+/// absolute_scale_inv = 1 / (atol + rtol).
+template <class V>
+ROTORSWEEP_HD V scaled_error(StateScale kind, const Tolerances& tol, const V& absolute_scale_inv,
+                             const V& error, const V& y, const V& y_new) {
+  if (kind == StateScale::absolute) return error * absolute_scale_inv;
+  V size = lane_max(lane_abs(y), lane_abs(y_new));
+  if (kind == StateScale::capped_relative) size = lane_min(size, V(1.0));
+  return error / (V(tol.atol) + V(tol.rtol) * size);
+}
+
+/// sqrt(mean((e_i / s_i)²)) over the state components (s by the model's scale()) and the
+/// quadratures flagged in `controlled` (s by the model's quadrature_scale()); see StateScale.
 template <class Model, class V>
 ROTORSWEEP_HD V error_norm(const Model& model, const Tolerances& tol, const V* y, const V* y_new,
                            const V* y_error, const bool* controlled, const V* q, const V* q_new,
@@ -41,19 +51,14 @@ ROTORSWEEP_HD V error_norm(const Model& model, const Tolerances& tol, const V* y
   const V absolute_scale_inv(1.0 / (tol.atol + tol.rtol));
   V sum(0.0);
   for (std::size_t k = 0; k < n; ++k) {
-    V r;
-    if (model.scale(k) == StateScale::absolute)
-      r = y_error[k] * absolute_scale_inv;
-    else
-      r = y_error[k] / (V(tol.atol) + V(tol.rtol) * lane_max(lane_abs(y[k]), lane_abs(y_new[k])));
+    const V r = scaled_error(model.scale(k), tol, absolute_scale_inv, y_error[k], y[k], y_new[k]);
     sum += r * r;
   }
   std::size_t terms = n;
   for (std::size_t p = 0; p < Model::quadrature_count; ++p) {
     if (!controlled[p]) continue;
     ++terms;
-    const V scale = V(tol.atol) + V(tol.rtol) * lane_max(lane_abs(q[p]), lane_abs(q_new[p]));
-    const V r = q_error[p] / scale;
+    const V r = scaled_error(model.quadrature_scale(p), tol, absolute_scale_inv, q_error[p], q[p], q_new[p]);
     sum += r * r;
   }
   return lane_sqrt(sum * V(1.0 / double(terms)));

@@ -2,8 +2,10 @@
 """Work-precision report: error of D against the stored reference (relative; max and median over
 the members whose reference regime is not CP, CP members separately) against wall time per
 member, for every method and tolerance in the given CSVs (ours.py, peers.py, cvode_members).
-Writes a log-log plot, a CSV table per (method, rtol), and the speed ratios at matched error
-(each method's time over the fastest of our steppers at that error).
+Writes a log-log plot, a CSV table per (method, rtol), the speed ratios at matched error (each
+method's time over the fastest of our steppers at that error), and our steppers' step attempts per
+member at matched error: a cost that does not depend on the machine or its load, for comparing
+settings of one stepper (the cost of an attempt differs between steppers).
 Usage: work_precision.py REFERENCE.csv OUT_DIR RESULTS.csv [RESULTS.csv ...]"""
 import csv
 import os
@@ -40,7 +42,9 @@ def summarise(reference, rows):
             e = abs(D / D_ref - 1) if np.isfinite(D) else np.inf
             err["CP" if truth["regime"] == "CP" else "settled"].append(e)
         seconds = np.median([float(r["seconds"]) for r in members])
+        attempts = np.mean([float(r["steps"]) for r in members]) if "steps" in members[0] else np.nan
         table.append(dict(method=method, rtol=rtol, members=len(members), seconds_per_member=seconds,
+                          attempts_per_member=attempts,
                           max_error=max(err["settled"], default=np.nan),
                           median_error=float(np.median(err["settled"])) if err["settled"] else np.nan,
                           cp_median_error=float(np.median(err["CP"])) if err["CP"] else np.nan,
@@ -49,8 +53,9 @@ def summarise(reference, rows):
 
 
 def time_at_error(points, target):
-    """Time per member at max error = target, interpolated in log-log between ladder rungs
-    (the cheapest rung reaching the target if none is above it); None if never reached."""
+    """Cost (time or attempts) per member at error = target, interpolated in log-log between
+    ladder rungs (the cheapest rung reaching the target if none is above it); None if never
+    reached."""
     points = sorted((e, t) for e, t in points if np.isfinite(e) and e > 0)
     reached = [(e, t) for e, t in points if e <= target]
     if not reached:
@@ -103,6 +108,12 @@ def main(reference_path, out_dir, result_paths):
         cells = [f"{t * 1e3:.3g}" if t else "not reached" for t in times[m]]
         ratios = [f"{t / r:.3g}" if t and r else "—" for t, r in zip(times[m], best)]
         lines.append(f"| {m} | " + " | ".join(cells) + " | " + " | ".join(ratios) + " |")
+    lines += ["", "| our method | " + " | ".join(f"step attempts/member, {h}" for h in heads) + " |",
+              "|---" * (1 + len(TARGETS)) + "|"]
+    for m in (m for m in methods if m in OURS):
+        attempts = [time_at_error([(t[measure], t["attempts_per_member"]) for t in table if t["method"] == m], e)
+                    for measure, e in TARGETS]
+        lines.append(f"| {m} | " + " | ".join(f"{a:.4g}" if a else "not reached" for a in attempts) + " |")
     with open(os.path.join(out_dir, "matched_error.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))

@@ -32,6 +32,7 @@ struct FrozenDrive {
 
   std::size_t dimension() const { return model.dimension(); }
   static constexpr StateScale scale(std::size_t k) { return Model::scale(k); }
+  static constexpr StateScale quadrature_scale(std::size_t p) { return Model::quadrature_scale(p); }
   void set_lane(std::size_t lane, const Parameters& p) { model.set_lane(lane, p); }
   void evaluate(Workspace& w, const double* y, double, double* f, double* q) const {
     model.evaluate(w, y, phase, f, q);

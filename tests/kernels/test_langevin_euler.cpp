@@ -36,6 +36,7 @@ struct OrnsteinUhlenbeck {
   void set_lane(std::size_t lane, const Parameters& p) { lane_set(k, lane, p.k); }
   std::size_t dimension() const { return 1; }
   static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
+  static constexpr StateScale quadrature_scale(std::size_t) { return StateScale::relative; }
   void evaluate(Workspace&, const V* theta, V, V* f, V*) const { f[0] = lane_neg(k) * theta[0]; }
   void linearize(Workspace& w, const V* theta, V t, V* f, V* q, Jacobian& J, V* df_dt, V*, V*) const {
     evaluate(w, theta, t, f, q);

@@ -1,5 +1,7 @@
 // The step-size controllers (docs/numerics.md "Step-size control"): the integral factor
-// safety·err^(−1/k), the PI factor safety·err^(−(1/k − 0.03))·previous^0.04 after accepted steps, bounds.
+// safety·err^(−1/k), the PI factor safety·err^(−(1/k − 0.03))·previous^0.04 after accepted steps,
+// bounds, and how an error is weighed against the tolerances.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -37,4 +39,20 @@ TEST_CASE("PI: a previous error below one holds the growth back", "[kernels][con
   // the same error after a step that was very accurate (previous 1e-4) grows h less than after
   // one at the tolerance (previous 1): the controller damps the oscillation of h
   CHECK(step_factor(pi, 3, 0.2, pi_error_floor, true) < step_factor(pi, 3, 0.2, 1.0, true));
+}
+
+TEST_CASE("errors are weighed absolutely, relatively, or relatively but capped at the absolute scale",
+          "[kernels][controller]") {
+  const Tolerances tol{1e-6, 1e-9};
+  const double inv = 1.0 / (tol.atol + tol.rtol);
+  const double error = 3e-7;
+  for (const double size : {1e-3, 0.5, 2.0, 40.0}) {
+    INFO("size " << size);
+    CHECK(scaled_error(StateScale::absolute, tol, inv, error, size, -size) == error * inv);
+    CHECK(scaled_error(StateScale::relative, tol, inv, error, size, -0.5 * size) ==
+          Approx(error / (tol.atol + tol.rtol * size)).epsilon(1e-15));
+    // below one like relative, above one like absolute: never looser than the angles
+    CHECK(scaled_error(StateScale::capped_relative, tol, inv, error, 0.5 * size, size) ==
+          Approx(error / (tol.atol + tol.rtol * std::min(size, 1.0))).epsilon(1e-15));
+  }
 }
