@@ -6,10 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "kernels/stepper_list.hpp"
+
 namespace rotorsweep::apps {
 
 struct TableOptions {
-  std::string stepper = "rodas4";
+  std::string stepper = std::string(kernels::default_stepper_name);
   double rtol = 1e-9;
   std::string output;  ///< CSV path; empty: stdout only
 };

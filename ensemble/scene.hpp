@@ -12,6 +12,7 @@
 #include "ensemble/initial_conditions.hpp"
 #include "ensemble/observables.hpp"
 #include "kernels/step_control.hpp"
+#include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -67,7 +68,7 @@ struct Scene {
   bool row_profiles = false;  ///< R_j per row and the alignment per link (default: on for open rows)
   double slip_rate = 10.0;    ///< a step with max_j |Δθ_j|/Δt above this is part of a slip
 
-  std::size_t stepper = 0;  ///< position in kernels::steppers (rodas4)
+  std::size_t stepper = kernels::default_stepper();  ///< position in kernels::steppers
   double h_max = 0.5;
   double max_steps = 1e8;
   kernels::StepController controller = kernels::StepController::integral;  ///< numerics.controller

@@ -60,7 +60,7 @@ struct SliderScene {
   bool angles = false;                  ///< store every rotor's angle at every sample
 
   // [numerics]
-  kernels::StepperId stepper = 0;
+  kernels::StepperId stepper = kernels::default_stepper();
   double rtol = 1e-6;
   double atol = 1e-6;
   double max_steps = 1e8;

@@ -100,7 +100,8 @@ void check_sections(const toml::table& root,
 
 kernels::StepperId read_stepper(const Section& numerics) {
   const std::set<std::string> names(kernels::stepper_names.begin(), kernels::stepper_names.end());
-  return *kernels::parse_stepper(numerics.choice("stepper", "rodas4", names));
+  return *kernels::parse_stepper(
+      numerics.choice("stepper", std::string(kernels::default_stepper_name), names));
 }
 
 double read_max_steps(const Section& numerics) {

@@ -44,7 +44,7 @@ TEST_CASE("a minimal scene gets the documented defaults", "[io][scene]") {
   CHECK(scene.steady_tol == 0);
   CHECK(scene.rtol_values.front() == 1e-6);
   CHECK(scene.atol_values.front() == 1e-9);
-  CHECK(rotorsweep::kernels::stepper_names[scene.stepper] == "rodas4");
+  CHECK(rotorsweep::kernels::stepper_names[scene.stepper] == "rodas4p2");
   CHECK(scene.has(rotorsweep::ensemble::Observable::dissipation));
   CHECK(scene.has(rotorsweep::ensemble::Observable::alignment));
   CHECK(scene.has(rotorsweep::ensemble::Observable::slips));
