@@ -27,7 +27,7 @@ struct DeviceMember {
   /// Lane values of scratch one member needs at N rows.
   ROTORSWEEP_HD static constexpr std::size_t storage_size(std::size_t n) {
     return Integrator::storage_size(n) + kernels::LaneState<double>::storage_size(n, nq) +
-           Model::Workspace::storage_size(n) + Model::storage_size(n) + n;
+           Model::storage_size(n) + n;
   }
 
   /// Integrates chunk member k of `slots` to its retirement and writes its slot. `storage` holds
@@ -41,14 +41,12 @@ struct DeviceMember {
                           {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
                           s.first_step_scale, arena);
     kernels::LaneState<double> state(n, nq, arena);
-    typename Model::Workspace work(n, arena);
     double* theta_before = arena.take(n);
 
     for (std::size_t j = 0; j < n; ++j) state.theta[j] = slots.y0[k * n + j];
     state.t_stop = Model::period;
     model.set_lane(0, {slots.A[k], slots.g[k], slots.strict_fm[k] != 0});
     AlignmentExtrema<double> alignment;
-    if constexpr (Q.alignment) alignment.start_lane(0, model.alignment(work, state.theta, state.t));
     DissipationSwing<double> swing;
     SlipCounter<double> slips(s.slip_rate);
 
@@ -61,8 +59,9 @@ struct DeviceMember {
         t_before = state.t;
       }
       const bool accepted = integrator.attempt(model, state);
+      if constexpr (Q.alignment)
+        alignment.accumulate(true, integrator.start_integrands()[Q.alignment_index()]);
       if (accepted) {
-        if constexpr (Q.alignment) alignment.accumulate(true, model.alignment(work, state.theta, state.t));
         if constexpr (Q.drive) swing.accumulate(true, state.quad[Q.drive_index()]);
         if (s.slips) slips.accumulate(true, n, theta_before, state.theta, state.t - t_before);
       }

@@ -49,7 +49,7 @@ class IntegrationLoop {
   std::size_t dimension() const { return model_.dimension(); }
   const Model& model() const { return model_; }
   const kernels::LaneState<V>& state() const { return state_; }
-  /// Scratch for observers that evaluate the model (alignment, energy).
+  /// Scratch for observers that evaluate the model (row profiles).
   typename Model::Workspace& workspace() { return work_; }
 
   /// Puts a member into `lane`: parameters, y(0), t = 0, the first period ahead.
@@ -82,6 +82,9 @@ class IntegrationLoop {
   bool failed(std::size_t lane) const {
     return state_.status[lane] != kernels::LaneStatus::ok && state_.status[lane] != kernels::LaneStatus::idle;
   }
+  /// The quadratures' integrands at the start of the last step attempt, in the lanes that stepped.
+  const V* start_integrands() const { return integrator_.start_integrands(); }
+
   /// Whether any running lane has reached the end of its period.
   bool any_period_ended() const { return kernels::lane_any(state_.running() & (state_.t >= state_.t_stop)); }
   bool period_ended(std::size_t lane) const {

@@ -10,25 +10,25 @@
 
 namespace rotorsweep::ensemble {
 
-/// Extremes of ρ̄ at the step points (channels alignment_min, alignment_max).
+/// Extremes of ρ̄ at the points where the period's steps start (channels alignment_min,
+/// alignment_max): ρ̄ is the integrand of the ∫ρ̄ quadrature, which every attempt evaluates at its
+/// start, so the extremes cost no trigonometry of their own.
 template <class Loop>
 class AlignmentObserver {
  public:
   using V = typename Loop::V;
-  void start(Loop& loop, std::size_t lane) {
-    extrema_.start_lane(lane, kernels::lane_get(alignment(loop), lane));
-  }
-  void before_step(Loop&) {}
-  void after_step(Loop& loop, kernels::lane_mask<V> accepted) {
-    extrema_.accumulate(accepted, alignment(loop));
+  static constexpr std::size_t index = Loop::model_type::integrals.alignment_index();
+
+  void start(Loop&, std::size_t lane) { extrema_.start_lane(lane); }
+  void before_step(Loop& loop) { stepping_ = loop.state().stepping(); }
+  void after_step(Loop& loop, kernels::lane_mask<V>) {
+    extrema_.accumulate(stepping_, loop.start_integrands()[index]);
   }
   void end_period(std::size_t lane, PeriodRecord& record) { extrema_.end_period(lane, record); }
 
  private:
-  static V alignment(Loop& loop) {
-    return loop.model().alignment(loop.workspace(), loop.state().theta, loop.state().t);
-  }
   AlignmentExtrema<V> extrema_;
+  kernels::lane_mask<V> stepping_{};
 };
 
 /// Slip events (channel slips); switched off, it costs one branch per step.

@@ -3,6 +3,7 @@
 // dissipation integral that bounds its error (docs/numerics.md).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 
 #include "ensemble/member_result.hpp"
@@ -12,29 +13,30 @@
 
 namespace rotorsweep::ensemble {
 
-/// min and max of ρ̄ over the step points of the current period, per lane.
+/// min and max of ρ̄ over the points where the current period's step attempts start, per lane:
+/// the period's first point and every accepted step point before its end (the end point is the
+/// next period's first). Each attempt passes ρ̄ at its start.
 template <class V>
 struct AlignmentExtrema {
-  V min = V(0.0), max = V(0.0), current = V(0.0);
+  V min = V(INFINITY), max = V(-INFINITY);
 
-  /// A lane starts (a new member, or a new period) at alignment rho.
-  ROTORSWEEP_HD void start_lane(std::size_t lane, double rho) {
-    kernels::lane_set(min, lane, rho);
-    kernels::lane_set(max, lane, rho);
-    kernels::lane_set(current, lane, rho);
+  /// A lane starts a member or a period: no point seen yet.
+  ROTORSWEEP_HD void start_lane(std::size_t lane) {
+    kernels::lane_set(min, lane, INFINITY);
+    kernels::lane_set(max, lane, -INFINITY);
   }
 
-  ROTORSWEEP_HD void accumulate(kernels::lane_mask<V> accepted, V rho) {
-    current = kernels::lane_select(accepted, rho, current);
-    min = kernels::lane_select(accepted, kernels::lane_min(min, rho), min);
-    max = kernels::lane_select(accepted, kernels::lane_max(max, rho), max);
+  /// ρ̄ at the start of an attempt, in the lanes that `stepped`.
+  ROTORSWEEP_HD void accumulate(kernels::lane_mask<V> stepped, V rho) {
+    min = kernels::lane_select(stepped, kernels::lane_min(min, rho), min);
+    max = kernels::lane_select(stepped, kernels::lane_max(max, rho), max);
   }
 
-  /// Writes the lane's extremes into the period record; the next period starts where this ends.
+  /// Writes the lane's extremes into the period record and starts its next period.
   ROTORSWEEP_HD void end_period(std::size_t lane, PeriodRecord& record) {
     record[Channel::alignment_min] = kernels::lane_get(min, lane);
     record[Channel::alignment_max] = kernels::lane_get(max, lane);
-    start_lane(lane, kernels::lane_get(current, lane));
+    start_lane(lane);
   }
 };
 

@@ -61,17 +61,23 @@ class AdaptiveIntegrator {
         q_new_(arena.take(nq + 1)),
         q_error_(arena.take(nq + 1)) {}
 
-  /// One step attempt for every lane that is ok and short of its t_stop; the step is clipped
-  /// to land exactly on t_stop. Returns the lanes that accepted a step.
+  /// The step that lanes without a step to take (idle, failed, or at their t_stop) compute with,
+  /// results discarded: short enough that their stage displacements stay within the reach of the
+  /// displaced trigonometry, so that they never send the other lanes to the full sincos
+  /// (kernels/displaced_sincos.hpp).
+  static constexpr double idle_step = 0x1p-30;
+
+  /// One step attempt for every lane that is ok and short of its t_stop (LaneState::stepping());
+  /// the step is clipped to land exactly on t_stop. Returns the lanes that accepted a step.
   ROTORSWEEP_HD lane_mask<V> attempt(const System& system, LaneState<V>& s) {
-    const lane_mask<V> active = s.running() & (s.t < s.t_stop);
+    const lane_mask<V> active = s.stepping();
     if (!lane_any(active)) return active;
     propose_first_steps(system, s, active);
 
     const std::size_t n = s.rows();
     const V remaining = s.t_stop - s.t;
     const lane_mask<V> clipped = s.h >= remaining;
-    const V h = lane_select(active, lane_min(s.h, remaining), V(1.0));
+    const V h = lane_select(active, lane_min(s.h, remaining), V(idle_step));
     const lane_mask<V> resolved =
         stepper_.attempt(system, s.t, h, s.theta, s.quad, y_new_, q_new_, y_error_, q_error_);
     constexpr auto controlled = System::error_controlled;
@@ -106,8 +112,11 @@ class AdaptiveIntegrator {
 
   /// Attempts steps until every lane has reached its t_stop or failed.
   ROTORSWEEP_HD void advance(const System& system, LaneState<V>& s) {
-    while (lane_any(s.running() & (s.t < s.t_stop))) attempt(system, s);
+    while (lane_any(s.stepping())) attempt(system, s);
   }
+
+  /// The quadratures' integrands at the start of the last attempt, in the lanes that stepped.
+  ROTORSWEEP_HD const V* start_integrands() const { return stepper_.start_integrands(); }
 
  private:
   // Lanes with h <= 0 get h = min(h_max, 0.01 (atol + rtol)^(1/(p+1)) / max_j |f_j|) and no

@@ -58,6 +58,9 @@ class DormandPrince5 {
     return h == h;
   }
 
+  /// The quadratures' integrands at the start of the last attempt (its first stage).
+  ROTORSWEEP_HD const V* start_integrands() const { return quad_slopes_; }
+
  private:
   ROTORSWEEP_HD static void combine(V h, const V* start, std::size_t count, const V* slopes, V* result,
                                     V* error) {

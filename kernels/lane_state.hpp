@@ -40,6 +40,8 @@ struct LaneState {
   ROTORSWEEP_HD lane_mask<V> running() const {
     return lane_from<V>([&](std::size_t l) { return status[l] == LaneStatus::ok ? 1.0 : 0.0; }) != V(0.0);
   }
+  /// Lanes that take a step in the next attempt: running and short of their t_stop.
+  ROTORSWEEP_HD lane_mask<V> stepping() const { return running() & (t < t_stop); }
 
  private:
   std::size_t dimension_;

@@ -69,7 +69,7 @@ class LangevinEuler {
 
   /// One step of every lane that is ok and short of its t_stop. Returns the lanes that stepped.
   ROTORSWEEP_HD lane_mask<V> attempt(const Model& model, LaneState<V>& s) {
-    const lane_mask<V> active = s.running() & (s.t < s.t_stop);
+    const lane_mask<V> active = s.stepping();
     if (!lane_any(active)) return active;
     const std::size_t n = s.rows();
     // the steps left in this period, all equal: lands on t_stop without a sliver step
@@ -104,6 +104,9 @@ class LangevinEuler {
       if (mask_get(active, l) && !mask_get(finite, l)) s.status[l] = LaneStatus::non_finite;
     return step;
   }
+
+  /// The quadratures' integrands at the start of the last step, in the lanes that stepped.
+  ROTORSWEEP_HD const V* start_integrands() const { return qdot_; }
 
  private:
   Settings settings_;

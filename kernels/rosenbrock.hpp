@@ -27,7 +27,7 @@ class RosenbrockStepper {
 
   static constexpr std::size_t storage_size(std::size_t n) {
     return System::Workspace::storage_size(n) + System::Jacobian::storage_size(n) +
-           (3 + std::size_t(Table.stages) + nq) * n + 1 + 2 * (nq + 1) + std::size_t(Table.stages) * nq + 1;
+           (3 + std::size_t(Table.stages) + nq) * n + 1 + 3 * (nq + 1) + std::size_t(Table.stages) * nq + 1;
   }
 
   ROTORSWEEP_HD RosenbrockStepper(const System& system, LaneArena<V>& arena)
@@ -40,6 +40,7 @@ class RosenbrockStepper {
         stages_(arena.take(std::size_t(Table.stages) * n_)),
         dq_dy_(arena.take(nq * n_ + 1)),
         qdot_(arena.take(nq + 1)),
+        start_qdot_(arena.take(nq + 1)),
         dq_dt_(arena.take(nq + 1)),
         quad_stages_(arena.take(std::size_t(Table.stages) * nq + 1)) {}
 
@@ -53,7 +54,7 @@ class RosenbrockStepper {
   /// and the embedded estimate shares the error); such a lane must retry with a smaller h.
   ROTORSWEEP_HD lane_mask<V> attempt(const System& system, V t, V h, const V* y, const V* q, V* y_new,
                                      V* q_new, V* y_error, V* q_error) {
-    system.linearize(work_, y, t, f_, qdot_, jacobian_, df_dt_, dq_dy_, dq_dt_);
+    system.linearize(work_, y, t, f_, start_qdot_, jacobian_, df_dt_, dq_dy_, dq_dt_);
     const StageScalars scalars{t, h, h * V(Table.gamma), V(1.0) / h};
     jacobian_.factor(V(1.0) / scalars.h_gamma);
     run_stages(system, scalars, y, std::make_integer_sequence<int, Table.stages>{});
@@ -64,6 +65,9 @@ class RosenbrockStepper {
     else
       return h == h;
   }
+
+  /// The quadratures' integrands at the start of the last attempt (from its linearisation).
+  ROTORSWEEP_HD const V* start_integrands() const { return start_qdot_; }
 
  private:
   // The stage loops are unrolled at compile time: every tableau coefficient is a literal, zero
@@ -112,7 +116,7 @@ class RosenbrockStepper {
 
     for (std::size_t p = 0; p < nq; ++p) {
       const V* grad = dq_dy_ + p * n;
-      V sum = qdot_[p] + time_weight * dq_dt_[p];
+      V sum = (I == 0 ? start_qdot_ : qdot_)[p] + time_weight * dq_dt_[p];
       for (std::size_t k = 0; k < n; ++k) sum += grad[k] * u[k];
       ((sum += weight[J] * quad_stages_[std::size_t(J) * nq + p]), ...);
       quad_stages_[std::size_t(I) * nq + p] = s.h_gamma * sum;
@@ -169,7 +173,9 @@ class RosenbrockStepper {
   V *f_, *df_dt_;
   V* argument_;  ///< a stage's argument y + Σ a_Ij U_j, or its displacement Σ a_Ij U_j from y
   V* stages_;
-  V *dq_dy_, *qdot_, *dq_dt_, *quad_stages_;
+  V *dq_dy_, *qdot_;
+  V* start_qdot_;  ///< the integrands at the step's start (stage 0's; qdot_ holds the later stages')
+  V *dq_dt_, *quad_stages_;
 };
 
 template <class System>
