@@ -24,7 +24,7 @@ std::size_t gpu_max_rows(const Scene& scene) {
       using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
       std::size_t n = 2;
       while (DeviceMember<Model, Stepper>::storage_size(n + 1) <= gpu_scratch_sizes.back()) ++n;
-      return n;
+      return n - n % 2;  // rows come in even numbers
     });
   });
 }

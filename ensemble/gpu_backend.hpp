@@ -30,7 +30,7 @@ std::string device_label(const Scene& scene);
 inline constexpr std::array<std::size_t, 2> gpu_scratch_sizes{2048, 8192};
 
 /// The most rows one member may have on the GPU with the scene's stepper (its scratch lives in
-/// per-thread memory of a fixed size).
+/// per-thread memory of a fixed size), an even number like every row count.
 std::size_t gpu_max_rows(const Scene& scene);
 
 /// How the GPU backend launches: threads per block, and blocks (0: as many as fit at once).
