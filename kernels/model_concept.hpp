@@ -15,7 +15,9 @@ namespace rotorsweep::kernels {
 /// (and other quantities that live on a fixed scale) absolutely, s = atol + rtol; velocities and
 /// other components that can be large relatively, s = atol + rtol·max(|y|, |y_new|); a quantity
 /// whose wanted accuracy does not grow with its running value relatively but never more loosely
-/// than absolutely (capped_relative), s = atol + rtol·min(1, max(|y|, |y_new|)).
+/// than absolutely (capped_relative), s = atol + rtol·min(1, max(|y|, |y_new|)); a capped-relative
+/// quadrature (R, whose period remainder is the result) is held apart from the RMS and tighter
+/// (step_control.hpp, error_norm).
 enum class StateScale { absolute, relative, capped_relative };
 
 /// The Jacobian of a model, one per lane, and the solve of the stage matrix M = shift·I - J.
