@@ -87,13 +87,14 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
            kernels::Quadrature::drive,
            {Summary::mean, "dissipation", "D per period, R estimator A Σ∫ sin(θ_j - t) dt, mean"},
            {Summary::spread, "dissipation_std", "population spread of D"}),
-       declare::channel(Channel::dissipation_error, "dissipation_error",
-                        "error estimate of R_k: κ rtol max_t |R(t)| + atol, κ = 7 for rodas5p, else 1 "
-                        "(docs/numerics.md)",
-                        Source::step_reducer, kernels::Quadrature::drive,
-                        {Summary::mean, "dissipation_error",
-                         "estimated integration error of D: mean over the averaged periods of "
-                         "κ rtol max_t |R(t)| + atol (κ = 7 for rodas5p, else 1)"})}},
+       declare::channel(
+           Channel::dissipation_error, "dissipation_error",
+           "error estimate of R_k: κ rtol max_t |R(t)| + atol, κ = 1/8 rodas4p2, 1/4 rodas4, else 1 "
+           "(docs/numerics.md)",
+           Source::step_reducer, kernels::Quadrature::drive,
+           {Summary::mean, "dissipation_error",
+            "estimated integration error of D: mean over the averaged periods of "
+            "κ rtol max_t |R(t)| + atol (κ = 1/8 rodas4p2, 1/4 rodas4, else 1)"})}},
      2},
     {"estimators",
      false,

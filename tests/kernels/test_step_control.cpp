@@ -80,14 +80,16 @@ TEST_CASE("the error norm holds R apart, remainder_tightening times tighter", "[
   // angles' RMS 1/sqrt(2) of the tolerance, R at 1/16 of it: R (8/16 = 0.5) is below the RMS
   const double y_error[2] = {s, 0.0};
   double q_error[2] = {s / 16, 0.0};
-  CHECK(error_norm(model, tol, y, y, y_error, r_only, q, q, q_error) == Approx(std::sqrt(0.5)).epsilon(1e-14));
+  CHECK(error_norm(model, tol, y, y, y_error, r_only, q, q, q_error) ==
+        Approx(std::sqrt(0.5)).epsilon(1e-14));
   // R at a quarter of the tolerance sets the norm: 8/4 = 2, though the RMS with R would be 0.6
   q_error[0] = s / 4;
   CHECK(error_norm(model, tol, y, y, y_error, r_only, q, q, q_error) == Approx(2.0).epsilon(1e-14));
   // the relative quadrature enters the RMS: sqrt((1 + 0 + 4) / 3) with R small again
   q_error[0] = 0.0;
   q_error[1] = 2 * s;
-  CHECK(error_norm(model, tol, y, y, y_error, both, q, q, q_error) == Approx(std::sqrt(5.0 / 3)).epsilon(1e-14));
+  CHECK(error_norm(model, tol, y, y, y_error, both, q, q, q_error) ==
+        Approx(std::sqrt(5.0 / 3)).epsilon(1e-14));
   // a non-finite error in either part gives a non-finite norm
   q_error[0] = std::nan("");
   CHECK_FALSE(std::isfinite(error_norm(model, tol, y, y, y_error, both, q, q, q_error)));
