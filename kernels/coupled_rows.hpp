@@ -127,12 +127,6 @@ class CoupledRows {
     return energy_from_trigonometry(w);
   }
 
-  /// ρ̄ = mean over neighbouring rows (N links periodic, N − 1 open) of cos²((θ_j − θ_{j+1})/2).
-  ROTORSWEEP_HD V alignment(Workspace& w, const V* theta, V t) const {
-    trigonometry(w, theta, t);
-    return alignment_from_trigonometry(w);
-  }
-
   /// Links between neighbouring rows: N periodic, N − 1 open.
   ROTORSWEEP_HD std::size_t links() const { return open_ ? rows_ - 1 : rows_; }
 
@@ -197,6 +191,8 @@ class CoupledRows {
     return h;
   }
 
+  /// ρ̄ = mean over neighbouring rows (N links periodic, N − 1 open) of cos²((θ_j − θ_{j+1})/2),
+  /// the ∫ρ̄ integrand.
   ROTORSWEEP_HD V alignment_from_trigonometry(const Workspace& w) const {
     V sum(0.0);
     for (std::size_t j = 0; j < links(); ++j) {

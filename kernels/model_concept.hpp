@@ -86,15 +86,6 @@ concept EvaluatesDisplaced = LaneModel<M> &&
   model.evaluate_displaced(work, y, y, t, t, out, out);
 };
 
-/// A model that reports the alignment ρ̄ and the energy H of a state (docs/model.md §3).
-template <class M>
-concept ReportsAlignmentAndEnergy = LaneModel<M> &&
-    requires(const M& model, typename M::Workspace& work, const typename M::lane_type* y,
-             typename M::lane_type t) {
-  { model.alignment(work, y, t) } -> std::convertible_to<typename M::lane_type>;
-  { model.energy(work, y, t) } -> std::convertible_to<typename M::lane_type>;
-};
-
 /// A model that reports its row profile (docs/model.md §3 "Row profiles"): each row's share of the
 /// drive integrand and the alignment of each link, links() of them.
 template <class M>

@@ -160,12 +160,6 @@ class NearestNeighbourRows {
     return energy_from_trigonometry<false>(w);
   }
 
-  /// ρ̄(θ) = (1/N) Σ cos²((θ_j - θ_{j+1})/2).
-  ROTORSWEEP_HD V alignment(Workspace& w, const V* theta, V t) const {
-    trigonometry<false>(w, theta, t);
-    return alignment_from_trigonometry(w);
-  }
-
   /// The N links of the ring.
   ROTORSWEEP_HD std::size_t links() const { return rows_; }
 
@@ -294,6 +288,7 @@ class NearestNeighbourRows {
     return h;
   }
 
+  /// ρ̄ = (1/N) Σ cos²((θ_j − θ_{j+1})/2) = 1/2 + (1/2N) Σ cos(θ_j − θ_{j+1}), the ∫ρ̄ integrand.
   ROTORSWEEP_HD V alignment_from_trigonometry(const Workspace& w) const {
     V sum(0.0);
     for (std::size_t j = 0; j < rows_; ++j) sum += w.cos_link[j];
