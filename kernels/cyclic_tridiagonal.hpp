@@ -18,10 +18,10 @@ namespace rotorsweep::kernels {
 /// two plain tridiagonal chains, rows 0 .. p-1 and p+1 .. m-1. Each chain is eliminated on its
 /// own (no pivoting); a chain couples to the borders only at its two ends, so it adds one spike
 /// per border, and the borders are solved from their 2 × 2 Schur complement. The two chains are
-/// independent recurrences of half the length, so their latencies overlap. This is stable for
-/// the diagonally dominant and the symmetric positive definite matrices the steppers build near
-/// stable states; a vanishing pivot elsewhere yields non-finite stages, which the step
-/// controller rejects.
+/// independent recurrences of half the length, which solve() runs interleaved, so that their
+/// latencies overlap. This is stable for the diagonally dominant and the symmetric positive
+/// definite matrices the steppers build near stable states; a vanishing pivot elsewhere yields
+/// non-finite stages, which the step controller rejects.
 ///
 /// Strict-FM invariance: in lanes marked by keep_constant_solutions(), when every row is equal
 /// (a circulant M and a constant right-hand side) the solution is the constant
@@ -113,8 +113,7 @@ class CyclicTridiagonal {
     lane_mask<V> constant = circulant_;
     if (lane_any(constant))
       for (std::size_t i = 1; i < n_; ++i) constant = constant & (r[i] == r0);
-    solve_chain(r, 0, p);
-    solve_chain(r, p + 1, m);
+    solve_chains(r, p, m);
     // borders: g = r_B - M_BI z, then the 2 × 2 LDLᵀ solve
     V g_p = r[p], g_m = r[m];
     if (p > 0) {
@@ -156,11 +155,13 @@ class CyclicTridiagonal {
   /// off_{i-1}² / d_{i-1}, upper_i = -off_i / d_i, lower_i = off_{i-1} / d_i.
   ROTORSWEEP_HD void factor_chain(V shift, std::size_t first, std::size_t end) {
     if (first >= end) return;
-    inv_pivot_[first] = V(1.0) / (shift - diag_[first]);
+    V inv = V(1.0) / (shift - diag_[first]);
+    inv_pivot_[first] = inv;
     for (std::size_t i = first + 1; i < end; ++i) {
       const V coupling_squared = off_[i - 1] * off_[i - 1];
-      inv_pivot_[i] = V(1.0) / ((shift - diag_[i]) - coupling_squared * inv_pivot_[i - 1]);
-      lower_[i] = off_[i - 1] * inv_pivot_[i];
+      inv = V(1.0) / ((shift - diag_[i]) - coupling_squared * inv);
+      inv_pivot_[i] = inv;
+      lower_[i] = off_[i - 1] * inv;
     }
     for (std::size_t i = first; i + 1 < end; ++i) upper_[i] = lane_neg(off_[i]) * inv_pivot_[i];
   }
@@ -171,23 +172,66 @@ class CyclicTridiagonal {
                                  V* from_last) const {
     if (first >= end) return;
     const std::size_t last = end - 1;
-    from_first[first] = c_first * inv_pivot_[first];
-    for (std::size_t i = first + 1; i < end; ++i) from_first[i] = lower_[i] * from_first[i - 1];
-    for (std::size_t i = first; i < last; ++i) from_last[i] = V(0.0);
-    from_last[last] = c_last * inv_pivot_[last];
+    V a = c_first * inv_pivot_[first];
+    from_first[first] = a;
+    for (std::size_t i = first + 1; i < end; ++i) {
+      a = lower_[i] * a;
+      from_first[i] = a;
+    }
+    V b = c_last * inv_pivot_[last];
+    from_last[last] = b;
     for (std::size_t i = last; i-- > first;) {
-      from_first[i] -= upper_[i] * from_first[i + 1];
-      from_last[i] -= upper_[i] * from_last[i + 1];
+      a = from_first[i] - upper_[i] * a;
+      b = V(0.0) - upper_[i] * b;
+      from_first[i] = a;
+      from_last[i] = b;
     }
   }
 
   /// z = T⁻¹ r over the chain rows [first, end), in place: one multiply and one add per row on
-  /// each substitution's dependency chain.
+  /// each substitution's dependency chain, whose running value stays in a register (a store to r
+  /// may alias the factors, so a value read back from r would wait on the store).
   ROTORSWEEP_HD void solve_chain(V* r, std::size_t first, std::size_t end) const {
     if (first >= end) return;
-    for (std::size_t i = first; i < end; ++i) r[i] *= inv_pivot_[i];
-    for (std::size_t i = first + 1; i < end; ++i) r[i] += lower_[i] * r[i - 1];
-    for (std::size_t i = end - 1; i-- > first;) r[i] -= upper_[i] * r[i + 1];
+    V z = r[first] * inv_pivot_[first];
+    r[first] = z;
+    for (std::size_t i = first + 1; i < end; ++i) {
+      z = r[i] * inv_pivot_[i] + lower_[i] * z;
+      r[i] = z;
+    }
+    for (std::size_t i = end - 1; i-- > first;) {
+      z = r[i] - upper_[i] * z;
+      r[i] = z;
+    }
+  }
+
+  /// Both chains at once, their recurrences interleaved: chain A, rows 0 .. p-1, is as long as
+  /// chain B, rows p+1 .. m-1, or one row longer.
+  ROTORSWEEP_HD void solve_chains(V* r, std::size_t p, std::size_t m) const {
+    const std::size_t length = m - p - 1;  // chain B's
+    if (length == 0) return solve_chain(r, 0, p);
+    const std::size_t b = p + 1;  // chain B's offset
+    V za = r[0] * inv_pivot_[0], zb = r[b] * inv_pivot_[b];
+    r[0] = za;
+    r[b] = zb;
+    for (std::size_t i = 1; i < length; ++i) {
+      za = r[i] * inv_pivot_[i] + lower_[i] * za;
+      zb = r[b + i] * inv_pivot_[b + i] + lower_[b + i] * zb;
+      r[i] = za;
+      r[b + i] = zb;
+    }
+    if (p > length) {
+      za = r[length] * inv_pivot_[length] + lower_[length] * za;
+      r[length] = za;
+      za = r[length - 1] - upper_[length - 1] * za;
+      r[length - 1] = za;
+    }
+    for (std::size_t i = length - 1; i-- > 0;) {
+      za = r[i] - upper_[i] * za;
+      zb = r[b + i] - upper_[b + i] * zb;
+      r[i] = za;
+      r[b + i] = zb;
+    }
   }
 
   std::size_t n_;

@@ -206,9 +206,8 @@ class NearestNeighbourRows {
   ROTORSWEEP_HD void evaluate_displaced_rows(Workspace& w, const V* theta, const V* delta, V t, V tau, V* f,
                                              V* qdot) const {
     lane_sincos_displaced(t, tau, w.start_sin_t, w.start_cos_t, w.sin_t, w.cos_t);
-    trigonometry_from<per_row>(w, [&](std::size_t j) {
-      lane_sincos_displaced(theta[j], delta[j], w.start_sin_row[j], w.start_cos_row[j], w.sin_row[j],
-                            w.cos_row[j]);
+    trigonometry_from<per_row>(w, [&](std::size_t j, V& s, V& c) {
+      lane_sincos_displaced(theta[j], delta[j], w.start_sin_row[j], w.start_cos_row[j], s, c);
     });
     torques<per_row>(w, f);
     integrands<per_row>(w, f, qdot);
@@ -242,38 +241,53 @@ class NearestNeighbourRows {
   template <bool per_row>
   ROTORSWEEP_HD void trigonometry(Workspace& w, const V* theta, V t) const {
     lane_sincos(t, w.sin_t, w.cos_t);
-    trigonometry_from<per_row>(w, [&](std::size_t j) { lane_sincos(theta[j], w.sin_row[j], w.cos_row[j]); });
+    trigonometry_from<per_row>(w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); });
   }
 
-  /// The lags and links from w.sin_t, w.cos_t and each row's sincos, which row_sincos(j) writes
-  /// to w.sin_row[j], w.cos_row[j].
+  /// The lags and links from w.sin_t, w.cos_t and each row's sincos, which row_sincos(j, s, c)
+  /// returns in s, c; each row's values are used while in registers.
   template <bool per_row, class RowSincos>
   ROTORSWEEP_HD void trigonometry_from(Workspace& w, RowSincos&& row_sincos) const {
     const std::size_t n = rows_;
     const V sin_t = w.sin_t, cos_t = w.cos_t;
+    V sin_first(0.0), cos_first(0.0), sin_previous(0.0), cos_previous(0.0);
+    const auto link = [&](std::size_t j, const V& sin_j, const V& cos_j, const V& sin_next,
+                          const V& cos_next) {
+      w.sin_link[j] = sin_j * cos_next - cos_j * sin_next;
+      w.cos_link[j] = cos_j * cos_next + sin_j * sin_next;
+    };
     for (std::size_t j = 0; j < n; ++j) {
-      row_sincos(j);
-      w.sin_lag[j] = w.sin_row[j] * cos_t - w.cos_row[j] * sin_t;
-      w.cos_lag[j] = w.cos_row[j] * cos_t + w.sin_row[j] * sin_t;
+      V sin_j(0.0), cos_j(0.0);
+      row_sincos(j, sin_j, cos_j);
+      w.sin_row[j] = sin_j;
+      w.cos_row[j] = cos_j;
+      w.sin_lag[j] = sin_j * cos_t - cos_j * sin_t;
+      w.cos_lag[j] = cos_j * cos_t + sin_j * sin_t;
       if constexpr (per_row) w.weighted_lag[j] = A_row_[j] * w.sin_lag[j];
+      if (j == 0) {
+        sin_first = sin_j;
+        cos_first = cos_j;
+      } else {
+        link(j - 1, sin_previous, cos_previous, sin_j, cos_j);
+      }
+      sin_previous = sin_j;
+      cos_previous = cos_j;
     }
-    for (std::size_t j = 0; j < n; ++j) {
-      const std::size_t jp = (j + 1 == n) ? 0 : j + 1;
-      w.sin_link[j] = w.sin_row[j] * w.cos_row[jp] - w.cos_row[j] * w.sin_row[jp];
-      w.cos_link[j] = w.cos_row[j] * w.cos_row[jp] + w.sin_row[j] * w.sin_row[jp];
-    }
+    link(n - 1, sin_previous, cos_previous, sin_first, cos_first);
   }
 
   template <bool per_row>
   ROTORSWEEP_HD void torques(const Workspace& w, V* f) const {
     const V* lag = weighted_lag<per_row>(w);
     const std::size_t n = rows_;
+    const V inv_g = inv_g_, A = A_;  // f could alias the members: keep them in registers
+    V link_before = scaled<per_row>(coupling_row_, n - 1, w.sin_link[n - 1]);
     for (std::size_t j = 0; j < n; ++j) {
-      const std::size_t jm = (j == 0) ? n - 1 : j - 1;
       const V sin_2theta = V(2.0) * w.sin_row[j] * w.cos_row[j];
-      f[j] = inv_g_ * (V(-3.0) * scaled<per_row>(anisotropy_row_, j, sin_2theta) +
-                       scaled<per_row>(coupling_row_, j, w.sin_link[j]) -
-                       scaled<per_row>(coupling_row_, jm, w.sin_link[jm]) + A_ * lag[j]);
+      const V link_after = scaled<per_row>(coupling_row_, j, w.sin_link[j]);
+      f[j] = inv_g * (V(-3.0) * scaled<per_row>(anisotropy_row_, j, sin_2theta) + link_after - link_before +
+                      A * lag[j]);
+      link_before = link_after;
     }
   }
 
