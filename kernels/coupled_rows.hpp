@@ -204,7 +204,8 @@ class CoupledRows {
 
   ROTORSWEEP_HD void integrands(const Workspace& w, const V* f, V* qdot) const {
     row_integrands<Q>(
-        rows_, A_, g_, w.sin_lag, f, [&] { return alignment_from_trigonometry(w); },
+        rows_, A_, g_, [&] { return row_sum(rows_, w.sin_lag); }, w.sin_lag, f,
+        [&] { return alignment_from_trigonometry(w); },
         [&] { return energy_from_trigonometry(w); }, qdot);
   }
 

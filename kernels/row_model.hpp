@@ -195,28 +195,34 @@ class NearestNeighbourRows {
       return w.sin_lag;
   }
 
-  template <bool per_row>
+  /// The integrands other than R and ρ̄ read the trigonometry of every row from the workspace.
+  static constexpr bool integrands_read_rows = Q.work || Q.energy;
+
+  template <bool per_row, bool store = integrands_read_rows>
   ROTORSWEEP_HD void evaluate_rows(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
-    trigonometry<per_row>(w, theta, t);
-    torques<per_row>(w, f);
-    integrands<per_row>(w, f, qdot);
+    lane_sincos(t, w.sin_t, w.cos_t);
+    const RowSums sums =
+        rows_pass<per_row, store>(w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); }, f);
+    integrands<per_row>(w, sums, f, qdot);
   }
 
   template <bool per_row>
   ROTORSWEEP_HD void evaluate_displaced_rows(Workspace& w, const V* theta, const V* delta, V t, V tau, V* f,
                                              V* qdot) const {
     lane_sincos_displaced(t, tau, w.start_sin_t, w.start_cos_t, w.sin_t, w.cos_t);
-    trigonometry_from<per_row>(w, [&](std::size_t j, V& s, V& c) {
-      lane_sincos_displaced(theta[j], delta[j], w.start_sin_row[j], w.start_cos_row[j], s, c);
-    });
-    torques<per_row>(w, f);
-    integrands<per_row>(w, f, qdot);
+    const RowSums sums = rows_pass<per_row, integrands_read_rows>(
+        w,
+        [&](std::size_t j, V& s, V& c) {
+          lane_sincos_displaced(theta[j], delta[j], w.start_sin_row[j], w.start_cos_row[j], s, c);
+        },
+        f);
+    integrands<per_row>(w, sums, f, qdot);
   }
 
   template <bool per_row>
   ROTORSWEEP_HD void linearize_rows(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt,
                                     V* dq_dtheta, V* dq_dt) const {
-    evaluate_rows<per_row>(w, theta, t, f, qdot);
+    evaluate_rows<per_row, true>(w, theta, t, f, qdot);
     const std::size_t n = rows_;
     for (std::size_t j = 0; j < n; ++j) {
       const std::size_t jm = (j == 0) ? n - 1 : j - 1;
@@ -238,57 +244,89 @@ class NearestNeighbourRows {
     w.start_cos_t = w.cos_t;
   }
 
+  /// The whole trigonometry in the workspace, for the energy and the row profile; the torques
+  /// go to the scratch w.product.
   template <bool per_row>
   ROTORSWEEP_HD void trigonometry(Workspace& w, const V* theta, V t) const {
     lane_sincos(t, w.sin_t, w.cos_t);
-    trigonometry_from<per_row>(w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); });
+    rows_pass<per_row, true>(w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); }, w.product);
   }
 
-  /// The lags and links from w.sin_t, w.cos_t and each row's sincos, which row_sincos(j, s, c)
-  /// returns in s, c; each row's values are used while in registers.
-  template <bool per_row, class RowSincos>
-  ROTORSWEEP_HD void trigonometry_from(Workspace& w, RowSincos&& row_sincos) const {
+  /// Sums over the rows that one pass collects, each in row order: the drive's lags (weighted by
+  /// the rows' shares of A) and the links' cosines.
+  struct RowSums {
+    V lag = V(0.0);
+    V cos_link = V(0.0);
+  };
+
+  /// One pass over the rows from w.sin_t, w.cos_t and each row's sincos, which row_sincos(j, s, c)
+  /// returns in s, c: each row's lag, its link to the row before, and the torque f_j as soon as
+  /// both links of row j are known, every value used while in registers. Row N-1 comes first, so
+  /// that the torques come out in row order and the stage solve, which reads them in that order,
+  /// can start before the pass ends; the sums are taken in row order all the same. With `store`,
+  /// the sines, cosines, lags and links go to the workspace (the Jacobian, the energy and the
+  /// integrands W, H read them).
+  template <bool per_row, bool store, class RowSincos>
+  ROTORSWEEP_HD RowSums rows_pass(Workspace& w, RowSincos&& row_sincos, V* f) const {
+    struct Row {
+      V sin, cos, lag;  // lag: sin(θ_j − t), weighted by the row's share of A
+    };
+    struct Link {
+      V sin, cos;  // sin weighted by the coupling; cos only where stored or summed
+    };
+    constexpr bool cosines = store || Q.alignment;
     const std::size_t n = rows_;
     const V sin_t = w.sin_t, cos_t = w.cos_t;
-    V sin_first(0.0), cos_first(0.0), sin_previous(0.0), cos_previous(0.0);
-    const auto link = [&](std::size_t j, const V& sin_j, const V& cos_j, const V& sin_next,
-                          const V& cos_next) {
-      w.sin_link[j] = sin_j * cos_next - cos_j * sin_next;
-      w.cos_link[j] = cos_j * cos_next + sin_j * sin_next;
-    };
-    for (std::size_t j = 0; j < n; ++j) {
-      V sin_j(0.0), cos_j(0.0);
-      row_sincos(j, sin_j, cos_j);
-      w.sin_row[j] = sin_j;
-      w.cos_row[j] = cos_j;
-      w.sin_lag[j] = sin_j * cos_t - cos_j * sin_t;
-      w.cos_lag[j] = cos_j * cos_t + sin_j * sin_t;
-      if constexpr (per_row) w.weighted_lag[j] = A_row_[j] * w.sin_lag[j];
-      if (j == 0) {
-        sin_first = sin_j;
-        cos_first = cos_j;
-      } else {
-        link(j - 1, sin_previous, cos_previous, sin_j, cos_j);
-      }
-      sin_previous = sin_j;
-      cos_previous = cos_j;
-    }
-    link(n - 1, sin_previous, cos_previous, sin_first, cos_first);
-  }
-
-  template <bool per_row>
-  ROTORSWEEP_HD void torques(const Workspace& w, V* f) const {
-    const V* lag = weighted_lag<per_row>(w);
-    const std::size_t n = rows_;
     const V inv_g = inv_g_, A = A_;  // f could alias the members: keep them in registers
-    V link_before = scaled<per_row>(coupling_row_, n - 1, w.sin_link[n - 1]);
-    for (std::size_t j = 0; j < n; ++j) {
-      const V sin_2theta = V(2.0) * w.sin_row[j] * w.cos_row[j];
-      const V link_after = scaled<per_row>(coupling_row_, j, w.sin_link[j]);
+    const auto row = [&](std::size_t j) {
+      Row r{V(0.0), V(0.0), V(0.0)};
+      row_sincos(j, r.sin, r.cos);
+      const V sin_lag = r.sin * cos_t - r.cos * sin_t;
+      r.lag = scaled<per_row>(A_row_, j, sin_lag);
+      if constexpr (store) {
+        w.sin_row[j] = r.sin;
+        w.cos_row[j] = r.cos;
+        w.sin_lag[j] = sin_lag;
+        w.cos_lag[j] = r.cos * cos_t + r.sin * sin_t;
+        if constexpr (per_row) w.weighted_lag[j] = r.lag;
+      }
+      return r;
+    };
+    const auto link = [&](std::size_t j, const Row& a, const Row& b) {  // rows j and j + 1
+      Link l{a.sin * b.cos - a.cos * b.sin, V(0.0)};
+      if constexpr (cosines) l.cos = a.cos * b.cos + a.sin * b.sin;
+      if constexpr (store) {
+        w.sin_link[j] = l.sin;
+        w.cos_link[j] = l.cos;
+      }
+      l.sin = scaled<per_row>(coupling_row_, j, l.sin);
+      return l;
+    };
+    const auto torque = [&](std::size_t j, const Row& r, const V& link_after, const V& link_before) {
+      const V sin_2theta = V(2.0) * r.sin * r.cos;
       f[j] = inv_g * (V(-3.0) * scaled<per_row>(anisotropy_row_, j, sin_2theta) + link_after - link_before +
-                      A * lag[j]);
-      link_before = link_after;
-    }
+                      A * r.lag);
+    };
+
+    RowSums sums;
+    const Row last = row(n - 1), first = row(0);
+    const Link closing = link(n - 1, last, first);
+    sums.lag += first.lag;
+    Row previous = first;
+    V link_before = closing.sin;
+    const auto next = [&](std::size_t j, const Row& current) {  // row j, after row j - 1
+      sums.lag += current.lag;
+      const Link after = link(j - 1, previous, current);
+      if constexpr (cosines) sums.cos_link += after.cos;
+      torque(j - 1, previous, after.sin, link_before);
+      link_before = after.sin;
+      previous = current;
+    };
+    for (std::size_t j = 1; j + 1 < n; ++j) next(j, row(j));
+    next(n - 1, last);
+    if constexpr (cosines) sums.cos_link += closing.cos;
+    torque(n - 1, last, closing.sin, link_before);
+    return sums;
   }
 
   template <bool per_row>
@@ -302,18 +340,18 @@ class NearestNeighbourRows {
     return h;
   }
 
-  /// ρ̄ = (1/N) Σ cos²((θ_j − θ_{j+1})/2) = 1/2 + (1/2N) Σ cos(θ_j − θ_{j+1}), the ∫ρ̄ integrand.
-  ROTORSWEEP_HD V alignment_from_trigonometry(const Workspace& w) const {
-    V sum(0.0);
-    for (std::size_t j = 0; j < rows_; ++j) sum += w.cos_link[j];
-    return V(0.5) + V(0.5 / double(rows_)) * sum;
+  /// ρ̄ = (1/N) Σ cos²((θ_j − θ_{j+1})/2) = 1/2 + (1/2N) Σ cos(θ_j − θ_{j+1}), the ∫ρ̄ integrand,
+  /// from the sum of the links' cosines.
+  ROTORSWEEP_HD V alignment_from_link_sum(const V& cos_link_sum) const {
+    return V(0.5) + V(0.5 / double(rows_)) * cos_link_sum;
   }
 
   template <bool per_row>
-  ROTORSWEEP_HD void integrands(const Workspace& w, const V* f, V* qdot) const {
+  ROTORSWEEP_HD void integrands(const Workspace& w, const RowSums& sums, const V* f, V* qdot) const {
     row_integrands<Q>(
-        rows_, A_, g_, weighted_lag<per_row>(w), f, [&] { return alignment_from_trigonometry(w); },
-        [&] { return energy_from_trigonometry<per_row>(w); }, qdot);
+        rows_, A_, g_, [&] { return sums.lag; }, weighted_lag<per_row>(w), f,
+        [&] { return alignment_from_link_sum(sums.cos_link); }, [&] { return energy_from_trigonometry<per_row>(w); },
+        qdot);
   }
 
   template <bool per_row>

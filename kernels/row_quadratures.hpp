@@ -33,17 +33,22 @@ ROTORSWEEP_HD constexpr StateScale row_quadrature_scale(std::size_t p) {
   return Q.drive && p == Q.drive_index() ? StateScale::capped_relative : StateScale::relative;
 }
 
+/// Σ_j x_j over n rows, in row order.
+template <class V>
+ROTORSWEEP_HD V row_sum(std::size_t n, const V* x) {
+  V sum(0.0);
+  for (std::size_t j = 0; j < n; ++j) sum += x[j];
+  return sum;
+}
+
 /// The integrands at one point: R = A Σ lag_j, W = A Σ lag_j f_j, S = g Σ f_j², and ρ̄ and H from
-/// the model (alignment(), energy() are called only when asked for). `lag` is the drive's
-/// sin(θ_j − t), weighted by the row's share of A where rows differ.
-template <Integrals Q, class V, class Alignment, class Energy>
-ROTORSWEEP_HD void row_integrands(std::size_t n, const V& A, const V& g, const V* lag, const V* f,
-                                  Alignment&& alignment, Energy&& energy, V* qdot) {
-  if constexpr (Q.drive) {
-    V sum(0.0);
-    for (std::size_t j = 0; j < n; ++j) sum += lag[j];
-    qdot[Q.drive_index()] = A * sum;
-  }
+/// the model. `lag` is the drive's sin(θ_j − t), weighted by the row's share of A where rows
+/// differ, and lag_sum() its sum in row order (row_sum); the callables are called, and `lag` is
+/// read (for W), only when asked for.
+template <Integrals Q, class V, class LagSum, class Alignment, class Energy>
+ROTORSWEEP_HD void row_integrands(std::size_t n, const V& A, const V& g, LagSum&& lag_sum, const V* lag,
+                                  const V* f, Alignment&& alignment, Energy&& energy, V* qdot) {
+  if constexpr (Q.drive) qdot[Q.drive_index()] = A * lag_sum();
   if constexpr (Q.work) {
     V sum(0.0);
     for (std::size_t j = 0; j < n; ++j) sum += lag[j] * f[j];
