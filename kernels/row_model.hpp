@@ -195,7 +195,7 @@ class NearestNeighbourRows {
       return w.sin_lag;
   }
 
-  /// The integrands other than R and ρ̄ read the trigonometry of every row from the workspace.
+  /// W and H read every row's trigonometry from the workspace (R, S and ρ̄ do not).
   static constexpr bool integrands_read_rows = Q.work || Q.energy;
 
   template <bool per_row, bool store = integrands_read_rows>

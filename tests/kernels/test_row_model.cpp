@@ -1,7 +1,8 @@
 // Tests of the row model (kernels/row_model.hpp, docs/model.md §1, §3, §7): the Jacobian, ∂f/∂t and
 // the integrand gradients against central differences, uniform and with per-row disorder;
 // f = -∇H/g; N = 2 is the two-angle H_r; the disordered equations written out; zero deviations
-// give the uniform model's bits; a displaced stage evaluation agrees with evaluate().
+// give the uniform model's bits; a displaced stage evaluation agrees with evaluate(); models that
+// carry fewer integrals (and store no trigonometry) give the same bits.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -232,4 +233,70 @@ TEST_CASE("quadrature integrands follow model.md section 3", "[kernels][model]")
   CHECK(e.q[every.work_index()] == Approx(work).epsilon(1e-13));
   CHECK(e.q[every.stokes_index()] == Approx(stokes).epsilon(1e-13));
   CHECK(e.q[every.alignment_index()] == Approx(align).epsilon(1e-13));
+}
+
+namespace {
+
+/// f and the quadratures at θ (evaluate), and at θ + δ, t + τ (evaluate_displaced after
+/// linearize, whose f must be evaluate's), for model type M.
+struct FourEvaluations {
+  std::vector<double> f, q, f_displaced, q_displaced;
+};
+
+template <class M>
+FourEvaluations four_evaluations(const typename M::Parameters& p, const std::vector<double>& theta,
+                                 const std::vector<double>& delta, double t, double tau) {
+  const std::size_t n = theta.size();
+  constexpr std::size_t count = M::quadrature_count;
+  const auto m = rotorsweep::testing::model<M>(n, p);
+  auto w = rotorsweep::testing::workspace(m);
+  auto J = rotorsweep::testing::jacobian<typename M::Jacobian>(n);
+  FourEvaluations e{std::vector<double>(n), std::vector<double>(count), std::vector<double>(n),
+                    std::vector<double>(count)};
+  std::vector<double> f(n), q(count), df_dt(n), dq_dy(count * n), dq_dt(count);
+  m.evaluate(w, theta.data(), t, e.f.data(), e.q.data());
+  m.linearize(w, theta.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
+  CHECK(f == e.f);
+  m.evaluate_displaced(w, theta.data(), delta.data(), t, tau, e.f_displaced.data(), e.q_displaced.data());
+  return e;
+}
+
+}  // namespace
+
+TEST_CASE("models carrying fewer integrals give the same torques, R and rho-bar bits", "[kernels][model]") {
+  // without W and H an evaluation stores nothing in the workspace and takes the sums of R and ρ̄
+  // in its one pass over the rows; with them it stores every row's trigonometry: the bits agree
+  constexpr Integrals drive_and_alignment{true, false, false, true, false};
+  using Lean = NearestNeighbourRows<double, drive_and_alignment>;
+  using Leanest = NearestNeighbourRows<double, dissipation_only>;
+  const double t = 2.3, tau = 4e-3;
+  for (std::size_t n : {2u, 3u, 20u})
+    for (bool disordered : {false, true}) {
+      INFO("n " << n << ", disordered " << disordered);
+      const Deviations d(n);
+      const double* A_rows = disordered ? d.A.data() : nullptr;
+      const double* anisotropy_rows = disordered ? d.anisotropy.data() : nullptr;
+      const double* coupling_rows = disordered ? d.coupling.data() : nullptr;
+      const auto theta = random_angles(n, 23);
+      std::vector<double> delta(n);
+      for (std::size_t j = 0; j < n; ++j) delta[j] = 1e-3 * std::sin(3.0 * double(j) + 1.0);
+      const auto full = four_evaluations<Model>({4.1, 0.02, false, A_rows, anisotropy_rows, coupling_rows},
+                                                theta, delta, t, tau);
+      const auto lean = four_evaluations<Lean>({4.1, 0.02, false, A_rows, anisotropy_rows, coupling_rows},
+                                               theta, delta, t, tau);
+      const auto leanest = four_evaluations<Leanest>(
+          {4.1, 0.02, false, A_rows, anisotropy_rows, coupling_rows}, theta, delta, t, tau);
+      CHECK(lean.f == full.f);
+      CHECK(leanest.f == full.f);
+      CHECK(lean.f_displaced == full.f_displaced);
+      CHECK(leanest.f_displaced == full.f_displaced);
+      for (const auto* e : {&full, &lean, &leanest}) CHECK(e->f_displaced != e->f);  // δ moved them
+      const std::size_t R = every.drive_index(), rho = every.alignment_index();
+      CHECK(lean.q[drive_and_alignment.drive_index()] == full.q[R]);
+      CHECK(lean.q[drive_and_alignment.alignment_index()] == full.q[rho]);
+      CHECK(leanest.q[0] == full.q[R]);
+      CHECK(lean.q_displaced[drive_and_alignment.drive_index()] == full.q_displaced[R]);
+      CHECK(lean.q_displaced[drive_and_alignment.alignment_index()] == full.q_displaced[rho]);
+      CHECK(leanest.q_displaced[0] == full.q_displaced[R]);
+    }
 }
