@@ -1,6 +1,7 @@
 // `rotorsweep bench kernels`: single-thread throughput of the kernels, scalar and SIMD: RHS
 // evaluations (at a new point and at a stage's displacement), the bare vectorised sincos that
-// bounds them, step attempts per stepper, and the cost of per-row disorder (docs/model.md §7).
+// bounds them, step attempts per stepper with their share of that bound (the sincos bound over the
+// RHS evaluations an attempt takes), and the cost of per-row disorder (docs/model.md §7).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -146,8 +147,10 @@ int run_bench_kernels(const BenchKernelOptions& options) {
   for (std::size_t k = 0; k < kernels::stepper_names.size(); ++k) {
     const double s = step_rate<double>(k, rows, options.repeats);
     const double v = step_rate<simd_lane>(k, rows, options.repeats);
-    std::printf("  steps %-8s scalar %10.4g /s   SIMD %10.4g member-steps/s (%.1fx)\n",
-                kernels::stepper_names[k].data(), s, v, v / s);
+    using Model = kernels::NearestNeighbourRows<simd_lane, kernels::dissipation_only>;
+    const int evaluations = kernels::with_stepper<Model>(k, []<class Stepper>() { return Stepper::evaluations(); });
+    std::printf("  steps %-8s scalar %10.4g /s   SIMD %10.4g member-steps/s (%.1fx; %.2f of the bound for %d RHS)\n",
+                kernels::stepper_names[k].data(), s, v, v / s, v * evaluations / bound, evaluations);
   }
   const double disordered_rhs = rhs_rate<simd_lane>(rows, options.repeats, true);
   const double uniform_steps = step_rate<simd_lane>(0, rows, options.repeats);

@@ -35,6 +35,8 @@ class DormandPrince5 {
   static constexpr const char* name() { return dormand_prince5_tableau.name; }
   ROTORSWEEP_HD static constexpr int order() { return dormand_prince5_tableau.order; }
   ROTORSWEEP_HD static constexpr int embedded_order() { return dormand_prince5_tableau.embedded_order; }
+  /// Right-hand side evaluations per attempt: one per stage.
+  ROTORSWEEP_HD static constexpr int evaluations() { return dormand_prince5_tableau.stages; }
 
   /// One step of size h. Returns every lane: an explicit method follows unstable directions
   /// (its error estimate sees them), so no lane needs the implicit steppers' extra check.

@@ -47,6 +47,8 @@ class RosenbrockStepper {
   static constexpr const char* name() { return Table.name; }
   ROTORSWEEP_HD static constexpr int order() { return Table.order; }
   ROTORSWEEP_HD static constexpr int embedded_order() { return Table.embedded_order; }
+  /// Right-hand side evaluations per attempt: the linearisation and one per later stage.
+  ROTORSWEEP_HD static constexpr int evaluations() { return Table.stages; }
 
   /// One step of size h from (t, y, q). Returns the lanes where the step resolves every
   /// unstable direction of J: where J has an eigenvalue λ > 1/(hγ), the stage solves damp a
