@@ -57,6 +57,10 @@ lane_vector<V> afm_angles(std::size_t rows) {
 }
 
 /// Per-row deviations of relative size 1e-6 in all three quantities (or none).
+/// The model every measurement steps: the row model carrying only the drive's integral.
+template <class V>
+using BenchModel = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
+
 struct BenchDisorder {
   std::vector<double> deviations;
   BenchDisorder(std::size_t rows, bool on) {
@@ -73,7 +77,7 @@ struct BenchDisorder {
 /// 1e-3 from the last linearisation point, where each sincos comes by angle addition.
 template <class V>
 double rhs_rate(std::size_t rows, int repeats, bool disordered = false, bool displaced = false) {
-  using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
+  using Model = BenchModel<V>;
   lane_vector<V> storage(Model::storage_size(rows) + Model::Workspace::storage_size(rows) +
                          Model::Jacobian::storage_size(rows));
   kernels::LaneArena<V> arena(storage.data(), storage.size());
@@ -104,7 +108,7 @@ double sincos_rate(std::size_t rows, int repeats) {
 
 template <class V>
 double step_rate(kernels::StepperId id, std::size_t rows, int repeats, bool disordered = false) {
-  using Model = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
+  using Model = BenchModel<V>;
   lane_vector<V> model_storage(Model::storage_size(rows));
   kernels::LaneArena<V> model_arena(model_storage.data(), model_storage.size());
   const Model model(rows, model_arena,
@@ -147,8 +151,8 @@ int run_bench_kernels(const BenchKernelOptions& options) {
   for (std::size_t k = 0; k < kernels::stepper_names.size(); ++k) {
     const double s = step_rate<double>(k, rows, options.repeats);
     const double v = step_rate<simd_lane>(k, rows, options.repeats);
-    using Model = kernels::NearestNeighbourRows<simd_lane, kernels::dissipation_only>;
-    const int evaluations = kernels::with_stepper<Model>(k, []<class Stepper>() { return Stepper::evaluations(); });
+    const int evaluations =
+        kernels::with_stepper<BenchModel<simd_lane>>(k, []<class Stepper>() { return Stepper::evaluations(); });
     std::printf("  steps %-8s scalar %10.4g /s   SIMD %10.4g member-steps/s (%.1fx; %.2f of the bound for %d RHS)\n",
                 kernels::stepper_names[k].data(), s, v, v / s, v * evaluations / bound, evaluations);
   }
