@@ -59,7 +59,8 @@ lane_vector<V> afm_angles(std::size_t rows) {
 /// Per-row deviations of relative size 1e-6 in all three quantities (or none).
 /// The model every measurement steps: the row model carrying only the drive's integral.
 template <class V>
-using BenchModel = kernels::NearestNeighbourRows<V, kernels::dissipation_only>;
+using BenchModel = kernels::NearestNeighbourRows<V>;
+inline constexpr kernels::Integrals bench_integrals = kernels::dissipation_only;
 
 struct BenchDisorder {
   std::vector<double> deviations;
@@ -81,7 +82,8 @@ double rhs_rate(std::size_t rows, int repeats, bool disordered = false, bool dis
   lane_vector<V> storage(Model::storage_size(rows) + Model::Workspace::storage_size(rows) +
                          Model::Jacobian::storage_size(rows));
   kernels::LaneArena<V> arena(storage.data(), storage.size());
-  const Model model(rows, arena, BenchDisorder(rows, disordered).parameters<typename Model::Parameters>());
+  const Model model(rows, arena, bench_integrals,
+                    BenchDisorder(rows, disordered).parameters<typename Model::Parameters>());
   typename Model::Workspace work(rows, arena);
   typename Model::Jacobian jacobian(rows, arena);
   auto theta = afm_angles<V>(rows);
@@ -111,15 +113,15 @@ double step_rate(kernels::StepperId id, std::size_t rows, int repeats, bool diso
   using Model = BenchModel<V>;
   lane_vector<V> model_storage(Model::storage_size(rows));
   kernels::LaneArena<V> model_arena(model_storage.data(), model_storage.size());
-  const Model model(rows, model_arena,
+  const Model model(rows, model_arena, bench_integrals,
                     BenchDisorder(rows, disordered).parameters<typename Model::Parameters>());
   return kernels::with_stepper<Model>(id, [&]<class Stepper>() {
     using Integrator = kernels::AdaptiveIntegrator<Model, Stepper>;
     lane_vector<V> storage(Integrator::storage_size(rows) +
-                           kernels::LaneState<V>::storage_size(rows, Model::quadrature_count));
+                           kernels::LaneState<V>::storage_size(rows, Model::max_quadratures));
     kernels::LaneArena<V> arena(storage.data(), storage.size());
     Integrator integrator(model, {1e-6, 1e-9}, {}, arena);
-    kernels::LaneState<V> state(rows, Model::quadrature_count, arena);
+    kernels::LaneState<V> state(rows, Model::max_quadratures, arena);
     const auto theta = afm_angles<V>(rows);
     std::copy(theta.begin(), theta.end(), state.theta);
     state.t_stop = V(1e300);

@@ -7,7 +7,7 @@ foreach(part kernels ensemble io landscape)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${part}/ DESTINATION ${ROTORSWEEP_INCLUDE_DIR}/${part}
           FILES_MATCHING PATTERN "*.hpp")
 endforeach()
-foreach(part kernels io landscape ensemble_core)
+foreach(part kernels io landscape ensemble_core gpu)
   set_target_properties(rotorsweep_${part} PROPERTIES EXPORT_NAME ${part})
 endforeach()
 # the libraries carry the sweeps of the primary instruction set (the widest this machine runs)
@@ -18,7 +18,7 @@ target_link_libraries(rotorsweep_io INTERFACE $<INSTALL_INTERFACE:rotorsweep::en
 # built for (the SIMD lane width is part of their interface) and no floating-point contraction.
 target_compile_options(rotorsweep_kernels INTERFACE $<INSTALL_INTERFACE:-ffp-contract=off ${ROTORSWEEP_PRIMARY_FLAGS}>)
 
-install(TARGETS rotorsweep_kernels rotorsweep_ensemble_core rotorsweep_ensemble_${ROTORSWEEP_PRIMARY_ISA} rotorsweep_io
+install(TARGETS rotorsweep_kernels rotorsweep_gpu rotorsweep_ensemble_core rotorsweep_ensemble_${ROTORSWEEP_PRIMARY_ISA} rotorsweep_io
                 rotorsweep_landscape EXPORT rotorsweepTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 # the launcher and one binary per instruction set, side by side (the launcher looks beside itself)
 install(TARGETS ${ROTORSWEEP_COMMAND_TARGETS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -21,8 +21,7 @@ namespace rotorsweep::ensemble {
 template <class Model, class Stepper>
 struct DeviceMember {
   using Integrator = kernels::AdaptiveIntegrator<Model, Stepper>;
-  static constexpr kernels::Integrals Q = Model::integrals;
-  static constexpr std::size_t nq = Model::quadrature_count;
+  static constexpr std::size_t nq = Model::max_quadratures;  ///< quadrature slots of the state
 
   /// Lane values of scratch one member needs at N rows.
   ROTORSWEEP_HD static constexpr std::size_t storage_size(std::size_t n) {
@@ -36,7 +35,8 @@ struct DeviceMember {
                                 std::size_t capacity) {
     const std::size_t n = s.rows;
     kernels::LaneArena<double> arena(storage, capacity);
-    Model model(n, arena);
+    const kernels::Integrals Q = s.quadratures;
+    Model model(n, arena, Q);
     Integrator integrator(model, {s.rtol, s.atol},
                           {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
                           s.first_step_scale, arena);
@@ -59,20 +59,19 @@ struct DeviceMember {
         t_before = state.t;
       }
       const bool accepted = integrator.attempt(model, state);
-      if constexpr (Q.alignment)
-        alignment.accumulate(true, integrator.start_integrands()[Q.alignment_index()]);
+      if (Q.alignment) alignment.accumulate(true, integrator.start_integrands()[Q.alignment_index()]);
       if (accepted) {
-        if constexpr (Q.drive) swing.accumulate(true, state.quad[Q.drive_index()]);
+        if (Q.drive) swing.accumulate(true, state.quad[Q.drive_index()]);
         if (s.slips) slips.accumulate(true, n, theta_before, state.theta, state.t - t_before);
       }
       if (state.status[0] != kernels::LaneStatus::ok) break;
       if (state.t < state.t_stop) continue;
 
       PeriodRecord record;
-      record_quadratures<Q>(
-          record, [&](std::size_t p) { return state.quad[p]; }, Model::period);
-      if constexpr (Q.alignment) alignment.end_period(0, record);
-      if constexpr (Q.drive) swing.end_period(0, s.error_rtol, s.atol, record);
+      record_quadratures(
+          s.channels, Q, record, [&](std::size_t p) { return state.quad[p]; }, Model::period);
+      if (Q.alignment) alignment.end_period(0, record);
+      if (Q.drive) swing.end_period(0, s.error_rtol, s.atol, record);
       if (s.slips) slips.end_period(0, record);
       double* end = slots.end_states + (k * 4 + std::size_t(periods % 4)) * n;
       for (std::size_t j = 0; j < n; ++j) end[j] = state.theta[j];

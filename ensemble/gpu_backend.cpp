@@ -5,7 +5,6 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "ensemble/compile_time_choice.hpp"
 #include "ensemble/device_member.hpp"
 #include "kernels/row_model.hpp"
 #include "kernels/stepper_list.hpp"
@@ -19,13 +18,11 @@ std::string device_label(const Scene& scene) {
 
 std::size_t gpu_max_rows(const Scene& scene) {
   return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-    return with_integrals(scene.observables.quadratures(), [&]<kernels::Integrals Q>() {
-      using Model = kernels::NearestNeighbourRows<double, Q>;
-      using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
-      std::size_t n = 2;
-      while (DeviceMember<Model, Stepper>::storage_size(n + 1) <= gpu_scratch_sizes.back()) ++n;
-      return n - n % 2;  // rows come in even numbers
-    });
+    using Model = kernels::NearestNeighbourRows<double>;
+    using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
+    std::size_t n = 2;
+    while (DeviceMember<Model, Stepper>::storage_size(n + 1) <= gpu_thread_scratch) ++n;
+    return n - n % 2;  // rows come in even numbers
   });
 }
 

@@ -2,7 +2,6 @@
 // one variant on it, one member per GPU thread through the device driver (ensemble/device_member.hpp).
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <string>
 
@@ -25,9 +24,10 @@ const GpuInfo& gpu_info();
 /// "cpu", or "gpu (<name>)" for a scene with numerics.device = "gpu" (the result file's "device").
 std::string device_label(const Scene& scene);
 
-/// Scratch sizes (lane values per GPU thread) the kernels are compiled for; a member takes the
-/// smallest that holds DeviceMember::storage_size(N).
-inline constexpr std::array<std::size_t, 2> gpu_scratch_sizes{2048, 8192};
+/// Scratch (lane values per GPU thread) the kernel is compiled for: one size, so each stepper has
+/// one kernel. Local memory is reserved at this size for every resident thread (64 KiB each, about
+/// 18 GiB on an H100), but a member touches only DeviceMember::storage_size(N) of it.
+inline constexpr std::size_t gpu_thread_scratch = 8192;
 
 /// The most rows one member may have on the GPU with the scene's stepper (its scratch lives in
 /// per-thread memory of a fixed size), an even number like every row count.

@@ -25,14 +25,14 @@ inline void check(cudaError_t status, const char* what) {
 
 /// A thread's scratch is an array in local memory, which the GPU interleaves across a warp's
 /// threads: the same offset in every thread is one coalesced access.
-template <class Model, class Stepper, std::size_t Scratch>
+template <class Model, class Stepper>
 __global__ void sweep_slots(SlotSchedule schedule, SlotViews slots, unsigned long long count,
                             unsigned long long* next) {
-  double storage[Scratch];
+  double storage[gpu_thread_scratch];
   for (;;) {
     const unsigned long long k = atomicAdd(next, 1ull);
     if (k >= count) return;
-    DeviceMember<Model, Stepper>::run(schedule, slots, std::size_t(k), storage, Scratch);
+    DeviceMember<Model, Stepper>::run(schedule, slots, std::size_t(k), storage, gpu_thread_scratch);
   }
 }
 
@@ -87,15 +87,13 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
   if (!info.available) throw std::runtime_error("numerics.device = \"gpu\": " + info.why);
   const Member variant = range.source->at(range.begin);
   const std::size_t needed = Driver::storage_size(variant.rows);
-  if (needed > gpu_scratch_sizes.back())
+  if (needed > gpu_thread_scratch)
     throw std::runtime_error("model.rows = " + std::to_string(variant.rows) + " is more than the GPU backend holds (" +
                              std::to_string(gpu_max_rows(scene)) + " rows with this stepper)");
   const SlotSchedule schedule = slot_schedule(
       scene, variant, Driver::Integrator::first_step_scale({variant.rtol, variant.atol}));
 
-  using Kernel = void (*)(SlotSchedule, SlotViews, unsigned long long, unsigned long long*);
-  const Kernel kernel = needed <= gpu_scratch_sizes[0] ? sweep_slots<Model, Stepper, gpu_scratch_sizes[0]>
-                                                   : sweep_slots<Model, Stepper, gpu_scratch_sizes[1]>;
+  const auto kernel = sweep_slots<Model, Stepper>;
   const GpuLaunch launch = gpu_launch();
   int blocks = launch.blocks;
   if (blocks <= 0) {

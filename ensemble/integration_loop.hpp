@@ -1,4 +1,4 @@
-// The integration loop of one block of lanes (docs/architecture.md "Driver"): caller-owned storage,
+// The integration loop of one block of lanes (docs/architecture.md "Layers"): caller-owned storage,
 // a model, its integrator (adaptive, or the Langevin stepper) and the lane state; steps every lane
 // in lockstep and gives its observers their hooks without knowing what they compute.
 #pragma once
@@ -25,24 +25,28 @@ class IntegrationLoop {
   using V = typename Model::lane_type;
   using Parameters = typename Model::Parameters;
   static constexpr std::size_t width = kernels::lane_width<V>;
-  static constexpr std::size_t quadrature_count = Model::quadrature_count;
+  /// Quadrature slots of the state: the most the model can carry (it carries quadrature_count()).
+  static constexpr std::size_t quadrature_slots = Model::max_quadratures;
   static constexpr double period = Model::period;
   /// Whether the integrator draws noise (then every member also gets a noise stream).
   static constexpr bool stochastic = Integrator::stochastic;
   using Settings = typename Integrator::Settings;
 
-  IntegrationLoop(std::size_t dimension, const Settings& settings)
+  /// `model_arguments` follow the dimension and the arena into the model's constructor (the row
+  /// models' carried quadratures).
+  template <class... ModelArguments>
+  IntegrationLoop(std::size_t dimension, const Settings& settings, const ModelArguments&... model_arguments)
       : storage_(storage_size(dimension)),
         arena_(storage_.data(), storage_.size()),
-        model_(dimension, arena_),
+        model_(dimension, arena_, model_arguments...),
         integrator_(model_, settings, arena_),
-        state_(dimension, quadrature_count, arena_),
+        state_(dimension, quadrature_slots, arena_),
         work_(dimension, arena_) {
     for (auto& s : state_.status) s = kernels::LaneStatus::idle;
   }
 
   static std::size_t storage_size(std::size_t n) {
-    return Integrator::storage_size(n) + kernels::LaneState<V>::storage_size(n, quadrature_count) +
+    return Integrator::storage_size(n) + kernels::LaneState<V>::storage_size(n, quadrature_slots) +
            Model::Workspace::storage_size(n) + Model::storage_size(n);
   }
 
@@ -55,7 +59,7 @@ class IntegrationLoop {
   /// Puts a member into `lane`: parameters, y(0), t = 0, the first period ahead.
   void start(std::size_t lane, const Parameters& parameters, const std::vector<double>& y0) {
     for (std::size_t k = 0; k < dimension(); ++k) kernels::lane_set(state_.theta[k], lane, y0[k]);
-    for (std::size_t p = 0; p <= quadrature_count; ++p) kernels::lane_set(state_.quad[p], lane, 0.0);
+    for (std::size_t p = 0; p <= quadrature_slots; ++p) kernels::lane_set(state_.quad[p], lane, 0.0);
     kernels::lane_set(state_.t, lane, 0.0);
     kernels::lane_set(state_.h, lane, 0.0);
     kernels::lane_set(state_.t_stop, lane, period);
@@ -98,7 +102,7 @@ class IntegrationLoop {
   /// again at t = 0 with every angle in [0, 2π) (the model is 2π-periodic in t and in each angle),
   /// so that long runs keep full precision.
   void next_period(std::size_t lane, bool wrap) {
-    for (std::size_t p = 0; p <= quadrature_count; ++p) kernels::lane_set(state_.quad[p], lane, 0.0);
+    for (std::size_t p = 0; p <= quadrature_slots; ++p) kernels::lane_set(state_.quad[p], lane, 0.0);
     if (!wrap) {
       kernels::lane_set(state_.t_stop, lane, kernels::lane_get(state_.t, lane) + period);
       return;

@@ -1,4 +1,4 @@
-// The step reducers bound to an integration loop's hooks (docs/architecture.md "Observers"): each
+// The step reducers bound to an integration loop's hooks (docs/architecture.md "Observables"): each
 // sees a lane start, every step, and a period's end, where it writes its channels.
 #pragma once
 
@@ -11,24 +11,33 @@
 namespace rotorsweep::ensemble {
 
 /// Extremes of ρ̄ at the points where the period's steps start (channels alignment_min,
-/// alignment_max): ρ̄ is the integrand of the ∫ρ̄ quadrature, which every attempt evaluates at its
-/// start, so the extremes cost no trigonometry of their own.
+/// alignment_max): ρ̄ is the integrand of the ∫ρ̄ quadrature (at `index` among the model's), which
+/// every attempt evaluates at its start, so the extremes cost no trigonometry of their own.
+/// Switched off (a model that does not carry ∫ρ̄), it costs one branch per step.
 template <class Loop>
 class AlignmentObserver {
  public:
   using V = typename Loop::V;
-  static constexpr std::size_t index = Loop::model_type::integrals.alignment_index();
+  AlignmentObserver(bool enabled, std::size_t index) : enabled_(enabled), index_(index) {}
 
-  void start(Loop&, std::size_t lane) { extrema_.start_lane(lane); }
-  void before_step(Loop& loop) { stepping_ = loop.state().stepping(); }
-  void after_step(Loop& loop, kernels::lane_mask<V>) {
-    extrema_.accumulate(stepping_, loop.start_integrands()[index]);
+  void start(Loop&, std::size_t lane) {
+    if (enabled_) extrema_.start_lane(lane);
   }
-  void end_period(std::size_t lane, PeriodRecord& record) { extrema_.end_period(lane, record); }
+  void before_step(Loop& loop) {
+    if (enabled_) stepping_ = loop.state().stepping();
+  }
+  void after_step(Loop& loop, kernels::lane_mask<V>) {
+    if (enabled_) extrema_.accumulate(stepping_, loop.start_integrands()[index_]);
+  }
+  void end_period(std::size_t lane, PeriodRecord& record) {
+    if (enabled_) extrema_.end_period(lane, record);
+  }
 
  private:
   AlignmentExtrema<V> extrema_;
   kernels::lane_mask<V> stepping_{};
+  bool enabled_;
+  std::size_t index_;
 };
 
 /// Slip events (channel slips); switched off, it costs one branch per step.
@@ -63,25 +72,31 @@ class SlipObserver {
   bool enabled_;
 };
 
-/// The swing of the dissipation integral (channel dissipation_error) at the member's tolerances;
-/// error_rtol is rtol times the stepper's swing_error_factor.
+/// The swing of the dissipation integral R (at `index` among the model's quadratures; channel
+/// dissipation_error) at the member's tolerances; error_rtol is rtol times the stepper's
+/// swing_error_factor. Switched off (no R, or a stochastic integrator), it costs one branch per step.
 template <class Loop>
 class DissipationErrorObserver {
  public:
   using V = typename Loop::V;
-  DissipationErrorObserver(double error_rtol, double atol) : error_rtol_(error_rtol), atol_(atol) {}
+  DissipationErrorObserver(bool enabled, std::size_t index, double error_rtol, double atol)
+      : enabled_(enabled), index_(index), error_rtol_(error_rtol), atol_(atol) {}
 
-  void start(Loop&, std::size_t lane) { swing_.start_lane(lane); }
+  void start(Loop&, std::size_t lane) {
+    if (enabled_) swing_.start_lane(lane);
+  }
   void before_step(Loop&) {}
   void after_step(Loop& loop, kernels::lane_mask<V> accepted) {
-    swing_.accumulate(accepted, loop.state().quad[Loop::model_type::integrals.drive_index()]);
+    if (enabled_) swing_.accumulate(accepted, loop.state().quad[index_]);
   }
   void end_period(std::size_t lane, PeriodRecord& record) {
-    swing_.end_period(lane, error_rtol_, atol_, record);
+    if (enabled_) swing_.end_period(lane, error_rtol_, atol_, record);
   }
 
  private:
   DissipationSwing<V> swing_;
+  bool enabled_;
+  std::size_t index_;
   double error_rtol_, atol_;
 };
 

@@ -1,4 +1,4 @@
-// The lane scheduler (docs/architecture.md "Driver"): takes members from the plan into the lanes
+// The lane scheduler (docs/architecture.md "Layers"): takes members from the plan into the lanes
 // of an integration loop, closes their periods into records, and retires and refills lanes.
 #pragma once
 
@@ -25,26 +25,16 @@
 
 namespace rotorsweep::ensemble {
 
-/// The step observers a loop's model can feed: the alignment extremes where it integrates ρ̄, the
-/// dissipation's error estimate where it integrates R with error control (the slip counter is
-/// always there; at T > 0 the error of D is statistical and comes from the periods, see finish()).
+/// The step observers a loop's model can feed, switched on by what it carries: the alignment
+/// extremes where it integrates ρ̄, the dissipation's error estimate where it integrates R with
+/// error control (the slip counter is always there; at T > 0 the error of D is statistical and
+/// comes from the periods, see finish()).
 template <class Loop>
-auto quadrature_observers(const Scene& scene, const Member& variant) {
-  constexpr kernels::Integrals Q = Loop::model_type::integrals;
-  const auto alignment = [] {
-    if constexpr (Q.alignment)
-      return std::tuple<AlignmentObserver<Loop>>();
-    else
-      return std::tuple<>();
-  };
-  const auto dissipation = [&] {
-    if constexpr (Q.drive && !Loop::stochastic)
-      return std::tuple(DissipationErrorObserver<Loop>(
-          kernels::stepper_swing_error_factors[scene.stepper] * variant.rtol, variant.atol));
-    else
-      return std::tuple<>();
-  };
-  return std::tuple_cat(alignment(), dissipation());
+auto quadrature_observers(const Scene& scene, const Member& variant, kernels::Integrals carried) {
+  return std::tuple(AlignmentObserver<Loop>(carried.alignment, carried.alignment_index()),
+                    DissipationErrorObserver<Loop>(
+                        carried.drive && !Loop::stochastic, carried.drive_index(),
+                        kernels::stepper_swing_error_factors[scene.stepper] * variant.rtol, variant.atol));
 }
 
 /// The integrator settings of a variant: tolerances and step limits for the adaptive integrators,
@@ -59,23 +49,27 @@ typename Integrator::Settings integrator_settings(const Scene& scene, const Memb
 }
 
 /// Runs members of one variant (one dimension and tolerances) through the lanes of an
-/// IntegrationLoop<Model, Integrator>. `Setup` turns a member into the model's parameters and its
-/// initial state: initial_state(member) and parameters(member, y0), and with a stochastic integrator
-/// its noise stream: noise_key(member). Each lane owns its member; a
+/// IntegrationLoop<Model, Integrator>. `Setup` gives the model's construction arguments after the
+/// dimension and the arena (model_arguments(), a tuple: the row models' quadratures) and turns a
+/// member into the model's parameters and its initial state: initial_state(member) and
+/// parameters(member, y0), and with a stochastic integrator its noise stream: noise_key(member).
+/// The model reports the quadratures it carries (integrals()). Each lane owns its member; a
 /// member that finishes or fails retires at once and (with scene.refill) its lane takes the next.
 template <kernels::LaneModel Model, class Integrator, class Setup>
 class LaneScheduler {
  public:
   using Loop = IntegrationLoop<Model, Integrator>;
   static constexpr std::size_t width = Loop::width;
-  static constexpr kernels::Integrals Q = Model::integrals;
 
   LaneScheduler(const Scene& scene, const Member& variant, Setup setup)
       : scene_(scene),
         setup_(std::move(setup)),
         settings_(integrator_settings<Integrator>(scene, variant)),
-        loop_(variant.rows, settings_),
-        observers_(quadrature_observers<Loop>(scene, variant)),
+        loop_(std::apply([&](const auto&... arguments) { return Loop(variant.rows, settings_, arguments...); },
+                         setup_.model_arguments())),
+        carried_(loop_.model().integrals()),
+        channels_(quadrature_channels(carried_)),
+        observers_(quadrature_observers<Loop>(scene, variant, carried_)),
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
         profiles_(variant.rows, scene.row_profiles),
         lanes_(width) {}
@@ -158,8 +152,8 @@ class LaneScheduler {
   template <class Retire>
   void close_period(std::size_t l, Retire& retire) {
     PeriodRecord record;
-    record_quadratures<Q>(
-        record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period);
+    record_quadratures(
+        channels_, carried_, record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period);
     for_each_observer([&](auto& observer) { observer.end_period(l, record); });
     if constexpr (Loop::stochastic)
       record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
@@ -258,8 +252,10 @@ class LaneScheduler {
   Setup setup_;
   typename Loop::Settings settings_;
   Loop loop_;
-  decltype(quadrature_observers<Loop>(std::declval<const Scene&>(),
-                                      std::declval<const Member&>())) observers_;
+  kernels::Integrals carried_;       ///< the quadratures the model carries
+  QuadratureChannels channels_;      ///< the channels they fill
+  decltype(quadrature_observers<Loop>(std::declval<const Scene&>(), std::declval<const Member&>(),
+                                      kernels::Integrals{})) observers_;
   SlipObserver<Loop> slips_;
   RowProfileObserver<Loop> profiles_;
   std::vector<Lane> lanes_;

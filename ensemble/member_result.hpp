@@ -36,28 +36,33 @@ struct QuadratureChannel {
   bool mean;
 };
 
-/// The quadrature channels of `observables` that a model carrying Q fills, and how many.
-template <kernels::Integrals Q>
-constexpr auto quadrature_channels() {
-  std::array<QuadratureChannel, channel_count> out{};
+/// The quadrature channels of `observables` that a model carrying a set of quadratures fills.
+/// Plain data: computed on the host, it travels to a GPU thread by value.
+struct QuadratureChannels {
+  std::array<QuadratureChannel, channel_count> channels{};
   std::size_t count = 0;
+};
+
+/// The channels of the declarations whose quadrature `carried` holds, in declaration order.
+constexpr QuadratureChannels quadrature_channels(kernels::Integrals carried) {
+  QuadratureChannels out;
   for (const auto& observable : observables)
     for (std::size_t c = 0; c < observable.channel_count; ++c) {
       const ChannelDeclaration& channel = observable.channels[c];
-      if (channel.source == Source::step_reducer || !Q.carries(channel.quadrature)) continue;
-      out[count++] = {channel.channel, channel.quadrature, channel.source == Source::quadrature_mean};
+      if (channel.source == Source::step_reducer || !carried.carries(channel.quadrature)) continue;
+      out.channels[out.count++] = {channel.channel, channel.quadrature, channel.source == Source::quadrature_mean};
     }
-  return std::pair(out, count);
+  return out;
 }
 
-/// Writes the channels of a period of length `period` from its quadratures' integrals
-/// (integral(p) for quadrature p of Q), on the host and on a GPU thread alike.
-template <kernels::Integrals Q, class Integral>
-ROTORSWEEP_HD void record_quadratures(PeriodRecord& record, Integral&& integral, double period) {
-  constexpr auto channels = quadrature_channels<Q>();
-  for (std::size_t i = 0; i < channels.second; ++i) {
-    const QuadratureChannel c = channels.first[i];
-    const double value = integral(Q.index(c.quadrature));
+/// Writes `channels` of a period of length `period` from its quadratures' integrals (integral(p)
+/// for quadrature p of `carried`), on the host and on a GPU thread alike.
+template <class Integral>
+ROTORSWEEP_HD void record_quadratures(const QuadratureChannels& channels, kernels::Integrals carried,
+                                      PeriodRecord& record, Integral&& integral, double period) {
+  for (std::size_t i = 0; i < channels.count; ++i) {
+    const QuadratureChannel c = channels.channels[i];
+    const double value = integral(carried.index(c.quadrature));
     record[c.channel] = c.mean ? value / period : value;
   }
 }

@@ -27,6 +27,8 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   s.max_steps = scene.max_steps;
   s.controller = scene.controller;
   s.first_step_scale = first_step_scale;
+  s.quadratures = scene.observables.quadratures();
+  s.channels = quadrature_channels(s.quadratures);
   // the averaged periods and the two the steady test compares; every period with period_series
   s.record_capacity = std::size_t(std::max(scene.average_periods, 2));
   if (scene.period_series) s.record_capacity = std::max(s.record_capacity, std::size_t(s.period_limit()));

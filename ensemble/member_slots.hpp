@@ -28,6 +28,8 @@ struct SlotSchedule {
   kernels::StepController controller = kernels::StepController::integral;
   double first_step_scale = 0;      ///< computed on the host (kernels::AdaptiveIntegrator)
   std::size_t record_capacity = 0;  ///< period records a slot keeps (a ring)
+  kernels::Integrals quadratures{};  ///< what the row model carries (the scene's observables)
+  QuadratureChannels channels{};     ///< the period channels those quadratures fill
 
   /// Periods a member can run at most.
   ROTORSWEEP_HD int period_limit() const {

@@ -4,9 +4,12 @@
 
 #include <array>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <string_view>
 
 #include "kernels/integrals.hpp"
+#include "kernels/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -23,6 +26,7 @@ enum class Channel : std::size_t {
   dissipation_error,
 };
 inline constexpr std::size_t channel_count = 9;
+static_assert(std::size_t(Channel::dissipation_error) + 1 == channel_count, "channel_count: Channel's last + 1");
 
 /// Where a channel's value for a period comes from.
 enum class Source {
@@ -76,6 +80,49 @@ constexpr ChannelDeclaration channel(Channel c, std::string_view column, std::st
 }
 }  // namespace declare
 
+namespace declare {
+/// Text made by a constexpr function, kept in a static array so that declarations can view it.
+template <std::string (*make)()>
+struct StaticText {
+  static constexpr std::size_t size = make().size();
+  static constexpr std::array<char, size> chars = [] {
+    std::array<char, size> a{};
+    const std::string text = make();
+    for (std::size_t i = 0; i < size; ++i) a[i] = text[i];
+    return a;
+  }();
+  static constexpr std::string_view view{chars.data(), size};
+};
+
+/// "κ = 1/8 rodas4p2, 1/4 rodas4, else 1": the steppers' swing error factors below 1, smallest
+/// first, from the stepper list (kernels/stepper_list.hpp); each must be 1 over an integer.
+constexpr std::string swing_error_factors() {
+  constexpr auto& factors = kernels::stepper_swing_error_factors;
+  std::string text = "κ =";
+  std::array<bool, factors.size()> listed{};
+  for (;;) {
+    std::size_t next = factors.size();
+    for (std::size_t i = 0; i < factors.size(); ++i)
+      if (!listed[i] && factors[i] < 1.0 && (next == factors.size() || factors[i] < factors[next])) next = i;
+    if (next == factors.size()) break;
+    listed[next] = true;
+    const auto denominator = static_cast<unsigned>(1.0 / factors[next]);
+    if (1.0 / double(denominator) != factors[next]) throw std::logic_error("swing_error_factor is not 1/n");
+    std::string digits;
+    for (unsigned d = denominator; d > 0; d /= 10) digits.insert(digits.begin(), char('0' + d % 10));
+    text += " 1/" + digits + " " + std::string(kernels::stepper_names[next]) + ",";
+  }
+  return text + " else 1";
+}
+constexpr std::string dissipation_error_channel_text() {
+  return "error estimate of R_k: κ rtol max_t |R(t)| + atol, " + swing_error_factors() + " (docs/numerics.md)";
+}
+constexpr std::string dissipation_error_summary_text() {
+  return "estimated integration error of D: mean over the averaged periods of κ rtol max_t |R(t)| + atol (" +
+         swing_error_factors() + ")";
+}
+}  // namespace declare
+
 /// The declarations, in Observable order. Adding an observable: one entry here (its channels in
 /// Channel), its integrand in the models that can report it, and a test.
 inline constexpr std::array<ObservableDeclaration, observable_count> observables{{
@@ -89,12 +136,9 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
            {Summary::spread, "dissipation_std", "population spread of D"}),
        declare::channel(
            Channel::dissipation_error, "dissipation_error",
-           "error estimate of R_k: κ rtol max_t |R(t)| + atol, κ = 1/8 rodas4p2, 1/4 rodas4, else 1 "
-           "(docs/numerics.md)",
-           Source::step_reducer, kernels::Quadrature::drive,
-           {Summary::mean, "dissipation_error",
-            "estimated integration error of D: mean over the averaged periods of "
-            "κ rtol max_t |R(t)| + atol (κ = 1/8 rodas4p2, 1/4 rodas4, else 1)"})}},
+           declare::StaticText<declare::dissipation_error_channel_text>::view, Source::step_reducer,
+           kernels::Quadrature::drive,
+           {Summary::mean, "dissipation_error", declare::StaticText<declare::dissipation_error_summary_text>::view})}},
      2},
     {"estimators",
      false,
@@ -135,6 +179,30 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
 }};
 
 constexpr const ObservableDeclaration& declaration(Observable o) { return observables[std::size_t(o)]; }
+
+namespace declare {
+/// Whether the declarations and the enums agree: every Channel declared exactly once (so
+/// channel_count is right), and a channel read from a quadrature names one its observable carries.
+constexpr bool consistent() {
+  std::array<int, channel_count> seen{};
+  for (const auto& o : observables)
+    for (std::size_t c = 0; c < o.channel_count; ++c) {
+      const auto& ch = o.channels[c];
+      if (std::size_t(ch.channel) >= channel_count) return false;
+      ++seen[std::size_t(ch.channel)];
+      if (ch.source != Source::step_reducer && !o.quadratures.carries(ch.quadrature)) return false;
+    }
+  for (int n : seen)
+    if (n != 1) return false;
+  return true;
+}
+static_assert(consistent(), "observables: each Channel declared once, quadrature channels carried by their observable");
+static_assert(declaration(Observable::dissipation).key == "dissipation" &&
+              declaration(Observable::estimators).key == "estimators" &&
+              declaration(Observable::alignment).key == "alignment" && declaration(Observable::energy).key == "energy" &&
+              declaration(Observable::slips).key == "slips" && std::size_t(Observable::slips) + 1 == observable_count,
+              "observables: the declarations are in Observable order");
+}  // namespace declare
 
 /// Which observables a scene asks for.
 struct ObservableSet {

@@ -28,13 +28,13 @@ class RowProfileObserver {
   RowProfileObserver(std::size_t dimension, bool enabled)
       : n_(dimension),
         enabled_(enabled && reports),
-        storage_(enabled_ ? 9 * dimension + Loop::quadrature_count + 1 : 0) {
+        storage_(enabled_ ? 9 * dimension + Loop::quadrature_slots + 1 : 0) {
     if (!enabled_) return;
     kernels::LaneArena<V> arena(storage_.data(), storage_.size());
     for (V** view : {&theta_before_, &f_before_, &f_now_, &theta_node_, &drive_node_, &link_node_,
                      &drive_sum_, &link_sum_, &scratch_})
       *view = arena.take(n_);
-    qdot_ = arena.take(Loop::quadrature_count + 1);
+    qdot_ = arena.take(Loop::quadrature_slots + 1);
     for (std::size_t j = 0; j < n_; ++j) drive_sum_[j] = link_sum_[j] = V(0.0);
   }
 

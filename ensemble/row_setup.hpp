@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <tuple>
 #include <vector>
 
 #include "ensemble/disorder.hpp"
@@ -18,6 +19,10 @@ struct RowSetup {
   explicit RowSetup(const Scene* s) : scene(s) {}
 
   const Scene* scene;
+
+  /// The model's construction arguments after the rows and the arena: the quadratures the scene's
+  /// observables need.
+  std::tuple<kernels::Integrals> model_arguments() const { return {scene->observables.quadratures()}; }
 
   std::vector<double> initial_state(const Member& member) const {
     return member_initial_angles(*scene, member);

@@ -71,7 +71,7 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
         substrate_table(scene, size, members[block[l]].separation)));
 
   const std::size_t storage = Model::storage_size(n) + Integrator::storage_size(dim) +
-                              kernels::LaneState<V>::storage_size(dim, Model::quadrature_count) +
+                              kernels::LaneState<V>::storage_size(dim, Model::max_quadratures) +
                               Model::Workspace::storage_size(dim) + 2 * dim;
   lane_vector<V> memory(storage);
   kernels::LaneArena<V> arena(memory.data(), storage);
@@ -83,7 +83,7 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
   limits.h_max = kernels::two_pi / double(scene.samples_per_period);
   limits.max_steps = scene.max_steps;
   Integrator integrator(model, kernels::Tolerances{scene.rtol, scene.atol}, limits, arena);
-  kernels::LaneState<V> state(dim, Model::quadrature_count, arena);
+  kernels::LaneState<V> state(dim, Model::max_quadratures, arena);
   typename Model::Workspace work(dim, arena);
   V* f = arena.take(dim);
   V* q = arena.take(dim);  // quadrature integrands (only the first two used)

@@ -1,4 +1,4 @@
-// Reducers that watch every accepted step of a lane block (docs/architecture.md "Observers"): the
+// Reducers that watch every accepted step of a lane block (docs/architecture.md "Observables"): the
 // extremes of the alignment ρ̄, the count of slip events (docs/model.md §3) and the swing of the
 // dissipation integral that bounds its error (docs/numerics.md).
 #pragma once

@@ -1,4 +1,4 @@
-// Runs a whole member plan (architecture.md data flow): lane blocks on OpenMP threads take
+// Runs a whole member plan (docs/architecture.md "Layers"): lane blocks on OpenMP threads take
 // members from one shared counter; results land at their member index, whatever the order.
 #pragma once
 

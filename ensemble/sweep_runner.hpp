@@ -1,5 +1,5 @@
-// The compile-time side of run_members: picks the lane type and the quadratures the scene's
-// observables need, and runs lane schedulers of that instantiation on OpenMP threads.
+// The compile-time side of run_members: picks the lane type and the row model a scene needs, and
+// runs lane schedulers of that instantiation on OpenMP threads.
 #pragma once
 
 #include <omp.h>
@@ -61,19 +61,16 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, 
   return outcome;
 }
 
-/// Calls f.template operator()<Model>() with the row model in the scene's lane type and with the
-/// quadratures its observables need: NearestNeighbourRows for today's model, CoupledRows for a
-/// coupling table or open rows.
+/// Calls f.template operator()<Model>() with the row model in the scene's lane type:
+/// NearestNeighbourRows for today's model, CoupledRows for a coupling table or open rows. The
+/// quadratures its observables need are chosen at run time (RowSetup::model_arguments).
 template <class F>
 decltype(auto) with_row_model(const Scene& scene, F&& f) {
   return with_flag(scene.lanes == LaneKind::simd, [&]<bool simd>() {
     using V = std::conditional_t<simd, kernels::simd_lane, double>;
     return with_flag(!scene.couplings.nearest_neighbour(), [&]<bool coupled>() {
-      return with_integrals(scene.observables.quadratures(), [&]<kernels::Integrals Q>() {
-        using Model =
-            std::conditional_t<coupled, kernels::CoupledRows<V, Q>, kernels::NearestNeighbourRows<V, Q>>;
-        return f.template operator()<Model>();
-      });
+      using Model = std::conditional_t<coupled, kernels::CoupledRows<V>, kernels::NearestNeighbourRows<V>>;
+      return f.template operator()<Model>();
     });
   });
 }

@@ -21,7 +21,7 @@ template <LaneModel System, class Stepper>
 class AdaptiveIntegrator {
  public:
   using V = typename System::lane_type;
-  static constexpr std::size_t nq = System::quadrature_count;
+  static constexpr std::size_t nq = System::max_quadratures;  ///< storage; the model's carried ones step
 
   /// Lane values of scratch for a model of dimension n (the stepper's included).
   static constexpr std::size_t storage_size(std::size_t n) {
@@ -80,18 +80,17 @@ class AdaptiveIntegrator {
     const V h = lane_select(active, lane_min(s.h, remaining), V(idle_step));
     const lane_mask<V> resolved =
         stepper_.attempt(system, s.t, h, s.theta, s.quad, y_new_, q_new_, y_error_, q_error_);
-    constexpr auto controlled = System::error_controlled;
-    const V err =
-        error_norm(system, tol_, s.theta, y_new_, y_error_, controlled.data(), s.quad, q_new_, q_error_);
+    const V err = error_norm(system, tol_, s.theta, y_new_, y_error_, s.quad, q_new_, q_error_);
 
+    const std::size_t carried = system.quadrature_count();
     V checksum(0.0);
     for (std::size_t k = 0; k < n; ++k) checksum += y_new_[k];
-    for (std::size_t p = 0; p < nq; ++p) checksum += q_new_[p];
+    for (std::size_t p = 0; p < carried; ++p) checksum += q_new_[p];
     const lane_mask<V> finite = lane_isfinite(err) & lane_isfinite(checksum);
     const lane_mask<V> accept = active & finite & resolved & (err <= V(1.0));
 
     for (std::size_t k = 0; k < n; ++k) s.theta[k] = lane_select(accept, y_new_[k], s.theta[k]);
-    for (std::size_t p = 0; p < nq; ++p) s.quad[p] = lane_select(accept, q_new_[p], s.quad[p]);
+    for (std::size_t p = 0; p < carried; ++p) s.quad[p] = lane_select(accept, q_new_[p], s.quad[p]);
     s.t = lane_select(accept, lane_select(clipped, s.t_stop, s.t + h), s.t);
 
     V h_next = h * step_factor(limits_, Stepper::embedded_order(),

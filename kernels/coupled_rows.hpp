@@ -21,17 +21,15 @@ namespace rotorsweep::kernels {
 /// and g dθ_j/dt = −∂H/∂θ_j. Periodic rows wrap j + u (2M < N, so that no pair is counted twice);
 /// open rows drop the pairs that would cross an edge (M < N). The table is the same in every lane
 /// (a scene's), A and g are per lane. One sincos per row and one for the drive phase per
-/// evaluation; the pair terms follow from products. It satisfies LaneModel.
-template <class V, Integrals Q>
+/// evaluation; the pair terms follow from products. It carries the quadratures of the Integrals
+/// given at construction and satisfies LaneModel.
+template <class V>
 class CoupledRows {
  public:
   using lane_type = V;
   using Jacobian = DenseSymmetric<V>;
   static constexpr double period = two_pi;
-  static constexpr Integrals integrals = Q;
-  static constexpr std::size_t quadrature_count = Q.count();
-  /// Which quadratures steer the step size (kernels/row_quadratures.hpp).
-  static constexpr std::array<bool, quadrature_count + 1> error_controlled = row_error_controlled<Q>();
+  static constexpr std::size_t max_quadratures = Integrals::max_count;
 
   /// One lane's parameters; the table (a, b[0 .. range), c[0 .. range)) and the boundary must be
   /// the same in every lane.
@@ -62,12 +60,12 @@ class CoupledRows {
     V* product;            // J·v products for the integrand gradients
   };
 
-  ROTORSWEEP_HD CoupledRows(std::size_t rows, LaneArena<V>& arena)
-      : rows_(rows), b_(arena.take(rows)), c_(arena.take(rows)) {
+  ROTORSWEEP_HD CoupledRows(std::size_t rows, LaneArena<V>& arena, Integrals carried)
+      : rows_(rows), integrals_(carried), b_(arena.take(rows)), c_(arena.take(rows)) {
     for (std::size_t u = 0; u < rows; ++u) b_[u] = c_[u] = V(0.0);
   }
-  ROTORSWEEP_HD CoupledRows(std::size_t rows, LaneArena<V>& arena, const Parameters& p)
-      : CoupledRows(rows, arena) {
+  ROTORSWEEP_HD CoupledRows(std::size_t rows, LaneArena<V>& arena, Integrals carried, const Parameters& p)
+      : CoupledRows(rows, arena, carried) {
     for (std::size_t l = 0; l < lane_width<V>; ++l) set_lane(l, p);
   }
 
@@ -86,10 +84,12 @@ class CoupledRows {
   }
 
   ROTORSWEEP_HD std::size_t dimension() const { return rows_; }
+  /// The quadratures it carries and which of them steer the step size (kernels/row_quadratures.hpp).
+  ROTORSWEEP_HD Integrals integrals() const { return integrals_; }
+  ROTORSWEEP_HD std::size_t quadrature_count() const { return integrals_.count(); }
+  ROTORSWEEP_HD bool error_controlled(std::size_t p) const { return row_error_controlled(integrals_, p); }
   ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
-  ROTORSWEEP_HD static constexpr StateScale quadrature_scale(std::size_t p) {
-    return row_quadrature_scale<Q>(p);
-  }
+  ROTORSWEEP_HD StateScale quadrature_scale(std::size_t p) const { return row_quadrature_scale(integrals_, p); }
 
   ROTORSWEEP_HD void evaluate(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
     trigonometry(w, theta, t);
@@ -203,8 +203,8 @@ class CoupledRows {
   }
 
   ROTORSWEEP_HD void integrands(const Workspace& w, const V* f, V* qdot) const {
-    row_integrands<Q>(
-        rows_, A_, g_, [&] { return row_sum(rows_, w.sin_lag); }, w.sin_lag, f,
+    row_integrands(
+        integrals_, rows_, A_, g_, [&] { return row_sum(rows_, w.sin_lag); }, w.sin_lag, f,
         [&] { return alignment_from_trigonometry(w); },
         [&] { return energy_from_trigonometry(w); }, qdot);
   }
@@ -222,12 +222,13 @@ class CoupledRows {
         grad[k] += scale * sin_link;
       }
     };
-    row_integrand_gradients<Q>(
-        n, A_, g_, w.sin_lag, [&](std::size_t k) { return w.cos_lag[k]; }, f, J, df_dt, w.product,
+    row_integrand_gradients(
+        integrals_, n, A_, g_, w.sin_lag, [&](std::size_t k) { return w.cos_lag[k]; }, f, J, df_dt, w.product,
         alignment_gradient, dq_dtheta, dq_dt);
   }
 
   std::size_t rows_;
+  Integrals integrals_;
   V *b_, *c_;  ///< b_u, c_u at u − 1, the same in every lane
   V a_ = V(1.5);
   std::size_t range_ = 0;

@@ -18,7 +18,7 @@ template <LaneModel System>
 class DormandPrince5 {
  public:
   using V = typename System::lane_type;
-  static constexpr std::size_t nq = System::quadrature_count;
+  static constexpr std::size_t nq = System::max_quadratures;  ///< storage; quadratures_ are carried
 
   static constexpr std::size_t storage_size(std::size_t n) {
     return System::Workspace::storage_size(n) + (1 + std::size_t(dormand_prince5_tableau.stages)) * n +
@@ -27,6 +27,7 @@ class DormandPrince5 {
 
   ROTORSWEEP_HD DormandPrince5(const System& system, LaneArena<V>& arena)
       : n_(system.dimension()),
+        quadratures_(system.quadrature_count()),
         work_(n_, arena),
         argument_(arena.take(n_)),
         slopes_(arena.take(std::size_t(dormand_prince5_tableau.stages) * n_)),
@@ -53,10 +54,10 @@ class DormandPrince5 {
         for (std::size_t k = 0; k < n; ++k) argument_[k] += ha * kj[k];
       }
       system.evaluate(work_, argument_, t + V(T.c[i]) * h, slopes_ + std::size_t(i) * n,
-                      quad_slopes_ + std::size_t(i) * nq);
+                      quad_slopes_ + std::size_t(i) * quadratures_);
     }
     combine(h, y, n, slopes_, y_new, y_error);
-    combine(h, q, nq, quad_slopes_, q_new, q_error);
+    combine(h, q, quadratures_, quad_slopes_, q_new, q_error);
     return h == h;
   }
 
@@ -80,6 +81,7 @@ class DormandPrince5 {
   }
 
   std::size_t n_;
+  std::size_t quadratures_;  ///< the model's carried quadratures
   typename System::Workspace work_;
   V *argument_, *slopes_, *quad_slopes_;
 };

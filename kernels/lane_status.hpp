@@ -1,5 +1,5 @@
 // Per-lane status of an integration: a lane that fails is frozen and flagged, the others
-// go on (architecture.md principle 3).
+// go on (docs/numerics.md "Steppers and integration").
 #pragma once
 
 #include <cstdint>

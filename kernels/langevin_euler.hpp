@@ -30,7 +30,7 @@ template <LaneModel Model>
 class LangevinEuler {
  public:
   using V = typename Model::lane_type;
-  static constexpr std::size_t nq = Model::quadrature_count;
+  static constexpr std::size_t nq = Model::max_quadratures;  ///< storage; the model's carried ones step
   static constexpr bool stochastic = true;
 
   struct Settings {
@@ -97,7 +97,8 @@ class LangevinEuler {
     const lane_mask<V> finite = lane_isfinite(checksum);
     const lane_mask<V> step = active & finite;
     for (std::size_t j = 0; j < n; ++j) s.theta[j] = lane_select(step, s.theta[j] + f_[j], s.theta[j]);
-    for (std::size_t p = 0; p < nq; ++p) s.quad[p] = lane_select(step, s.quad[p] + h * qdot_[p], s.quad[p]);
+    for (std::size_t p = 0; p < model.quadrature_count(); ++p)
+      s.quad[p] = lane_select(step, s.quad[p] + h * qdot_[p], s.quad[p]);
     s.t = lane_select(step, lane_select(steps_left <= V(1.0), s.t_stop, s.t + h), s.t);
     s.steps_accepted += lane_select(step, V(1.0), V(0.0));
     for (std::size_t l = 0; l < lane_width<V>; ++l)

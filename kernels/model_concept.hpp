@@ -5,7 +5,6 @@
 #include <concepts>
 #include <cstddef>
 
-#include "kernels/integrals.hpp"
 #include "kernels/lane.hpp"
 #include "kernels/lane_arena.hpp"
 
@@ -45,8 +44,9 @@ concept JacobianWithInertia = LaneJacobian<J> && requires(const J& factored) {
 ///   Workspace       scratch over caller-owned storage (storage_size(n) values)
 ///   Jacobian        a LaneJacobian of f with respect to y
 ///   period          the drive period (periods are the unit of the schedule)
-///   integrals       the quadratures it carries (quadrature_count of them, in Integrals order)
-///   error_controlled[p]: which quadratures steer the step
+///   max_quadratures the most quadratures it can carry (the steppers size their storage for it)
+///   quadrature_count()  the quadratures this instance carries (chosen at run time)
+///   error_controlled(p) which of them steer the step
 ///   scale(k)        how component k's error is weighted
 ///   quadrature_scale(p)  how quadrature p's error is weighted, where it steers the step
 ///   evaluate        f and the quadrature integrands at (y, t)
@@ -61,9 +61,9 @@ concept LaneModel = requires(const M& model, M& mutable_model, typename M::Works
   typename M::Parameters;
   requires LaneJacobian<typename M::Jacobian>;
   { M::period } -> std::convertible_to<double>;
-  { M::integrals } -> std::convertible_to<Integrals>;
-  requires M::quadrature_count == M::integrals.count();
-  { M::error_controlled[k] } -> std::convertible_to<bool>;
+  { M::max_quadratures } -> std::convertible_to<std::size_t>;
+  { model.quadrature_count() } -> std::same_as<std::size_t>;
+  { model.error_controlled(k) } -> std::same_as<bool>;
   { M::Workspace::storage_size(k) } -> std::convertible_to<std::size_t>;
   { M::storage_size(k) } -> std::convertible_to<std::size_t>;
   requires std::constructible_from < typename M::Workspace, std::size_t, LaneArena<typename M::lane_type>

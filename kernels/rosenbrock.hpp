@@ -23,7 +23,7 @@ template <LaneModel System, const RosenbrockTableau& Table>
 class RosenbrockStepper {
  public:
   using V = typename System::lane_type;
-  static constexpr std::size_t nq = System::quadrature_count;
+  static constexpr std::size_t nq = System::max_quadratures;  ///< storage; quadratures_ are carried
 
   static constexpr std::size_t storage_size(std::size_t n) {
     return System::Workspace::storage_size(n) + System::Jacobian::storage_size(n) +
@@ -32,6 +32,7 @@ class RosenbrockStepper {
 
   ROTORSWEEP_HD RosenbrockStepper(const System& system, LaneArena<V>& arena)
       : n_(system.dimension()),
+        quadratures_(system.quadrature_count()),
         work_(n_, arena),
         jacobian_(n_, arena),
         f_(arena.take(n_)),
@@ -61,7 +62,8 @@ class RosenbrockStepper {
     jacobian_.factor(V(1.0) / scalars.h_gamma);
     run_stages(system, scalars, y, std::make_integer_sequence<int, Table.stages>{});
     combine(y, n_, stages_, n_, y_new, y_error, std::make_integer_sequence<int, Table.stages>{});
-    combine(q, nq, quad_stages_, nq, q_new, q_error, std::make_integer_sequence<int, Table.stages>{});
+    combine(q, quadratures_, quad_stages_, quadratures_, q_new, q_error,
+            std::make_integer_sequence<int, Table.stages>{});
     if constexpr (JacobianWithInertia<typename System::Jacobian>)
       return jacobian_.positive_definite();
     else
@@ -116,12 +118,13 @@ class RosenbrockStepper {
     }
     jacobian_.solve(u);
 
-    for (std::size_t p = 0; p < nq; ++p) {
+    const std::size_t carried = quadratures_;
+    for (std::size_t p = 0; p < carried; ++p) {
       const V* grad = dq_dy_ + p * n;
       V sum = (I == 0 ? start_qdot_ : qdot_)[p] + time_weight * dq_dt_[p];
       for (std::size_t k = 0; k < n; ++k) sum += grad[k] * u[k];
-      ((sum += weight[J] * quad_stages_[std::size_t(J) * nq + p]), ...);
-      quad_stages_[std::size_t(I) * nq + p] = s.h_gamma * sum;
+      ((sum += weight[J] * quad_stages_[std::size_t(J) * carried + p]), ...);
+      quad_stages_[std::size_t(I) * carried + p] = s.h_gamma * sum;
     }
   }
 
@@ -170,6 +173,7 @@ class RosenbrockStepper {
   }
 
   std::size_t n_;
+  std::size_t quadratures_;  ///< the model's carried quadratures
   typename System::Workspace work_;
   typename System::Jacobian jacobian_;
   V *f_, *df_dt_;

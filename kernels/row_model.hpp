@@ -1,5 +1,5 @@
 // The nearest-neighbour periodic row model (docs/model.md §1, paper Eq. EOMFULL) with optional
-// per-row disorder (§8): right-hand side, cyclic tridiagonal Jacobian, ∂f/∂t, energy, integrands (§3).
+// per-row disorder (§7): right-hand side, cyclic tridiagonal Jacobian, ∂f/∂t, energy, integrands (§3).
 #pragma once
 
 #include <array>
@@ -26,18 +26,16 @@ namespace rotorsweep::kernels {
 /// and products of those. A Rosenbrock stage, close to the step's start, gets its sincos from
 /// those of the start by angle addition (evaluate_displaced).
 ///
-/// Scratch lives in a Workspace, the per-row factors in storage_size(N) lane values of
-/// caller-owned storage. It satisfies LaneModel (kernels/model_concept.hpp).
-template <class V, Integrals Q>
+/// It carries the quadratures of the Integrals given at construction (a scene's observables,
+/// chosen at run time). Scratch lives in a Workspace, the per-row factors in storage_size(N) lane
+/// values of caller-owned storage. It satisfies LaneModel (kernels/model_concept.hpp).
+template <class V>
 class NearestNeighbourRows {
  public:
   using lane_type = V;
   using Jacobian = CyclicTridiagonal<V>;
   static constexpr double period = two_pi;  ///< the drive period
-  static constexpr Integrals integrals = Q;
-  static constexpr std::size_t quadrature_count = Q.count();
-  /// Which quadratures steer the step size (kernels/row_quadratures.hpp).
-  static constexpr std::array<bool, quadrature_count + 1> error_controlled = row_error_controlled<Q>();
+  static constexpr std::size_t max_quadratures = Integrals::max_count;
 
   /// One lane's parameters. `strict_fm` marks a member that starts exactly in the strict-FM set
   /// (all rows equal): its stage solves keep all-equal rows exactly equal (CyclicTridiagonal),
@@ -78,21 +76,23 @@ class NearestNeighbourRows {
     V start_sin_t = V(0.0), start_cos_t = V(0.0);  // at the last linearize()
   };
 
-  /// A uniform model (every factor 1) over storage_size(rows) values of `arena`.
-  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena)
+  /// A uniform model (every factor 1) carrying `carried` over storage_size(rows) values of `arena`.
+  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena, Integrals carried)
       : rows_(rows),
+        integrals_(carried),
+        reads_rows_(carried.work || carried.energy),
         A_row_(arena.take(rows)),
         anisotropy_row_(arena.take(rows)),
         coupling_row_(arena.take(rows)) {
     for (std::size_t j = 0; j < rows; ++j) A_row_[j] = anisotropy_row_[j] = coupling_row_[j] = V(1.0);
   }
-  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena, const Parameters& p)
-      : NearestNeighbourRows(rows, arena) {
+  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena, Integrals carried, const Parameters& p)
+      : NearestNeighbourRows(rows, arena, carried) {
     for (std::size_t l = 0; l < lane_width<V>; ++l) set_lane(l, p);
   }
   /// A and g per lane, uniform rows, no lane symmetry protected.
-  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena, V A, V g)
-      : NearestNeighbourRows(rows, arena) {
+  ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena, Integrals carried, V A, V g)
+      : NearestNeighbourRows(rows, arena, carried) {
     A_ = A;
     g_ = g;
     inv_g_ = V(1.0) / g;
@@ -116,18 +116,21 @@ class NearestNeighbourRows {
   }
 
   ROTORSWEEP_HD std::size_t dimension() const { return rows_; }
+  /// The quadratures it carries, in Integrals order, and which of them steer the step size
+  /// (kernels/row_quadratures.hpp).
+  ROTORSWEEP_HD Integrals integrals() const { return integrals_; }
+  ROTORSWEEP_HD std::size_t quadrature_count() const { return integrals_.count(); }
+  ROTORSWEEP_HD bool error_controlled(std::size_t p) const { return row_error_controlled(integrals_, p); }
   /// Every state component is an angle: its error is measured absolutely.
   ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
-  ROTORSWEEP_HD static constexpr StateScale quadrature_scale(std::size_t p) {
-    return row_quadrature_scale<Q>(p);
-  }
+  ROTORSWEEP_HD StateScale quadrature_scale(std::size_t p) const { return row_quadrature_scale(integrals_, p); }
 
   /// f = dθ/dt and the quadrature integrands qdot at (θ, t).
   ROTORSWEEP_HD void evaluate(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
     if (disordered_)
-      evaluate_rows<true>(w, theta, t, f, qdot);
+      evaluate_rows<true>(w, theta, t, f, qdot, reads_rows_);
     else
-      evaluate_rows<false>(w, theta, t, f, qdot);
+      evaluate_rows<false>(w, theta, t, f, qdot, reads_rows_);
   }
 
   /// evaluate() at (θ + δ, t + τ), where (θ, t) is the point of the last linearize() on `w`: each
@@ -195,34 +198,45 @@ class NearestNeighbourRows {
       return w.sin_lag;
   }
 
-  /// W and H read every row's trigonometry from the workspace (R, S and ρ̄ do not).
-  static constexpr bool integrands_read_rows = Q.work || Q.energy;
-
-  template <bool per_row, bool store = integrands_read_rows>
-  ROTORSWEEP_HD void evaluate_rows(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
-    lane_sincos(t, w.sin_t, w.cos_t);
-    const RowSums sums =
-        rows_pass<per_row, store>(w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); }, f);
+  /// The pass over the rows (rows_pass) for what is needed, then the integrands: with `store`
+  /// (the Jacobian, or W and H, read every row's trigonometry from the workspace) everything is
+  /// stored; else the links' cosines are summed only for ρ̄. One branch per evaluation picks the
+  /// pass compiled for that case, so the per-row loop carries no test.
+  template <bool per_row, class RowSincos>
+  ROTORSWEEP_HD void pass_and_integrands(Workspace& w, RowSincos&& row_sincos, V* f, V* qdot, bool store) const {
+    RowSums sums;
+    if (store)
+      sums = rows_pass<per_row, true, true>(w, row_sincos, f);
+    else if (integrals_.alignment)
+      sums = rows_pass<per_row, false, true>(w, row_sincos, f);
+    else
+      sums = rows_pass<per_row, false, false>(w, row_sincos, f);
     integrands<per_row>(w, sums, f, qdot);
+  }
+
+  template <bool per_row>
+  ROTORSWEEP_HD void evaluate_rows(Workspace& w, const V* theta, V t, V* f, V* qdot, bool store) const {
+    lane_sincos(t, w.sin_t, w.cos_t);
+    pass_and_integrands<per_row>(
+        w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); }, f, qdot, store);
   }
 
   template <bool per_row>
   ROTORSWEEP_HD void evaluate_displaced_rows(Workspace& w, const V* theta, const V* delta, V t, V tau, V* f,
                                              V* qdot) const {
     lane_sincos_displaced(t, tau, w.start_sin_t, w.start_cos_t, w.sin_t, w.cos_t);
-    const RowSums sums = rows_pass<per_row, integrands_read_rows>(
+    pass_and_integrands<per_row>(
         w,
         [&](std::size_t j, V& s, V& c) {
           lane_sincos_displaced(theta[j], delta[j], w.start_sin_row[j], w.start_cos_row[j], s, c);
         },
-        f);
-    integrands<per_row>(w, sums, f, qdot);
+        f, qdot, reads_rows_);
   }
 
   template <bool per_row>
   ROTORSWEEP_HD void linearize_rows(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt,
                                     V* dq_dtheta, V* dq_dt) const {
-    evaluate_rows<per_row, true>(w, theta, t, f, qdot);
+    evaluate_rows<per_row>(w, theta, t, f, qdot, true);
     const std::size_t n = rows_;
     for (std::size_t j = 0; j < n; ++j) {
       const std::size_t jm = (j == 0) ? n - 1 : j - 1;
@@ -249,7 +263,8 @@ class NearestNeighbourRows {
   template <bool per_row>
   ROTORSWEEP_HD void trigonometry(Workspace& w, const V* theta, V t) const {
     lane_sincos(t, w.sin_t, w.cos_t);
-    rows_pass<per_row, true>(w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); }, w.product);
+    rows_pass<per_row, true, true>(w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); },
+                                   w.product);
   }
 
   /// Sums over the rows that one pass collects, each in row order: the drive's lags (weighted by
@@ -265,8 +280,8 @@ class NearestNeighbourRows {
   /// that the torques come out in row order and the stage solve, which reads them in that order,
   /// can start before the pass ends; the sums are taken in row order all the same. With `store`,
   /// the sines, cosines, lags and links go to the workspace (the Jacobian, the energy and the
-  /// integrands W, H read them).
-  template <bool per_row, bool store, class RowSincos>
+  /// integrands W, H read them); with `cosines`, the links' cosines are computed (and summed).
+  template <bool per_row, bool store, bool cosines, class RowSincos>
   ROTORSWEEP_HD RowSums rows_pass(Workspace& w, RowSincos&& row_sincos, V* f) const {
     struct Row {
       V sin, cos, lag;  // lag: sin(θ_j − t), weighted by the row's share of A
@@ -274,7 +289,6 @@ class NearestNeighbourRows {
     struct Link {
       V sin, cos;  // sin weighted by the coupling; cos only where stored or summed
     };
-    constexpr bool cosines = store || Q.alignment;
     const std::size_t n = rows_;
     const V sin_t = w.sin_t, cos_t = w.cos_t;
     const V inv_g = inv_g_, A = A_;  // f could alias the members: keep them in registers
@@ -348,8 +362,8 @@ class NearestNeighbourRows {
 
   template <bool per_row>
   ROTORSWEEP_HD void integrands(const Workspace& w, const RowSums& sums, const V* f, V* qdot) const {
-    row_integrands<Q>(
-        rows_, A_, g_, [&] { return sums.lag; }, weighted_lag<per_row>(w), f,
+    row_integrands(
+        integrals_, rows_, A_, g_, [&] { return sums.lag; }, weighted_lag<per_row>(w), f,
         [&] { return alignment_from_link_sum(sums.cos_link); }, [&] { return energy_from_trigonometry<per_row>(w); },
         qdot);
   }
@@ -366,11 +380,13 @@ class NearestNeighbourRows {
         grad[k] = scale * (w.sin_link[km] - w.sin_link[k]);
       }
     };
-    row_integrand_gradients<Q>(n, A_, g_, weighted_lag<per_row>(w), cos_lag, f, J, df_dt, w.product,
+    row_integrand_gradients(integrals_, n, A_, g_, weighted_lag<per_row>(w), cos_lag, f, J, df_dt, w.product,
                                alignment_gradient, dq_dtheta, dq_dt);
   }
 
   std::size_t rows_;
+  Integrals integrals_;
+  bool reads_rows_;  ///< W or H carried: their integrands read every row's trigonometry
   V *A_row_, *anisotropy_row_, *coupling_row_;  ///< 1 + δ_j, 1 + α_j, 1 + β_j per lane
   bool disordered_ = false;  ///< some lane has a factor other than 1: the per-row loops run
   V A_ = V(1.0), g_ = V(1.0), inv_g_ = V(1.0);

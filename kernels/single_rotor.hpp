@@ -24,9 +24,7 @@ class SingleRotor {
   using lane_type = V;
   using Jacobian = DiagonalJacobian<V>;
   static constexpr double period = two_pi;
-  static constexpr Integrals integrals = dissipation_only;
-  static constexpr std::size_t quadrature_count = 1;
-  static constexpr std::array<bool, 2> error_controlled{true, false};
+  static constexpr std::size_t max_quadratures = 1;
 
   struct Parameters {
     double A = 1.0;
@@ -46,6 +44,10 @@ class SingleRotor {
     lane_set(inv_g_, lane, 1.0 / p.g);
   }
   ROTORSWEEP_HD std::size_t dimension() const { return 1; }
+  /// It carries R alone (the row models' drive quadrature), which steers the step.
+  ROTORSWEEP_HD static constexpr Integrals integrals() { return dissipation_only; }
+  ROTORSWEEP_HD static constexpr std::size_t quadrature_count() { return 1; }
+  ROTORSWEEP_HD static constexpr bool error_controlled(std::size_t) { return true; }
   ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
   /// R is weighed as the row models' R (kernels/row_quadratures.hpp).
   ROTORSWEEP_HD static constexpr StateScale quadrature_scale(std::size_t) {

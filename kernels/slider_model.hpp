@@ -8,7 +8,6 @@
 
 #include "kernels/angles.hpp"
 #include "kernels/host_device.hpp"
-#include "kernels/integrals.hpp"
 #include "kernels/lane.hpp"
 #include "kernels/lane_arena.hpp"
 #include "kernels/lane_math.hpp"
@@ -47,10 +46,11 @@ class SliderModel {
   using lane_type = V;
   using Jacobian = SliderJacobian<V, Inertial>;
   static constexpr double period = two_pi;  ///< a substrate period when v = 1/(2π)
-  static constexpr Integrals integrals{true, false, true, false, false};
-  static constexpr std::size_t quadrature_count = 2;
-  static constexpr std::array<bool, 3> error_controlled{true, false, false};
+  /// Two quadratures: the impulse (steers the step) and the dissipation.
+  static constexpr std::size_t max_quadratures = 2;
   static constexpr std::size_t impulse_index = 0, dissipation_index = 1;
+  ROTORSWEEP_HD static constexpr std::size_t quadrature_count() { return max_quadratures; }
+  ROTORSWEEP_HD static constexpr bool error_controlled(std::size_t p) { return p == impulse_index; }
 
   using Parameters = SliderParameters;
 

@@ -1,6 +1,6 @@
 // Error norm and step-size control of the adaptive steppers: weighted RMS norm whose weights the
 // model chooses per component (angles absolutely), R held apart and tighter (docs/numerics.md
-// "Holding R apart"); the elementary (integral) or the PI controller ("Step-size control").
+// "Holding R apart"); the elementary (integral) or the PI controller ("Steppers and integration").
 #pragma once
 
 #include <cstddef>
@@ -47,13 +47,12 @@ ROTORSWEEP_HD V scaled_error(StateScale kind, const Tolerances& tol, const V& ab
 inline constexpr double remainder_tightening = 8.0;
 
 /// The larger of sqrt(mean((e_i / s_i)²)) over the state components (s by the model's scale())
-/// and the other quadratures flagged in `controlled` (s by the model's quadrature_scale()), and
+/// and the other quadratures that steer the step (error_controlled(p); s by quadrature_scale()), and
 /// remainder_tightening · |e / s| of the capped-relative ones (root-sum-square if several); see
 /// StateScale. A non-finite error in any term gives a non-finite norm.
 template <class Model, class V>
 ROTORSWEEP_HD V error_norm(const Model& model, const Tolerances& tol, const V* y, const V* y_new,
-                           const V* y_error, const bool* controlled, const V* q, const V* q_new,
-                           const V* q_error) {
+                           const V* y_error, const V* q, const V* q_new, const V* q_error) {
   const std::size_t n = model.dimension();
   const V absolute_scale_inv(1.0 / (tol.atol + tol.rtol));
   V sum(0.0);
@@ -63,8 +62,9 @@ ROTORSWEEP_HD V error_norm(const Model& model, const Tolerances& tol, const V* y
   }
   std::size_t terms = n;
   V held_apart(0.0);
-  for (std::size_t p = 0; p < Model::quadrature_count; ++p) {
-    if (!controlled[p]) continue;
+  const std::size_t quadratures = model.quadrature_count();
+  for (std::size_t p = 0; p < quadratures; ++p) {
+    if (!model.error_controlled(p)) continue;
     const StateScale kind = model.quadrature_scale(p);
     const V r = scaled_error(kind, tol, absolute_scale_inv, q_error[p], q[p], q_new[p]);
     if (kind == StateScale::capped_relative) {

@@ -8,16 +8,16 @@
 
 using namespace rotorsweep::kernels;
 
-using Model = NearestNeighbourRows<double, all_integrals>;
+using Model = NearestNeighbourRows<double>;
 
 template <class Stepper>
 __global__ void advance_members(double* storage, std::size_t per_thread, std::size_t rows, const double* A,
                                 const double* g, double* dissipation) {
   const std::size_t member = blockIdx.x * blockDim.x + threadIdx.x;
   LaneArena<double> arena(storage + member * per_thread, per_thread);
-  const Model model(rows, arena, {A[member], g[member], false});
+  const Model model(rows, arena, all_integrals, {A[member], g[member], false});
   AdaptiveIntegrator<Model, Stepper> integrator(model, {1e-6, 1e-9}, {}, arena);
-  LaneState<double> state(rows, Model::quadrature_count, arena);
+  LaneState<double> state(rows, Model::max_quadratures, arena);
   for (std::size_t j = 0; j < rows; ++j) state.theta[j] = 3.14159 * double(j % 2) + 0.01 * double(j);
   state.t_stop = two_pi;
   integrator.advance(model, state);

@@ -5,7 +5,6 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/compile_time_choice.hpp"
 #include "ensemble/device_member.hpp"
 #include "ensemble/member_plan.hpp"
 #include "ensemble/member_slots.hpp"
@@ -23,23 +22,20 @@ namespace {
 std::vector<ensemble::MemberResult> run_through_slots(const ensemble::Scene& scene,
                                                       const ensemble::MemberSource& source) {
   return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-    return ensemble::with_integrals(scene.observables.quadratures(), [&]<kernels::Integrals Q>() {
-      using Model = kernels::NearestNeighbourRows<double, Q>;
-      using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
-      using Driver = ensemble::DeviceMember<Model, Stepper>;
-      const ensemble::Member variant = source.at(0);
-      const auto schedule = ensemble::slot_schedule(
-          scene, variant, Driver::Integrator::first_step_scale({variant.rtol, variant.atol}));
-      ensemble::SlotChunk chunk(schedule, source.count);
-      chunk.fill(scene, {&source, 0, source.count}, 0, source.count);
-      std::vector<double> storage(Driver::storage_size(variant.rows));
-      const ensemble::SlotViews views = chunk.views();
-      for (std::size_t k = 0; k < source.count; ++k)
-        Driver::run(schedule, views, k, storage.data(), storage.size());
-      std::vector<ensemble::MemberResult> results;
-      for (std::size_t k = 0; k < source.count; ++k) results.push_back(chunk.result(scene, k));
-      return results;
-    });
+    using Model = kernels::NearestNeighbourRows<double>;
+    using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
+    using Driver = ensemble::DeviceMember<Model, Stepper>;
+    const ensemble::Member variant = source.at(0);
+    const auto schedule = ensemble::slot_schedule(
+        scene, variant, Driver::Integrator::first_step_scale({variant.rtol, variant.atol}));
+    ensemble::SlotChunk chunk(schedule, source.count);
+    chunk.fill(scene, {&source, 0, source.count}, 0, source.count);
+    std::vector<double> storage(Driver::storage_size(variant.rows));
+    const ensemble::SlotViews views = chunk.views();
+    for (std::size_t k = 0; k < source.count; ++k) Driver::run(schedule, views, k, storage.data(), storage.size());
+    std::vector<ensemble::MemberResult> results;
+    for (std::size_t k = 0; k < source.count; ++k) results.push_back(chunk.result(scene, k));
+    return results;
   });
 }
 
@@ -72,7 +68,8 @@ void check_backends_agree(const ensemble::Scene& scene) {
 }  // namespace
 
 TEST_CASE("the device member driver gives the CPU lanes' bits with every stepper", "[device_member]") {
-  for (const std::string stepper : {"rodas4", "ros2", "dopri5", "rodas4p2", "rodas5p"}) {
+  for (const std::string_view name : kernels::stepper_names) {
+    const std::string stepper(name);
     INFO(stepper);
     check_backends_agree(io::parse_scene_text(
         scene_text(stepper, 6, "relax_periods = 1\naverage_periods = 2"), "device-member"));

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 #include <vector>
 
 #include "ensemble/lane_scheduler.hpp"
@@ -29,6 +30,7 @@ double closed_form_theta(double A, double g, double psi0, double t) {
 template <class V>
 struct RotorSetup {
   std::vector<double> psi0;  ///< per member index
+  std::tuple<> model_arguments() const { return {}; }  ///< the model needs none beyond its size
   std::vector<double> initial_state(const ensemble::Member& m) const { return {pi + psi0[m.index]}; }
   typename kernels::SingleRotor<V>::Parameters parameters(const ensemble::Member& m,
                                                           const std::vector<double>&) const {

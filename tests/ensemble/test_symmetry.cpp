@@ -6,6 +6,7 @@
 
 #include "ensemble/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "kernels/stepper_list.hpp"
 
 using namespace rotorsweep::ensemble;
 
@@ -23,8 +24,8 @@ SweepOutcome strict_fm_sweep(const std::string& stepper, double noise) {
 }  // namespace
 
 TEST_CASE("an exact strict-FM start stays strict FM in every stepper", "[ensemble][symmetry]") {
-  for (const std::string stepper : {"rodas4", "ros2", "dopri5"}) {
-    const auto outcome = strict_fm_sweep(stepper, 0.0);
+  for (const std::string_view stepper : rotorsweep::kernels::stepper_names) {
+    const auto outcome = strict_fm_sweep(std::string(stepper), 0.0);
     for (const auto& r : outcome.results) {
       const double A = 0.25 * double(r.index + 1);
       INFO(stepper << " A = " << A);

@@ -15,8 +15,8 @@ using namespace rotorsweep::kernels;
 
 namespace {
 
-using Model = NearestNeighbourRows<double, all_integrals>;
-constexpr std::size_t nq = Model::quadrature_count;
+using Model = NearestNeighbourRows<double>;
+constexpr std::size_t nq = all_integrals.count();
 
 // Fixed-step integration over [0.3, 1.3]; returns the angles followed by the quadratures.
 template <class Stepper>
@@ -47,7 +47,7 @@ double max_error(const std::vector<double>& a, const std::vector<double>& b, std
 
 template <class Stepper>
 void check_order(int expected, std::vector<int> steps) {
-  const auto m = rotorsweep::testing::model<Model>(6, 2.5, 3.0);
+  const auto m = rotorsweep::testing::model<Model>(6, all_integrals, 2.5, 3.0);
   const auto reference = fixed_steps<DormandPrince5<Model>>(m, 4096);
   const std::size_t n = m.dimension();
   const auto coarse = fixed_steps<Stepper>(m, steps[0]), fine = fixed_steps<Stepper>(m, steps[1]);

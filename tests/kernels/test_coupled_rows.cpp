@@ -19,8 +19,8 @@ using Catch::Detail::Approx;
 namespace {
 
 constexpr Integrals every = all_integrals;
-using Model = CoupledRows<double, every>;
-constexpr std::size_t nq = Model::quadrature_count;
+using Model = CoupledRows<double>;
+constexpr std::size_t nq = every.count();
 
 std::vector<double> random_values(std::size_t n, unsigned seed, double low, double high) {
   std::mt19937_64 rng(seed);
@@ -62,7 +62,7 @@ TEST_CASE("coupled rows: Jacobian, df/dt and integrand gradients match central d
     for (bool open : {false, true}) {
       const std::size_t range = open ? n - 1 : (n - 1) / 2;
       const Table table(range, unsigned(n));
-      const auto m = rotorsweep::testing::model<Model>(n, table.parameters(4.3, 0.37, open));
+      const auto m = rotorsweep::testing::model<Model>(n, every, table.parameters(4.3, 0.37, open));
       const auto theta = random_values(n, unsigned(7 * n), -3.0, 9.0);
       INFO("open " << open);
       rotorsweep::testing::check_linearization(m, theta, 1.9);
@@ -80,7 +80,7 @@ TEST_CASE("coupled rows: g f = -dH/dtheta, and H written out", "[kernels][model]
   const double A = 2.0, g = 0.05, t = 0.4, eps = 1e-6;
   for (bool open : {false, true}) {
     const Table table(open ? 5 : 4, 3);
-    const auto m = rotorsweep::testing::model<Model>(n, table.parameters(A, g, open));
+    const auto m = rotorsweep::testing::model<Model>(n, every, table.parameters(A, g, open));
     const auto theta = random_values(n, 5, -3.0, 9.0);
     const auto e = evaluate(m, theta, t);
     auto w = rotorsweep::testing::workspace(m);
@@ -105,12 +105,12 @@ TEST_CASE("coupled rows: g f = -dH/dtheta, and H written out", "[kernels][model]
 }
 
 TEST_CASE("the nearest-neighbour table is the nearest-neighbour model", "[kernels][model][couplings]") {
-  using Nearest = NearestNeighbourRows<double, every>;
+  using Nearest = NearestNeighbourRows<double>;
   const std::size_t n = 7;
   const double b = 1.0, c = 0.0;
   const auto coupled =
-      rotorsweep::testing::model<Model>(n, Model::Parameters{3.1, 0.2, false, 1.5, &b, &c, 1, false});
-  const auto nearest = rotorsweep::testing::model<Nearest>(n, 3.1, 0.2);
+      rotorsweep::testing::model<Model>(n, every, Model::Parameters{3.1, 0.2, false, 1.5, &b, &c, 1, false});
+  const auto nearest = rotorsweep::testing::model<Nearest>(n, every, 3.1, 0.2);
   const auto theta = random_values(n, 17, -3.0, 9.0);
   std::vector<double> f1(n), f2(n), q1(nq), q2(nq);
   auto w1 = rotorsweep::testing::workspace(coupled);
@@ -175,12 +175,12 @@ TEST_CASE("the envelope LDLT of banded and ring matrices gives the dense one's b
 }
 
 TEST_CASE("coupled rows: SIMD lanes give the scalar bits", "[kernels][model][couplings][simd]") {
-  using Simd = CoupledRows<simd_lane, every>;
+  using Simd = CoupledRows<simd_lane>;
   constexpr std::size_t width = lane_width<simd_lane>;
   const std::size_t n = 11;
   const Table table(5, 31);
   auto simd = rotorsweep::testing::model<Simd>(
-      n, Simd::Parameters{1.0, 1.0, false, table.a, table.b.data(), table.c.data(), table.b.size(), false});
+      n, every, Simd::Parameters{1.0, 1.0, false, table.a, table.b.data(), table.c.data(), table.b.size(), false});
   std::vector<Model> scalars;
   std::vector<std::vector<double>> thetas;
   simd_lane t(0.0);
@@ -188,7 +188,7 @@ TEST_CASE("coupled rows: SIMD lanes give the scalar bits", "[kernels][model][cou
   for (std::size_t l = 0; l < width; ++l) {
     const auto p = table.parameters(1.0 + double(l), 0.1 + 0.05 * double(l), false);
     simd.set_lane(l, Simd::Parameters{p.A, p.g, false, p.a, p.b, p.c, p.range, p.open});
-    scalars.push_back(rotorsweep::testing::model<Model>(n, p));
+    scalars.push_back(rotorsweep::testing::model<Model>(n, every, p));
     thetas.push_back(random_values(n, unsigned(40 + l), -3.0, 9.0));
     for (std::size_t j = 0; j < n; ++j) lane_set(theta[j], l, thetas[l][j]);
     lane_set(t, l, 0.3 * double(l));

@@ -13,7 +13,7 @@ using namespace rotorsweep::kernels;
 
 namespace {
 
-using Model = NearestNeighbourRows<double, dissipation_only>;
+using Model = NearestNeighbourRows<double>;
 
 /// The row model seen at one fixed drive phase: an autonomous system (∂f/∂t = 0).
 struct FrozenDrive {
@@ -22,17 +22,17 @@ struct FrozenDrive {
   using Workspace = Model::Workspace;
   using Parameters = Model::Parameters;
   static constexpr double period = Model::period;
-  static constexpr Integrals integrals = Model::integrals;
-  static constexpr std::size_t quadrature_count = Model::quadrature_count;
-  static constexpr auto error_controlled = Model::error_controlled;
+  static constexpr std::size_t max_quadratures = Model::max_quadratures;
   static constexpr std::size_t storage_size(std::size_t n) { return Model::storage_size(n); }
 
   Model model;
   double phase;
 
   std::size_t dimension() const { return model.dimension(); }
+  std::size_t quadrature_count() const { return model.quadrature_count(); }
+  bool error_controlled(std::size_t p) const { return model.error_controlled(p); }
   static constexpr StateScale scale(std::size_t k) { return Model::scale(k); }
-  static constexpr StateScale quadrature_scale(std::size_t p) { return Model::quadrature_scale(p); }
+  StateScale quadrature_scale(std::size_t p) const { return model.quadrature_scale(p); }
   void set_lane(std::size_t lane, const Parameters& p) { model.set_lane(lane, p); }
   void evaluate(Workspace& w, const double* y, double, double* f, double* q) const {
     model.evaluate(w, y, phase, f, q);
@@ -41,17 +41,17 @@ struct FrozenDrive {
                  double* dq_dy, double* dq_dt) const {
     model.linearize(w, y, phase, f, q, J, df_dt, dq_dy, dq_dt);
     for (std::size_t k = 0; k < dimension(); ++k) df_dt[k] = 0.0;
-    for (std::size_t p = 0; p < quadrature_count; ++p) dq_dt[p] = 0.0;
+    for (std::size_t p = 0; p < quadrature_count(); ++p) dq_dt[p] = 0.0;
   }
 };
 
 template <class Stepper>
 void check_energy_descent(double A, double g) {
   const std::size_t rows = 12;
-  const FrozenDrive system{rotorsweep::testing::model<Model>(rows, A, g), 0.9};
+  const FrozenDrive system{rotorsweep::testing::model<Model>(rows, dissipation_only, A, g), 0.9};
   auto integrator =
       rotorsweep::testing::integrator<AdaptiveIntegrator<FrozenDrive, Stepper>>(system, {1e-8, 1e-11});
-  auto s = rotorsweep::testing::lane_state<double>(rows, FrozenDrive::quadrature_count);
+  auto s = rotorsweep::testing::lane_state<double>(rows, FrozenDrive::max_quadratures);
   const auto theta = rotorsweep::testing::initial_angles(rows, rotorsweep::testing::Start::afm, 1.0, 17);
   for (std::size_t j = 0; j < rows; ++j) s.theta[j] = theta[j];
   s.t_stop = 5.0;

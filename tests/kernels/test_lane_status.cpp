@@ -14,12 +14,12 @@ using namespace rotorsweep::kernels;
 
 namespace {
 
-using Model = NearestNeighbourRows<simd_lane, dissipation_only>;
+using Model = NearestNeighbourRows<simd_lane>;
 constexpr std::size_t W = lane_width<simd_lane>;
 constexpr std::size_t rows = 8;
 
 LaneState<simd_lane> make_state(bool poison_lane_zero) {
-  auto s = rotorsweep::testing::lane_state<simd_lane>(rows, Model::quadrature_count);
+  auto s = rotorsweep::testing::lane_state<simd_lane>(rows, Model::max_quadratures);
   for (std::size_t j = 0; j < rows; ++j)
     s.theta[j] = lane_from<simd_lane>([&](std::size_t l) { return 0.1 * double(j) + 0.01 * double(l); });
   if (poison_lane_zero) lane_set(s.theta[3], 0, std::numeric_limits<double>::quiet_NaN());
@@ -30,7 +30,7 @@ LaneState<simd_lane> make_state(bool poison_lane_zero) {
 }  // namespace
 
 TEST_CASE("a non-finite lane is frozen and flagged; the others are untouched", "[kernels][status]") {
-  const auto model = rotorsweep::testing::model<Model>(rows, lane_from<simd_lane>([](std::size_t l) { return 1.0 + double(l); }),
+  const auto model = rotorsweep::testing::model<Model>(rows, dissipation_only, lane_from<simd_lane>([](std::size_t l) { return 1.0 + double(l); }),
                     simd_lane(0.01));
   auto clean_run =
       rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-7, 1e-10});
@@ -54,7 +54,7 @@ TEST_CASE("a non-finite lane is frozen and flagged; the others are untouched", "
 }
 
 TEST_CASE("an exhausted step budget is flagged and stops the lane", "[kernels][status]") {
-  const auto model = rotorsweep::testing::model<Model>(rows, simd_lane(6.0), simd_lane(0.001));
+  const auto model = rotorsweep::testing::model<Model>(rows, dissipation_only, simd_lane(6.0), simd_lane(0.001));
   StepLimits limits;
   limits.max_steps = 40;
   auto integrator =

@@ -20,9 +20,9 @@ struct OrnsteinUhlenbeck {
   using lane_type = V;
   using Jacobian = DiagonalJacobian<V>;
   static constexpr double period = 1.0;
-  static constexpr Integrals integrals{false, false, false, false, false};
-  static constexpr std::size_t quadrature_count = 0;
-  static constexpr std::array<bool, 1> error_controlled{false};
+  static constexpr std::size_t max_quadratures = 0;
+  static constexpr std::size_t quadrature_count() { return 0; }
+  static constexpr bool error_controlled(std::size_t) { return false; }
   struct Parameters {
     double k = 1.0;
   };

@@ -18,8 +18,8 @@ using namespace rotorsweep::kernels;
 namespace {
 
 constexpr Integrals every = all_integrals;
-using Model = NearestNeighbourRows<double, every>;
-constexpr std::size_t nq = Model::quadrature_count;
+using Model = NearestNeighbourRows<double>;
+constexpr std::size_t nq = every.count();
 
 std::vector<double> random_angles(std::size_t n, unsigned seed) {
   std::mt19937_64 rng(seed);
@@ -61,8 +61,8 @@ TEST_CASE("Jacobian, df/dt and integrand gradients match central differences", "
   for (std::size_t n : {2u, 4u, 7u, 20u})
     for (bool disordered : {false, true}) {
       const Deviations d(n);
-      const auto m = disordered ? rotorsweep::testing::model<Model>(n, d.parameters(4.3, 0.37))
-                                : rotorsweep::testing::model<Model>(n, 4.3, 0.37);
+      const auto m = disordered ? rotorsweep::testing::model<Model>(n, every, d.parameters(4.3, 0.37))
+                                : rotorsweep::testing::model<Model>(n, every, 4.3, 0.37);
       INFO("disordered " << disordered);
       const auto theta = random_angles(n, unsigned(n));
       rotorsweep::testing::check_linearization(m, theta, 1.9);
@@ -73,8 +73,8 @@ TEST_CASE("the flow is the gradient of the energy: g f = -dH/dtheta", "[kernels]
   const std::size_t n = 6;
   const double g = 0.05, t = 0.4, eps = 1e-6;
   const Deviations d(n);
-  for (const auto& m : {rotorsweep::testing::model<Model>(n, 2.0, g),
-                        rotorsweep::testing::model<Model>(n, d.parameters(2.0, g))}) {
+  for (const auto& m : {rotorsweep::testing::model<Model>(n, every, 2.0, g),
+                        rotorsweep::testing::model<Model>(n, every, d.parameters(2.0, g))}) {
     const auto theta = random_angles(n, 3);
     const auto e = evaluate(m, theta, t);
     auto w = rotorsweep::testing::workspace(m);
@@ -92,7 +92,7 @@ TEST_CASE("per-row disorder: the equations of docs/model.md section 7 written ou
   const std::size_t n = 5;
   const double A = 3.0, g = 0.2, t = 0.7;
   const Deviations d(n);
-  const auto m = rotorsweep::testing::model<Model>(n, d.parameters(A, g));
+  const auto m = rotorsweep::testing::model<Model>(n, every, d.parameters(A, g));
   const auto theta = random_angles(n, 11);
   const auto e = evaluate(m, theta, t);
   auto w = rotorsweep::testing::workspace(m);
@@ -112,15 +112,15 @@ TEST_CASE("per-row disorder: the equations of docs/model.md section 7 written ou
 }
 
 TEST_CASE("a lane with zero deviations beside a disordered lane keeps the uniform bits", "[kernels][model]") {
-  using Simd = NearestNeighbourRows<simd_lane, every>;
+  using Simd = NearestNeighbourRows<simd_lane>;
   const std::size_t n = 9;
   const double t = 1.1;
   const Deviations d(n);
   const std::vector<double> zeros(n, 0.0);
-  auto simd = rotorsweep::testing::model<Simd>(n, Simd::Parameters{4.0, 0.01});
+  auto simd = rotorsweep::testing::model<Simd>(n, every, Simd::Parameters{4.0, 0.01});
   simd.set_lane(0, {4.0, 0.01, false, d.A.data(), d.anisotropy.data(), d.coupling.data()});
   simd.set_lane(1, {4.0, 0.01, false, zeros.data(), zeros.data(), zeros.data()});
-  const auto uniform = rotorsweep::testing::model<Model>(n, 4.0, 0.01);
+  const auto uniform = rotorsweep::testing::model<Model>(n, every, 4.0, 0.01);
   const auto theta = random_angles(n, 5);
   lane_vector<simd_lane> theta_v(n), f_v(n), q_v(nq), df_dt_v(n), dq_dy_v(nq * n), dq_dt_v(nq);
   for (std::size_t j = 0; j < n; ++j) theta_v[j] = simd_lane(theta[j]);
@@ -156,8 +156,8 @@ TEST_CASE("a stage evaluation displaced from the linearisation point is evaluate
   for (bool disordered : {false, true})
     for (double size : {1e-9, 3e-3, 0.06, 0.3}) {
       INFO("disordered " << disordered << ", |delta| up to " << size);
-      const auto m = disordered ? rotorsweep::testing::model<Model>(n, d.parameters(4.3, 0.01))
-                                : rotorsweep::testing::model<Model>(n, 4.3, 0.01);
+      const auto m = disordered ? rotorsweep::testing::model<Model>(n, every, d.parameters(4.3, 0.01))
+                                : rotorsweep::testing::model<Model>(n, every, 4.3, 0.01);
       const auto theta = random_angles(n, 17);
       std::vector<double> delta(n), moved(n);
       for (std::size_t j = 0; j < n; ++j) {
@@ -190,7 +190,7 @@ TEST_CASE("a stage evaluation displaced from the linearisation point is evaluate
 
 TEST_CASE("two rows reduce to the two-angle landscape H_r and its alignment", "[kernels][model]") {
   const double A = 5.5, te = 0.8, to = 2.9, tau = 1.3;
-  const auto m = rotorsweep::testing::model<Model>(2, A, 1.0);
+  const auto m = rotorsweep::testing::model<Model>(2, every, A, 1.0);
   auto w = rotorsweep::testing::workspace(m);
   const double theta[2] = {te, to};
   const double H_r = -1.5 * (std::cos(2 * te) + std::cos(2 * to)) + 2 * std::cos(te - to) +
@@ -205,7 +205,7 @@ TEST_CASE("two disordered rows reduce to the two-angle energy with per-row param
   // H_r = -a0 cos 2θe - a1 cos 2θo + (b0 + b1) cos(θe - θo) + A0 cos(θe - τ) + A1 cos(θo - τ)
   const double A = 5.5, te = 0.8, to = 2.9, tau = 1.3;
   const Deviations d(2);
-  const auto m = rotorsweep::testing::model<Model>(2, d.parameters(A, 1.0));
+  const auto m = rotorsweep::testing::model<Model>(2, every, d.parameters(A, 1.0));
   auto w = rotorsweep::testing::workspace(m);
   const double theta[2] = {te, to};
   const double H_r = -1.5 * (1 + d.anisotropy[0]) * std::cos(2 * te) -
@@ -218,7 +218,7 @@ TEST_CASE("two disordered rows reduce to the two-angle energy with per-row param
 TEST_CASE("quadrature integrands follow model.md section 3", "[kernels][model]") {
   const std::size_t n = 5;
   const double A = 3.0, g = 0.2, t = 0.7;
-  const auto m = rotorsweep::testing::model<Model>(n, A, g);
+  const auto m = rotorsweep::testing::model<Model>(n, every, A, g);
   const auto theta = random_angles(n, 9);
   const auto e = evaluate(m, theta, t);
   double drive = 0, work = 0, stokes = 0, align = 0;
@@ -238,19 +238,18 @@ TEST_CASE("quadrature integrands follow model.md section 3", "[kernels][model]")
 namespace {
 
 /// f and the quadratures at θ (evaluate), and at θ + δ, t + τ (evaluate_displaced after
-/// linearize, whose f must be evaluate's), for model type M.
+/// linearize, whose f must be evaluate's), for a model carrying `carried`.
 struct FourEvaluations {
   std::vector<double> f, q, f_displaced, q_displaced;
 };
 
-template <class M>
-FourEvaluations four_evaluations(const typename M::Parameters& p, const std::vector<double>& theta,
+FourEvaluations four_evaluations(Integrals carried, const Model::Parameters& p, const std::vector<double>& theta,
                                  const std::vector<double>& delta, double t, double tau) {
   const std::size_t n = theta.size();
-  constexpr std::size_t count = M::quadrature_count;
-  const auto m = rotorsweep::testing::model<M>(n, p);
+  const std::size_t count = carried.count();
+  const auto m = rotorsweep::testing::model<Model>(n, carried, p);
   auto w = rotorsweep::testing::workspace(m);
-  auto J = rotorsweep::testing::jacobian<typename M::Jacobian>(n);
+  auto J = rotorsweep::testing::jacobian<Model::Jacobian>(n);
   FourEvaluations e{std::vector<double>(n), std::vector<double>(count), std::vector<double>(n),
                     std::vector<double>(count)};
   std::vector<double> f(n), q(count), df_dt(n), dq_dy(count * n), dq_dt(count);
@@ -263,12 +262,12 @@ FourEvaluations four_evaluations(const typename M::Parameters& p, const std::vec
 
 }  // namespace
 
-TEST_CASE("models carrying fewer integrals give the same torques, R and rho-bar bits", "[kernels][model]") {
+TEST_CASE("models carrying fewer integrals give the same torques, R, S and rho-bar bits", "[kernels][model]") {
   // without W and H an evaluation stores nothing in the workspace and takes the sums of R and ρ̄
-  // in its one pass over the rows; with them it stores every row's trigonometry: the bits agree
+  // in its one pass over the rows; with them it stores every row's trigonometry: the bits agree.
+  // S alone (docs/architecture.md's stokes_power example) is carried without W.
   constexpr Integrals drive_and_alignment{true, false, false, true, false};
-  using Lean = NearestNeighbourRows<double, drive_and_alignment>;
-  using Leanest = NearestNeighbourRows<double, dissipation_only>;
+  constexpr Integrals drive_and_stokes{true, false, true, false, false};
   const double t = 2.3, tau = 4e-3;
   for (std::size_t n : {2u, 3u, 20u})
     for (bool disordered : {false, true}) {
@@ -280,12 +279,14 @@ TEST_CASE("models carrying fewer integrals give the same torques, R and rho-bar 
       const auto theta = random_angles(n, 23);
       std::vector<double> delta(n);
       for (std::size_t j = 0; j < n; ++j) delta[j] = 1e-3 * std::sin(3.0 * double(j) + 1.0);
-      const auto full = four_evaluations<Model>({4.1, 0.02, false, A_rows, anisotropy_rows, coupling_rows},
+      const auto full = four_evaluations(every, {4.1, 0.02, false, A_rows, anisotropy_rows, coupling_rows},
                                                 theta, delta, t, tau);
-      const auto lean = four_evaluations<Lean>({4.1, 0.02, false, A_rows, anisotropy_rows, coupling_rows},
+      const auto lean = four_evaluations(drive_and_alignment, {4.1, 0.02, false, A_rows, anisotropy_rows, coupling_rows},
                                                theta, delta, t, tau);
-      const auto leanest = four_evaluations<Leanest>(
-          {4.1, 0.02, false, A_rows, anisotropy_rows, coupling_rows}, theta, delta, t, tau);
+      const auto leanest = four_evaluations(
+          dissipation_only, {4.1, 0.02, false, A_rows, anisotropy_rows, coupling_rows}, theta, delta, t, tau);
+      const auto stokes = four_evaluations(
+          drive_and_stokes, {4.1, 0.02, false, A_rows, anisotropy_rows, coupling_rows}, theta, delta, t, tau);
       CHECK(lean.f == full.f);
       CHECK(leanest.f == full.f);
       CHECK(lean.f_displaced == full.f_displaced);
@@ -298,5 +299,10 @@ TEST_CASE("models carrying fewer integrals give the same torques, R and rho-bar 
       CHECK(lean.q_displaced[drive_and_alignment.drive_index()] == full.q_displaced[R]);
       CHECK(lean.q_displaced[drive_and_alignment.alignment_index()] == full.q_displaced[rho]);
       CHECK(leanest.q_displaced[0] == full.q_displaced[R]);
+      const std::size_t S = every.stokes_index();
+      CHECK(stokes.f == full.f);
+      CHECK(stokes.q[drive_and_stokes.stokes_index()] == full.q[S]);
+      CHECK(stokes.q_displaced[drive_and_stokes.stokes_index()] == full.q_displaced[S]);
+      CHECK(stokes.q[drive_and_stokes.stokes_index()] != 0.0);
     }
 }

@@ -18,10 +18,10 @@ using rotorsweep::testing::Start;
 namespace {
 
 constexpr Integrals every = all_integrals;
-using Scalar = NearestNeighbourRows<double, every>;
-using Simd = NearestNeighbourRows<simd_lane, every>;
+using Scalar = NearestNeighbourRows<double>;
+using Simd = NearestNeighbourRows<simd_lane>;
 constexpr std::size_t W = lane_width<simd_lane>;
-constexpr std::size_t nq = Scalar::quadrature_count;
+constexpr std::size_t nq = every.count();
 constexpr std::size_t rows = 20;
 
 double lane_A(std::size_t l) { return 0.5 + 1.7 * double(l); }
@@ -40,7 +40,7 @@ lane_vector<simd_lane> gather_theta() {
 }
 
 Simd simd_model() {
-  return rotorsweep::testing::model<Simd>(rows, lane_from<simd_lane>(lane_A), lane_from<simd_lane>(lane_g));
+  return rotorsweep::testing::model<Simd>(rows, every, lane_from<simd_lane>(lane_A), lane_from<simd_lane>(lane_g));
 }
 
 void check_close(double simd, double scalar, double tol) {
@@ -58,7 +58,7 @@ void check_one_step() {
   const simd_lane t = lane_from<simd_lane>(lane_t), h(0.05);
   vs.attempt(vm, t, h, theta.data(), q.data(), y_new.data(), q_new.data(), y_err.data(), q_err.data());
   for (std::size_t l = 0; l < W; ++l) {
-    const auto sm = rotorsweep::testing::model<Scalar>(rows, lane_A(l), lane_g(l));
+    const auto sm = rotorsweep::testing::model<Scalar>(rows, every, lane_A(l), lane_g(l));
     auto scalar_arena = rotorsweep::testing::scratch<double>(Stepper<Scalar>::storage_size(rows));
     Stepper<Scalar> ss(sm, scalar_arena);
     auto y = lane_theta(l);
@@ -86,7 +86,7 @@ TEST_CASE("SIMD right-hand side and Jacobian equal the scalar ones lane by lane"
   const simd_lane energy = vm.energy(vw, theta.data(), t);
 
   for (std::size_t l = 0; l < W; ++l) {
-    const auto sm = rotorsweep::testing::model<Scalar>(rows, lane_A(l), lane_g(l));
+    const auto sm = rotorsweep::testing::model<Scalar>(rows, every, lane_A(l), lane_g(l));
     auto sw = rotorsweep::testing::workspace(sm);
     const auto y = lane_theta(l);
     std::vector<double> sf(rows), sq(nq), sdf(rows), sdq(nq * rows), sdqt(nq);
@@ -120,7 +120,7 @@ TEST_CASE("adaptive SIMD runs reproduce scalar runs member by member", "[kernels
   vs.t_stop = simd_lane(2 * two_pi);
   vi.advance(vm, vs);
   for (std::size_t l = 0; l < W; ++l) {
-    const auto sm = rotorsweep::testing::model<Scalar>(rows, lane_A(l), lane_g(l));
+    const auto sm = rotorsweep::testing::model<Scalar>(rows, every, lane_A(l), lane_g(l));
     auto si = rotorsweep::testing::integrator<AdaptiveIntegrator<Scalar, Rodas4<Scalar>>>(sm, {1e-7, 1e-10});
     auto ss = rotorsweep::testing::lane_state<double>(rows, nq);
     const auto y = lane_theta(l);

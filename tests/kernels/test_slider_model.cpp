@@ -162,7 +162,7 @@ template <class Model>
 Run<Model> integrate(const Model& m, std::vector<double> y0, double t0, double t1, double tol) {
   using Integrator = AdaptiveIntegrator<Model, Rodas4<Model>>;
   auto integrator = rotorsweep::testing::integrator<Integrator>(m, Tolerances{tol, tol});
-  auto s = rotorsweep::testing::lane_state<double>(m.dimension(), Model::quadrature_count);
+  auto s = rotorsweep::testing::lane_state<double>(m.dimension(), Model::max_quadratures);
   for (std::size_t k = 0; k < y0.size(); ++k) s.theta[k] = y0[k];
   s.t = t0;
   s.t_stop = t1;

@@ -1,4 +1,4 @@
-// The step-size controllers (docs/numerics.md "Step-size control"): the integral factor
+// The step-size controllers (docs/numerics.md "Steppers and integration"): the integral factor
 // safety·err^(−1/k), the PI factor safety·err^(−(1/k − 0.03))·previous^0.04 after accepted steps,
 // bounds, how an error is weighed against the tolerances, and the norm that holds R apart.
 #include <algorithm>
@@ -60,7 +60,9 @@ TEST_CASE("errors are weighed absolutely, relatively, or relatively but capped a
 namespace {
 /// Two absolute components and two quadratures: a capped-relative one (R) and a relative one.
 struct TwoAnglesAndR {
-  static constexpr std::size_t quadrature_count = 2;
+  bool r_only = false;  ///< only R steers the step (else both quadratures)
+  std::size_t quadrature_count() const { return 2; }
+  bool error_controlled(std::size_t p) const { return p == 0 || !r_only; }
   std::size_t dimension() const { return 2; }
   StateScale scale(std::size_t) const { return StateScale::absolute; }
   StateScale quadrature_scale(std::size_t p) const {
@@ -72,28 +74,28 @@ struct TwoAnglesAndR {
 TEST_CASE("the error norm holds R apart, remainder_tightening times tighter", "[kernels][controller]") {
   const Tolerances tol{1e-6, 1e-9};
   const double s = tol.atol + tol.rtol;  // every scale here, with |y| = 1
-  const TwoAnglesAndR model;
+  TwoAnglesAndR model;
   const double y[2] = {1.0, 1.0};
   const double q[2] = {1.0, 1.0};
-  const bool both[2] = {true, true};
-  const bool r_only[2] = {true, false};
   // angles' RMS 1/sqrt(2) of the tolerance, R at 1/16 of it: R (8/16 = 0.5) is below the RMS
   const double y_error[2] = {s, 0.0};
   double q_error[2] = {s / 16, 0.0};
-  CHECK(error_norm(model, tol, y, y, y_error, r_only, q, q, q_error) ==
+  model.r_only = true;
+  CHECK(error_norm(model, tol, y, y, y_error, q, q, q_error) ==
         Approx(std::sqrt(0.5)).epsilon(1e-14));
   // R at a quarter of the tolerance sets the norm: 8/4 = 2, though the RMS with R would be 0.6
   q_error[0] = s / 4;
-  CHECK(error_norm(model, tol, y, y, y_error, r_only, q, q, q_error) == Approx(2.0).epsilon(1e-14));
+  CHECK(error_norm(model, tol, y, y, y_error, q, q, q_error) == Approx(2.0).epsilon(1e-14));
   // the relative quadrature enters the RMS: sqrt((1 + 0 + 4) / 3) with R small again
   q_error[0] = 0.0;
   q_error[1] = 2 * s;
-  CHECK(error_norm(model, tol, y, y, y_error, both, q, q, q_error) ==
+  model.r_only = false;
+  CHECK(error_norm(model, tol, y, y, y_error, q, q, q_error) ==
         Approx(std::sqrt(5.0 / 3)).epsilon(1e-14));
   // a non-finite error in either part gives a non-finite norm
   q_error[0] = std::nan("");
-  CHECK_FALSE(std::isfinite(error_norm(model, tol, y, y, y_error, both, q, q, q_error)));
+  CHECK_FALSE(std::isfinite(error_norm(model, tol, y, y, y_error, q, q, q_error)));
   q_error[0] = 0.0;
   const double bad_angle[2] = {INFINITY, 0.0};
-  CHECK_FALSE(std::isfinite(error_norm(model, tol, y, y, bad_angle, both, q, q, q_error)));
+  CHECK_FALSE(std::isfinite(error_norm(model, tol, y, y, bad_angle, q, q, q_error)));
 }

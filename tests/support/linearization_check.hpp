@@ -12,7 +12,7 @@ namespace rotorsweep::testing {
 
 template <class Model>
 void check_linearization(const Model& m, const std::vector<double>& theta, double t) {
-  constexpr std::size_t nq = Model::quadrature_count;
+  const std::size_t nq = m.quadrature_count();
   const std::size_t n = theta.size();
   const double eps = 1e-6;
   struct Evaluation {
