@@ -1,4 +1,4 @@
-# Compiler settings shared by every target: C++20, warnings, the native SIMD target, and no
+# Compiler settings shared by every target: C++20, warnings, position-independent code, and no
 # floating-point contraction, so that scalar and SIMD lanes round the same way.
 set(CMAKE_CXX_STANDARD 20)
 set(CMAKE_CXX_STANDARD_REQUIRED ON)
@@ -12,11 +12,10 @@ add_compile_options($<$<COMPILE_LANGUAGE:CXX>:-Wall> $<$<COMPILE_LANGUAGE:CXX>:-
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
   add_compile_options($<$<COMPILE_LANGUAGE:CXX>:-Wno-maybe-uninitialized> $<$<COMPILE_LANGUAGE:CXX>:-Wno-uninitialized>)
 endif()
-# A native build compiles everything for this CPU; a portable one the baseline x86-64, except the
-# SIMD sweeps and the command line, which get each set's -march (ensemble/, apps/ CMakeLists).
-if(NOT ROTORSWEEP_PORTABLE)
-  add_compile_options($<$<COMPILE_LANGUAGE:CXX>:-march=native>)
-endif()
+# Everything is compiled for the baseline x86-64 except the SIMD sweeps, the command line, the
+# tests and the Python module, which get their set's -march (-march=native in a native build;
+# ensemble/, apps/, tests/, python/ CMakeLists): code without lanes (Eigen's solvers in the
+# landscape) then gives the same bits, free of fused multiply-adds, in native and portable builds.
 # Device code: every operation rounded on its own (no fused multiply-add), like the host build, so
 # that a GPU thread gives the CPU lanes' bits; constexpr host functions (std::array) callable on it.
 set(CMAKE_CUDA_STANDARD 20)

@@ -47,7 +47,9 @@ if(ROTORSWEEP_CUDA)
   check_language(CUDA)
   if(CMAKE_CUDA_COMPILER)
     if(NOT DEFINED CMAKE_CUDA_ARCHITECTURES)
-      set(CMAKE_CUDA_ARCHITECTURES 90)  # H100 and H200; set e.g. -DCMAKE_CUDA_ARCHITECTURES=80 for an A100
+      # PTX for one virtual architecture: cheap to compile, JIT-compiled by the driver at first run.
+      # The gpu preset adds sm_90 machine code (H100, H200); e.g. -DCMAKE_CUDA_ARCHITECTURES=80 for an A100.
+      set(CMAKE_CUDA_ARCHITECTURES 90-virtual)
     endif()
     enable_language(CUDA)
     # CMake before 3.26 knows nvcc's dialects up to C++17 only; nvcc 12 and later take C++20

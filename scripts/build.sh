@@ -1,6 +1,23 @@
 #!/usr/bin/env bash
-# Configures and builds rotorsweep (Release) into build/; the executable is build/bin/rotorsweep.
+# Configures and builds rotorsweep (Release) into build/ with a preset of CMakePresets.json:
+# scripts/build.sh [dev|portable|gpu] [target...]; the executable is build/bin/rotorsweep.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$(nproc)"
+preset="${1:-portable}"
+shift || true
+case "$preset" in
+  dev | portable | gpu) ;;
+  *)
+    echo "scripts/build.sh: unknown preset '$preset'; allowed: dev, portable, gpu" >&2
+    exit 2
+    ;;
+esac
+# build/ made by another generator (an older checkout's Makefiles) cannot be reconfigured for Ninja
+if [ -f build/CMakeCache.txt ] && ! grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' build/CMakeCache.txt; then
+  echo "build.sh: build/ was configured with another generator; configuring it afresh"
+  rm -rf build/CMakeCache.txt build/CMakeFiles
+fi
+cmake --preset "$preset"
+targets=()
+for target in "$@"; do targets+=(--target "$target"); done
+cmake --build build -j"$(nproc)" "${targets[@]}"

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
-scripts/build.sh
+scripts/build.sh dev rotorsweep rotorsweep_python
 build/bin/rotorsweep run examples/friction_curve.toml -o results/friction_curve.h5
 build/bin/rotorsweep info results/friction_curve.h5
 /usr/bin/python3 scripts/plot_friction.py results/friction_curve.h5 results/friction_curve.png
