@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The demonstration from a bare Debian machine: install, build, sweep the default scene
+# The demonstration from a bare Debian machine: install, build (the dev preset's executable and
+# Python module only: this machine's instruction set, no GPU code), sweep the default scene
 # (examples/friction_curve.toml), plot its friction curve with the quasi-static J(A) over it
 # (results/friction_curve.{h5,png}) and draw the chamber map (results/chambers.png).
 set -euo pipefail
