@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "ensemble/initial_conditions.hpp"
-#include "ensemble/instruction_set.hpp"
-#include "kernels/adaptive_integrator.hpp"
-#include "kernels/lane_math.hpp"
-#include "kernels/row_model.hpp"
-#include "kernels/stepper_list.hpp"
+#include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/rows/initial_conditions.hpp"
+#include "kernels/lanes/lane_math.hpp"
+#include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::apps {
 
@@ -123,7 +123,7 @@ double step_rate(kernels::StepperId id, std::size_t rows, int repeats, bool diso
     Integrator integrator(model, {1e-6, 1e-9}, {}, arena);
     kernels::LaneState<V> state(rows, Model::max_quadratures, arena);
     const auto theta = afm_angles<V>(rows);
-    std::copy(theta.begin(), theta.end(), state.theta);
+    std::copy(theta.begin(), theta.end(), state.y);
     state.t_stop = V(1e300);
     return median_rate(repeats, double(kernels::lane_width<V>), [&] { integrator.attempt(model, state); });
   });
@@ -153,10 +153,11 @@ int run_bench_kernels(const BenchKernelOptions& options) {
   for (std::size_t k = 0; k < kernels::stepper_names.size(); ++k) {
     const double s = step_rate<double>(k, rows, options.repeats);
     const double v = step_rate<simd_lane>(k, rows, options.repeats);
-    const int evaluations =
-        kernels::with_stepper<BenchModel<simd_lane>>(k, []<class Stepper>() { return Stepper::evaluations(); });
-    std::printf("  steps %-8s scalar %10.4g /s   SIMD %10.4g member-steps/s (%.1fx; %.2f of the bound for %d RHS)\n",
-                kernels::stepper_names[k].data(), s, v, v / s, v * evaluations / bound, evaluations);
+    const int evaluations = kernels::with_stepper<BenchModel<simd_lane>>(
+        k, []<class Stepper>() { return Stepper::evaluations(); });
+    std::printf(
+        "  steps %-8s scalar %10.4g /s   SIMD %10.4g member-steps/s (%.1fx; %.2f of the bound for %d RHS)\n",
+        kernels::stepper_names[k].data(), s, v, v / s, v * evaluations / bound, evaluations);
   }
   const double disordered_rhs = rhs_rate<simd_lane>(rows, options.repeats, true);
   const double uniform_steps = step_rate<simd_lane>(0, rows, options.repeats);

@@ -7,9 +7,9 @@
 #include <string>
 
 #include "commands.hpp"
-#include "ensemble/gpu_backend.hpp"
-#include "ensemble/member_plan.hpp"
-#include "ensemble/sweep.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 
 namespace rotorsweep::apps {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "kernels/stepper_list.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::apps {
 

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "ensemble/coupling_table.hpp"
+#include "ensemble/rows/coupling_table.hpp"
 #include "io/output_target.hpp"
 
 namespace rotorsweep::apps {

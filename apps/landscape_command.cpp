@@ -9,7 +9,7 @@
 
 #include "build_info.hpp"
 #include "commands.hpp"
-#include "ensemble/coupling_table.hpp"
+#include "ensemble/rows/coupling_table.hpp"
 #include "io/hdf5_file.hpp"
 #include "io/output_target.hpp"
 #include "landscape/bifurcation_curves.hpp"

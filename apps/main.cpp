@@ -7,8 +7,8 @@
 
 #include "apps/launcher/isa_choice.hpp"
 #include "commands.hpp"
-#include "ensemble/instruction_set.hpp"
-#include "kernels/stepper_list.hpp"
+#include "ensemble/engine/instruction_set.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 int main(int argc, char** argv) {
   using namespace rotorsweep::apps;

@@ -10,8 +10,8 @@
 #include "apps/launcher/isa_choice.hpp"
 #include "build_info.hpp"
 #include "commands.hpp"
-#include "ensemble/member_plan.hpp"
-#include "ensemble/sweep.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/sweep.hpp"
 #include "io/output_target.hpp"
 #include "io/result_file.hpp"
 #include "io/result_reader.hpp"
@@ -136,7 +136,7 @@ int run_merge(const MergeOptions& options) {
   try {
     const ensemble::MemberPlan plan(scene);
     io::ResultFile out(target->temporary(), scene,
-                       io::Provenance{first->scene_path, version, revision, first->device, 
+                       io::Provenance{first->scene_path, version, revision, first->device,
                                       launcher::joined({isas.begin(), isas.end()})});
     for (const auto& path : options.shards) {
       const auto file = io::Hdf5Location::open_file(path);

@@ -11,10 +11,10 @@
 #include <mutex>
 
 #include "build_info.hpp"
-#include "ensemble/gpu_backend.hpp"
-#include "ensemble/instruction_set.hpp"
-#include "ensemble/member_plan.hpp"
-#include "ensemble/sweep.hpp"
+#include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/sweep.hpp"
 #include "io/member_stream.hpp"
 #include "io/output_target.hpp"
 #include "io/result_reader.hpp"

@@ -12,17 +12,17 @@
 
 #include "build_info.hpp"
 #include "commands.hpp"
-#include "ensemble/gpu_backend.hpp"
-#include "ensemble/instruction_set.hpp"
-#include "ensemble/member_plan.hpp"
-#include "ensemble/sweep.hpp"
+#include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/sweep.hpp"
 #include "io/member_stream.hpp"
 #include "io/output_target.hpp"
 #include "io/result_file.hpp"
 #include "io/result_reader.hpp"
 #include "io/scene_parser.hpp"
-#include "kernels/lane.hpp"
-#include "kernels/stepper_list.hpp"
+#include "kernels/lanes/lane.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
 #include "run_support.hpp"
 
@@ -277,7 +277,8 @@ int run_sweep_command(const RunOptions& options) {
     try {
       file.emplace(partial, scene,
                    io::Provenance{options.scene, version, revision, ensemble::device_label(scene),
-                                  ensemble::instruction_set().name}, shard);
+                                  ensemble::instruction_set().name},
+                   shard);
     } catch (const std::exception& e) {
       std::cerr << "error: creating " << partial << " failed: " << e.what() << "; "
                 << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "ensemble/scene.hpp"
+#include "ensemble/rows/scene.hpp"
 #include "io/hdf5_file.hpp"
 #include "io/result_file.hpp"
 

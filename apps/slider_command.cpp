@@ -10,13 +10,13 @@
 
 #include "build_info.hpp"
 #include "commands.hpp"
-#include "ensemble/instruction_set.hpp"
-#include "ensemble/slider_sweep.hpp"
+#include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/slider/slider_sweep.hpp"
 #include "io/output_target.hpp"
 #include "io/slider_result_file.hpp"
 #include "io/slider_scene_parser.hpp"
-#include "kernels/lane.hpp"
-#include "kernels/stepper_list.hpp"
+#include "kernels/lanes/lane.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
 
 namespace rotorsweep::apps {

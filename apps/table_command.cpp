@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "ensemble/member_plan.hpp"
-#include "ensemble/paper_table.hpp"
-#include "ensemble/scene.hpp"
-#include "ensemble/sweep.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/paper_table.hpp"
+#include "ensemble/rows/scene.hpp"
+#include "ensemble/rows/sweep.hpp"
 #include "io/output_target.hpp"
-#include "kernels/stepper_list.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::apps {
 

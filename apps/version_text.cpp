@@ -4,7 +4,7 @@
 #include "apps/launcher/isa_choice.hpp"
 #include "build_info.hpp"
 #include "commands.hpp"
-#include "ensemble/instruction_set.hpp"
+#include "ensemble/engine/instruction_set.hpp"
 
 namespace rotorsweep::apps {
 

@@ -6,8 +6,8 @@
 #include <functional>
 #include <set>
 
-#include "ensemble/curves.hpp"
-#include "ensemble/wilson_interval.hpp"
+#include "ensemble/rows/curves.hpp"
+#include "ensemble/rows/wilson_interval.hpp"
 #include "io/result_reader.hpp"
 
 namespace rotorsweep::io {

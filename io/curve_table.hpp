@@ -4,7 +4,7 @@
 
 #include <functional>
 
-#include "ensemble/scene.hpp"
+#include "ensemble/rows/scene.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace rotorsweep::io {

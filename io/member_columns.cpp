@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <limits>
 
-#include "ensemble/disorder.hpp"
-#include "ensemble/initial_conditions.hpp"
+#include "ensemble/rows/disorder.hpp"
+#include "ensemble/rows/initial_conditions.hpp"
 
 namespace rotorsweep::io {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/member_plan.hpp"
-#include "ensemble/scene.hpp"
-#include "ensemble/sweep.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/scene.hpp"
+#include "ensemble/rows/sweep.hpp"
 #include "io/hdf5_file.hpp"
 #include "io/member_columns.hpp"
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/member_plan.hpp"
-#include "ensemble/member_result.hpp"
-#include "ensemble/scene.hpp"
+#include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/scene.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace rotorsweep::io {

@@ -15,9 +15,9 @@
 #include <set>
 #include <sstream>
 
-#include "ensemble/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
 #include "io/toml_section.hpp"
-#include "kernels/stepper_list.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::io {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "ensemble/scene.hpp"
+#include "ensemble/rows/scene.hpp"
 
 namespace rotorsweep::io {
 

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "ensemble/slider_scene.hpp"
-#include "ensemble/slider_sweep.hpp"
+#include "ensemble/slider/slider_scene.hpp"
+#include "ensemble/slider/slider_sweep.hpp"
 #include "io/result_file.hpp"
 
 namespace rotorsweep::io {

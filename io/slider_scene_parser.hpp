@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "ensemble/slider_scene.hpp"
+#include "ensemble/slider/slider_scene.hpp"
 #include "io/scene_parser.hpp"
 
 namespace rotorsweep::io {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "io/scene_parser.hpp"
-#include "kernels/stepper_list.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::io {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "kernels/angles.hpp"
+#include "kernels/lanes/angles.hpp"
 #include "landscape/trig_roots.hpp"
 
 namespace rotorsweep::landscape {

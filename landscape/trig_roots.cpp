@@ -7,7 +7,7 @@
 #include <cmath>
 #include <complex>
 
-#include "kernels/angles.hpp"
+#include "kernels/lanes/angles.hpp"
 
 namespace rotorsweep::landscape {
 

@@ -5,7 +5,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
-#include "ensemble/coupling_table.hpp"
+#include "ensemble/rows/coupling_table.hpp"
 #include "landscape/bifurcation_curves.hpp"
 #include "landscape/chamber_map.hpp"
 #include "landscape/critical_points.hpp"

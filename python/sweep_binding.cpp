@@ -4,13 +4,13 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
-#include "ensemble/gpu_backend.hpp"
-#include "ensemble/instruction_set.hpp"
-#include "ensemble/member_plan.hpp"
-#include "ensemble/paper_table.hpp"
+#include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/paper_table.hpp"
 #include "io/scene_parser.hpp"
-#include "kernels/lane.hpp"
-#include "kernels/stepper_list.hpp"
+#include "kernels/lanes/lane.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 #include "sweep_job.hpp"
 
 namespace py = pybind11;

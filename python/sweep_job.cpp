@@ -6,7 +6,7 @@
 
 #include <chrono>
 
-#include "ensemble/sweep.hpp"
+#include "ensemble/rows/sweep.hpp"
 
 namespace rotorsweep::python {
 

@@ -12,8 +12,8 @@
 #include <thread>
 #include <vector>
 
-#include "ensemble/member_plan.hpp"
-#include "ensemble/scene.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/scene.hpp"
 #include "io/output_target.hpp"
 #include "io/result_file.hpp"
 

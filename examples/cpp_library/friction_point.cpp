@@ -2,8 +2,8 @@
 // beside the paper's value, and J(A) of the quasi-static CP friction law (docs/model.md §3–5).
 #include <cstdio>
 
-#include "ensemble/member_plan.hpp"
-#include "ensemble/sweep.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "landscape/bifurcation_curves.hpp"
 #include "landscape/jump_friction.hpp"

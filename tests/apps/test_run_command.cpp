@@ -7,7 +7,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "ensemble/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
 #include "support/result_datasets.hpp"

@@ -1,10 +1,10 @@
 // The kernels compiled for a GPU: the row model, both stepper families and the adaptive
 // integrator instantiated on the double lane inside a __global__ function (nvcc, no GPU needed).
-#include "kernels/adaptive_integrator.hpp"
-#include "kernels/lane_arena.hpp"
-#include "kernels/lane_math.hpp"
-#include "kernels/row_model.hpp"
-#include "kernels/stepper_list.hpp"
+#include "kernels/lanes/lane_arena.hpp"
+#include "kernels/lanes/lane_math.hpp"
+#include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 using namespace rotorsweep::kernels;
 
@@ -18,15 +18,17 @@ __global__ void advance_members(double* storage, std::size_t per_thread, std::si
   const Model model(rows, arena, all_integrals, {A[member], g[member], false});
   AdaptiveIntegrator<Model, Stepper> integrator(model, {1e-6, 1e-9}, {}, arena);
   LaneState<double> state(rows, Model::max_quadratures, arena);
-  for (std::size_t j = 0; j < rows; ++j) state.theta[j] = 3.14159 * double(j % 2) + 0.01 * double(j);
+  for (std::size_t j = 0; j < rows; ++j) state.y[j] = 3.14159 * double(j % 2) + 0.01 * double(j);
   state.t_stop = two_pi;
   integrator.advance(model, state);
   double s = 0, c = 0;
-  lane_sincos(state.theta[0], s, c);
+  lane_sincos(state.y[0], s, c);
   dissipation[member] = state.quad[0] + 0.0 * s * c;
 }
 
 template __global__ void advance_members<stepper_at<0>::type::type<Model>>(double*, std::size_t, std::size_t,
-                                                                          const double*, const double*, double*);
+                                                                           const double*, const double*,
+                                                                           double*);
 template __global__ void advance_members<stepper_at<2>::type::type<Model>>(double*, std::size_t, std::size_t,
-                                                                          const double*, const double*, double*);
+                                                                           const double*, const double*,
+                                                                           double*);

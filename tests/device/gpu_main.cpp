@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cstdio>
 
-#include "ensemble/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
 
 int main(int argc, char* argv[]) {
   const auto& gpu = rotorsweep::ensemble::gpu_info();

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/gpu_backend.hpp"
-#include "ensemble/member_plan.hpp"
-#include "ensemble/paper_table.hpp"
-#include "ensemble/sweep.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/paper_table.hpp"
+#include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "support/same_results.hpp"
 

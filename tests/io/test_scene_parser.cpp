@@ -5,9 +5,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "ensemble/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
 #include "io/scene_parser.hpp"
-#include "kernels/stepper_list.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 #include "support/scene_text.hpp"
 
 using rotorsweep::io::parse_scene_file;

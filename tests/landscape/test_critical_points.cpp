@@ -1,7 +1,8 @@
 // Critical points of the two-angle landscape (landscape/critical_points): zero gradient,
 // completeness against Newton from a dense grid of starts, the Euler characteristic of the
 // torus on a dense (A, τ) grid, the strict-FM fold only for 3 ≤ A ≤ 6, and the paper's minima.
-// (H_r as the N = 2 row model's energy is tested in tests/kernels/test_row_model.cpp.)
+// (H_r as the N = 2 row model's energy is tested in
+// tests/kernels/models/rows/test_nearest_neighbour_rows.cpp.)
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>

@@ -6,10 +6,10 @@
 #include <deque>
 #include <utility>
 
-#include "kernels/adaptive_integrator.hpp"
-#include "kernels/lane.hpp"
-#include "kernels/lane_arena.hpp"
-#include "kernels/lane_state.hpp"
+#include "kernels/lanes/lane.hpp"
+#include "kernels/lanes/lane_arena.hpp"
+#include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/lane_state.hpp"
 
 namespace rotorsweep::testing {
 

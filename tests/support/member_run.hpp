@@ -5,11 +5,11 @@
 #include <cstddef>
 #include <vector>
 
-#include "ensemble/initial_conditions.hpp"
-#include "ensemble/member_plan.hpp"
-#include "ensemble/scene.hpp"
-#include "ensemble/sweep.hpp"
-#include "kernels/stepper_list.hpp"
+#include "ensemble/rows/initial_conditions.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/scene.hpp"
+#include "ensemble/rows/sweep.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::testing {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/member_result.hpp"
+#include "ensemble/engine/member_result.hpp"
 
 namespace rotorsweep::testing {
 

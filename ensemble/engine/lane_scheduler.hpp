@@ -1,0 +1,268 @@
+// The lane scheduler (docs/architecture.md "Layers"): takes members from the plan into the lanes
+// of an integration loop, closes their periods into records, and retires and refills lanes.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <deque>
+#include <limits>
+#include <optional>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "ensemble/engine/integration_loop.hpp"
+#include "ensemble/engine/lane_observers.hpp"
+#include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_summary.hpp"
+#include "ensemble/rows/observables.hpp"
+#include "ensemble/rows/row_profile_observer.hpp"
+#include "ensemble/rows/scene.hpp"
+#include "kernels/lanes/angles.hpp"
+#include "kernels/steppers/stepper_list.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// The step observers a loop's model can feed, switched on by what it carries: the alignment
+/// extremes where it integrates ρ̄, the dissipation's error estimate where it integrates R with
+/// error control (the slip counter is always there; at T > 0 the error of D is statistical and
+/// comes from the periods, see finish()).
+template <class Loop>
+auto quadrature_observers(const Scene& scene, const Member& variant, kernels::Integrals carried) {
+  return std::tuple(AlignmentObserver<Loop>(carried.alignment, carried.alignment_index()),
+                    DissipationErrorObserver<Loop>(
+                        carried.drive && !Loop::stochastic, carried.drive_index(),
+                        kernels::stepper_swing_error_factors[scene.stepper] * variant.rtol, variant.atol));
+}
+
+/// The integrator settings of a variant: tolerances and step limits for the adaptive integrators,
+/// temperature and steps per period for the Langevin stepper.
+template <class Integrator>
+typename Integrator::Settings integrator_settings(const Scene& scene, const Member& variant) {
+  if constexpr (Integrator::stochastic)
+    return {scene.thermal.temperature, scene.thermal.steps_per_period, scene.thermal.step_fraction};
+  else
+    return {{variant.rtol, variant.atol},
+            {.h_max = scene.h_max, .max_steps = scene.max_steps, .controller = scene.controller}};
+}
+
+/// Runs members of one variant (one dimension and tolerances) through the lanes of an
+/// IntegrationLoop<Model, Integrator>. `Setup` gives the model's construction arguments after the
+/// dimension and the arena (model_arguments(), a tuple: the row models' quadratures) and turns a
+/// member into the model's parameters and its initial state: initial_state(member) and
+/// parameters(member, y0), and with a stochastic integrator its noise stream: noise_key(member).
+/// The model reports the quadratures it carries (integrals()). Each lane owns its member; a
+/// member that finishes or fails retires at once and (with scene.refill) its lane takes the next.
+template <kernels::LaneModel Model, class Integrator, class Setup>
+class LaneScheduler {
+ public:
+  using Loop = IntegrationLoop<Model, Integrator>;
+  static constexpr std::size_t width = Loop::width;
+
+  LaneScheduler(const Scene& scene, const Member& variant, Setup setup)
+      : scene_(scene),
+        setup_(std::move(setup)),
+        settings_(integrator_settings<Integrator>(scene, variant)),
+        loop_(
+            std::apply([&](const auto&... arguments) { return Loop(variant.rows, settings_, arguments...); },
+                       setup_.model_arguments())),
+        carried_(loop_.model().integrals()),
+        channels_(quadrature_channels(carried_)),
+        observers_(quadrature_observers<Loop>(scene, variant, carried_)),
+        slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
+        profiles_(variant.rows, scene.row_profiles),
+        lanes_(width) {}
+
+  /// Takes members from next_member() (a std::optional<Member>; empty when the plan is
+  /// exhausted) until none is left and every lane has retired; hands each result to retire().
+  /// Returns at once, abandoning the members in its lanes, when stopped() turns true.
+  template <class NextMember, class Retire, class Stopped>
+  void run(NextMember&& next_member, Retire&& retire, Stopped&& stopped) {
+    for (;;) {
+      if (stopped()) return;
+      if (scene_.refill || occupied_ == 0) fill_idle_lanes(next_member);
+      if (occupied_ == 0) return;
+      step();
+      const bool period_ends = loop_.any_period_ended();
+      for (std::size_t l = 0; l < width; ++l) {
+        if (!lanes_[l].occupied) continue;
+        if (loop_.failed(l))
+          retire(finish(l, false));
+        else if (period_ends && loop_.period_ended(l))
+          close_period(l, retire);
+      }
+    }
+  }
+
+  double lane_steps_busy() const { return busy_; }    ///< Σ over attempts of lanes holding a member
+  double lane_steps_total() const { return total_; }  ///< Σ over attempts of all lanes
+
+ private:
+  struct Lane {
+    bool occupied = false;
+    Member member;
+    std::vector<PeriodRecord> history;            ///< every period with period_series, else the last ones
+    int periods = 0;                              ///< periods closed
+    std::vector<std::vector<double>> end_states;  ///< θ at the last period ends (up to 4, oldest first)
+    std::deque<std::vector<double>> profiles;     ///< row profiles of the last average_periods periods
+  };
+
+  template <class F>
+  void for_each_observer(F&& f) {
+    std::apply([&](auto&... observer) { (f(observer), ...); }, observers_);
+    f(slips_);
+  }
+
+  template <class NextMember>
+  void fill_idle_lanes(NextMember& next_member) {
+    for (std::size_t l = 0; l < width && occupied_ < width && !plan_exhausted_; ++l) {
+      if (lanes_[l].occupied) continue;
+      const std::optional<Member> member = next_member();
+      plan_exhausted_ = !member;
+      if (plan_exhausted_) break;
+      start(l, *member);
+    }
+  }
+
+  void start(std::size_t l, const Member& member) {
+    const std::vector<double> y0 = setup_.initial_state(member);
+    loop_.start(l, setup_.parameters(member, y0), y0);
+    if constexpr (Loop::stochastic) {
+      loop_.start_noise(l, setup_.noise_key(member), member.g);
+      slips_.set_rate(l, thermal_slip_rate(member.g));
+    }
+    for_each_observer([&](auto& observer) { observer.start(loop_, l); });
+    profiles_.start(loop_, l);
+    lanes_[l].occupied = true;
+    lanes_[l].member = member;
+    lanes_[l].history.clear();
+    lanes_[l].periods = 0;
+    lanes_[l].end_states.clear();
+    lanes_[l].profiles.clear();
+    ++occupied_;
+  }
+
+  void step() {
+    std::apply([&](auto&... observer) { loop_.step(observer..., slips_, profiles_); }, observers_);
+    busy_ += double(occupied_);
+    total_ += double(width);
+  }
+
+  template <class Retire>
+  void close_period(std::size_t l, Retire& retire) {
+    PeriodRecord record;
+    record_quadratures(
+        channels_, carried_, record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period);
+    for_each_observer([&](auto& observer) { observer.end_period(l, record); });
+    if constexpr (Loop::stochastic)
+      record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
+
+    auto& ends = lanes_[l].end_states;
+    if (ends.size() == 4) ends.erase(ends.begin());
+    ends.emplace_back(loop_.dimension());
+    for (std::size_t k = 0; k < loop_.dimension(); ++k) ends.back()[k] = loop_.component(l, k);
+
+    if (profiles_.enabled()) {
+      auto& profiles = lanes_[l].profiles;
+      profiles.push_back(profiles_.take_period(l));
+      if (profiles.size() > std::size_t(scene_.average_periods)) profiles.pop_front();
+    }
+
+    auto& history = lanes_[l].history;
+    history.push_back(record);
+    const int periods = ++lanes_[l].periods;
+    forget_old_periods(history);
+    const bool long_enough = periods >= scene_.relax_periods + scene_.average_periods;
+    bool settled = long_enough;
+    if (scene_.steady_tol > 0) settled = long_enough && periods_agree(history, scene_.steady_tol);
+    if (settled || (scene_.steady_tol > 0 && periods >= scene_.max_periods)) {
+      retire(finish(l, settled));
+      return;
+    }
+    loop_.next_period(l, scene_.wrap_angles);
+  }
+
+  /// At T > 0 one step of h turns a row by about √(2T h/g) from noise alone, a rate of √(2T/(g h)):
+  /// a step counts as fast only above max(slip_rate, 6 √(2T/(g h))), six standard deviations of the
+  /// noise (docs/model.md §7).
+  double thermal_slip_rate(double g) const {
+    const double h = Loop::period / Integrator::steps_for(settings_, g);
+    return std::max(scene_.slip_rate, 6.0 * std::sqrt(2.0 * scene_.thermal.temperature / (g * h)));
+  }
+
+  /// Without period_series only the averaged periods (and the two the steady test compares) are
+  /// needed: the history is cut back to them whenever it reaches twice that length, so a lane
+  /// holds at most 2 max(average_periods, 2) records however long its member runs.
+  void forget_old_periods(std::vector<PeriodRecord>& history) const {
+    if (scene_.period_series) return;
+    const std::size_t keep = std::size_t(std::max(scene_.average_periods, 2));
+    if (history.size() >= 2 * keep) history.erase(history.begin(), history.end() - std::ptrdiff_t(keep));
+  }
+
+  MemberResult finish(std::size_t l, bool settled) {
+    Lane& lane = lanes_[l];
+    RetiredLane retired{lane.member.index,
+                        loop_.status(l),
+                        settled,
+                        lane.periods,
+                        loop_.steps_accepted(l),
+                        loop_.steps_rejected(l),
+                        std::vector<double>(loop_.dimension()),
+                        std::move(lane.history),
+                        std::move(lane.end_states)};
+    for (std::size_t k = 0; k < loop_.dimension(); ++k) retired.theta[k] = loop_.component(l, k);
+    const std::size_t averaged =
+        std::min<std::size_t>(retired.history.size(), std::size_t(scene_.average_periods));
+    MemberResult result = retired_member_result(std::move(retired), scene_.average_periods,
+                                                scene_.classifies_regimes(), scene_.period_series);
+    if constexpr (Loop::stochastic) {
+      // D is a random quantity: its error is the standard error of the mean over the averaged periods
+      const double n = double(averaged);
+      result.summary(Summary::mean, Channel::dissipation_error) =
+          n > 1 ? result.dissipation_std() / std::sqrt(n - 1) : std::numeric_limits<double>::infinity();
+    }
+    if (profiles_.enabled()) average_profiles(lane.profiles, result);
+    lane.occupied = false;
+    lane.history.clear();
+    lane.end_states.clear();
+    lane.profiles.clear();
+    loop_.release(l);
+    --occupied_;
+    return result;
+  }
+
+  /// Means over the averaged periods of D_j and of each link's alignment (NaN when the member failed).
+  void average_profiles(const std::deque<std::vector<double>>& profiles, MemberResult& result) const {
+    const std::size_t n = loop_.dimension(), links = profiles_.links();
+    const bool ok = result.status == kernels::LaneStatus::ok && !profiles.empty();
+    result.row_dissipation.assign(n, ok ? 0.0 : std::numeric_limits<double>::quiet_NaN());
+    result.link_alignment.assign(links, ok ? 0.0 : std::numeric_limits<double>::quiet_NaN());
+    if (!ok) return;
+    for (const auto& values : profiles) {
+      for (std::size_t j = 0; j < n; ++j) result.row_dissipation[j] += values[j];
+      for (std::size_t j = 0; j < links; ++j) result.link_alignment[j] += values[n + j];
+    }
+    const double count = double(profiles.size());
+    for (double& d : result.row_dissipation) d /= count;
+    for (double& rho : result.link_alignment) rho /= count * Loop::period;
+  }
+
+  const Scene& scene_;
+  Setup setup_;
+  typename Loop::Settings settings_;
+  Loop loop_;
+  kernels::Integrals carried_;   ///< the quadratures the model carries
+  QuadratureChannels channels_;  ///< the channels they fill
+  decltype(quadrature_observers<Loop>(std::declval<const Scene&>(), std::declval<const Member&>(),
+                                      kernels::Integrals{})) observers_;
+  SlipObserver<Loop> slips_;
+  RowProfileObserver<Loop> profiles_;
+  std::vector<Lane> lanes_;
+  std::size_t occupied_ = 0;
+  bool plan_exhausted_ = false;
+  double busy_ = 0, total_ = 0;
+};
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,119 @@
+// What one member leaves behind: its per-period channels (docs/model.md §3, declared in
+// ensemble/rows/observables.hpp) and their summaries over the averaged periods for /members.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "ensemble/rows/final_state.hpp"
+#include "ensemble/rows/observables.hpp"
+#include "kernels/lanes/host_device.hpp"
+#include "kernels/models/rows/integrals.hpp"
+#include "kernels/steppers/lane_status.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// The channels of one drive period [t_k, t_k + 2π] (see Channel; unused channels stay 0).
+struct PeriodRecord {
+  std::array<double, channel_count> values{};
+
+  ROTORSWEEP_HD double& operator[](Channel c) { return values[std::size_t(c)]; }
+  ROTORSWEEP_HD double operator[](Channel c) const { return values[std::size_t(c)]; }
+  ROTORSWEEP_HD double dissipation() const { return (*this)[Channel::dissipation]; }
+  double alignment_min() const { return (*this)[Channel::alignment_min]; }
+  double alignment_max() const { return (*this)[Channel::alignment_max]; }
+  double slips() const { return (*this)[Channel::slips]; }
+};
+
+/// A channel that a period's quadrature gives: its integral, or its time mean.
+struct QuadratureChannel {
+  Channel channel;
+  kernels::Quadrature quadrature;
+  bool mean;
+};
+
+/// The quadrature channels of `observables` that a model carrying a set of quadratures fills.
+/// Plain data: computed on the host, it travels to a GPU thread by value.
+struct QuadratureChannels {
+  std::array<QuadratureChannel, channel_count> channels{};
+  std::size_t count = 0;
+};
+
+/// The channels of the declarations whose quadrature `carried` holds, in declaration order.
+constexpr QuadratureChannels quadrature_channels(kernels::Integrals carried) {
+  QuadratureChannels out;
+  for (const auto& observable : observables)
+    for (std::size_t c = 0; c < observable.channel_count; ++c) {
+      const ChannelDeclaration& channel = observable.channels[c];
+      if (channel.source == Source::step_reducer || !carried.carries(channel.quadrature)) continue;
+      out.channels[out.count++] = {channel.channel, channel.quadrature,
+                                   channel.source == Source::quadrature_mean};
+    }
+  return out;
+}
+
+/// Writes `channels` of a period of length `period` from its quadratures' integrals (integral(p)
+/// for quadrature p of `carried`), on the host and on a GPU thread alike.
+template <class Integral>
+ROTORSWEEP_HD void record_quadratures(const QuadratureChannels& channels, kernels::Integrals carried,
+                                      PeriodRecord& record, Integral&& integral, double period) {
+  for (std::size_t i = 0; i < channels.count; ++i) {
+    const QuadratureChannel c = channels.channels[i];
+    const double value = integral(carried.index(c.quadrature));
+    record[c.channel] = c.mean ? value / period : value;
+  }
+}
+
+enum class Regime { fm, afm, cp, unsettled };
+
+constexpr std::string_view regime_name(Regime regime) {
+  switch (regime) {
+    case Regime::fm: return "FM";
+    case Regime::afm: return "AFM";
+    case Regime::cp: return "CP";
+    case Regime::unsettled: break;
+  }
+  return "unsettled";
+}
+
+inline constexpr Regime all_regimes[] = {Regime::fm, Regime::afm, Regime::cp, Regime::unsettled};
+
+struct MemberResult {
+  std::size_t index = 0;
+  /// Summaries of each channel over the averaged periods (NaN when the member failed: see status).
+  std::array<std::array<double, 4>, channel_count> summaries{};
+  Regime regime = Regime::unsettled;
+  kernels::LaneStatus status = kernels::LaneStatus::ok;
+  bool settled = true;  ///< false: steady_tol > 0 and max_periods ran out first
+  int periods_run = 0;
+  double steps_accepted = 0, steps_rejected = 0;
+  std::vector<double> theta_final;    ///< θ_j at the end, wrapped to [0, 2π)
+  std::vector<PeriodRecord> periods;  ///< every period, kept only for period_series
+  FinalState final_state;             ///< the kind of state it ended in (attractor "failed" if it failed)
+  /// With observables.row_profiles, means over the averaged periods (NaN when it failed): D_j, row
+  /// j's share of D, and the time mean of cos²((θ_j − θ_{j+1})/2) for each link (docs/model.md §3).
+  std::vector<double> row_dissipation, link_alignment;
+
+  double& summary(Summary s, Channel c) { return summaries[std::size_t(c)][std::size_t(s)]; }
+  double summary(Summary s, Channel c) const { return summaries[std::size_t(c)][std::size_t(s)]; }
+  double mean(Channel c) const { return summary(Summary::mean, c); }
+  double dissipation() const { return mean(Channel::dissipation); }
+  double dissipation_std() const { return summary(Summary::spread, Channel::dissipation); }
+  double dissipation_error() const { return mean(Channel::dissipation_error); }
+  /// Whether D is resolved: finished, and its estimated error below 10 % of |D| (docs/numerics.md).
+  bool dissipation_resolved() const {
+    return status == kernels::LaneStatus::ok &&
+           dissipation_error() < resolved_fraction * std::fabs(dissipation());
+  }
+  static constexpr double resolved_fraction = 0.1;
+  double alignment_mean() const { return mean(Channel::alignment_mean); }
+  double alignment_min() const { return summary(Summary::minimum, Channel::alignment_min); }
+  double alignment_max() const { return summary(Summary::maximum, Channel::alignment_max); }
+  double slips_per_period() const { return mean(Channel::slips); }
+};
+
+}  // namespace rotorsweep::ensemble

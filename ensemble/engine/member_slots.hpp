@@ -1,0 +1,112 @@
+// Members laid out as flat arrays for a device backend (docs/architecture.md "Backends"): a chunk
+// of members' inputs (parameters, y(0)) and the slots their retired lanes write (status, counts,
+// the last period records and end states), with the host side that fills and reads them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/scene.hpp"
+#include "ensemble/rows/sweep.hpp"
+#include "kernels/lanes/host_device.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// What every member of a variant shares: its schedule, tolerances and the record ring's size.
+struct SlotSchedule {
+  std::size_t rows = 0;
+  int relax_periods = 0, average_periods = 0, max_periods = 0;
+  double steady_tol = 0;
+  bool wrap_angles = false;
+  bool slips = false;  ///< the slip counter is on
+  double slip_rate = 0;
+  double rtol = 0, atol = 0, h_max = 0, max_steps = 0;
+  double error_rtol = 0;  ///< rtol × the stepper's swing_error_factor (channel dissipation_error)
+  kernels::StepController controller = kernels::StepController::integral;
+  double first_step_scale = 0;       ///< computed on the host (kernels::AdaptiveIntegrator)
+  std::size_t record_capacity = 0;   ///< period records a slot keeps (a ring)
+  kernels::Integrals quadratures{};  ///< what the row model carries (the scene's observables)
+  QuadratureChannels channels{};     ///< the period channels those quadratures fill
+
+  /// Periods a member can run at most.
+  ROTORSWEEP_HD int period_limit() const {
+    const int schedule = relax_periods + average_periods;
+    return steady_tol > 0 && max_periods > schedule ? max_periods : schedule;
+  }
+};
+
+/// Device-visible views of a chunk of `count` members: inputs, then outputs (k: the chunk position).
+struct SlotViews {
+  const double* A = nullptr;                ///< [k]
+  const double* g = nullptr;                ///< [k]
+  const std::uint8_t* strict_fm = nullptr;  ///< [k]
+  const double* y0 = nullptr;               ///< [k · rows + j]
+  std::uint8_t* status = nullptr;           ///< [k] kernels::LaneStatus
+  std::uint8_t* settled = nullptr;          ///< [k]
+  std::int32_t* periods = nullptr;          ///< [k] periods closed
+  double* steps = nullptr;                  ///< [2k] accepted, [2k + 1] rejected
+  double* theta = nullptr;                  ///< [k · rows + j] the state at retirement
+  double* records = nullptr;  ///< [(k · record_capacity + r) · channel_count + c], r = period mod capacity
+  double* end_states = nullptr;  ///< [(k · 4 + r) · rows + j], r = period mod 4
+};
+
+/// Views over the buffers of a chunk given in SlotChunk::buffers() order (host or device memory).
+inline SlotViews slot_views(void* const* p) {
+  return {static_cast<const double*>(p[0]),
+          static_cast<const double*>(p[1]),
+          static_cast<const std::uint8_t*>(p[2]),
+          static_cast<const double*>(p[3]),
+          static_cast<std::uint8_t*>(p[4]),
+          static_cast<std::uint8_t*>(p[5]),
+          static_cast<std::int32_t*>(p[6]),
+          static_cast<double*>(p[7]),
+          static_cast<double*>(p[8]),
+          static_cast<double*>(p[9]),
+          static_cast<double*>(p[10])};
+}
+
+/// Host buffers of one chunk in the SlotViews layout.
+class SlotChunk {
+ public:
+  SlotChunk(const SlotSchedule& schedule, std::size_t capacity);
+
+  /// Fills the inputs of members [first, first + count) of `range` (count ≤ capacity).
+  void fill(const Scene& scene, const VariantRange& range, std::size_t first, std::size_t count);
+  /// The result of chunk member k, read from the outputs.
+  MemberResult result(const Scene& scene, std::size_t k) const;
+  /// Hands every member's result to `sink` (on `threads` host threads); returns their step attempts.
+  double deliver(const Scene& scene, int threads, const ResultSink& sink) const;
+
+  /// Views of these host buffers (for the host run of the device driver, and for copies).
+  SlotViews views();
+  std::size_t count() const { return count_; }
+  std::size_t capacity() const { return capacity_; }
+  const SlotSchedule& schedule() const { return schedule_; }
+
+  /// Each buffer: its data and size in bytes, in SlotViews order, inputs first (for copies to and
+  /// from a device).
+  struct Buffer {
+    void* data;
+    std::size_t bytes;
+    bool input;
+  };
+  std::vector<Buffer> buffers();
+
+ private:
+  SlotSchedule schedule_;
+  std::size_t capacity_, count_ = 0;
+  std::vector<std::size_t> index_;  ///< plan index of each chunk member
+  std::vector<double> A_, g_, y0_;
+  std::vector<std::uint8_t> strict_fm_, status_, settled_;
+  std::vector<std::int32_t> periods_;
+  std::vector<double> steps_, theta_, records_, end_states_;
+};
+
+/// The schedule of a variant's members: the scene's schedule with the variant's tolerances,
+/// `first_step_scale` the stepper's first-step scale at them.
+SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double first_step_scale);
+
+}  // namespace rotorsweep::ensemble

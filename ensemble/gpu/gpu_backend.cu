@@ -1,0 +1,52 @@
+// The GPU backend's entry points in a CUDA build: the device probe and the dispatch from the
+// scene's stepper to its translation unit (gpu_sweep_stepper.cu.in).
+#include <cuda_runtime.h>
+
+#include <stdexcept>
+
+#include "ensemble/gpu/gpu_backend.hpp"
+#include "kernels/steppers/stepper_list.hpp"
+
+namespace rotorsweep::ensemble {
+
+namespace gpu {
+template <kernels::StepperId id>
+SweepOutcome run_stepper(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
+}
+
+const GpuInfo& gpu_info() {
+  static const GpuInfo info = [] {
+    GpuInfo out;
+    int count = 0;
+    const cudaError_t status = cudaGetDeviceCount(&count);
+    if (status != cudaSuccess || count == 0) {
+      out.why = std::string("no CUDA GPU found (") +
+                (status != cudaSuccess ? cudaGetErrorString(status) : "no devices") + ")";
+      return out;
+    }
+    cudaDeviceProp properties{};
+    if (cudaGetDeviceProperties(&properties, 0) != cudaSuccess) {
+      out.why = "the CUDA GPU could not be queried";
+      return out;
+    }
+    if (properties.major < 6) {
+      out.why = std::string(properties.name) + " is older than compute capability 6.0";
+      return out;
+    }
+    out.available = true;
+    out.name = properties.name;
+    out.multiprocessors = properties.multiProcessorCount;
+    out.memory_gib = double(properties.totalGlobalMem) / double(1ull << 30);
+    return out;
+  }();
+  return info;
+}
+
+SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, int host_threads,
+                               const SweepControl& control, const ResultSink& sink) {
+  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
+    return gpu::run_stepper<id>(scene, range, host_threads, control, sink);
+  });
+}
+
+}  // namespace rotorsweep::ensemble

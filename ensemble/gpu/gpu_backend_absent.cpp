@@ -1,0 +1,20 @@
+// The GPU backend's entry points in a build without CUDA: no device, and a clear error for a
+// scene that asks for one.
+#include <stdexcept>
+
+#include "ensemble/gpu/gpu_backend.hpp"
+
+namespace rotorsweep::ensemble {
+
+const GpuInfo& gpu_info() {
+  static const GpuInfo info{
+      false, "", "this rotorsweep was built without the GPU backend (ROTORSWEEP_CUDA=OFF, or no nvcc)", 0, 0};
+  return info;
+}
+
+SweepOutcome run_gpu_row_sweep(const Scene&, const VariantRange&, int, const SweepControl&,
+                               const ResultSink&) {
+  throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why);
+}
+
+}  // namespace rotorsweep::ensemble

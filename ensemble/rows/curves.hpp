@@ -1,0 +1,38 @@
+// Per-point statistics of a sweep (/curves of the output): for each (N, rtol, A, g, noise, offset, kind),
+// count, mean, spread and range of D over its replicas, and the fraction in each regime.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/member_plan.hpp"
+
+namespace rotorsweep::ensemble {
+
+struct CurvePoint {
+  std::size_t rows = 0;
+  double rtol = 0;
+  double A = 0, g = 0;
+  InitialKind kind = InitialKind::afm;
+  double noise = 0, offset = 0;
+  std::size_t members = 0;     ///< replicas at this point
+  std::size_t count = 0;       ///< of them, members that finished with status ok (the statistics use these)
+  std::size_t unresolved = 0;  ///< of those, members whose D is not resolved (dissipation_resolved)
+  double dissipation_mean = 0, dissipation_std = 0, dissipation_min = 0, dissipation_max = 0;
+  double dissipation_sem = 0;  ///< standard error of dissipation_mean: sample spread / √count (NaN for one)
+  /// Members of the point in each regime (all_regimes order; finished members only) and failed.
+  std::array<std::size_t, 4> regime_count{};
+  std::size_t failed = 0;
+  std::map<std::string, std::size_t> attractor_count;  ///< members per attractor label (failed included)
+};
+
+/// One point per (variant, A, g, noise, offset, kind), in plan order; members of a point are
+/// consecutive (replicas).
+std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
+                                         const std::vector<MemberResult>& results, int replicas);
+
+}  // namespace rotorsweep::ensemble

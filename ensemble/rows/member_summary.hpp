@@ -1,0 +1,51 @@
+// Turns a member's period records into its summary: means and spread over the averaged
+// periods, the steady-state test of schedule.steady_tol, and the regime rule.
+#pragma once
+
+#include <vector>
+
+#include "ensemble/engine/member_result.hpp"
+#include "kernels/lanes/host_device.hpp"
+#include "kernels/lanes/lane.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// Whether two successive periods' dissipations agree: |D_k - D_{k-1}| <= tol · max(|D_k|, |D_{k-1}|).
+ROTORSWEEP_HD inline bool dissipations_agree(double before, double now, double tol) {
+  const double a = kernels::lane_abs(now), b = kernels::lane_abs(before);
+  return kernels::lane_abs(now - before) <= tol * (a < b ? b : a);
+}
+
+/// Whether the last two periods of `history` agree (dissipations_agree).
+bool periods_agree(const std::vector<PeriodRecord>& history, double tol);
+
+/// The regime of the averaged periods:
+///   CP   every averaged period has at least one slip event;
+///   FM   no slip, and ρ̄ > 1/2 at every step point;
+///   AFM  no slip, and ρ̄ < 1/2 at every step point;
+///   unsettled otherwise (slips in some periods only, ρ̄ crossing 1/2 without a slip).
+Regime classify_regime(const std::vector<PeriodRecord>& averaged);
+
+/// Fills the observables of `result` from the last `average_periods` records of `history`;
+/// `classify` says whether the regime rule has its inputs.
+void summarize(const std::vector<PeriodRecord>& history, int average_periods, bool classify,
+               MemberResult& result);
+
+/// What a lane leaves when its member retires, whichever backend ran it.
+struct RetiredLane {
+  std::size_t index = 0;  ///< the member's plan index
+  kernels::LaneStatus status = kernels::LaneStatus::ok;
+  bool settled = false;
+  int periods = 0;
+  double steps_accepted = 0, steps_rejected = 0;
+  std::vector<double> theta;          ///< the state at retirement (unwrapped)
+  std::vector<PeriodRecord> history;  ///< the last periods (at least the averaged ones), oldest first
+  std::vector<std::vector<double>> end_states;  ///< θ at the last period ends (up to 4), oldest first
+};
+
+/// The member's result: its counts, final angles in [0, 2π), summaries over the averaged periods
+/// (NaN when it failed) and final state. `history` is moved into result.periods with period_series.
+MemberResult retired_member_result(RetiredLane&& lane, int average_periods, bool classify,
+                                   bool period_series);
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,95 @@
+// The slider scene's units, substrate, field tables, scaled parameters and starting angles
+// (docs/model.md §9 "Scaled form" and "Initial conditions").
+#include "ensemble/slider/slider_scene.hpp"
+
+#include <cmath>
+#include <complex>
+
+#include "kernels/lanes/angles.hpp"
+#include "kernels/lanes/counter_random.hpp"
+
+namespace rotorsweep::ensemble {
+
+namespace {
+constexpr double mu0_over_4pi = 1e-7;  // T m / A
+}
+
+SliderUnits::SliderUnits(const SliderScene& scene)
+    : energy(mu0_over_4pi * scene.moment * scene.moment / std::pow(scene.spacing, 3)),
+      time(scene.spacing / (kernels::two_pi * scene.speed)),
+      length(scene.spacing),
+      force(energy / scene.spacing),
+      power(energy / time) {}
+
+kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, SliderSize size, double separation) {
+  const auto centre_offset = [](std::size_t slider, std::size_t substrate) {
+    return 0.5 * double(slider - 1) - 0.5 * double(substrate - 1);
+  };
+  return {scene.substrate_columns, scene.substrate_rows, centre_offset(size.columns, scene.substrate_columns),
+          centre_offset(size.rows, scene.substrate_rows), separation / scene.spacing};
+}
+
+double final_displacement(const SliderScene& scene) {
+  return std::max(0.0, scene.end - scene.rest) * scene.speed / scene.spacing;
+}
+
+kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation) {
+  const double depth = separation / scene.spacing;
+  // half a lattice constant beyond both ends of the path, so that no step's stage leaves the table
+  return kernels::SubstrateTable(substrate_lattice(scene, size, separation), size.rows, -0.5,
+                                 double(size.columns - 1) + final_displacement(scene) + 0.5,
+                                 depth / scene.nodes_per_depth);
+}
+
+double paper_drive_amplitude(const SliderScene& scene, double separation) {
+  return std::pow(scene.spacing / separation, 3) * scene.substrate_moment / scene.moment;
+}
+
+double field_drive_amplitude(const SliderScene& scene, SliderSize size, double separation) {
+  const auto lattice = substrate_lattice(scene, size, separation);
+  const double row = double(size.rows / 2), column = double(size.columns / 2);
+  constexpr int points = 64;
+  std::complex<double> bx(0.0), bz(0.0);  // Σ B e^{iφ}: the harmonic's amplitude whatever its phase
+  for (int k = 0; k < points; ++k) {
+    const double phase = kernels::two_pi * double(k) / points;
+    const auto field = kernels::substrate_field(lattice, column + double(k) / points, row);
+    bx += field.x.value * std::polar(1.0, phase);
+    bz += field.z.value * std::polar(1.0, phase);
+  }
+  return scene.substrate_moment / scene.moment * (std::abs(bx) + std::abs(bz)) / points;
+}
+
+kernels::SliderParameters slider_parameters(const SliderScene& scene, const kernels::SubstrateTable& table) {
+  const SliderUnits units(scene);
+  kernels::SliderParameters p;
+  p.substrate = table.view();
+  p.moment_ratio = scene.substrate_moment / scene.moment;
+  p.inertia = scene.inertia / (units.energy * units.time * units.time);
+  p.damping = scene.damping / (units.energy * units.time);
+  p.speed = 1.0 / kernels::two_pi;
+  p.rest = scene.rest / units.time;
+  return p;
+}
+
+std::vector<double> slider_start(const SliderScene& scene, SliderMemberIndex member) {
+  const kernels::RandomStream stream(
+      scene.seed,
+      (std::uint64_t(member.size) * scene.separations.size() + member.separation) * scene.replicas +
+          member.replica);
+  const SliderSize size = scene.sizes[member.size];
+  const std::size_t n = size.rotors();
+  std::vector<double> theta(n);
+  for (std::size_t r = 0; r < n; ++r) {
+    const double u = stream.draw(r);
+    switch (scene.start) {
+      case SliderStart::alternating_rows:
+        theta[r] = ((r / size.columns) % 2 ? 3.141592653589793 : 0.0) + scene.noise * (u - 0.5);
+        break;
+      case SliderStart::aligned: theta[r] = scene.noise * (u - 0.5); break;
+      case SliderStart::random: theta[r] = kernels::two_pi * u; break;
+    }
+  }
+  return theta;
+}
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,109 @@
+// A slider scene as data (docs/model.md §9): the experiment's rotor grid, substrate, drive and scan in SI
+// units, and their scaled form (length a, energy μ0 m²/(4π a³), time a/(2π v)) that the kernel integrates.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernels/models/slider/slider_model.hpp"
+#include "kernels/steppers/step_control.hpp"
+#include "kernels/steppers/stepper_list.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// How a member's angles start: rows (along x, fixed y) alternately near 0 and π, all near 0, or
+/// every angle uniform on [0, 2π); the first two with uniform noise of full width `noise`.
+enum class SliderStart { alternating_rows, aligned, random };
+
+/// A slider's rotor grid.
+struct SliderSize {
+  std::size_t columns = 7;  ///< rotors along x, the sliding direction
+  std::size_t rows = 7;     ///< rotors along y
+  std::size_t rotors() const { return columns * rows; }
+  bool operator==(const SliderSize&) const = default;
+};
+
+struct SliderScene {
+  // [slider]
+  std::vector<SliderSize> sizes{{7, 7}};  ///< one or more grids (a sweep axis)
+  double spacing = 16e-3;                 ///< a, m (slider and substrate)
+  double moment = 4.57e-2;                ///< m, A m²
+  double inertia = 7.48e-10;              ///< I, kg m²
+  double damping = 2.5e-6;                ///< γ, kg m²/s
+  bool overdamped = false;                ///< γ θ̇ = τ instead of I θ̈ = τ − γ θ̇
+
+  // [substrate]
+  std::size_t substrate_columns = 35;
+  std::size_t substrate_rows = 35;
+  double substrate_moment = 5.03e-2;  ///< m_sub, A m²
+  double nodes_per_depth = 16.0;      ///< table nodes per separation h along x (error ∝ (h / nodes)⁶)
+
+  // [drive]
+  double speed = 8e-3;  ///< v, m/s
+  double rest = 0.5;    ///< s at rest before sliding
+  double end = 10.5;    ///< s, end of the run
+
+  // [sweep]
+  std::vector<double> separations{8e-3};  ///< h, m
+
+  // [initial]
+  SliderStart start = SliderStart::alternating_rows;
+  double noise = 3.141592653589793 / 24.0;  ///< full width of the uniform noise, rad
+  std::size_t replicas = 1;
+  std::uint64_t seed = 1;
+
+  // [observables]
+  std::size_t samples_per_period = 50;  ///< time series resolution (a period is a / v)
+  bool series = true;                   ///< store the time series (friction, order parameters, energy)
+  bool angles = false;                  ///< store every rotor's angle at every sample
+
+  // [numerics]
+  kernels::StepperId stepper = kernels::default_stepper();
+  double rtol = 1e-6;
+  double atol = 1e-6;
+  double max_steps = 1e8;
+
+  std::string output_path = "results/slider.h5";
+  std::string text;  ///< the scene file as read
+
+  std::size_t member_count() const { return sizes.size() * separations.size() * replicas; }
+};
+
+/// The scene's units: energy E0 = μ0 m²/(4π a³) in J, time T0 = a/(2π v) in s, so that one substrate
+/// period a/v is 2π; forces in E0/a, power in E0/T0.
+struct SliderUnits {
+  double energy, time, length, force, power;
+  explicit SliderUnits(const SliderScene& scene);
+};
+
+/// The substrate lattice under a slider of `size`, centred, at separation h (m).
+kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, SliderSize size, double separation);
+
+/// The slider's displacement at the end of the run, in units of a.
+double final_displacement(const SliderScene& scene);
+
+/// The table of the substrate field over the whole path of a slider of `size` at separation h (m).
+kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation);
+
+/// The row model's substrate strength A at separation h (docs/model.md §9 "Mapping onto the row model"):
+/// the paper's point-dipole estimate (a/h)³ m_sub/m ...
+double paper_drive_amplitude(const SliderScene& scene, double separation);
+/// ... and the first harmonic of the substrate field along the slider's middle row, μ B₁ with
+/// B₁ = (|B_x,1| + |B_z,1|)/2 over one lattice period (64 points), in units of μ0 m²/(4π a³).
+double field_drive_amplitude(const SliderScene& scene, SliderSize size, double separation);
+
+/// One lane's scaled parameters over `table`.
+kernels::SliderParameters slider_parameters(const SliderScene& scene, const kernels::SubstrateTable& table);
+
+/// Where a member sits in the scene's plan: size-major, then separation, then replica.
+struct SliderMemberIndex {
+  std::size_t size = 0, separation = 0, replica = 0;
+};
+
+/// The angles a member starts from: seed and (size, separation, replica) pick its stream, so a
+/// member's start does not depend on the others in the scene.
+std::vector<double> slider_start(const SliderScene& scene, SliderMemberIndex member);
+
+}  // namespace rotorsweep::ensemble

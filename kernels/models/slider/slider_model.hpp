@@ -1,0 +1,274 @@
+// The experiment's slider (docs/model.md §9): a grid of rotors coupled as point dipoles, sliding over a
+// finite substrate lattice; I θ̈ = τ − γ θ̇ (or γ θ̇ = τ), friction force and dissipation as quadratures.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "kernels/lanes/angles.hpp"
+#include "kernels/lanes/host_device.hpp"
+#include "kernels/lanes/lane.hpp"
+#include "kernels/lanes/lane_arena.hpp"
+#include "kernels/lanes/lane_math.hpp"
+#include "kernels/linear/second_order_jacobian.hpp"
+#include "kernels/models/model_concept.hpp"
+#include "kernels/models/slider/substrate_table.hpp"
+
+namespace rotorsweep::kernels {
+
+/// The slider's rotor grid (units of a): rotor r = j·columns + i at (i + ξ, j, 0), and its pair
+/// couplings E_pair = P c_r c_q + Q s_r s_q with Q = 1/d³, P = (1 − 3 d_x²/d²)/d³ (c = cos θ, s = sin θ).
+struct SliderGrid {
+  std::size_t columns = 7;  ///< along the sliding direction x
+  std::size_t rows = 7;     ///< across it, y
+  std::size_t rotors() const { return columns * rows; }
+};
+
+/// One lane's parameters, scaled (the same for every lane type and both dynamics).
+struct SliderParameters {
+  SubstrateTableView substrate;  ///< the field along each row at this lane's separation
+  double moment_ratio = 1.1;     ///< μ = m_sub / m
+  double inertia = 1e-4;         ///< I (ignored when overdamped)
+  double damping = 0.1;          ///< γ
+  double speed = 0.0;            ///< v, in a per unit time
+  double rest = 0.0;             ///< t_rest, before which the slider stands still
+};
+
+/// Scaled units (docs/model.md §9): length a, energy μ0 m²/(4π a³), the substrate field in units of
+/// μ0 m_sub/(4π a³) times μ = m_sub/m. Per rotor r:
+///   E = Σ_{r<q} (P c_r c_q + Q s_r s_q) − μ Σ_r (B_x c_r − B_z s_r),  τ_r = −∂E/∂θ_r,
+/// the slider at ξ(t) = v·max(0, t − t_rest), and the drive's force F = ∂E/∂ξ. Quadratures: drive
+/// ∫F dt (its impulse; work = v ∫F dt) and stokes ∫γ Σ θ̇² dt (dissipation). Satisfies LaneModel.
+template <class V, bool Inertial>
+class SliderModel {
+ public:
+  using lane_type = V;
+  using Jacobian = SecondOrderJacobian<V, Inertial>;
+  static constexpr double period = two_pi;  ///< a substrate period when v = 1/(2π)
+  /// Two quadratures: the impulse (steers the step) and the dissipation.
+  static constexpr std::size_t max_quadratures = 2;
+  static constexpr std::size_t impulse_index = 0, dissipation_index = 1;
+  ROTORSWEEP_HD static constexpr std::size_t quadrature_count() { return max_quadratures; }
+  ROTORSWEEP_HD static constexpr bool error_controlled(std::size_t p) { return p == impulse_index; }
+
+  using Parameters = SliderParameters;
+
+  static constexpr std::size_t storage_size(std::size_t rotors) { return 2 * rotors * rotors; }
+
+  struct Workspace {
+    static constexpr std::size_t storage_size(std::size_t dimension) {
+      return 10 * Jacobian::rotors(dimension);
+    }
+    ROTORSWEEP_HD Workspace(std::size_t dimension, LaneArena<V>& arena)
+        : sin(arena.take(Jacobian::rotors(dimension))),
+          cos(arena.take(Jacobian::rotors(dimension))),
+          p_cos(arena.take(Jacobian::rotors(dimension))),
+          q_sin(arena.take(Jacobian::rotors(dimension))),
+          torque(arena.take(Jacobian::rotors(dimension))),
+          bx(arena.take(Jacobian::rotors(dimension))),
+          bz(arena.take(Jacobian::rotors(dimension))),
+          dbx(arena.take(Jacobian::rotors(dimension))),
+          dbz(arena.take(Jacobian::rotors(dimension))),
+          curvature(arena.take(Jacobian::rotors(dimension))) {}
+    V *sin, *cos;      // sin θ_r, cos θ_r
+    V *p_cos, *q_sin;  // (P c)_r, (Q s)_r
+    V* torque;         // τ_r
+    V *bx, *bz;        // μ B at rotor r
+    V *dbx, *dbz;      // μ ∂B/∂x
+    V* curvature;      // μ (∂²B_x/∂x² c_r − ∂²B_z/∂x² s_r)
+  };
+
+  ROTORSWEEP_HD SliderModel(const SliderGrid& grid, LaneArena<V>& arena)
+      : grid_(grid), n_(grid.rotors()), p_(arena.take(n_ * n_)), q_(arena.take(n_ * n_)) {
+    for (std::size_t r = 0; r < n_; ++r)
+      for (std::size_t k = 0; k < n_; ++k) {
+        if (k == r) continue;
+        const double dx = double(column(k)) - double(column(r));
+        const double dy = double(row(k)) - double(row(r));
+        const double d2 = dx * dx + dy * dy;
+        const double inv_d3 = 1.0 / (d2 * std::sqrt(d2));
+        q_[r * n_ + k] = V(inv_d3);
+        p_[r * n_ + k] = V((1.0 - 3.0 * dx * dx / d2) * inv_d3);
+      }
+  }
+
+  ROTORSWEEP_HD void set_lane(std::size_t lane, const Parameters& p) {
+    substrate_[lane] = p.substrate;
+    lane_set(mu_, lane, p.moment_ratio);
+    lane_set(inertia_, lane, Inertial ? p.inertia : 0.0);
+    lane_set(damping_, lane, p.damping);
+    lane_set(inv_damping_, lane, 1.0 / p.damping);
+    lane_set(inv_inertia_, lane, Inertial ? 1.0 / p.inertia : 0.0);
+    lane_set(speed_, lane, p.speed);
+    lane_set(rest_, lane, p.rest);
+  }
+
+  ROTORSWEEP_HD const SliderGrid& grid() const { return grid_; }
+  ROTORSWEEP_HD std::size_t rotors() const { return n_; }
+  ROTORSWEEP_HD std::size_t dimension() const { return Inertial ? 2 * n_ : n_; }
+  ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
+  ROTORSWEEP_HD static constexpr StateScale quadrature_scale(std::size_t) { return StateScale::relative; }
+
+  /// ξ(t), the slider's displacement.
+  ROTORSWEEP_HD V displacement(V t) const { return speed_ * lane_max(V(0.0), t - rest_); }
+
+  ROTORSWEEP_HD void evaluate(Workspace& w, const V* y, V t, V* f, V* qdot) const {
+    prepare(w, y, t, false);
+    rates(w, y, f, qdot);
+  }
+
+  ROTORSWEEP_HD void linearize(Workspace& w, const V* y, V t, V* f, V* qdot, Jacobian& J, V* df_dt, V* dq_dy,
+                               V* dq_dt) const {
+    prepare(w, y, t, true);
+    rates(w, y, f, qdot);
+    const std::size_t dim = dimension();
+    auto& K = J.stiffness();
+    J.set_dynamics(inertia_, damping_);
+    for (std::size_t r = 0; r < n_; ++r) {
+      // K = ∂τ/∂θ = −∂²E/∂θ²: off the diagonal −(P s_r s_q + Q c_r c_q)
+      for (std::size_t k = r + 1; k < n_; ++k) {
+        const V value = lane_neg(p_[r * n_ + k] * w.sin[r] * w.sin[k] + q_[r * n_ + k] * w.cos[r] * w.cos[k]);
+        K.entry(r, k) = value;
+        K.entry(k, r) = value;
+      }
+      K.entry(r, r) =
+          w.cos[r] * w.p_cos[r] + w.sin[r] * w.q_sin[r] - (w.bx[r] * w.cos[r] - w.bz[r] * w.sin[r]);
+    }
+    // ∂/∂t = ξ'(t) ∂/∂ξ, ξ' = v once the slider moves
+    const V rate = lane_select(t > rest_, speed_, V(0.0));
+    const V weight = Inertial ? inv_inertia_ : inv_damping_;
+    for (std::size_t k = 0; k < dim; ++k) df_dt[k] = V(0.0);
+    V force_rate(0.0);
+    for (std::size_t r = 0; r < n_; ++r) {
+      const V torque_rate = lane_neg(rate) * (w.dbx[r] * w.sin[r] + w.dbz[r] * w.cos[r]);
+      df_dt[Inertial ? n_ + r : r] = weight * torque_rate;
+      force_rate -= w.curvature[r];
+      dq_dy[impulse_index * dim + r] = w.dbx[r] * w.sin[r] + w.dbz[r] * w.cos[r];
+      if constexpr (Inertial) dq_dy[impulse_index * dim + n_ + r] = V(0.0);
+    }
+    dq_dt[impulse_index] = rate * force_rate;
+    V* grad = dq_dy + dissipation_index * dim;
+    if constexpr (Inertial) {
+      for (std::size_t r = 0; r < n_; ++r) {
+        grad[r] = V(0.0);
+        grad[n_ + r] = V(2.0) * damping_ * y[n_ + r];
+      }
+      dq_dt[dissipation_index] = V(0.0);
+    } else {
+      // ∂(Σ τ²/γ)/∂θ_k = (2/γ) Σ_r τ_r K_rk, and ∂/∂t = (2/γ) Σ_r τ_r ∂τ_r/∂t
+      V time_part(0.0);
+      for (std::size_t k = 0; k < n_; ++k) {
+        V sum(0.0);
+        for (std::size_t r = 0; r < n_; ++r) sum += w.torque[r] * K.entry(r, k);
+        grad[k] = V(2.0) * inv_damping_ * sum;
+        time_part += w.torque[k] * df_dt[k];
+      }
+      dq_dt[dissipation_index] = V(2.0) * time_part;
+    }
+  }
+
+  /// E, the magnetic energy (pairs and substrate), in units of μ0 m²/(4π a³).
+  ROTORSWEEP_HD V energy(Workspace& w, const V* y, V t) const {
+    prepare(w, y, t, false);
+    V e(0.0);
+    for (std::size_t r = 0; r < n_; ++r)
+      e += V(0.5) * (w.cos[r] * w.p_cos[r] + w.sin[r] * w.q_sin[r]) -
+           (w.bx[r] * w.cos[r] - w.bz[r] * w.sin[r]);
+    return e;
+  }
+
+  /// ½ I Σ θ̇² (0 when overdamped).
+  ROTORSWEEP_HD V kinetic_energy(const V* y) const {
+    V e(0.0);
+    if constexpr (Inertial)
+      for (std::size_t r = 0; r < n_; ++r) e += y[n_ + r] * y[n_ + r];
+    return V(0.5) * inertia_ * e;
+  }
+
+  /// The alignment of neighbours along x and across y: the mean of cos(θ_r − θ_q) over neighbouring
+  /// pairs in each direction (+1 ferromagnetic, −1 antiferromagnetic).
+  ROTORSWEEP_HD void order_parameters(const V* y, V& along_x, V& across_y) const {
+    along_x = V(0.0);
+    across_y = V(0.0);
+    V s, c;
+    for (std::size_t r = 0; r < n_; ++r) {
+      if (column(r) + 1 < grid_.columns) {
+        lane_sincos(y[r] - y[r + 1], s, c);
+        along_x += c;
+      }
+      if (row(r) + 1 < grid_.rows) {
+        lane_sincos(y[r] - y[r + grid_.columns], s, c);
+        across_y += c;
+      }
+    }
+    const std::size_t x_links = (grid_.columns - 1) * grid_.rows, y_links = grid_.columns * (grid_.rows - 1);
+    along_x = x_links ? along_x * V(1.0 / double(x_links)) : V(1.0);
+    across_y = y_links ? across_y * V(1.0 / double(y_links)) : V(1.0);
+  }
+
+ private:
+  ROTORSWEEP_HD std::size_t column(std::size_t r) const { return r % grid_.columns; }
+  ROTORSWEEP_HD std::size_t row(std::size_t r) const { return r / grid_.columns; }
+
+  /// f and the quadrature integrands from a prepared workspace.
+  ROTORSWEEP_HD void rates(const Workspace& w, const V* y, V* f, V* qdot) const {
+    V force(0.0);
+    for (std::size_t r = 0; r < n_; ++r) force -= w.dbx[r] * w.cos[r] - w.dbz[r] * w.sin[r];
+    qdot[impulse_index] = force;
+    V dissipation(0.0);
+    if constexpr (Inertial) {
+      for (std::size_t r = 0; r < n_; ++r) {
+        f[r] = y[n_ + r];
+        f[n_ + r] = (w.torque[r] - damping_ * y[n_ + r]) * inv_inertia_;
+        dissipation += y[n_ + r] * y[n_ + r];
+      }
+      qdot[dissipation_index] = damping_ * dissipation;
+    } else {
+      for (std::size_t r = 0; r < n_; ++r) {
+        f[r] = w.torque[r] * inv_damping_;
+        dissipation += w.torque[r] * w.torque[r];
+      }
+      qdot[dissipation_index] = dissipation * inv_damping_;
+    }
+  }
+
+  /// sin, cos, the substrate field at every rotor, P c, Q s and τ; with `curvatures` also the
+  /// second x-derivative term of F.
+  ROTORSWEEP_HD void prepare(Workspace& w, const V* y, V t, bool curvatures) const {
+    for (std::size_t r = 0; r < n_; ++r) lane_sincos(y[r], w.sin[r], w.cos[r]);
+    const V xi = displacement(t);
+    for (std::size_t r = 0; r < n_; ++r) {
+      const V x = xi + V(double(column(r)));
+      for (std::size_t l = 0; l < lane_width<V>; ++l) {
+        const RowField b = substrate_[l].at(row(r), lane_get(x, l));
+        const double mu = lane_get(mu_, l);
+        lane_set(w.bx[r], l, mu * b.bx);
+        lane_set(w.bz[r], l, mu * b.bz);
+        lane_set(w.dbx[r], l, mu * b.dbx);
+        lane_set(w.dbz[r], l, mu * b.dbz);
+        if (curvatures)
+          lane_set(w.curvature[r], l, mu * (b.d2bx * lane_get(w.cos[r], l) - b.d2bz * lane_get(w.sin[r], l)));
+      }
+    }
+    for (std::size_t r = 0; r < n_; ++r) {
+      V pc(0.0), qs(0.0);
+      for (std::size_t k = 0; k < n_; ++k) {
+        pc += p_[r * n_ + k] * w.cos[k];
+        qs += q_[r * n_ + k] * w.sin[k];
+      }
+      w.p_cos[r] = pc;
+      w.q_sin[r] = qs;
+      w.torque[r] = w.sin[r] * pc - w.cos[r] * qs - (w.bx[r] * w.sin[r] + w.bz[r] * w.cos[r]);
+    }
+  }
+
+  SliderGrid grid_;
+  std::size_t n_;
+  V *p_, *q_;  ///< P and Q, n × n, zero diagonal, the same in every lane
+  std::array<SubstrateTableView, lane_width<V>> substrate_{};
+  V mu_ = V(1.0), inertia_ = V(1.0), inv_inertia_ = V(1.0), damping_ = V(1.0), inv_damping_ = V(1.0);
+  V speed_ = V(0.0), rest_ = V(0.0);
+};
+
+}  // namespace rotorsweep::kernels

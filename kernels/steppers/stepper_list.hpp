@@ -1,0 +1,100 @@
+// The one list of steppers a user can name (scene key numerics.stepper, --stepper): each entry is
+// a tableau that carries its name and, by its type, its family; one dispatch from name to type.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "kernels/steppers/dormand_prince.hpp"
+#include "kernels/steppers/rosenbrock.hpp"
+
+namespace rotorsweep::kernels {
+
+/// The stepper family a tableau's type selects: linearly implicit or explicit.
+template <LaneModel System, const RosenbrockTableau& T>
+RosenbrockStepper<System, T> stepper_family_of(const RosenbrockTableau&);
+template <LaneModel System, const ExplicitTableau& T>
+DormandPrince5<System> stepper_family_of(const ExplicitTableau&);
+
+/// One entry of the list: `type<System>` is the stepper on a model. `swing_error_factor` κ is how
+/// many times rtol · max_t |R(t)| the error of a period's dissipation reaches with this stepper
+/// (the channel dissipation_error, docs/numerics.md "The error of D", measured by
+/// scripts/bench/error_calibration.py, with R held to rtol / 8): 1/8 for rodas4p2, 1/4 for rodas4,
+/// 1 for rodas5p, whose error estimate is the least pessimistic; 1 for ros2 and dopri5.
+template <const auto& Tableau, double SwingErrorFactor = 1.0>
+struct StepperEntry {
+  static constexpr std::string_view name = Tableau.name;
+  static constexpr double swing_error_factor = SwingErrorFactor;
+  template <class System>
+  using type = decltype(stepper_family_of<System, Tableau>(Tableau));
+};
+
+template <class... Entries>
+struct StepperList {
+  static constexpr std::size_t size = sizeof...(Entries);
+  static constexpr std::array<std::string_view, size> names{Entries::name...};
+  static constexpr std::array<double, size> swing_error_factors{Entries::swing_error_factor...};
+};
+
+// Adding a stepper: its tableau, and one entry here (the build makes a translation unit per entry).
+using steppers = StepperList<StepperEntry<rodas4_tableau, 0.25>, StepperEntry<ros2_tableau>,
+                             StepperEntry<dormand_prince5_tableau>, StepperEntry<rodas4p2_tableau, 0.125>,
+                             StepperEntry<rodas5p_tableau>>;
+
+inline constexpr auto stepper_names = steppers::names;
+inline constexpr auto stepper_swing_error_factors = steppers::swing_error_factors;
+
+/// Position of a stepper in the list (its identity in scenes and dispatch).
+using StepperId = std::size_t;
+
+inline std::optional<StepperId> parse_stepper(std::string_view name) {
+  for (std::size_t i = 0; i < stepper_names.size(); ++i)
+    if (stepper_names[i] == name) return i;
+  return std::nullopt;
+}
+
+/// The stepper of a scene that names none: the cheapest at matched error of D on the benchmark
+/// members, and at the default rtol both cheaper and more accurate than rodas4 (docs/performance.md).
+inline constexpr std::string_view default_stepper_name = "rodas4p2";
+inline StepperId default_stepper() { return *parse_stepper(default_stepper_name); }
+
+/// The entry at position `id` of the list.
+template <StepperId id, class List = steppers>
+struct stepper_at;
+template <StepperId id, class First, class... Rest>
+struct stepper_at<id, StepperList<First, Rest...>> : stepper_at<id - 1, StepperList<Rest...>> {};
+template <class First, class... Rest>
+struct stepper_at<0, StepperList<First, Rest...>> {
+  using type = First;
+};
+
+/// Calls f.template operator()<id>() with the run-time position `id` as a compile-time constant.
+template <class F, std::size_t... ids>
+decltype(auto) with_stepper_id(StepperId id, F&& f, std::index_sequence<ids...>) {
+  using Result = decltype(f.template operator()<0>());
+  if constexpr (std::is_void_v<Result>) {
+    ((id == ids ? (f.template operator()<ids>(), true) : false) || ...);
+  } else {
+    Result result{};
+    ((id == ids ? (result = f.template operator()<ids>(), true) : false) || ...);
+    return result;
+  }
+}
+template <class F>
+decltype(auto) with_stepper_id(StepperId id, F&& f) {
+  return with_stepper_id(id, std::forward<F>(f), std::make_index_sequence<steppers::size>());
+}
+
+/// Calls f.template operator()<Stepper>() with the stepper type of `id` on `System`.
+template <class System, class F>
+decltype(auto) with_stepper(StepperId id, F&& f) {
+  return with_stepper_id(id, [&]<StepperId i>() {
+    return f.template operator()<typename stepper_at<i>::type::template type<System>>();
+  });
+}
+
+}  // namespace rotorsweep::kernels

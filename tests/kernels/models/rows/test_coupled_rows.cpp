@@ -1,0 +1,205 @@
+// The row model with a coupling table (kernels/models/rows/coupled_rows.hpp, docs/model.md §1 "Extended
+// couplings"): Jacobian, ∂f/∂t and integrand gradients against central differences for random
+// tables, periodic and open; f = −∇H/g; the nearest-neighbour table against NearestNeighbourRows;
+// the dense LDLᵀ solve and its inertia against Eigen; SIMD lanes equal to scalar ones.
+#include <Eigen/Dense>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "kernels/models/rows/coupled_rows.hpp"
+#include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "support/kernel_scratch.hpp"
+#include "support/linearization_check.hpp"
+
+using namespace rotorsweep::kernels;
+using Catch::Detail::Approx;
+
+namespace {
+
+constexpr Integrals every = all_integrals;
+using Model = CoupledRows<double>;
+constexpr std::size_t nq = every.count();
+
+std::vector<double> random_values(std::size_t n, unsigned seed, double low, double high) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(low, high);
+  std::vector<double> x(n);
+  for (auto& v : x) v = u(rng);
+  return x;
+}
+
+/// A random table of `range` rows and its parameters.
+struct Table {
+  double a;
+  std::vector<double> b, c;
+  Table(std::size_t range, unsigned seed)
+      : a(random_values(1, seed, 1.0, 2.0)[0]),
+        b(random_values(range, seed + 1, -0.5, 1.5)),
+        c(random_values(range, seed + 2, -0.5, 1.0)) {}
+  Model::Parameters parameters(double A, double g, bool open) const {
+    return {A, g, false, a, b.data(), c.data(), b.size(), open};
+  }
+};
+
+struct Evaluation {
+  std::vector<double> f, q;
+};
+
+Evaluation evaluate(const Model& m, const std::vector<double>& theta, double t) {
+  auto w = rotorsweep::testing::workspace(m);
+  Evaluation e{std::vector<double>(theta.size()), std::vector<double>(nq)};
+  m.evaluate(w, theta.data(), t, e.f.data(), e.q.data());
+  return e;
+}
+
+}  // namespace
+
+TEST_CASE("coupled rows: Jacobian, df/dt and integrand gradients match central differences",
+          "[kernels][model][couplings]") {
+  for (std::size_t n : {5u, 8u, 13u})
+    for (bool open : {false, true}) {
+      const std::size_t range = open ? n - 1 : (n - 1) / 2;
+      const Table table(range, unsigned(n));
+      const auto m = rotorsweep::testing::model<Model>(n, every, table.parameters(4.3, 0.37, open));
+      const auto theta = random_values(n, unsigned(7 * n), -3.0, 9.0);
+      INFO("open " << open);
+      rotorsweep::testing::check_linearization(m, theta, 1.9);
+      auto w = rotorsweep::testing::workspace(m);
+      std::vector<double> f(n), q(nq), df_dt(n), dq_dy(nq * n), dq_dt(nq);
+      auto J = rotorsweep::testing::jacobian<Model::Jacobian>(n);
+      m.linearize(w, theta.data(), 1.9, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
+      for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t k = 0; k < n; ++k) CHECK(J.entry(j, k) == J.entry(k, j));
+    }
+}
+
+TEST_CASE("coupled rows: g f = -dH/dtheta, and H written out", "[kernels][model][couplings]") {
+  const std::size_t n = 9;
+  const double A = 2.0, g = 0.05, t = 0.4, eps = 1e-6;
+  for (bool open : {false, true}) {
+    const Table table(open ? 5 : 4, 3);
+    const auto m = rotorsweep::testing::model<Model>(n, every, table.parameters(A, g, open));
+    const auto theta = random_values(n, 5, -3.0, 9.0);
+    const auto e = evaluate(m, theta, t);
+    auto w = rotorsweep::testing::workspace(m);
+    double H = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      H += -table.a * std::cos(2 * theta[j]) + A * std::cos(theta[j] - t);
+      for (std::size_t u = 1; u <= table.b.size(); ++u) {
+        if (open && j + u >= n) continue;
+        const std::size_t k = (j + u) % n;
+        H += table.b[u - 1] * std::cos(theta[j] - theta[k]) - table.c[u - 1] * std::cos(theta[j] + theta[k]);
+      }
+    }
+    CHECK(m.energy(w, theta.data(), t) == Approx(H).epsilon(1e-13));
+    for (std::size_t k = 0; k < n; ++k) {
+      auto plus = theta, minus = theta;
+      plus[k] += eps;
+      minus[k] -= eps;
+      const double dH = (m.energy(w, plus.data(), t) - m.energy(w, minus.data(), t)) / (2 * eps);
+      CHECK(g * e.f[k] == Approx(-dH).epsilon(1e-7).margin(1e-8));
+    }
+  }
+}
+
+TEST_CASE("the nearest-neighbour table is the nearest-neighbour model", "[kernels][model][couplings]") {
+  using Nearest = NearestNeighbourRows<double>;
+  const std::size_t n = 7;
+  const double b = 1.0, c = 0.0;
+  const auto coupled =
+      rotorsweep::testing::model<Model>(n, every, Model::Parameters{3.1, 0.2, false, 1.5, &b, &c, 1, false});
+  const auto nearest = rotorsweep::testing::model<Nearest>(n, every, 3.1, 0.2);
+  const auto theta = random_values(n, 17, -3.0, 9.0);
+  std::vector<double> f1(n), f2(n), q1(nq), q2(nq);
+  auto w1 = rotorsweep::testing::workspace(coupled);
+  auto w2 = rotorsweep::testing::workspace(nearest);
+  coupled.evaluate(w1, theta.data(), 0.8, f1.data(), q1.data());
+  nearest.evaluate(w2, theta.data(), 0.8, f2.data(), q2.data());
+  for (std::size_t j = 0; j < n; ++j) CHECK(f1[j] == Approx(f2[j]).epsilon(1e-13).margin(1e-13));
+  for (std::size_t p = 0; p < nq; ++p) CHECK(q1[p] == Approx(q2[p]).epsilon(1e-13).margin(1e-13));
+}
+
+TEST_CASE("dense LDLT solve and inertia agree with Eigen", "[kernels][couplings]") {
+  const std::size_t n = 9;
+  auto J = rotorsweep::testing::jacobian<DenseSymmetric<double>>(n);
+  Eigen::MatrixXd dense(n, n);
+  const auto values = random_values(n * n, 23, -1.0, 1.0);
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t k = 0; k <= j; ++k) {
+      J.entry(j, k) = J.entry(k, j) = values[j * n + k];
+      dense(Eigen::Index(j), Eigen::Index(k)) = dense(Eigen::Index(k), Eigen::Index(j)) = values[j * n + k];
+    }
+  const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense).eigenvalues();
+  for (double shift : {-3.0, 0.1, 0.7, 5.0}) {
+    J.factor(shift);
+    const bool stable = (eigenvalues.array() < shift).all();
+    CHECK(bool(J.positive_definite()) == stable);
+    auto r = random_values(n, 29, -1.0, 1.0);
+    const Eigen::VectorXd rhs = Eigen::Map<Eigen::VectorXd>(r.data(), Eigen::Index(n));
+    J.solve(r.data());
+    const Eigen::MatrixXd M = shift * Eigen::MatrixXd::Identity(Eigen::Index(n), Eigen::Index(n)) - dense;
+    const Eigen::VectorXd x = Eigen::Map<Eigen::VectorXd>(r.data(), Eigen::Index(n));
+    CHECK((M * x - rhs).norm() < 1e-10 * (1 + x.norm()));
+  }
+}
+
+TEST_CASE("the envelope LDLT of banded and ring matrices gives the dense one's bits",
+          "[kernels][couplings]") {
+  const std::size_t n = 12;
+  for (bool wrap : {false, true})
+    for (std::size_t band :
+         {std::size_t(1), std::size_t(2), std::size_t(3), std::size_t(5), std::size_t(6)}) {
+      INFO("band " << band << (wrap ? ", ring" : ", open"));
+      auto dense = rotorsweep::testing::jacobian<DenseSymmetric<double>>(n);
+      auto banded = rotorsweep::testing::jacobian<DenseSymmetric<double>>(n);
+      banded.set_band(band, wrap);
+      const auto values = random_values(n * n, 31 + band, -1.0, 1.0);
+      for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t k = 0; k <= j; ++k) {
+          const bool coupled = j - k <= band || (wrap && j - k >= n - band);
+          const double x = coupled ? values[j * n + k] : 0.0;
+          dense.entry(j, k) = dense.entry(k, j) = banded.entry(j, k) = banded.entry(k, j) = x;
+        }
+      for (double shift : {-3.0, 0.4, 1.5, 6.0}) {
+        dense.factor(shift);
+        banded.factor(shift);
+        CHECK(bool(dense.positive_definite()) == bool(banded.positive_definite()));
+        auto a = random_values(n, 37, -1.0, 1.0), b = a;
+        dense.solve(a.data());
+        banded.solve(b.data());
+        for (std::size_t i = 0; i < n; ++i) REQUIRE(a[i] == b[i]);
+      }
+    }
+}
+
+TEST_CASE("coupled rows: SIMD lanes give the scalar bits", "[kernels][model][couplings][simd]") {
+  using Simd = CoupledRows<simd_lane>;
+  constexpr std::size_t width = lane_width<simd_lane>;
+  const std::size_t n = 11;
+  const Table table(5, 31);
+  auto simd = rotorsweep::testing::model<Simd>(
+      n, every,
+      Simd::Parameters{1.0, 1.0, false, table.a, table.b.data(), table.c.data(), table.b.size(), false});
+  std::vector<Model> scalars;
+  std::vector<std::vector<double>> thetas;
+  simd_lane t(0.0);
+  std::vector<simd_lane> theta(n);
+  for (std::size_t l = 0; l < width; ++l) {
+    const auto p = table.parameters(1.0 + double(l), 0.1 + 0.05 * double(l), false);
+    simd.set_lane(l, Simd::Parameters{p.A, p.g, false, p.a, p.b, p.c, p.range, p.open});
+    scalars.push_back(rotorsweep::testing::model<Model>(n, every, p));
+    thetas.push_back(random_values(n, unsigned(40 + l), -3.0, 9.0));
+    for (std::size_t j = 0; j < n; ++j) lane_set(theta[j], l, thetas[l][j]);
+    lane_set(t, l, 0.3 * double(l));
+  }
+  auto w = rotorsweep::testing::workspace(simd);
+  std::vector<simd_lane> f(n), q(nq);
+  simd.evaluate(w, theta.data(), t, f.data(), q.data());
+  for (std::size_t l = 0; l < width; ++l) {
+    const auto e = evaluate(scalars[l], thetas[l], 0.3 * double(l));
+    for (std::size_t j = 0; j < n; ++j) CHECK(lane_get(f[j], l) == e.f[j]);
+    for (std::size_t p = 0; p < nq; ++p) CHECK(lane_get(q[p], l) == e.q[p]);
+  }
+}

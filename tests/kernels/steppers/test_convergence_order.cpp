@@ -1,0 +1,76 @@
+// Observed convergence orders of every stepper (Rodas4, Rodas4P2: 4, Rodas5P: 5, ROS2: 2, Dormand–Prince: 5)
+// in the angles and in all quadrature states, from fixed-step runs on a smooth, mildly stiff case.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <vector>
+
+#include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/steppers/dormand_prince.hpp"
+#include "kernels/steppers/rosenbrock.hpp"
+#include "support/kernel_scratch.hpp"
+#include "support/member_run.hpp"
+
+using namespace rotorsweep::kernels;
+
+namespace {
+
+using Model = NearestNeighbourRows<double>;
+constexpr std::size_t nq = all_integrals.count();
+
+// Fixed-step integration over [0.3, 1.3]; returns the angles followed by the quadratures.
+template <class Stepper>
+std::vector<double> fixed_steps(const Model& m, int steps) {
+  auto arena = rotorsweep::testing::scratch<double>(Stepper::storage_size(m.dimension()));
+  Stepper stepper(m, arena);
+  const std::size_t n = m.dimension();
+  auto y = rotorsweep::testing::initial_angles(n, rotorsweep::testing::Start::afm, 0.4);
+  std::vector<double> q(nq, 0.0), y_new(n), q_new(nq), y_err(n), q_err(nq);
+  const double h = 1.0 / steps;
+  double t = 0.3;
+  for (int i = 0; i < steps; ++i) {
+    stepper.attempt(m, t, h, y.data(), q.data(), y_new.data(), q_new.data(), y_err.data(), q_err.data());
+    y.swap(y_new);
+    q.swap(q_new);
+    t += h;
+  }
+  y.insert(y.end(), q.begin(), q.end());
+  return y;
+}
+
+double max_error(const std::vector<double>& a, const std::vector<double>& b, std::size_t from,
+                 std::size_t to) {
+  double e = 0;
+  for (std::size_t k = from; k < to; ++k) e = std::max(e, std::fabs(a[k] - b[k]));
+  return e;
+}
+
+template <class Stepper>
+void check_order(int expected, std::vector<int> steps) {
+  const auto m = rotorsweep::testing::model<Model>(6, all_integrals, 2.5, 3.0);
+  const auto reference = fixed_steps<DormandPrince5<Model>>(m, 4096);
+  const std::size_t n = m.dimension();
+  const auto coarse = fixed_steps<Stepper>(m, steps[0]), fine = fixed_steps<Stepper>(m, steps[1]);
+  const double refinement = std::log2(double(steps[1]) / steps[0]);
+  // the angles, then all quadrature states together (one error can cross zero by accident)
+  const double angle_order =
+      std::log2(max_error(coarse, reference, 0, n) / max_error(fine, reference, 0, n)) / refinement;
+  const double quad_order =
+      std::log2(max_error(coarse, reference, n, n + nq) / max_error(fine, reference, n, n + nq)) / refinement;
+  INFO(Stepper::name() << ": angle order " << angle_order << ", quadrature order " << quad_order);
+  CHECK(angle_order == Approx(expected).margin(0.25));
+  CHECK(quad_order >= expected - 0.25);  // their own error terms may vanish faster
+  CHECK(quad_order <= expected + 2.5);
+}
+
+}  // namespace
+
+TEST_CASE("Rodas4 converges with order 4", "[kernels][order]") { check_order<Rodas4<Model>>(4, {64, 128}); }
+TEST_CASE("Rodas4P2 converges with order 4", "[kernels][order]") {
+  check_order<Rodas4P2<Model>>(4, {64, 128});
+}
+TEST_CASE("Rodas5P converges with order 5", "[kernels][order]") { check_order<Rodas5P<Model>>(5, {32, 64}); }
+TEST_CASE("ROS2 converges with order 2", "[kernels][order]") { check_order<Ros2<Model>>(2, {128, 256}); }
+TEST_CASE("Dormand-Prince converges with order 5", "[kernels][order]") {
+  check_order<DormandPrince5<Model>>(5, {16, 32});
+}
