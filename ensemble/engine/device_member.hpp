@@ -4,10 +4,10 @@
 
 #include <cstddef>
 
+#include "ensemble/engine/member_progress.hpp"
 #include "ensemble/engine/member_result.hpp"
 #include "ensemble/engine/member_slots.hpp"
 #include "ensemble/engine/step_reducers.hpp"
-#include "ensemble/rows/member_summary.hpp"
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
@@ -50,8 +50,7 @@ struct DeviceMember {
     DissipationSwing<double> swing;
     SlipCounter<double> slips(s.slip_rate);
 
-    int periods = 0;
-    bool settled = false;
+    MemberProgress progress;
     for (;;) {
       double t_before = 0;
       if (s.slips) {
@@ -73,28 +72,18 @@ struct DeviceMember {
       if (Q.alignment) alignment.end_period(0, record);
       if (Q.drive) swing.end_period(0, s.error_rtol, s.atol, record);
       if (s.slips) slips.end_period(0, record);
-      double* end = slots.end_states + (k * 4 + std::size_t(periods % 4)) * n;
+      const std::size_t closed = std::size_t(progress.periods());
+      double* end = slots.end_states + (k * 4 + closed % 4) * n;
       for (std::size_t j = 0; j < n; ++j) end[j] = state.y[j];
       const std::size_t ring = s.record_capacity;
-      double* slot = slots.records + (k * ring + std::size_t(periods) % ring) * channel_count;
+      double* slot = slots.records + (k * ring + closed % ring) * channel_count;
       for (std::size_t c = 0; c < channel_count; ++c) slot[c] = record.values[c];
-      const double before =
-          periods > 0 ? slots.records[(k * ring + (std::size_t(periods) - 1) % ring) * channel_count +
-                                      std::size_t(Channel::dissipation)]
-                      : 0.0;
-      ++periods;
-
-      const bool long_enough = periods >= s.relax_periods + s.average_periods;
-      settled = long_enough;
-      if (s.steady_tol > 0)
-        settled =
-            long_enough && periods >= 2 && dissipations_agree(before, record.dissipation(), s.steady_tol);
-      if (settled || (s.steady_tol > 0 && periods >= s.max_periods)) break;
+      if (progress.close_period(s.periods, record.dissipation())) break;
       next_period(s, state);
     }
     slots.status[k] = std::uint8_t(state.status[0]);
-    slots.settled[k] = settled ? 1 : 0;
-    slots.periods[k] = periods;
+    slots.settled[k] = progress.settled() ? 1 : 0;
+    slots.periods[k] = progress.periods();
     slots.steps[2 * k] = state.steps_accepted;
     slots.steps[2 * k + 1] = state.steps_rejected;
     for (std::size_t j = 0; j < n; ++j) slots.theta[k * n + j] = state.y[j];

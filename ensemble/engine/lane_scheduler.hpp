@@ -14,6 +14,7 @@
 
 #include "ensemble/engine/integration_loop.hpp"
 #include "ensemble/engine/lane_observers.hpp"
+#include "ensemble/engine/member_progress.hpp"
 #include "ensemble/engine/member_result.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_summary.hpp"
@@ -73,6 +74,7 @@ class LaneScheduler {
         observers_(quadrature_observers<Loop>(scene, variant, carried_)),
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
         profiles_(variant.rows, scene.row_profiles),
+        period_schedule_(scene.period_schedule()),
         lanes_(width) {}
 
   /// Takes members from next_member() (a std::optional<Member>; empty when the plan is
@@ -104,7 +106,7 @@ class LaneScheduler {
     bool occupied = false;
     Member member;
     std::vector<PeriodRecord> history;            ///< every period with period_series, else the last ones
-    int periods = 0;                              ///< periods closed
+    MemberProgress progress;                      ///< periods closed, steady state
     std::vector<std::vector<double>> end_states;  ///< θ at the last period ends (up to 4, oldest first)
     std::deque<std::vector<double>> profiles;     ///< row profiles of the last average_periods periods
   };
@@ -138,7 +140,7 @@ class LaneScheduler {
     lanes_[l].occupied = true;
     lanes_[l].member = member;
     lanes_[l].history.clear();
-    lanes_[l].periods = 0;
+    lanes_[l].progress = MemberProgress{};
     lanes_[l].end_states.clear();
     lanes_[l].profiles.clear();
     ++occupied_;
@@ -172,13 +174,9 @@ class LaneScheduler {
 
     auto& history = lanes_[l].history;
     history.push_back(record);
-    const int periods = ++lanes_[l].periods;
     forget_old_periods(history);
-    const bool long_enough = periods >= scene_.relax_periods + scene_.average_periods;
-    bool settled = long_enough;
-    if (scene_.steady_tol > 0) settled = long_enough && periods_agree(history, scene_.steady_tol);
-    if (settled || (scene_.steady_tol > 0 && periods >= scene_.max_periods)) {
-      retire(finish(l, settled));
+    if (lanes_[l].progress.close_period(period_schedule_, record.dissipation())) {
+      retire(finish(l, lanes_[l].progress.settled()));
       return;
     }
     loop_.next_period(l, scene_.wrap_angles);
@@ -206,7 +204,7 @@ class LaneScheduler {
     RetiredLane retired{lane.member.index,
                         loop_.status(l),
                         settled,
-                        lane.periods,
+                        lane.progress.periods(),
                         loop_.steps_accepted(l),
                         loop_.steps_rejected(l),
                         std::vector<double>(loop_.dimension()),
@@ -259,6 +257,7 @@ class LaneScheduler {
                                       kernels::Integrals{})) observers_;
   SlipObserver<Loop> slips_;
   RowProfileObserver<Loop> profiles_;
+  PeriodSchedule period_schedule_;
   std::vector<Lane> lanes_;
   std::size_t occupied_ = 0;
   bool plan_exhausted_ = false;

@@ -13,10 +13,7 @@ namespace rotorsweep::ensemble {
 SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double first_step_scale) {
   SlotSchedule s;
   s.rows = variant.rows;
-  s.relax_periods = scene.relax_periods;
-  s.average_periods = scene.average_periods;
-  s.max_periods = scene.max_periods;
-  s.steady_tol = scene.steady_tol;
+  s.periods = scene.period_schedule();
   s.wrap_angles = scene.wrap_angles;
   s.slips = scene.has(Observable::slips);
   s.slip_rate = scene.slip_rate;
@@ -31,7 +28,7 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   s.channels = quadrature_channels(s.quadratures);
   // the averaged periods and the two the steady test compares; every period with period_series
   s.record_capacity = std::size_t(std::max(scene.average_periods, 2));
-  if (scene.period_series) s.record_capacity = std::max(s.record_capacity, std::size_t(s.period_limit()));
+  if (scene.period_series) s.record_capacity = std::max(s.record_capacity, std::size_t(s.periods.limit()));
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "ensemble/engine/member_progress.hpp"
 #include "ensemble/engine/member_result.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/scene.hpp"
@@ -18,8 +19,7 @@ namespace rotorsweep::ensemble {
 /// What every member of a variant shares: its schedule, tolerances and the record ring's size.
 struct SlotSchedule {
   std::size_t rows = 0;
-  int relax_periods = 0, average_periods = 0, max_periods = 0;
-  double steady_tol = 0;
+  PeriodSchedule periods{};
   bool wrap_angles = false;
   bool slips = false;  ///< the slip counter is on
   double slip_rate = 0;
@@ -30,12 +30,6 @@ struct SlotSchedule {
   std::size_t record_capacity = 0;   ///< period records a slot keeps (a ring)
   kernels::Integrals quadratures{};  ///< what the row model carries (the scene's observables)
   QuadratureChannels channels{};     ///< the period channels those quadratures fill
-
-  /// Periods a member can run at most.
-  ROTORSWEEP_HD int period_limit() const {
-    const int schedule = relax_periods + average_periods;
-    return steady_tol > 0 && max_periods > schedule ? max_periods : schedule;
-  }
 };
 
 /// Device-visible views of a chunk of `count` members: inputs, then outputs (k: the chunk position).

@@ -1,5 +1,5 @@
 // Summary of a member over its averaged periods: every channel's mean, spread, minimum and maximum,
-// the steady-state test and the regime rule documented in member_summary.hpp.
+// and the regime rule documented in member_summary.hpp.
 #include "ensemble/rows/member_summary.hpp"
 
 #include <algorithm>
@@ -9,11 +9,6 @@
 #include "kernels/lanes/angles.hpp"
 
 namespace rotorsweep::ensemble {
-
-bool periods_agree(const std::vector<PeriodRecord>& history, double tol) {
-  if (history.size() < 2) return false;
-  return dissipations_agree(history[history.size() - 2].dissipation(), history.back().dissipation(), tol);
-}
 
 Regime classify_regime(const std::vector<PeriodRecord>& averaged) {
   bool every_period_slips = true, any_slip = false, all_above = true, all_below = true;

@@ -1,23 +1,12 @@
 // Turns a member's period records into its summary: means and spread over the averaged
-// periods, the steady-state test of schedule.steady_tol, and the regime rule.
+// periods, and the regime rule (the steady-state test is MemberProgress's).
 #pragma once
 
 #include <vector>
 
 #include "ensemble/engine/member_result.hpp"
-#include "kernels/lanes/host_device.hpp"
-#include "kernels/lanes/lane.hpp"
 
 namespace rotorsweep::ensemble {
-
-/// Whether two successive periods' dissipations agree: |D_k - D_{k-1}| <= tol · max(|D_k|, |D_{k-1}|).
-ROTORSWEEP_HD inline bool dissipations_agree(double before, double now, double tol) {
-  const double a = kernels::lane_abs(now), b = kernels::lane_abs(before);
-  return kernels::lane_abs(now - before) <= tol * (a < b ? b : a);
-}
-
-/// Whether the last two periods of `history` agree (dissipations_agree).
-bool periods_agree(const std::vector<PeriodRecord>& history, double tol);
 
 /// The regime of the averaged periods:
 ///   CP   every averaged period has at least one slip event;

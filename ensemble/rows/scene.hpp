@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ensemble/engine/member_progress.hpp"
 #include "ensemble/rows/coupling_table.hpp"
 #include "ensemble/rows/disorder.hpp"
 #include "ensemble/rows/initial_conditions.hpp"
@@ -61,6 +62,7 @@ struct Scene {
   int average_periods = 2;
   double steady_tol = 0.0;  ///< > 0: retire a member once successive periods agree to this
   int max_periods = 50;
+  PeriodSchedule period_schedule() const { return {relax_periods, average_periods, max_periods, steady_tol}; }
   bool refill = true;  ///< refill a retired member's lane at once (false: wait for the whole block)
 
   ObservableSet observables = ObservableSet::defaults();  ///< observables.<key> of each declaration

@@ -35,13 +35,6 @@ TEST_CASE("the regime rule", "[ensemble][regime]") {
   CHECK(classify_regime({}) == Regime::unsettled);
 }
 
-TEST_CASE("successive periods agree to a relative tolerance", "[ensemble][steady]") {
-  CHECK_FALSE(periods_agree({period(1, 0, 0, 0)}, 0.1));
-  CHECK(periods_agree({period(1.0, 0, 0, 0), period(1.05, 0, 0, 0)}, 0.1));
-  CHECK_FALSE(periods_agree({period(1.0, 0, 0, 0), period(1.2, 0, 0, 0)}, 0.1));
-  CHECK(periods_agree({period(0, 0, 0, 0), period(0, 0, 0, 0)}, 1e-9));
-}
-
 TEST_CASE("summaries average the last periods only", "[ensemble][summary]") {
   MemberResult r;
   summarize({period(100, 0.0, 1.0, 9), period(2, 0.0, 0.2, 0), period(4, 0.1, 0.3, 0)}, 2, true, r);
