@@ -117,8 +117,10 @@ double step_rate(kernels::StepperId id, std::size_t rows, int repeats, bool diso
                     BenchDisorder(rows, disordered).parameters<typename Model::Parameters>());
   return kernels::with_stepper<Model>(id, [&]<class Stepper>() {
     using Integrator = kernels::AdaptiveIntegrator<Model, Stepper>;
-    lane_vector<V> storage(Integrator::storage_size(rows) +
-                           kernels::LaneState<V>::storage_size(rows, Model::max_quadratures));
+    lane_vector<V> storage(kernels::counted_storage<V>([&](kernels::LaneArena<V>& counter) {
+      const Integrator integrator(model, {1e-6, 1e-9}, {}, counter);
+      const kernels::LaneState<V> state(rows, Model::max_quadratures, counter);
+    }));
     kernels::LaneArena<V> arena(storage.data(), storage.size());
     Integrator integrator(model, {1e-6, 1e-9}, {}, arena);
     kernels::LaneState<V> state(rows, Model::max_quadratures, arena);

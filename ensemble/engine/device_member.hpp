@@ -23,10 +23,14 @@ struct DeviceMember {
   using Integrator = kernels::AdaptiveIntegrator<Model, Stepper>;
   static constexpr std::size_t nq = Model::max_quadratures;  ///< quadrature slots of the state
 
-  /// Lane values of scratch one member needs at N rows.
-  ROTORSWEEP_HD static constexpr std::size_t storage_size(std::size_t n) {
-    return Integrator::storage_size(n) + kernels::LaneState<double>::storage_size(n, nq) +
-           Model::storage_size(n) + n;
+  /// Lane values of scratch one member needs at N rows: what run() builds, counted over an arena
+  /// without storage.
+  ROTORSWEEP_HD static std::size_t storage_size(std::size_t n) {
+    return kernels::counted_storage<double>([&](kernels::LaneArena<double>& arena) {
+      SlotSchedule schedule;
+      schedule.rows = n;
+      const Parts parts(schedule, arena);
+    });
   }
 
   /// Integrates chunk member k of `slots` to its retirement and writes its slot. `storage` holds
@@ -35,13 +39,12 @@ struct DeviceMember {
                                 std::size_t capacity) {
     const std::size_t n = s.rows;
     kernels::LaneArena<double> arena(storage, capacity);
+    Parts parts(s, arena);
     const kernels::Integrals Q = s.quadratures;
-    Model model(n, arena, Q);
-    Integrator integrator(model, {s.rtol, s.atol},
-                          {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
-                          s.first_step_scale, arena);
-    kernels::LaneState<double> state(n, nq, arena);
-    double* theta_before = arena.take(n);
+    Model& model = parts.model;
+    Integrator& integrator = parts.integrator;
+    kernels::LaneState<double>& state = parts.state;
+    double* theta_before = parts.theta_before;
 
     for (std::size_t j = 0; j < n; ++j) state.y[j] = slots.y0[k * n + j];
     state.t_stop = Model::period;
@@ -90,6 +93,22 @@ struct DeviceMember {
   }
 
  private:
+  /// What a member builds over its scratch (storage_size counts the same).
+  struct Parts {
+    Model model;
+    Integrator integrator;
+    kernels::LaneState<double> state;
+    double* theta_before;  ///< θ at the start of an attempt (slip counter)
+
+    ROTORSWEEP_HD Parts(const SlotSchedule& s, kernels::LaneArena<double>& arena)
+        : model(s.rows, arena, s.quadratures),
+          integrator(model, {s.rtol, s.atol},
+                     {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
+                     s.first_step_scale, arena),
+          state(s.rows, nq, arena),
+          theta_before(arena.take(s.rows)) {}
+  };
+
   /// IntegrationLoop::next_period on the one lane.
   ROTORSWEEP_HD static void next_period(const SlotSchedule& s, kernels::LaneState<double>& state) {
     for (std::size_t p = 0; p <= nq; ++p) state.quad[p] = 0.0;

@@ -36,7 +36,7 @@ class IntegrationLoop {
   /// models' carried quadratures).
   template <class... ModelArguments>
   IntegrationLoop(std::size_t dimension, const Settings& settings, const ModelArguments&... model_arguments)
-      : storage_(storage_size(dimension)),
+      : storage_(storage_size(dimension, settings, model_arguments...)),
         arena_(storage_.data(), storage_.size()),
         model_(dimension, arena_, model_arguments...),
         integrator_(model_, settings, arena_),
@@ -45,9 +45,17 @@ class IntegrationLoop {
     for (auto& s : state_.status) s = kernels::LaneStatus::idle;
   }
 
-  static std::size_t storage_size(std::size_t n) {
-    return Integrator::storage_size(n) + kernels::LaneState<V>::storage_size(n, quadrature_slots) +
-           Model::Workspace::storage_size(n) + Model::storage_size(n);
+  /// The lane values the loop's model, integrator, state and workspace take, counted by building
+  /// them over an arena without storage.
+  template <class... ModelArguments>
+  static std::size_t storage_size(std::size_t dimension, const Settings& settings,
+                                  const ModelArguments&... model_arguments) {
+    return kernels::counted_storage<V>([&](kernels::LaneArena<V>& arena) {
+      const Model model(dimension, arena, model_arguments...);
+      const Integrator integrator(model, settings, arena);
+      const kernels::LaneState<V> state(dimension, quadrature_slots, arena);
+      const typename Model::Workspace work(dimension, arena);
+    });
   }
 
   std::size_t dimension() const { return model_.dimension(); }

@@ -70,23 +70,41 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
     tables.push_back(std::make_unique<kernels::SubstrateTable>(
         substrate_table(scene, size, members[block[l]].separation)));
 
-  const std::size_t storage = Model::storage_size(n) + Integrator::storage_size(dim) +
-                              kernels::LaneState<V>::storage_size(dim, Model::max_quadratures) +
-                              Model::Workspace::storage_size(dim) + 2 * dim;
-  lane_vector<V> memory(storage);
-  kernels::LaneArena<V> arena(memory.data(), storage);
-  Model model(grid, arena);
-  for (std::size_t l = 0; l < W; ++l) {
-    model.set_lane(l, slider_parameters(scene, *tables[std::min(l, block.size() - 1)]));
-  }
   kernels::StepLimits limits;
   limits.h_max = kernels::two_pi / double(scene.samples_per_period);
   limits.max_steps = scene.max_steps;
-  Integrator integrator(model, kernels::Tolerances{scene.rtol, scene.atol}, limits, arena);
-  kernels::LaneState<V> state(dim, Model::max_quadratures, arena);
-  typename Model::Workspace work(dim, arena);
-  V* f = arena.take(dim);
-  V* q = arena.take(dim);  // quadrature integrands (only the first two used)
+  const kernels::Tolerances tolerances{scene.rtol, scene.atol};
+  // what the block builds over its storage (counted first, over an arena without storage)
+  struct Parts {
+    Model model;
+    Integrator integrator;
+    kernels::LaneState<V> state;
+    typename Model::Workspace work;
+    V* f;
+    V* q;  // quadrature integrands (only the first two used)
+    Parts(const kernels::SliderGrid& grid, std::size_t dim, kernels::Tolerances tol, kernels::StepLimits lim,
+          kernels::LaneArena<V>& arena)
+        : model(grid, arena),
+          integrator(model, tol, lim, arena),
+          state(dim, Model::max_quadratures, arena),
+          work(dim, arena),
+          f(arena.take(dim)),
+          q(arena.take(dim)) {}
+  };
+  const std::size_t storage = kernels::counted_storage<V>(
+      [&](kernels::LaneArena<V>& counter) { const Parts parts(grid, dim, tolerances, limits, counter); });
+  lane_vector<V> memory(storage);
+  kernels::LaneArena<V> arena(memory.data(), storage);
+  Parts parts(grid, dim, tolerances, limits, arena);
+  Model& model = parts.model;
+  for (std::size_t l = 0; l < W; ++l) {
+    model.set_lane(l, slider_parameters(scene, *tables[std::min(l, block.size() - 1)]));
+  }
+  Integrator& integrator = parts.integrator;
+  kernels::LaneState<V>& state = parts.state;
+  typename Model::Workspace& work = parts.work;
+  V* f = parts.f;
+  V* q = parts.q;
 
   for (std::size_t l = 0; l < W; ++l) {
     const auto& m = members[block[std::min(l, block.size() - 1)]];

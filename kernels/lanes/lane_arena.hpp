@@ -8,9 +8,12 @@
 
 namespace rotorsweep::kernels {
 
-/// A bump allocator over storage the caller owns. Kernel objects state how many lane values
-/// they need (a static `storage_size(...)`) and take exactly that many with take(). An arena
-/// over null storage only counts, which is how the host sizes a block before allocating it.
+/// A bump allocator over storage the caller owns. Kernel objects take their views with take() in
+/// their constructors; the leaves (a model's parameters, its workspace, a Jacobian) also state the
+/// count (a static `storage_size(n)`, checked against their takes by tests/kernels/lanes/
+/// test_lane_arena.cpp). What a composition of them needs is counted: an arena over null storage
+/// hands out null views and only counts (counted_storage), so constructors write through their
+/// views only where the arena holds storage (counting()).
 template <class V>
 class LaneArena {
  public:
@@ -26,6 +29,8 @@ class LaneArena {
   }
 
   ROTORSWEEP_HD std::size_t used() const { return used_; }
+  /// Whether this arena only counts (null storage): its views are null and must not be written.
+  ROTORSWEEP_HD bool counting() const { return data_ == nullptr; }
   /// Whether every take() so far was backed by storage.
   ROTORSWEEP_HD bool fits() const { return data_ != nullptr && used_ <= capacity_; }
 
@@ -34,5 +39,14 @@ class LaneArena {
   std::size_t capacity_;
   std::size_t used_ = 0;
 };
+
+/// Lane values the kernel objects that `build(arena)` constructs take, counted over an arena
+/// without storage: the size of the storage to build them over.
+template <class V, class Build>
+ROTORSWEEP_HD std::size_t counted_storage(Build&& build) {
+  LaneArena<V> arena(nullptr, 0);
+  build(arena);
+  return arena.used();
+}
 
 }  // namespace rotorsweep::kernels

@@ -23,11 +23,6 @@ class AdaptiveIntegrator {
   using V = typename System::lane_type;
   static constexpr std::size_t nq = System::max_quadratures;  ///< storage; the model's carried ones step
 
-  /// Lane values of scratch for a model of dimension n (the stepper's included).
-  static constexpr std::size_t storage_size(std::size_t n) {
-    return Stepper::storage_size(n) + System::Workspace::storage_size(n) + 2 * n + 2 * (nq + 1);
-  }
-
   static constexpr bool stochastic = false;
 
   /// What a driver configures: tolerances and step limits.

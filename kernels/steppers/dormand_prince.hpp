@@ -20,11 +20,6 @@ class DormandPrince5 {
   using V = typename System::lane_type;
   static constexpr std::size_t nq = System::max_quadratures;  ///< storage; quadratures_ are carried
 
-  static constexpr std::size_t storage_size(std::size_t n) {
-    return System::Workspace::storage_size(n) + (1 + std::size_t(dormand_prince5_tableau.stages)) * n +
-           std::size_t(dormand_prince5_tableau.stages) * nq + 1;
-  }
-
   ROTORSWEEP_HD DormandPrince5(const System& system, LaneArena<V>& arena)
       : n_(system.dimension()),
         quadratures_(system.quadrature_count()),

@@ -14,12 +14,8 @@ namespace rotorsweep::kernels {
 
 template <class V>
 struct LaneState {
-  /// Lane values a state of `dimension` components and `quadratures` quadratures takes (one spare
-  /// quadrature slot, so that zero quadratures work).
-  static constexpr std::size_t storage_size(std::size_t dimension, std::size_t quadratures) {
-    return dimension + quadratures + 1;
-  }
-
+  /// `dimension` components and `quadratures` quadratures (one spare quadrature slot, so that zero
+  /// quadratures work).
   ROTORSWEEP_HD LaneState(std::size_t dimension, std::size_t quadratures, LaneArena<V>& arena)
       : y(arena.take(dimension)), quad(arena.take(quadratures + 1)), dimension_(dimension) {
     for (auto& s : status) s = LaneStatus::ok;

@@ -45,11 +45,6 @@ class LangevinEuler {
     return by_g > double(settings.steps_per_period) ? by_g : double(settings.steps_per_period);
   }
 
-  static constexpr std::size_t storage_size(std::size_t n) {
-    return Model::Workspace::storage_size(n) + Model::Jacobian::storage_size(n) + 2 * n + n * nq +
-           2 * (nq + 1);
-  }
-
   ROTORSWEEP_HD LangevinEuler(const Model& model, Settings settings, LaneArena<V>& arena)
       : settings_(settings),
         work_(model.dimension(), arena),

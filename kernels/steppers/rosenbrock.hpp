@@ -18,17 +18,12 @@ namespace rotorsweep::kernels {
 /// triangular, so its stage solve is the model's own solve plus one dot product per
 /// quadrature), which keeps them at the method's full order.
 ///
-/// Scratch: views over caller-owned storage of storage_size(n) lane values.
+/// Scratch: views over caller-owned storage (kernels::counted_storage sizes it).
 template <LaneModel System, const RosenbrockTableau& Table>
 class RosenbrockStepper {
  public:
   using V = typename System::lane_type;
   static constexpr std::size_t nq = System::max_quadratures;  ///< storage; quadratures_ are carried
-
-  static constexpr std::size_t storage_size(std::size_t n) {
-    return System::Workspace::storage_size(n) + System::Jacobian::storage_size(n) +
-           (3 + std::size_t(Table.stages) + nq) * n + 1 + 3 * (nq + 1) + std::size_t(Table.stages) * nq + 1;
-  }
 
   ROTORSWEEP_HD RosenbrockStepper(const System& system, LaneArena<V>& arena)
       : n_(system.dimension()),

@@ -21,6 +21,15 @@ kernels::LaneArena<V> scratch(std::size_t size) {
   return {chunks.back().data(), size};
 }
 
+/// A kernel object T(args..., arena) over a fresh chunk of exactly what its constructor takes,
+/// counted over an arena without storage (steppers, integrators, lane states).
+template <class T, class V, class... Args>
+T built(const Args&... args) {
+  auto arena = scratch<V>(
+      kernels::counted_storage<V>([&](kernels::LaneArena<V>& counter) { const T t(args..., counter); }));
+  return T(args..., arena);
+}
+
 /// A model over a fresh chunk of its own storage; `args` follow the row count (A and g, or Parameters).
 template <class Model, class... Args>
 Model model(std::size_t n, Args&&... args) {
@@ -42,14 +51,12 @@ Jacobian jacobian(std::size_t n) {
 
 template <class Integrator, class Model>
 Integrator integrator(const Model& model, kernels::Tolerances tolerances, kernels::StepLimits limits = {}) {
-  auto arena = scratch<typename Model::lane_type>(Integrator::storage_size(model.dimension()));
-  return Integrator(model, tolerances, limits, arena);
+  return built<Integrator, typename Model::lane_type>(model, tolerances, limits);
 }
 
 template <class V>
 kernels::LaneState<V> lane_state(std::size_t dimension, std::size_t quadratures) {
-  auto arena = scratch<V>(kernels::LaneState<V>::storage_size(dimension, quadratures));
-  return kernels::LaneState<V>(dimension, quadratures, arena);
+  return built<kernels::LaneState<V>, V>(dimension, quadratures);
 }
 
 }  // namespace rotorsweep::testing

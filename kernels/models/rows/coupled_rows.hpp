@@ -61,9 +61,7 @@ class CoupledRows {
   };
 
   ROTORSWEEP_HD CoupledRows(std::size_t rows, LaneArena<V>& arena, Integrals carried)
-      : rows_(rows), integrals_(carried), b_(arena.take(rows)), c_(arena.take(rows)) {
-    for (std::size_t u = 0; u < rows; ++u) b_[u] = c_[u] = V(0.0);
-  }
+      : rows_(rows), integrals_(carried), b_(arena.take(rows)), c_(arena.take(rows)) {}  // zeros
   ROTORSWEEP_HD CoupledRows(std::size_t rows, LaneArena<V>& arena, Integrals carried, const Parameters& p)
       : CoupledRows(rows, arena, carried) {
     for (std::size_t l = 0; l < lane_width<V>; ++l) set_lane(l, p);

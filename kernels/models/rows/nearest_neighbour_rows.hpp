@@ -84,6 +84,7 @@ class NearestNeighbourRows {
         A_row_(arena.take(rows)),
         anisotropy_row_(arena.take(rows)),
         coupling_row_(arena.take(rows)) {
+    if (arena.counting()) return;
     for (std::size_t j = 0; j < rows; ++j) A_row_[j] = anisotropy_row_[j] = coupling_row_[j] = V(1.0);
   }
   ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena, Integrals carried,

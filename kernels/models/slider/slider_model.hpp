@@ -81,6 +81,7 @@ class SliderModel {
 
   ROTORSWEEP_HD SliderModel(const SliderGrid& grid, LaneArena<V>& arena)
       : grid_(grid), n_(grid.rotors()), p_(arena.take(n_ * n_)), q_(arena.take(n_ * n_)) {
+    if (arena.counting()) return;
     for (std::size_t r = 0; r < n_; ++r)
       for (std::size_t k = 0; k < n_; ++k) {
         if (k == r) continue;

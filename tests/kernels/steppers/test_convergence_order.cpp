@@ -21,8 +21,7 @@ constexpr std::size_t nq = all_integrals.count();
 // Fixed-step integration over [0.3, 1.3]; returns the angles followed by the quadratures.
 template <class Stepper>
 std::vector<double> fixed_steps(const Model& m, int steps) {
-  auto arena = rotorsweep::testing::scratch<double>(Stepper::storage_size(m.dimension()));
-  Stepper stepper(m, arena);
+  auto stepper = rotorsweep::testing::built<Stepper, double>(m);
   const std::size_t n = m.dimension();
   auto y = rotorsweep::testing::initial_angles(n, rotorsweep::testing::Start::afm, 0.4);
   std::vector<double> q(nq, 0.0), y_new(n), q_new(nq), y_err(n), q_err(nq);

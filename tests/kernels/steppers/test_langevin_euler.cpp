@@ -58,10 +58,8 @@ std::vector<double> final_values(int steps, std::size_t samples) {
   using Model = OrnsteinUhlenbeck<V>;
   auto arena = rotorsweep::testing::scratch<V>(Model::storage_size(1));
   const Model model(1, arena);
-  auto integrator = [&] {
-    auto a = rotorsweep::testing::scratch<V>(LangevinEuler<Model>::storage_size(1));
-    return LangevinEuler<Model>(model, {temperature, steps}, a);
-  }();
+  auto integrator = rotorsweep::testing::built<LangevinEuler<Model>, V>(
+      model, typename LangevinEuler<Model>::Settings{temperature, steps});
   auto s = rotorsweep::testing::lane_state<V>(1, 0);
   std::vector<double> out;
   constexpr std::size_t W = lane_width<V>;

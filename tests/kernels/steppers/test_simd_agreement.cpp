@@ -52,16 +52,14 @@ void check_close(double simd, double scalar, double tol) {
 template <template <class> class Stepper>
 void check_one_step() {
   const Simd vm = simd_model();
-  auto simd_arena = rotorsweep::testing::scratch<simd_lane>(Stepper<Simd>::storage_size(rows));
-  Stepper<Simd> vs(vm, simd_arena);
+  auto vs = rotorsweep::testing::built<Stepper<Simd>, simd_lane>(vm);
   auto theta = gather_theta();
   lane_vector<simd_lane> q(nq, simd_lane(0.1)), y_new(rows), q_new(nq), y_err(rows), q_err(nq);
   const simd_lane t = lane_from<simd_lane>(lane_t), h(0.05);
   vs.attempt(vm, t, h, theta.data(), q.data(), y_new.data(), q_new.data(), y_err.data(), q_err.data());
   for (std::size_t l = 0; l < W; ++l) {
     const auto sm = rotorsweep::testing::model<Scalar>(rows, every, lane_A(l), lane_g(l));
-    auto scalar_arena = rotorsweep::testing::scratch<double>(Stepper<Scalar>::storage_size(rows));
-    Stepper<Scalar> ss(sm, scalar_arena);
+    auto ss = rotorsweep::testing::built<Stepper<Scalar>, double>(sm);
     auto y = lane_theta(l);
     std::vector<double> sq(nq, 0.1), sy_new(rows), sq_new(nq), sy_err(rows), sq_err(nq);
     ss.attempt(sm, lane_t(l), 0.05, y.data(), sq.data(), sy_new.data(), sq_new.data(), sy_err.data(),
