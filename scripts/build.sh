@@ -12,12 +12,15 @@ case "$preset" in
     exit 2
     ;;
 esac
-# build/ made by another generator (an older checkout's Makefiles) cannot be reconfigured for Ninja
-if [ -f build/CMakeCache.txt ] && ! grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' build/CMakeCache.txt; then
+# The presets use Ninja (scripts/setup.sh installs ninja-build); Makefiles where it is missing.
+generator=Ninja
+command -v ninja > /dev/null || generator="Unix Makefiles"
+# build/ made by another generator cannot be reconfigured with this one
+if [ -f build/CMakeCache.txt ] && ! grep -q "^CMAKE_GENERATOR:INTERNAL=$generator\$" build/CMakeCache.txt; then
   echo "build.sh: build/ was configured with another generator; configuring it afresh"
   rm -rf build/CMakeCache.txt build/CMakeFiles
 fi
-cmake --preset "$preset"
+cmake --preset "$preset" -G "$generator"
 targets=()
 for target in "$@"; do targets+=(--target "$target"); done
 cmake --build build -j"$(nproc)" "${targets[@]}"
