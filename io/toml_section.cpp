@@ -40,17 +40,16 @@ std::string describe(const toml::node& node) {
   return shortened(out.str());
 }
 
-/// A list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a `fallback` also a
-/// single number, and the fallback when the key is absent.
+/// A number, a list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a
+/// `fallback`, the fallback when the key is absent.
 std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
                          bool (*valid)(double), const std::vector<double>& fallback) {
   const std::string key = section.key(k);
-  const std::string shape = (fallback.empty() ? "a list of numbers " : "a number, a list of numbers ") +
-                            what + ", or { from, to, count, spacing = \"linear\"|\"log\" }";
+  const std::string shape =
+      "a number, a list of numbers " + what + ", or { from, to, count, spacing = \"linear\"|\"log\" }";
   if (!fallback.empty() && !section.find(k)) return fallback;
   const toml::node& node = section.require(k, shape);
-  if (!fallback.empty() && (node.is_floating_point() || node.is_integer()))
-    return {Section::checked_number(node, key, what, valid)};
+  if (node.is_floating_point() || node.is_integer()) return {Section::checked_number(node, key, what, valid)};
   std::vector<double> values;
   if (const auto* list = node.as_array()) {
     if (list->empty()) fail(key, "must not be empty; it must be " + shape);

@@ -133,8 +133,8 @@ inline Section section(const toml::table& root, const std::string& name) {
   return Section(root[name].as_table(), name);
 }
 
-/// A list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a `fallback` also a
-/// single number, and the fallback when the key is absent.
+/// A number, a list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a
+/// `fallback`, the fallback when the key is absent.
 std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
                          bool (*valid)(double), const std::vector<double>& fallback = {});
 

@@ -54,6 +54,16 @@ TEST_CASE("a minimal scene gets the documented defaults", "[io][scene]") {
   CHECK(scene.member_count() == 2);
 }
 
+TEST_CASE("a single number where a list is allowed is a list of one", "[io][scene]") {
+  const auto scene = parse_scene_text("[model]\nrows = 4\n[drive]\ng = 0.001\n[sweep]\nA = 6\n", "test.toml");
+  CHECK(scene.g_values == std::vector<double>{0.001});
+  CHECK(scene.A_values == std::vector<double>{6.0});
+  const auto lists =
+      parse_scene_text("[model]\nrows = 4\n[drive]\ng = [0.001]\n[sweep]\nA = [6]\n", "test.toml");
+  CHECK(lists.g_values == scene.g_values);
+  CHECK(lists.A_values == scene.A_values);
+}
+
 TEST_CASE("grids are lists or ranges with linear or log spacing", "[io][scene]") {
   const auto scene = parse_scene_text(
       "[model]\nrows = 4\n[drive]\ng = { from = 1e-4, to = 1e-1, count = 4, spacing = \"log\" }\n"
@@ -118,8 +128,10 @@ TEST_CASE("a wrong type is named with what is allowed", "[io][scene]") {
              Catch::Contains("'numerics.controller'") && Catch::Contains("Langevin"));
   CHECK(parse_scene_text(minimal + "[numerics]\ncontroller = \"pi\"\n", "test.toml").controller ==
         rotorsweep::kernels::StepController::pi);
-  CHECK_THAT(error_of("[model]\nrows = 20\n[drive]\ng = 0.001\n[sweep]\nA = [1]\n"),
-             Catch::Contains("'drive.g'") && Catch::Contains("list of numbers"));
+  CHECK_THAT(error_of("[model]\nrows = 20\n[drive]\ng = \"slow\"\n[sweep]\nA = [1]\n"),
+             Catch::Contains("'drive.g'") && Catch::Contains("a number, a list of numbers"));
+  CHECK_THAT(error_of("[model]\nrows = 20\n[drive]\ng = -1\n[sweep]\nA = [1]\n"),
+             Catch::Contains("'drive.g'") && Catch::Contains("> 0"));
   CHECK_THAT(error_of(minimal + "[initial]\nkinds = [\"ferro\"]\n"),
              Catch::Contains("'initial.kinds'") && Catch::Contains("FM, AFM, random, exact"));
   CHECK_THAT(error_of("model = 3\n"), Catch::Contains("'model'"));

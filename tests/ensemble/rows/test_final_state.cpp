@@ -73,7 +73,7 @@ TEST_CASE("Wilson intervals match the formula, also at 0 and n", "[ensemble][bas
   CHECK(wilson_interval(0, 10).low == 0);
   CHECK(wilson_interval(0, 10).high == Approx(z2 / (10 + z2)).epsilon(1e-12));
   CHECK(wilson_interval(10, 10).low == Approx(1 - z2 / (10 + z2)).epsilon(1e-12));
-  CHECK(wilson_interval(10, 10).high == Approx(1.0).epsilon(1e-15));
+  CHECK(wilson_interval(10, 10).high == 1.0);
   CHECK(wilson_interval(5, 10).low == Approx(0.2365931).epsilon(1e-6));
   CHECK(wilson_interval(5, 10).high == Approx(0.7634069).epsilon(1e-6));
   const double p = 1.0 / 200, centre = (p + z2 / 400) / (1 + z2 / 200);
@@ -81,6 +81,23 @@ TEST_CASE("Wilson intervals match the formula, also at 0 and n", "[ensemble][bas
   CHECK(wilson_interval(1, 200).low == Approx(centre - half).epsilon(1e-12));
   CHECK(wilson_interval(1, 200).high == Approx(centre + half).epsilon(1e-12));
   CHECK(std::isnan(wilson_interval(0, 0).low));
+}
+
+TEST_CASE("Wilson bounds bracket the fraction and are exactly 0 and 1 at the ends, for any count",
+          "[ensemble][basins]") {
+  // the closed form gives 3.5e-18 for the lower bound of 0 of 100 (a negative error bar in plots)
+  int failures = 0;
+  for (std::size_t n = 1; n <= 1000; ++n)
+    for (std::size_t k = 0; k <= n; ++k) {
+      const auto [low, high] = wilson_interval(k, n);
+      const double p = double(k) / double(n);
+      const bool ok = low >= 0 && low <= p && p <= high && high <= 1 && (k != 0 || low == 0) &&
+                      (k != n || high == 1) && (k == 0 || low > 0) && (k == n || high < 1);
+      if (!ok && failures++ < 5) FAIL_CHECK(k << " of " << n << ": [" << low << ", " << high << "]");
+    }
+  CHECK(failures == 0);
+  CHECK(wilson_interval(0, 100).low == 0.0);
+  CHECK(wilson_interval(100, 100).high == 1.0);
 }
 
 TEST_CASE("the paper's appendix: random starts form two groups, and a second strict FM near pi",

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "ensemble/slider/slider_sweep.hpp"
 #include "io/slider_scene_parser.hpp"
@@ -136,7 +137,10 @@ TEST_CASE("slider scenes: bad keys are named with what they must be", "[ensemble
   CHECK_THAT(message("[model]\nrows = 3\n"), Catch::Contains("the scene sections are"));
   CHECK_THAT(message(""), Catch::Contains("sweep.separation") && Catch::Contains("is missing"));
   CHECK(message("[sweep]\nseparation = [8e-3]\n") ==
-        "no error");  // every other key has the experiment's value
+        "no error");                                             // every other key has the experiment's value
+  CHECK(message("[sweep]\nseparation = 8e-3\n") == "no error");  // one number: a list of one
+  CHECK(rotorsweep::io::parse_slider_scene_text("[sweep]\nseparation = 8e-3\n", "one").separations ==
+        std::vector<double>{8e-3});
 }
 
 TEST_CASE("slider scan: the experiment's 7 x 7 slider matches the reference code's published examples",
