@@ -7,5 +7,6 @@ namespace rotorsweep::python {
 
 void bind_sweep(pybind11::module_& m);      ///< sweep_binding.cpp
 void bind_landscape(pybind11::module_& m);  ///< landscape_binding.cpp
+void bind_slider(pybind11::module_& m);     ///< slider_binding.cpp
 
 }  // namespace rotorsweep::python

@@ -22,4 +22,5 @@ PYBIND11_MODULE(_core, m) {
   });
   rotorsweep::python::bind_sweep(m);
   rotorsweep::python::bind_landscape(m);
+  rotorsweep::python::bind_slider(m);
 }

@@ -191,25 +191,34 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
   }
 }
 
+/// Runs the blocks; returns whether stopped() left any of them out.
 template <bool Inertial>
-void run_blocks(const SliderScene& scene, const Schedule& schedule,
+bool run_blocks(const SliderScene& scene, const Schedule& schedule,
                 const std::vector<std::vector<std::size_t>>& blocks, std::vector<SliderMember>& members,
-                int threads, const std::function<void(std::size_t, std::size_t)>& progress) {
+                int threads, const std::function<void(std::size_t, std::size_t)>& progress,
+                const std::function<bool()>& stopped) {
+  std::atomic<bool> skipped{false};
   kernels::with_stepper<kernels::SliderModel<V, Inertial>>(scene.stepper, [&]<class Stepper>() {
     std::atomic<std::size_t> done{0};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (std::size_t b = 0; b < blocks.size(); ++b) {
+      if (stopped && stopped()) {
+        skipped = true;
+        continue;
+      }
       run_block<Inertial, Stepper>(scene, schedule, blocks[b], members);
       const std::size_t now = done += blocks[b].size();
       if (progress && omp_get_thread_num() == 0) progress(now, members.size());
     }
   });
+  return skipped;
 }
 
 }  // namespace
 
 SliderResult run_slider_scan(const SliderScene& scene, int threads,
-                             const std::function<void(std::size_t, std::size_t)>& progress) {
+                             const std::function<void(std::size_t, std::size_t)>& progress,
+                             const std::function<bool()>& stopped) {
   const SliderUnits units(scene);
   const Schedule schedule(scene, units);
   SliderResult result;
@@ -237,10 +246,10 @@ SliderResult run_slider_scan(const SliderScene& scene, int threads,
   }
   if (threads <= 0) threads = omp_get_max_threads();
   const auto start = std::chrono::steady_clock::now();
-  if (scene.overdamped)
-    run_blocks<false>(scene, schedule, blocks, result.members, threads, progress);
-  else
-    run_blocks<true>(scene, schedule, blocks, result.members, threads, progress);
+  result.stopped =
+      scene.overdamped
+          ? run_blocks<false>(scene, schedule, blocks, result.members, threads, progress, stopped)
+          : run_blocks<true>(scene, schedule, blocks, result.members, threads, progress, stopped);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -32,11 +32,13 @@ struct SliderResult {
   double period = 0.0;                ///< a / v, s
   std::vector<SliderMember> members;  ///< size-major, then separation, then replica
   double seconds = 0.0;               ///< wall time of the integration
+  bool stopped = false;               ///< stopped() turned true: members of blocks not run are empty
 };
 
 /// Runs every member of the scene on `threads` threads (0: all); `progress(done, total)` after each lane
-/// block.
+/// block; once `stopped()` is true no further block starts (the running ones finish).
 SliderResult run_slider_scan(const SliderScene& scene, int threads,
-                             const std::function<void(std::size_t, std::size_t)>& progress = {});
+                             const std::function<void(std::size_t, std::size_t)>& progress = {},
+                             const std::function<bool()>& stopped = {});
 
 }  // namespace rotorsweep::ensemble

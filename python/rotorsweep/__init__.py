@@ -8,10 +8,11 @@ two-angle energy landscape (README "Python"; docs/architecture.md "Python module
 
 import io
 import os
+import tempfile
 
 import h5py
 
-from . import _core, _dataset, _progress, _scene
+from . import _core, _dataset, _progress, _scene, _slider
 from .landscape import (A_minus, A_star, bifurcation_curve, chamber_map, critical_points, jump_events, jump_friction,
                         quasi_static_friction, two_angle_coefficients)
 
@@ -22,7 +23,7 @@ instruction_set = _core.instruction_set
 #: the paper's table of dissipation integrals: its members (rows, g, relax_periods,
 #: average_periods; per entry A, ic, R and whether it is in CP, where R depends on the draw)
 paper_table = _core.paper_table
-__all__ = ["run", "open", "members", "scene_text", "plan_axes", "critical_points", "chamber_map",
+__all__ = ["run", "slider", "open", "members", "scene_text", "plan_axes", "critical_points", "chamber_map",
            "bifurcation_curve", "jump_events", "jump_friction", "quasi_static_friction", "two_angle_coefficients",
            "A_minus", "A_star", "paper_table"]
 
@@ -69,6 +70,48 @@ def run(scene, threads=None, progress=True, output=None, force=False):
         return _dataset.from_hdf5(h5file)
 
 
+def slider(scene, threads=None, progress=True, output=None, force=False):
+    """Runs a slider scene (`rotorsweep slider`) and returns its results as an xarray.Dataset.
+
+    scene: TOML text, a path to a scene file, or a dict of tables ({"sweep": {"separation": [...]}});
+        validated by the command line's parser: a bad key raises ValueError naming it.
+    threads, progress, force: as for run(). output: None keeps the result in memory only; a path
+        writes that file exactly as `rotorsweep slider -o PATH` does; True the scene's output.path.
+
+    Dimensions: size ("7x7", with coordinates columns and rows), separation (m), replica; period
+    (the per-period values period_*) and time (the series series_friction, series_order_x,
+    series_order_y, series_energy). Ctrl-C stops the scan before its next lane block, writes
+    nothing, and is raised again.
+    """
+    text, is_path = _scene.resolve(scene)
+    if output is True:
+        output = _core.slider_scene_info(text, is_path)["output_path"]
+        if not output:
+            raise ValueError("output=True: the scene has no output.path; give output a path")
+    line = _progress.ProgressLine(0, progress)
+
+    def report(done, total):
+        line.total = total
+        line.update(done)
+
+    def run_into(path, replace):
+        try:
+            _core.run_slider(text, is_path, 0 if threads is None else int(threads), path, replace, _core.version,
+                             _core.revision, report)
+        finally:
+            line.finish()
+
+    if output is not None and output is not False:
+        path = os.fspath(output)
+        run_into(path, bool(force))
+        return open(path)
+    with tempfile.TemporaryDirectory(prefix="rotorsweep-slider-") as scratch:
+        path = os.path.join(scratch, "slider.h5")
+        run_into(path, True)
+        with h5py.File(path, "r") as h5file:
+            return _slider.from_hdf5(h5file).load()
+
+
 def open(path, allow_incomplete=False):  # noqa: A001 (rotorsweep.open, like xarray.open_dataset)
     """A result file as an xarray.Dataset.
 
@@ -79,9 +122,12 @@ def open(path, allow_incomplete=False):  # noqa: A001 (rotorsweep.open, like xar
     as period_<channel>. Each carries description and units attributes; the file's attributes
     (scene, version, revision, complete, wall_seconds, ...) are the Dataset's. The coordinate
     plan_index gives each member's row in /members; members(ds) stacks the Dataset back into
-    plan order. A file that is not complete raises ValueError unless allow_incomplete.
+    plan order. A file that is not complete raises ValueError unless allow_incomplete. A slider
+    file (`rotorsweep slider`) gives slider()'s Dataset.
     """
     with h5py.File(os.fspath(path), "r") as h5file:
+        if h5file.attrs.get("kind") in ("slider", b"slider"):
+            return _slider.from_hdf5(h5file)
         return _dataset.from_hdf5(h5file, allow_incomplete)
 
 

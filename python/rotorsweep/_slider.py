@@ -1,0 +1,54 @@
+"""A slider result file (README "The experiment's slider") as an xarray.Dataset: members over the
+dimensions size, separation and replica, their per-period values over period and their time
+series over time (docs/model.md §9)."""
+
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+from ._dataset import _attributes
+
+#: SI units of the /members and /series datasets ("1": dimensionless)
+_UNITS = {"separation": "m", "friction": "N", "period_friction": "N", "period_work": "J",
+          "period_dissipation": "J", "period_stored": "J", "energy": "J", "time": "s"}
+
+
+def _text(values):
+    return np.array([v.decode() if isinstance(v, bytes) else str(v) for v in values])
+
+
+def from_hdf5(h5file):
+    """The Dataset of an open slider result (attribute kind = "slider")."""
+    attrs = _attributes(h5file)
+    if not attrs.get("complete", False):
+        raise ValueError(f"'{h5file.filename}' is not a complete result (attribute complete = FALSE)")
+    members = h5file["members"]
+    columns, rows = members["columns"][:], members["rows"][:]
+    size = np.array([f"{c}x{r}" for c, r in zip(columns, rows)])
+    index = pd.MultiIndex.from_arrays([size, members["separation"][:], members["replica"][:]],
+                                      names=["size", "separation", "replica"])
+    variables = {}
+    for name, dataset in members.items():
+        if name in ("separation", "replica", "columns", "rows"):
+            continue
+        values = dataset[:]
+        if values.dtype.kind in "OS":
+            values = _text(values)
+        dims = ("member",) if values.ndim == 1 else ("member", "period")
+        variables[name] = xr.Variable(dims, values, {"description": dataset.attrs.get("description", ""),
+                                                     "units": _UNITS.get(name, "1")})
+    series = h5file["series"]
+    for name, dataset in series.items():
+        if name == "time":
+            continue
+        variables[f"series_{name}"] = xr.Variable(("member", "time"), dataset[:],
+                                                  {"description": dataset.attrs.get("description", ""),
+                                                   "units": _UNITS.get(name, "1")})
+    coords = {"member": index, "time": ("time", series["time"][:], {"units": "s"})}
+    dataset = xr.Dataset(variables, coords=coords, attrs=attrs).unstack("member")
+    sizes = list(dict.fromkeys(size))  # the scene's order
+    dataset = dataset.reindex(size=sizes)
+    dataset = dataset.assign_coords(columns=("size", [int(s.split("x")[0]) for s in sizes]),
+                                    rows=("size", [int(s.split("x")[1]) for s in sizes]))
+    dataset["separation"].attrs["units"] = "m"
+    return dataset.transpose("size", "separation", "replica", ...)

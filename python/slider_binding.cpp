@@ -1,0 +1,99 @@
+// Python binding of the slider scan (docs/model.md §9): the scene parsed and checked, the scan on a
+// thread of its own while Python keeps Ctrl-C and the progress line, the file `rotorsweep slider` writes.
+#include <omp.h>
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <optional>
+#include <thread>
+
+#include "bindings.hpp"
+#include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/slider/slider_sweep.hpp"
+#include "io/output_target.hpp"
+#include "io/slider_result_file.hpp"
+#include "io/slider_scene_parser.hpp"
+
+namespace py = pybind11;
+
+namespace rotorsweep::python {
+
+namespace {
+
+ensemble::SliderScene parse(const std::string& scene, bool is_path) {
+  return is_path ? io::parse_slider_scene_file(scene) : io::parse_slider_scene_text(scene, "<scene>");
+}
+
+/// Runs the slider scene into `output` (checked before the start: ValueError) and returns its member
+/// count; `progress(done, total)` is called about ten times a second, and a signal Python wants to
+/// raise (Ctrl-C) stops the scan before its next lane block and is raised, with nothing written.
+std::size_t run_slider(const std::string& scene_text, bool is_path, int threads, const std::string& output,
+                       bool force, const std::string& version, const std::string& revision,
+                       const py::object& progress) {
+  const auto scene = parse(scene_text, is_path);
+  const std::string source = is_path ? scene_text : std::string("<python>");
+  io::OutputTarget target(output, {source}, io::Replaceable::hdf5, force);
+  if (threads <= 0) threads = omp_get_max_threads();
+  std::atomic<bool> stop{false}, finished{false};
+  std::atomic<std::size_t> done{0};
+  ensemble::SliderResult result;
+  std::exception_ptr error;
+  std::thread worker([&] {
+    try {
+      result = ensemble::run_slider_scan(
+          scene, threads, [&](std::size_t now, std::size_t) { done = now; }, [&] { return stop.load(); });
+    } catch (...) {
+      error = std::current_exception();
+    }
+    finished = true;
+  });
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    while (!finished) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      py::gil_scoped_acquire acquire;
+      if (PyErr_CheckSignals() != 0) {
+        interrupted = true;
+        stop = true;
+        break;
+      }
+      if (!progress.is_none()) progress(done.load(), scene.member_count());
+    }
+    worker.join();
+  }
+  if (interrupted) throw py::error_already_set();
+  if (error) std::rethrow_exception(error);
+  if (!progress.is_none()) progress(scene.member_count(), scene.member_count());
+  io::write_slider_result(target.temporary(), scene, result,
+                          io::Provenance{source, version, revision, "cpu", ensemble::instruction_set().name},
+                          threads);
+  target.commit();
+  return result.members.size();
+}
+
+}  // namespace
+
+void bind_slider(py::module_& m) {
+  m.def(
+      "slider_scene_info",
+      [](const std::string& scene, bool is_path) {
+        const auto parsed = parse(scene, is_path);
+        py::dict info;
+        info["output_path"] = parsed.output_path;
+        info["members"] = parsed.member_count();
+        return info;
+      },
+      py::arg("scene"), py::arg("is_path") = false,
+      "The validated slider scene: its output.path ('' when not given) and member count.");
+  m.def("run_slider", &run_slider, py::arg("scene"), py::arg("is_path"), py::arg("threads"),
+        py::arg("output"), py::arg("force"), py::arg("version"), py::arg("revision"),
+        py::arg("progress") = py::none(),
+        "Runs a slider scene (TOML text, or a path with is_path) into the HDF5 file `output`, as "
+        "`rotorsweep slider -o output` writes it; returns the member count. Bad scenes and outputs "
+        "raise ValueError naming the key; Ctrl-C stops it and writes nothing.");
+}
+
+}  // namespace rotorsweep::python

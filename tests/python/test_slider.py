@@ -1,0 +1,91 @@
+"""rotorsweep.slider and rotorsweep.open of slider files: the Dataset's layout, the command line's
+numbers to the bit, bad keys as ValueError, and Ctrl-C leaving no file."""
+
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import h5py
+import numpy as np
+import pytest
+
+import rotorsweep
+
+SMALL = {"slider": {"columns": [3, 2], "rows": [2, 2]}, "substrate": {"columns": 11, "rows": 11},
+         "drive": {"rest": 0.5, "end": 4.5}, "sweep": {"separation": [9e-3, 7e-3, 8e-3]},
+         "initial": {"replicas": 2}, "observables": {"samples_per_period": 20}}
+
+
+def command_line(scene_path, output):
+    subprocess.run([os.environ["ROTORSWEEP_EXECUTABLE"], "slider", str(scene_path), "-o", str(output), "-q",
+                    "--threads", "2"], check=True)
+
+
+def test_the_dataset_holds_the_command_lines_members_in_plan_order(tmp_path):
+    scene = tmp_path / "small.toml"
+    scene.write_text(rotorsweep._scene.dict_to_toml(SMALL))
+    cli = tmp_path / "cli.h5"
+    command_line(scene, cli)
+    ds = rotorsweep.slider(scene, threads=1, progress=False)
+    assert dict(ds.sizes) == {"size": 2, "separation": 3, "replica": 2, "period": 2, "time": 46}
+    assert list(ds["size"].values) == ["3x2", "2x2"]  # the scene's order, not sorted
+    assert list(ds["columns"].values) == [3, 2] and list(ds["rows"].values) == [2, 2]
+    assert ds["friction"].attrs["units"] == "N" and ds["separation"].attrs["units"] == "m"
+    with h5py.File(cli) as f:
+        members = f["members"]
+        for k in range(members["friction"].shape[0]):
+            size = f"{members['columns'][k]}x{members['rows'][k]}"
+            at = dict(size=size, separation=members["separation"][k], replica=members["replica"][k])
+            assert ds["friction"].sel(at).item() == members["friction"][k]  # bits
+            assert np.array_equal(ds["period_work"].sel(at).values, members["period_work"][k])
+            assert np.array_equal(ds["series_friction"].sel(at).values, f["series"]["friction"][k])
+            assert ds["status"].sel(at).item() == members["status"][k].decode()
+    opened = rotorsweep.open(cli)
+    assert opened["friction"].equals(ds["friction"])
+    assert opened.attrs["kind"] == "slider"
+
+
+def test_output_writes_the_command_lines_file(tmp_path):
+    out = tmp_path / "py.h5"
+    ds = rotorsweep.slider(SMALL, threads=2, progress=False, output=out)
+    assert out.is_file() and ds.attrs["complete"]
+    with pytest.raises(ValueError, match="exists"):
+        (tmp_path / "not_hdf5.h5").write_text("text")
+        rotorsweep.slider(SMALL, progress=False, output=tmp_path / "not_hdf5.h5")
+
+
+def test_a_bad_key_is_a_value_error_naming_it():
+    with pytest.raises(ValueError, match="sweep.separation"):
+        rotorsweep.slider({"sweep": {"separation": [0.1e-3]}}, progress=False)
+    with pytest.raises(ValueError, match="slider.colums"):
+        rotorsweep.slider({"slider": {"colums": 3}, "sweep": {"separation": 8e-3}}, progress=False)
+
+
+SCRIPT = """
+import sys, rotorsweep
+print("started", flush=True)
+try:
+    rotorsweep.slider({"sweep": {"separation": {"from": 5e-3, "to": 13e-3, "count": 64}}},
+                      progress=False, output=sys.argv[1], threads=1)
+except KeyboardInterrupt:
+    print("interrupted", flush=True)
+    sys.exit(130)
+print("finished", flush=True)
+"""
+
+
+def test_sigint_stops_a_slider_scan_and_writes_nothing(tmp_path):
+    output = tmp_path / "long.h5"
+    process = subprocess.Popen([sys.executable, "-c", SCRIPT, str(output)], stdout=subprocess.PIPE, text=True,
+                               env=os.environ.copy())
+    assert process.stdout.readline().strip() == "started"
+    time.sleep(1.0)  # inside the scan
+    sent = time.monotonic()
+    process.send_signal(signal.SIGINT)
+    out, _ = process.communicate(timeout=60)
+    assert time.monotonic() - sent < 30  # the running lane block finishes first
+    assert process.returncode == 130
+    assert out.strip() == "interrupted"
+    assert list(tmp_path.iterdir()) == []
