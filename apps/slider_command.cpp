@@ -1,8 +1,10 @@
 // `rotorsweep slider SCENE`: the experiment's many-body slider over a scan of layer separations
-// (docs/model.md §9); one HDF5 file put in place only when complete, a progress line, a summary.
+// (docs/model.md §9); one HDF5 file put in place only when complete, a progress line, a summary;
+// SIGINT or SIGTERM stops it before the next lane block with nothing written (exit 130 or 143).
 #include <omp.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -18,6 +20,7 @@
 #include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
+#include "run_support.hpp"
 
 namespace rotorsweep::apps {
 
@@ -52,9 +55,17 @@ int run_slider(const SceneCommandOptions& options) {
       kernels::stepper_names[scene.stepper].data(), scene.rtol, threads,
       kernels::lane_width<kernels::simd_lane>);
   ProgressLine progress(scene.member_count(), !options.quiet);
+  const StopOnSignals signals;
   const auto result = ensemble::run_slider_scan(
-      scene, threads, [&](std::size_t done, std::size_t) { progress.update(done); });
+      scene, threads, [&](std::size_t done, std::size_t) { progress.update(done); },
+      [&] { return signals.flag()->load(); });
   progress.finish();
+  if (result.stopped) {
+    const int number = signals.signal() ? signals.signal() : SIGINT;
+    std::fprintf(stderr, "stopped by %s: nothing written (a slider scan does not resume; run it again)\n",
+                 number == SIGTERM ? "SIGTERM" : "SIGINT");
+    return 128 + number;
+  }
   try {
     io::write_slider_result(
         target->temporary(), scene, result,

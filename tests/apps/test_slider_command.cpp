@@ -1,5 +1,6 @@
 // `rotorsweep slider` end to end (README "The experiment's slider"): scene in, complete HDF5 file out with
-// its datasets and units, `info` on it; bad keys and the wrong kind of scene as exit code 2, no file written.
+// its datasets and units, `info` on it; bad keys and the wrong kind of scene as exit code 2, no file written;
+// SIGINT and SIGTERM stop it with nothing written.
 #include <catch2/catch.hpp>
 #include <filesystem>
 
@@ -61,4 +62,22 @@ TEST_CASE("slider refuses bad scenes with exit code 2 and writes nothing", "[app
   expect_refusal("slider", "[slider]\nspeed = 1.0\n[sweep]\nseparation = [8e-3]\n", "slider.speed");
   expect_refusal("slider", "[model]\nrows = 20\n", "unknown; the scene sections are");
   expect_refusal("run", small_slider, "run them with `rotorsweep slider FILE`");
+}
+
+TEST_CASE("slider stops on SIGINT and SIGTERM with nothing written", "[apps][slider]") {
+  // the experiment's 7 × 7 slider at 64 separations: several seconds on two cores
+  const auto dir = scratch_directory("slider-signal");
+  const auto scene =
+      write_text(dir / "long.toml", "[sweep]\nseparation = { from = 5e-3, to = 13e-3, count = 64 }\n");
+  for (const auto& [signal, code] : {std::pair<std::string, int>{"INT", 130}, {"TERM", 143}}) {
+    const auto out = dir / ("long-" + signal + ".h5");
+    const auto run =
+        run_cli_signalled("slider -q '" + scene.string() + "' -o '" + out.string() + "'", dir, signal, "0.5");
+    INFO(run.output);
+    CHECK(run.exit_code == code);
+    CHECK_THAT(run.output, Catch::Contains("stopped by SIG" + signal) && Catch::Contains("nothing written"));
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir))  // no temporary file left
+    CHECK((entry.path().filename() == "long.toml" || entry.path().filename() == "cli-output.txt"));
 }
