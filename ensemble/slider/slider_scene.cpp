@@ -72,10 +72,9 @@ kernels::SliderParameters slider_parameters(const SliderScene& scene, const kern
 }
 
 std::vector<double> slider_start(const SliderScene& scene, SliderMemberIndex member) {
-  const kernels::RandomStream stream(
-      scene.seed,
-      (std::uint64_t(member.size) * scene.separations.size() + member.separation) * scene.replicas +
-          member.replica);
+  // keyed by the replica alone, as the row sweeps' draws: a member keeps its start whatever the
+  // other axes hold (sizes share the first draws, rotor by rotor)
+  const kernels::RandomStream stream(scene.seed, member.replica);
   const SliderSize size = scene.sizes[member.size];
   const std::size_t n = size.rotors();
   std::vector<double> theta(n);
