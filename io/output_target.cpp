@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <climits>
 #include <cstring>
 #include <fstream>
 
@@ -37,7 +38,17 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
                            Replaceable replaceable, bool force, bool resumable)
     : path_(path) {
   if (path.empty()) throw OutputPathError("the output path is empty");
+  if (path.find('\0') != std::string::npos)
+    throw OutputPathError("output path " + in_quotes(path.substr(0, path.find('\0'))) +
+                          "<NUL>… contains a NUL byte, where the system would cut the name short");
   const std::string name = in_quotes(path);
+  // the temporary file beside it adds at most ".", "." + a process id and ".part" to the name
+  const std::size_t name_bytes = fs::path(path).filename().string().size(), temporary_extra = 14;
+  if (name_bytes + temporary_extra > NAME_MAX)
+    throw OutputPathError("output path " + name + ": its file name has " + std::to_string(name_bytes) +
+                          " bytes; at most " + std::to_string(NAME_MAX - temporary_extra) +
+                          " are allowed (the temporary file beside it needs the rest of the system's " +
+                          std::to_string(NAME_MAX) + ")");
   if (path.back() == '/' || fs::path(path).filename() == "." || fs::path(path).filename() == "..")
     throw OutputPathError("output path " + name + " names a directory; give a file name");
   std::error_code error;

@@ -55,6 +55,20 @@ TEST_CASE("output paths that would destroy something are refused", "[io][output]
   CHECK_NOTHROW(OutputTarget((dir / "notes.txt").string(), {}, Replaceable::any, false));
 }
 
+TEST_CASE("a NUL byte or a name the temporary file would push past NAME_MAX is refused", "[io][output]") {
+  const auto dir = scratch_directory("output-names");
+  write_text(dir / "results", "an unrelated file\n");
+  // "results\0_new.h5" would open "results", a different file, even with --force
+  const std::string with_nul = (dir / "results").string() + std::string(1, '\0') + "_new.h5";
+  CHECK_THROWS_WITH(OutputTarget(with_nul, {}, Replaceable::hdf5, true), Catch::Contains("NUL byte"));
+  CHECK(read_text(dir / "results") == "an unrelated file\n");
+  const std::string longest(241, 'x'), too_long(242, 'x');
+  CHECK_NOTHROW(OutputTarget((dir / longest).string(), {}, Replaceable::hdf5, false));
+  CHECK_THROWS_WITH(OutputTarget((dir / too_long).string(), {}, Replaceable::hdf5, false),
+                    Catch::Contains("242 bytes") && Catch::Contains("at most 241"));
+  CHECK_NOTHROW(OutputTarget((dir / longest).string(), {}, Replaceable::hdf5, false, true));  // .partial fits
+}
+
 TEST_CASE("the old file stays until commit, and nothing is left without it", "[io][output]") {
   const auto dir = scratch_directory("output-commit");
   const auto path = (dir / "result.h5").string();
