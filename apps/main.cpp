@@ -4,6 +4,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 
 #include "apps/launcher/isa_choice.hpp"
 #include "commands.hpp"
@@ -66,6 +67,12 @@ int main(int argc, char** argv) {
   run_cmd
       ->add_option("--flush-seconds", run.flush_seconds,
                    "Write finished members to the file at least this often (seconds)")
+      ->check(CLI::Validator(
+          [](std::string& text) {  // CLI::Range lets NaN through (no comparison with it is true)
+            const double value = std::strtod(text.c_str(), nullptr);
+            return std::isfinite(value) ? std::string() : "must be a finite number (got " + text + ")";
+          },
+          "FINITE"))
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   run_cmd

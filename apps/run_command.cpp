@@ -1,6 +1,5 @@
 // `rotorsweep run SCENE.toml`: validate the scene, plan its members, sweep them on lane blocks
 // streaming finished members into OUT.h5.partial, and put the complete file in place at the end.
-#include <omp.h>
 
 #include <atomic>
 #include <csignal>
@@ -13,6 +12,7 @@
 #include "build_info.hpp"
 #include "commands.hpp"
 #include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
@@ -214,7 +214,13 @@ int run_sweep_command(const RunOptions& options) {
               << "; run with --device cpu\n";
     return 2;
   }
-  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  int threads = 0;
+  try {
+    threads = ensemble::thread_count(options.threads);
+  } catch (const ensemble::ThreadCountError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
 #if ROTORSWEEP_HAVE_MPI
   if (launched_by_mpi()) return run_sweep_mpi(options, scene, threads);
 #endif

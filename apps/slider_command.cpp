@@ -1,7 +1,6 @@
 // `rotorsweep slider SCENE`: the experiment's many-body slider over a scan of layer separations
 // (docs/model.md §9); one HDF5 file put in place only when complete, a progress line, a summary;
 // SIGINT or SIGTERM stops it before the next lane block with nothing written (exit 130 or 143).
-#include <omp.h>
 
 #include <algorithm>
 #include <csignal>
@@ -13,6 +12,7 @@
 #include "build_info.hpp"
 #include "commands.hpp"
 #include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "io/output_target.hpp"
 #include "io/slider_result_file.hpp"
@@ -32,6 +32,13 @@ int run_slider(const SceneCommandOptions& options) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
+  int threads = 0;
+  try {
+    threads = ensemble::thread_count(options.threads);
+  } catch (const ensemble::ThreadCountError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
   const std::string path = options.output.empty() ? scene.output_path : options.output;
   std::optional<io::OutputTarget> target;
   try {
@@ -40,7 +47,6 @@ int run_slider(const SceneCommandOptions& options) {
     std::cerr << "error: " << e.what() << " (-o or output.path)\n";
     return 2;
   }
-  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const auto [closest, farthest] = std::minmax_element(scene.separations.begin(), scene.separations.end());
   std::string sizes;
   for (const auto& size : scene.sizes)

@@ -118,8 +118,9 @@ class Section {
                                bool (*valid)(double)) {
     std::optional<double> v;
     if (node.is_floating_point() || node.is_integer()) v = node.value<double>();
-    if (!v || !std::isfinite(*v) || !valid(*v))
-      fail(key, "must be " + what + " (got " + describe(node) + ")");
+    if (v && !std::isfinite(*v))
+      fail(key, "must be a finite number: " + what + " (got " + describe(node) + ")");
+    if (!v || !valid(*v)) fail(key, "must be " + what + " (got " + describe(node) + ")");
     return *v;
   }
 

@@ -1,9 +1,10 @@
-// The extension module rotorsweep._core: bad scenes and unusable output paths become ValueError
-// (the command line's exit code 2), everything else RuntimeError.
+// The extension module rotorsweep._core: bad scenes, unusable output paths and thread counts become
+// ValueError (the command line's exit code 2), everything else RuntimeError.
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
 #include "build_info.hpp"
+#include "ensemble/engine/thread_count.hpp"
 #include "io/output_target.hpp"
 #include "io/scene_parser.hpp"
 
@@ -17,6 +18,8 @@ PYBIND11_MODULE(_core, m) {
     } catch (const rotorsweep::io::SceneError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const rotorsweep::io::OutputPathError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const rotorsweep::ensemble::ThreadCountError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });

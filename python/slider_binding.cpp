@@ -1,6 +1,5 @@
 // Python binding of the slider scan (docs/model.md §9): the scene parsed and checked, the scan on a
 // thread of its own while Python keeps Ctrl-C and the progress line, the file `rotorsweep slider` writes.
-#include <omp.h>
 #include <pybind11/pybind11.h>
 
 #include <atomic>
@@ -11,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "io/output_target.hpp"
 #include "io/slider_result_file.hpp"
@@ -33,9 +33,9 @@ std::size_t run_slider(const std::string& scene_text, bool is_path, int threads,
                        bool force, const std::string& version, const std::string& revision,
                        const py::object& progress) {
   const auto scene = parse(scene_text, is_path);
+  threads = ensemble::thread_count(threads, "threads");
   const std::string source = is_path ? scene_text : std::string("<python>");
   io::OutputTarget target(output, {source}, io::Replaceable::hdf5, force);
-  if (threads <= 0) threads = omp_get_max_threads();
   std::atomic<bool> stop{false}, finished{false};
   std::atomic<std::size_t> done{0};
   ensemble::SliderResult result;

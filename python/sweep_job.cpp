@@ -2,10 +2,9 @@
 // writer as `rotorsweep run`, to the output path or to an in-memory HDF5 image.
 #include "sweep_job.hpp"
 
-#include <omp.h>
-
 #include <chrono>
 
+#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/sweep.hpp"
 
 namespace rotorsweep::python {
@@ -13,6 +12,7 @@ namespace rotorsweep::python {
 SweepJob::SweepJob(ensemble::Scene scene, int threads, const std::string& output, bool force,
                    const io::Provenance& provenance)
     : scene_(std::move(scene)), members_(ensemble::plan_members(scene_)) {
+  const int count = ensemble::thread_count(threads, "threads");
   if (output.empty()) {
     file_.emplace(io::ResultFile::in_memory(scene_, provenance));
   } else {
@@ -20,7 +20,7 @@ SweepJob::SweepJob(ensemble::Scene scene, int threads, const std::string& output
     target_.emplace(output, inputs, io::Replaceable::hdf5, force);
     file_.emplace(target_->temporary(), scene_, provenance);
   }
-  worker_ = std::thread([this, threads] { run(threads > 0 ? threads : omp_get_max_threads()); });
+  worker_ = std::thread([this, count] { run(count); });
 }
 
 SweepJob::~SweepJob() {

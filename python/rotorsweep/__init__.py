@@ -36,7 +36,7 @@ def run(scene, threads=None, progress=True, output=None, force=False):
 
     scene: TOML text, a path to a scene file, or a dict of tables ({"sweep": {"A": [...]}, ...});
         validated by the command line's parser: a bad key raises ValueError naming it.
-    threads: OpenMP threads (None: all cores).
+    threads: OpenMP threads, 1 to 4096 (None: OMP_NUM_THREADS, else all cores); others raise ValueError.
     progress: draw a progress line on stderr.
     output: None keeps the result in memory only; a path writes that file exactly as
         `rotorsweep run -o PATH` does; True writes to the scene's output.path.

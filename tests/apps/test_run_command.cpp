@@ -224,6 +224,28 @@ TEST_CASE("plans too large to count or to hold are refused before any work", "[a
   CHECK_FALSE(std::filesystem::exists(dir / "m.h5"));
 }
 
+TEST_CASE("thread counts from OMP_NUM_THREADS and flush intervals obey one rule", "[apps][run]") {
+  const auto dir = scratch_directory("run-threads");
+  const auto scene = write_text(dir / "small.toml", "[model]\nrows = 4\n[drive]\ng = 0.01\n[sweep]\nA = 1\n");
+  const std::string run = "run '" + scene.string() + "' -q -o '" + (dir / "o.h5").string() + "'";
+  for (const std::string bad : {"100000", "0", "-3", "many"}) {
+    const auto refused = run_cli(run, dir, "OMP_NUM_THREADS=" + bad + " ");
+    INFO(bad << ": " << refused.output);
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.output,
+               Catch::Contains("OMP_NUM_THREADS = '" + bad + "'") && Catch::Contains("1 to 4096"));
+  }
+  const auto slider = write_text(dir / "slider.toml", "[sweep]\nseparation = 9e-3\n");
+  CHECK(run_cli("slider '" + slider.string() + "' -q -o '" + (dir / "s.h5").string() + "'", dir,
+                "OMP_NUM_THREADS=100000 ")
+            .exit_code == 2);
+  const auto nan = run_cli(run + " --flush-seconds nan", dir);
+  CHECK(nan.exit_code != 0);
+  CHECK_THAT(nan.output, Catch::Contains("--flush-seconds") && Catch::Contains("finite"));
+  for (const char* left : {"o.h5", "o.h5.partial", "s.h5"}) CHECK_FALSE(std::filesystem::exists(dir / left));
+  CHECK(run_cli(run, dir, "OMP_NUM_THREADS=2,1 ").exit_code == 0);  // a nested list: its first value
+}
+
 TEST_CASE("the GPU device: refusals exit 2 naming the key, and no GPU is a clear error", "[apps][run][gpu]") {
   const auto dir = scratch_directory("run-gpu");
   const std::string good = "[model]\nrows = 20\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n";

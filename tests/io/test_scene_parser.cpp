@@ -132,6 +132,10 @@ TEST_CASE("a wrong type is named with what is allowed", "[io][scene]") {
              Catch::Contains("'drive.g'") && Catch::Contains("a number, a list of numbers"));
   CHECK_THAT(error_of("[model]\nrows = 20\n[drive]\ng = -1\n[sweep]\nA = [1]\n"),
              Catch::Contains("'drive.g'") && Catch::Contains("> 0"));
+  CHECK_THAT(error_of("[model]\nrows = 20\n[drive]\ng = [0.01]\n[sweep]\nA = [inf]\n"),
+             Catch::Contains("'sweep.A'") && Catch::Contains("must be a finite number"));
+  CHECK_THAT(error_of(minimal + "[numerics]\nrtol = nan\n"),
+             Catch::Contains("'numerics.rtol'") && Catch::Contains("must be a finite number"));
   CHECK_THAT(error_of(minimal + "[initial]\nkinds = [\"ferro\"]\n"),
              Catch::Contains("'initial.kinds'") && Catch::Contains("FM, AFM, random, exact"));
   CHECK_THAT(error_of("model = 3\n"), Catch::Contains("'model'"));

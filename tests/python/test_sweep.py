@@ -103,3 +103,15 @@ def test_the_paper_members_through_the_module():
     for (A, ic), R in paper.items():
         D = float(ds.dissipation.sel(A=A, ic=ic, replica=0))
         assert D == pytest.approx(R, rel=2e-3), (A, ic)
+
+
+def test_thread_counts_outside_1_to_4096_raise_value_error(monkeypatch):
+    scene = {"model": {"rows": 4}, "drive": {"g": 0.01}, "sweep": {"A": 1}}
+    for bad in (-1, 5000, 100000):
+        with pytest.raises(ValueError, match="threads"):
+            rotorsweep.run(scene, threads=bad, progress=False)
+        with pytest.raises(ValueError, match="threads"):
+            rotorsweep.slider({"sweep": {"separation": 9e-3}}, threads=bad, progress=False)
+    monkeypatch.setenv("OMP_NUM_THREADS", "100000")
+    with pytest.raises(ValueError, match="OMP_NUM_THREADS"):
+        rotorsweep.run(scene, progress=False)
