@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "io/hdf5_file.hpp"
+#include "progress_line.hpp"
 
 namespace rotorsweep::apps {
 
@@ -114,10 +115,10 @@ int run_info(const InfoOptions& options) {
                   (long long)file.attribute_double("shard_count"),
                   (long long)file.attribute_double("plan_members"));
     if (file.has_attribute("wall_seconds"))
-      std::printf("%-12s %.2f s on %lld threads × %lld lanes (%.1f members/s, lane occupancy %.1f %%)\n",
-                  "wall time", file.attribute_double("wall_seconds"),
-                  (long long)file.attribute_double("threads"), (long long)file.attribute_double("lane_width"),
-                  double(A.size()) / file.attribute_double("wall_seconds"),
+      std::printf("%-12s %.2f s on %lld threads × %lld lanes (%s, lane occupancy %.1f %%)\n", "wall time",
+                  file.attribute_double("wall_seconds"), (long long)file.attribute_double("threads"),
+                  (long long)file.attribute_double("lane_width"),
+                  members_per_second(double(A.size()), file.attribute_double("wall_seconds")).c_str(),
                   100 * file.attribute_double("lane_occupancy"));
     const auto rows = kept(members.read_integers("rows"));
     print_range("rows N", std::vector<double>(rows.begin(), rows.end()));

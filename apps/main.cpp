@@ -1,6 +1,7 @@
 // Entry point of the rotorsweep command line: parses the subcommand and its options (CLI11).
 // Bad options end with one message and exit code 2; any later failure with one message and exit code 1.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -17,6 +18,23 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text(argv[0]));
   const auto own_isa = rotorsweep::ensemble::instruction_set().name;
+  // a native build has no launcher to read ROTORSWEEP_ISA: a bad value is still an error, a good one
+  // is said to have no effect
+  if (const char* requested = std::getenv("ROTORSWEEP_ISA"); own_isa == "native" && requested && *requested) {
+    const auto allowed = rotorsweep::launcher::allowed_requests();
+    if (std::find(allowed.begin(), allowed.end(), requested) == allowed.end()) {
+      std::string names;
+      for (const auto& name : allowed) names += (names.empty() ? "" : ", ") + name;
+      std::fprintf(stderr, "rotorsweep: ROTORSWEEP_ISA = '%s' is not an instruction set; allowed: %s\n",
+                   requested, names.c_str());
+      return 2;
+    }
+    if (std::string(requested) != "auto")
+      std::fprintf(stderr,
+                   "warning: ROTORSWEEP_ISA = '%s' has no effect: this build runs one instruction set "
+                   "(-march=native)\n",
+                   requested);
+  }
   std::string isa = "auto";
   if (own_isa != "native")
     app.add_option(
@@ -67,12 +85,7 @@ int main(int argc, char** argv) {
   run_cmd
       ->add_option("--flush-seconds", run.flush_seconds,
                    "Write finished members to the file at least this often (seconds)")
-      ->check(CLI::Validator(
-          [](std::string& text) {  // CLI::Range lets NaN through (no comparison with it is true)
-            const double value = std::strtod(text.c_str(), nullptr);
-            return std::isfinite(value) ? std::string() : "must be a finite number (got " + text + ")";
-          },
-          "FINITE"))
+      ->check(finite)  // CLI::Range lets NaN through (no comparison with it is true)
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   run_cmd

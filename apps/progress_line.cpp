@@ -9,6 +9,13 @@
 
 namespace rotorsweep::apps {
 
+std::string members_per_second(double members, double seconds) {
+  if (!(members > 0) || !(seconds > 0)) return "no members run";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f members/s", members / seconds);
+  return text;
+}
+
 std::string format_duration(double seconds) {
   char text[64];
   if (seconds < 1)

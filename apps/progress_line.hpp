@@ -28,4 +28,7 @@ class ProgressLine {
 /// "3 min 12 s", "12.3 s", "850 ms".
 std::string format_duration(double seconds);
 
+/// "123.4 members/s", or "no members run" when none were (no NaN or inf from 0/0).
+std::string members_per_second(double members, double seconds);
+
 }  // namespace rotorsweep::apps

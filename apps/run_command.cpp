@@ -360,10 +360,11 @@ int run_sweep_command(const RunOptions& options) {
               << partial << " (complete = FALSE); resume with: " << resume_command(options) << "\n";
     return 1;
   }
-  std::fprintf(stderr, "wrote %s%s: %zu members in %s (%.1f members/s, lane occupancy %.1f %%)\n",
-               path.c_str(), target->replaced() ? " (replacing the previous file)" : "", rows,
+  std::fprintf(stderr, "wrote %s%s: %zu members in %s (%s, lane occupancy %.1f %%)\n", path.c_str(),
+               target->replaced() ? " (replacing the previous file)" : "", rows,
                format_duration(stats.wall_seconds).c_str(),
-               double(to_run) / (stats.wall_seconds - earlier_seconds), 100 * stats.occupancy());
+               members_per_second(double(to_run), stats.wall_seconds - earlier_seconds).c_str(),
+               100 * stats.occupancy());
   return 0;
 }
 

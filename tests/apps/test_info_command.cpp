@@ -37,3 +37,21 @@ TEST_CASE("info flags incomplete files and rejects others", "[apps][info]") {
   write_text(dir / "text.h5", "not hdf5");
   CHECK(run_cli("info '" + (dir / "text.h5").string() + "'", dir).exit_code == 2);
 }
+
+TEST_CASE("an empty shard reports no rate, never NaN", "[apps][info]") {
+  const auto dir = scratch_directory("info-empty");
+  write_text(dir / "two.toml", "[model]\nrows = 4\n[drive]\ng = 0.01\n[sweep]\nA = [1, 2]\n");
+  const auto run = run_cli("run '" + (dir / "two.toml").string() + "' --shard 3/3 -q -o '" +
+                               (dir / "empty.h5").string() + "'",
+                           dir);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("0 members in") && Catch::Contains("no members run"));
+  const auto info = run_cli("info '" + (dir / "empty.h5").string() + "'", dir);
+  INFO(info.output);
+  CHECK_THAT(info.output, Catch::Contains("no members run"));
+  for (const auto* text : {&run.output, &info.output}) {
+    CHECK(text->find("nan") == std::string::npos);
+    CHECK(text->find("inf ") == std::string::npos);
+  }
+}
