@@ -53,11 +53,13 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
     throw OutputPathError("output path " + name + " names a directory; give a file name");
   std::error_code error;
   target_ = fs::path(path);
-  if (fs::is_symlink(fs::symlink_status(target_, error))) {
-    // write beside the link's target and replace that file: the link stays a link
-    const fs::path resolved = fs::weakly_canonical(target_, error);
+  // through symbolic links (also dangling ones, whose target is then created): write beside the
+  // final target and replace that file, so the links stay links
+  for (int hops = 0; fs::is_symlink(fs::symlink_status(target_, error)); ++hops) {
+    if (hops == 40) throw OutputPathError("output path " + name + ": too many levels of symbolic links");
+    const fs::path next = fs::read_symlink(target_, error);
     if (error) throw OutputPathError("output path " + name + ": " + error.message());
-    target_ = resolved;
+    target_ = (next.is_absolute() ? next : target_.parent_path() / next).lexically_normal();
   }
   const fs::file_status status = fs::status(target_, error);
   const bool exists = fs::exists(status);

@@ -120,6 +120,20 @@ TEST_CASE("an output through a symbolic link replaces the link's target", "[io][
   target.commit();
   CHECK(fs::is_symlink(dir / "link.h5"));
   CHECK(Hdf5Location::open_file(real).attribute_double("marker") == 2.0);
+  // a dangling link (relative, through a second link) gets its target written, directories included
+  fs::create_symlink("sub/new.h5", dir / "dangling.h5");
+  fs::create_symlink("dangling.h5", dir / "chain.h5");
+  {
+    OutputTarget through((dir / "chain.h5").string(), {}, Replaceable::hdf5, false);
+    write_hdf5(through.temporary(), 3.0);
+    through.commit();
+  }
+  CHECK(fs::is_symlink(dir / "chain.h5"));
+  CHECK(fs::is_symlink(dir / "dangling.h5"));
+  CHECK(Hdf5Location::open_file((dir / "sub" / "new.h5").string()).attribute_double("marker") == 3.0);
+  fs::create_symlink("loop.h5", dir / "loop.h5");
+  CHECK_THROWS_WITH(OutputTarget((dir / "loop.h5").string(), {}, Replaceable::hdf5, false),
+                    Catch::Contains("too many levels"));
 }
 
 TEST_CASE("HDF5 files are told from others by their signature", "[io][output]") {
