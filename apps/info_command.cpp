@@ -86,6 +86,8 @@ int run_info(const InfoOptions& options) {
     if (file.has_attribute("kind")) {
       print_landscape(file);
       if (file.attribute_string("kind") == "slider") print_slider(file);
+      if (options.scene && file.has_attribute("scene"))  // slider files store their scene too
+        std::printf("\n# scene\n%s\n", file.attribute_string("scene").c_str());
       return complete ? 0 : 1;
     }
     if (!file.has("members")) return complete ? 0 : 1;

@@ -44,6 +44,10 @@ TEST_CASE("slider writes a complete result file that info summarises", "[apps][s
   CHECK(info.exit_code == 0);
   CHECK_THAT(info.output, Catch::Contains("kind         slider") && Catch::Contains("status       ok 3") &&
                               Catch::Contains("peak at h = "));
+  CHECK(info.output.find("# scene") == std::string::npos);
+  const auto with_scene = run_cli("info '" + out.string() + "' --scene", dir);
+  CHECK(with_scene.exit_code == 0);
+  CHECK_THAT(with_scene.output, Catch::Contains("# scene") && Catch::Contains("columns = 3"));
 }
 
 TEST_CASE("slider refuses bad scenes with exit code 2 and writes nothing", "[apps][slider]") {
