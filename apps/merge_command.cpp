@@ -56,7 +56,7 @@ void check_same_plan(const ShardFile& first, const ShardFile& other) {
                              ": they are not shards of one run");
   };
   if (other.scene_text != first.scene_text) differ("scene");
-  if (other.version != first.version) differ("program version");
+  if (other.version != first.version) differ("program (version and revision) that wrote them");
   if (other.count != first.count) differ("shard count");
 }
 
@@ -90,12 +90,23 @@ int run_merge(const MergeOptions& options) {
         covered.assign(scene.member_count(), 0);
       }
       check_same_plan(*first, shard);
+      if (shard.index < 1 || shard.index > shard.count)
+        throw std::runtime_error("'" + path + "': shard index " + std::to_string(shard.index) +
+                                 " is outside 1 … " + std::to_string(shard.count) + " (its shard_count)");
       isas.insert(shard.isa);
       if (const auto [at, fresh] = seen.emplace(shard.index, path); !fresh)
         throw std::runtime_error("'" + path + "' and '" + at->second + "' are both shard " +
                                  std::to_string(shard.index) + "/" + std::to_string(shard.count));
       const auto members = file.open_group("members");
       const std::size_t rows = io::member_rows(file);
+      if (members.has("done")) {  // a complete shard has every row done; an edited one may not
+        const auto done = members.read_flags("done");
+        for (std::size_t row = 0; row < done.size(); ++row)
+          if (!done[row])
+            throw std::runtime_error("'" + path + "': /members row " + std::to_string(row) +
+                                     " is not marked done, though the file says complete: it is not a "
+                                     "whole shard");
+      }
       for (std::size_t row = 0; row < rows; row += block_members)
         for (const auto i :
              members.read_rows_integers("plan_index", row, std::min(block_members, rows - row))) {

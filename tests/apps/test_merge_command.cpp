@@ -72,6 +72,16 @@ TEST_CASE("shards that do not make one plan are refused", "[apps][merge]") {
                 .exit_code == 0);
   REQUIRE(run_cli("run " + other + " -q --shard 2/2 -o " + quoted(dir / "foreign.h5"), dir).exit_code == 0);
   REQUIRE(run_cli("run " + scene + " -q -o " + quoted(dir / "whole.h5"), dir).exit_code == 0);
+  // shard 2 edited: one row not done (complete still TRUE); and a shard index beyond the count
+  std::filesystem::copy_file(dir / "s2.h5", dir / "edited.h5");
+  std::filesystem::copy_file(dir / "s2.h5", dir / "seventh.h5");
+  {
+    const auto edited = rotorsweep::io::Hdf5Location::open_file_for_writing((dir / "edited.h5").string());
+    const signed char not_done = 0;
+    edited.open_group("members").write_rows("done", {1}, &not_done);
+    rotorsweep::io::Hdf5Location::open_file_for_writing((dir / "seventh.h5").string())
+        .set_attribute("shard_index", std::int64_t(7));
+  }
   const auto out = " -o " + quoted(dir / "out.h5");
   const auto s1 = quoted(dir / "s1.h5"), s2 = quoted(dir / "s2.h5");
   const struct {
@@ -82,6 +92,8 @@ TEST_CASE("shards that do not make one plan are refused", "[apps][merge]") {
       {s1 + " " + quoted(dir / "foreign.h5"), "differ in their scene"},
       {quoted(dir / "whole.h5"), "not a shard file"},
       {s1 + " " + quoted(dir / "absent.h5"), "does not exist"},
+      {s1 + " " + quoted(dir / "edited.h5"), "row 1 is not marked done"},
+      {s1 + " " + quoted(dir / "seventh.h5"), "shard index 7 is outside 1 … 2"},
   };
   for (const auto& c : cases) {
     INFO(c.shards);
