@@ -2,6 +2,8 @@
 // ValueError (the command line's exit code 2), everything else RuntimeError.
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 #include "bindings.hpp"
 #include "build_info.hpp"
 #include "ensemble/engine/thread_count.hpp"
@@ -17,8 +19,11 @@ PYBIND11_MODULE(_core, m) {
       if (error) std::rethrow_exception(error);
     } catch (const rotorsweep::io::SceneError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
-    } catch (const rotorsweep::io::OutputPathError& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const rotorsweep::io::OutputPathError& e) {  // the command line's words, in Python's
+      std::string message = e.what();
+      for (std::size_t at; (at = message.find("--force")) != std::string::npos;)
+        message.replace(at, 7, "force=True");
+      PyErr_SetString(PyExc_ValueError, message.c_str());
     } catch (const rotorsweep::ensemble::ThreadCountError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }

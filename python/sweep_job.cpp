@@ -3,6 +3,7 @@
 #include "sweep_job.hpp"
 
 #include <chrono>
+#include <filesystem>
 
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/sweep.hpp"
@@ -18,6 +19,16 @@ SweepJob::SweepJob(ensemble::Scene scene, int threads, const std::string& output
   } else {
     const std::vector<std::string> inputs{provenance.scene_path};
     target_.emplace(output, inputs, io::Replaceable::hdf5, force);
+    // as `rotorsweep run`: an interrupted run's members are not thrown away unless asked to
+    const std::filesystem::path partial = output + ".partial";
+    if (std::filesystem::exists(partial)) {
+      if (!force)
+        throw io::OutputPathError(
+            partial.string() +
+            " holds the finished members of an earlier run that stopped early: "
+            "continue it with `rotorsweep run --resume`, or start afresh with force=True");
+      std::filesystem::remove(partial);
+    }
     file_.emplace(target_->temporary(), scene_, provenance);
   }
   worker_ = std::thread([this, count] { run(count); });

@@ -50,7 +50,7 @@ def run(scene, threads=None, progress=True, output=None, force=False):
         output = _core.scene_info(text, is_path)["output_path"]
         if not output:
             raise ValueError("output=True: the scene has no output.path; give output a path")
-    path = "" if output is None or output is False else os.fspath(output)
+    path = "" if output is None or output is False else _output_path(output)
     job = _core.SweepJob(text, is_path, 0 if threads is None else int(threads), path, bool(force),
                          _core.version, _core.revision)
     line = _progress.ProgressLine(job.total, progress)
@@ -102,7 +102,7 @@ def slider(scene, threads=None, progress=True, output=None, force=False):
             line.finish()
 
     if output is not None and output is not False:
-        path = os.fspath(output)
+        path = _output_path(output)
         run_into(path, bool(force))
         return open(path)
     with tempfile.TemporaryDirectory(prefix="rotorsweep-slider-") as scratch:
@@ -110,6 +110,14 @@ def slider(scene, threads=None, progress=True, output=None, force=False):
         run_into(path, True)
         with h5py.File(path, "r") as h5file:
             return _slider.from_hdf5(h5file).load()
+
+
+def _output_path(output):
+    """A path given as output=, refused when empty like the command line's -o ''."""
+    path = os.fspath(output)
+    if not path:
+        raise ValueError("output='': the output path is empty; give a path, or None to keep the result in memory")
+    return path
 
 
 def open(path, allow_incomplete=False):  # noqa: A001 (rotorsweep.open, like xarray.open_dataset)

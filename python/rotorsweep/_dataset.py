@@ -71,6 +71,8 @@ def from_hdf5(h5file, allow_incomplete=False):
                          "join the shards with `rotorsweep merge` first")
     if "members" not in h5file:
         raise ValueError(f"'{name}' holds no /members (not a rotorsweep result)")
+    if "scene" not in attrs:
+        raise ValueError(f"'{name}' has no scene attribute (not a rotorsweep result file)")
     axes = _core.plan_axes(attrs["scene"])
     shape = tuple(len(values) for values in axes.values())
     dims = tuple(axes)

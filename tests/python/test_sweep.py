@@ -115,3 +115,32 @@ def test_thread_counts_outside_1_to_4096_raise_value_error(monkeypatch):
     monkeypatch.setenv("OMP_NUM_THREADS", "100000")
     with pytest.raises(ValueError, match="OMP_NUM_THREADS"):
         rotorsweep.run(scene, progress=False)
+
+
+def test_output_paths_behave_as_the_command_lines(tmp_path):
+    scene = {"model": {"rows": 4}, "drive": {"g": 0.01}, "sweep": {"A": 1}}
+    with pytest.raises(ValueError, match="output path is empty"):
+        rotorsweep.run(scene, output="", progress=False)
+    text = tmp_path / "notes.h5"
+    text.write_text("not a result")
+    with pytest.raises(ValueError, match=r"force=True") as refused:
+        rotorsweep.run(scene, output=text, progress=False)
+    assert "--force" not in str(refused.value)
+    # an interrupted run's partial file is kept unless force=True, as `rotorsweep run` does
+    out = tmp_path / "y.h5"
+    partial = tmp_path / "y.h5.partial"
+    partial.write_bytes(b"members of an earlier run")
+    with pytest.raises(ValueError, match="stopped early"):
+        rotorsweep.run(scene, output=out, progress=False)
+    assert partial.read_bytes() == b"members of an earlier run" and not out.exists()
+    rotorsweep.run(scene, output=out, force=True, progress=False)
+    assert out.exists() and not partial.exists()
+
+
+def test_open_names_a_file_that_is_not_a_result(tmp_path):
+    path = tmp_path / "foreign.h5"
+    with h5py.File(path, "w") as f:
+        f.attrs["complete"] = True
+        f.create_group("members").create_dataset("A", data=[1.0])
+    with pytest.raises(ValueError, match="no scene attribute"):
+        rotorsweep.open(path)
