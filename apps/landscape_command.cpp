@@ -146,6 +146,11 @@ int run_landscape_chambers(const LandscapeOptions& o) {
         "%d zones of constant Morse signature, %d chambers (components of >= %d cells; %d and %d "
         "counting slivers along the curves)\n",
         map.zones_at_least(min_cells), map.chambers_at_least(min_cells), min_cells, map.zones, map.chambers);
+    const auto unresolved = std::count_if(map.cells.begin(), map.cells.end(),
+                                          [](const landscape::ChamberCell& c) { return c.degenerate != 0; });
+    if (unresolved > 0)
+      std::printf("%ld of %zu cells degenerate (critical points not resolved there; zone and chamber -1)\n",
+                  long(unresolved), map.cells.size());
   });
 }
 

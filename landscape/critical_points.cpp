@@ -86,6 +86,10 @@ CriticalSet critical_points(const TwoAngleEnergy& h) {
       case MorseType::degenerate: ++set.degenerate; break;
     }
   }
+  // Morse theory on the torus: #min − #saddle + #max = 0. A set that breaks it lost points the root
+  // finders could not resolve (a = b = 0 makes the off-diagonal polynomial vanish identically, and
+  // near-degenerate tables merge roots): it is flagged, never reported as a count.
+  if (set.degenerate == 0 && set.minima - set.saddles + set.maxima != 0) set.degenerate = 1;
   std::sort(set.points.begin(), set.points.end(),
             [](const CriticalPoint& a, const CriticalPoint& b) { return a.energy < b.energy; });
   return set;

@@ -23,7 +23,8 @@ struct CriticalSet {
   std::vector<CriticalPoint> points;
   int minima = 0, saddles = 0, maxima = 0, degenerate = 0;
   /// #min − #saddle + #max = 0, the Euler characteristic of the torus (Morse theory); only
-  /// binding when no point is degenerate.
+  /// binding when no point is degenerate, and critical_points() flags a set that breaks it as
+  /// degenerate (unresolved), so this holds for every set it returns.
   bool euler_consistent() const { return degenerate > 0 || minima - saddles + maxima == 0; }
 };
 
