@@ -17,6 +17,7 @@
 #include "landscape/jump_friction.hpp"
 #include "landscape/quasi_static_cycle.hpp"
 #include "progress_line.hpp"
+#include "remove_on_signal.hpp"
 
 namespace rotorsweep::apps {
 
@@ -45,11 +46,13 @@ int write_landscape_file(const std::string& path, const std::string& kind,
     file->set_attribute("revision", std::string(revision));
     file->flush();
     const auto start = Clock::now();
+    std::optional<RemoveOnSignal> on_signal(std::in_place, *target);
     fill(*file);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     file->set_attribute("wall_seconds", wall);
     file->set_flag("complete", true);
     file->close();
+    on_signal.reset();  // from here the file is whole: a signal ends the process as usual
     target->commit();
     std::printf("wrote %s (%s)%s in %s\n", path.c_str(), kind.c_str(),
                 target->replaced() ? " replacing the previous file" : "", format_duration(wall).c_str());

@@ -16,6 +16,7 @@
 #include "io/result_file.hpp"
 #include "io/result_reader.hpp"
 #include "io/scene_parser.hpp"
+#include "remove_on_signal.hpp"
 
 namespace rotorsweep::apps {
 
@@ -145,6 +146,7 @@ int run_merge(const MergeOptions& options) {
   }
   // second pass: the shards' rows, a block at a time, into their plan rows of the output
   try {
+    std::optional<RemoveOnSignal> on_signal(std::in_place, *target);
     const ensemble::MemberPlan plan(scene);
     io::ResultFile out(target->temporary(), scene,
                        io::Provenance{first->scene_path, version, revision, first->device,
@@ -158,6 +160,7 @@ int run_merge(const MergeOptions& options) {
     }
     out.finish(stats);
     out.close();
+    on_signal.reset();
     target->commit();
   } catch (const std::exception& e) {
     std::cerr << "error: writing " << options.output << " failed: " << e.what() << "; "

@@ -18,6 +18,7 @@
 #include "ensemble/rows/sweep.hpp"
 #include "io/output_target.hpp"
 #include "kernels/steppers/stepper_list.hpp"
+#include "remove_on_signal.hpp"
 
 namespace rotorsweep::apps {
 
@@ -67,6 +68,8 @@ int run_table(const TableOptions& options) {
     }
     csv << "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period\n";
   }
+  std::optional<RemoveOnSignal> on_signal;
+  if (target) on_signal.emplace(*target);
   std::printf("%5s %4s %14s %14s %14s %14s %10s %8s\n", "A", "IC", "W (work)", "S (Stokes)", "R (drive)",
               "paper R", "R/paper-1", "steps/T");
   const auto start = std::chrono::steady_clock::now();
@@ -97,6 +100,7 @@ int run_table(const TableOptions& options) {
       std::cerr << "error: writing " << options.output << " failed: " << std::strerror(errno) << "\n";
       return 1;
     }
+    on_signal.reset();
     target->commit();
     std::printf(", table written to %s%s", options.output.c_str(), target->replaced() ? " (replaced)" : "");
   }

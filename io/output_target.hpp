@@ -41,6 +41,8 @@ class OutputTarget {
   const std::string& path() const { return path_; }
   /// Whether commit() replaced an existing file.
   bool replaced() const { return replaced_; }
+  /// The directories the constructor created for the path, innermost last.
+  const std::vector<std::filesystem::path>& created_directories() const { return created_directories_; }
 
   /// Renames the temporary file over the target. Throws std::runtime_error with the OS reason.
   void commit();

@@ -123,3 +123,23 @@ TEST_CASE("landscape jump-friction for point-dipole rows: their coefficients, CP
       CHECK(cycle[i] == Approx(J[i]).margin(1e-7));
   }
 }
+
+TEST_CASE("landscape and table stop on SIGINT and SIGTERM leaving no temporary file or directory",
+          "[apps][landscape][files]") {
+  const auto dir = scratch_directory("landscape-signal");
+  for (const auto& [signal, code] : {std::pair<std::string, int>{"INT", 130}, {"TERM", 143}}) {
+    const auto out = dir / "made" / "for" / "it.h5";  // directories the run creates
+    const auto run = run_cli_signalled("landscape chambers --A-cells 4000 -q -o '" + out.string() + "'", dir,
+                                       signal, "0.5");
+    INFO(run.output);
+    CHECK(run.exit_code == code);
+    CHECK_THAT(run.output, Catch::Contains("stopped by SIG" + signal + ": nothing written"));
+    CHECK_FALSE(std::filesystem::exists(dir / "made"));
+  }
+  // the paper's table takes under a second: signalled at once, it leaves nothing either
+  const auto table =
+      run_cli_signalled("table --rtol 1e-12 -o '" + (dir / "table.csv").string() + "'", dir, "INT", "0.05");
+  CHECK(table.exit_code == 130);
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    CHECK(entry.path().filename() == "cli-output.txt");
+}

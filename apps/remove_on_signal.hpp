@@ -1,0 +1,25 @@
+// Commands that write one file at the end (landscape, table -o, couplings -o, merge): SIGINT or
+// SIGTERM removes the temporary file and the directories made for it and ends with 128 + signal.
+#pragma once
+
+#include "io/output_target.hpp"
+
+namespace rotorsweep::apps {
+
+/// While an instance lives, SIGINT and SIGTERM end the process at once (the computations these
+/// commands run have no stopping points): the handler unlinks `target`'s temporary file, removes
+/// the directories made for it, says so on stderr and exits with 128 + the signal's number (130,
+/// 143). The previous handlers come back after it.
+class RemoveOnSignal {
+ public:
+  explicit RemoveOnSignal(const io::OutputTarget& target);
+  ~RemoveOnSignal();
+  RemoveOnSignal(const RemoveOnSignal&) = delete;
+  RemoveOnSignal& operator=(const RemoveOnSignal&) = delete;
+
+ private:
+  void (*previous_int_)(int);
+  void (*previous_term_)(int);
+};
+
+}  // namespace rotorsweep::apps
