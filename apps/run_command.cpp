@@ -16,6 +16,7 @@
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
+#include "ensemble/rows/working_set.hpp"
 #include "io/member_stream.hpp"
 #include "io/output_target.hpp"
 #include "io/result_file.hpp"
@@ -25,6 +26,7 @@
 #include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
 #include "run_support.hpp"
+#include "usable_memory.hpp"
 
 namespace rotorsweep::apps {
 
@@ -143,6 +145,21 @@ bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, const std::str
   return false;
 }
 
+bool fits_in_memory(const ensemble::Scene& scene, int threads) {
+  if (scene.device == ensemble::Device::gpu) return true;  // the GPU's scratch is checked by the parser
+  const double block = ensemble::lane_block_bytes(scene), needed = double(threads) * block;
+  const double usable = usable_memory_bytes();
+  if (needed <= 0.8 * usable) return true;
+  std::fprintf(
+      stderr,
+      "error: the sweep needs about %.3g GiB to work in (%d threads × %.3g GiB, one lane block each at "
+      "N = %zu), more than 80 %% of the %.3g GiB this process may use (the machine's memory, ulimit -v "
+      "or its cgroup's limit); use fewer --threads or rows%s\n",
+      needed / 0x1p30, threads, block / 0x1p30, scene.max_rows(), usable / 0x1p30,
+      scene.couplings.nearest_neighbour() ? "" : " (a dense coupling table grows as N²: a shorter range)");
+  return false;
+}
+
 /// The one-line description of the run on stderr.
 void print_header(const RunOptions& options, const ensemble::Scene& scene, std::size_t members, int threads,
                   const std::optional<io::ShardLabel>& shard) {
@@ -221,6 +238,7 @@ int run_sweep_command(const RunOptions& options) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
+  if (!fits_in_memory(scene, threads)) return 2;
 #if ROTORSWEEP_HAVE_MPI
   if (launched_by_mpi()) return run_sweep_mpi(options, scene, threads);
 #endif
@@ -303,14 +321,20 @@ int run_sweep_command(const RunOptions& options) {
   ProgressLine progress(to_run, !options.quiet);
   ensemble::SweepOutcome outcome;
   int signal_number = 0;
-  std::string write_error;
+  std::string write_error, sweep_error;
   {
     const StopOnSignals signals;
     io::MemberStream stream(*file, plan, {options.flush_seconds, options.flush_members},
                             [&signals] { signals.stop(); });
-    outcome = ensemble::run_members(
-        scene, source, threads, {[&](std::size_t count) { progress.update(count); }, signals.flag()},
-        [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); });
+    try {
+      outcome = ensemble::run_members(
+          scene, source, threads, {[&](std::size_t count) { progress.update(count); }, signals.flag()},
+          [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); });
+    } catch (const std::bad_alloc&) {
+      sweep_error = "out of memory (an allocation in a worker thread failed)";
+    } catch (const std::exception& e) {
+      sweep_error = e.what();
+    }
     signal_number = signals.signal();
     try {
       stream.flush();
@@ -323,14 +347,15 @@ int run_sweep_command(const RunOptions& options) {
   auto& stats = outcome.statistics;
   stats.wall_seconds += earlier_seconds;
 
-  if (!write_error.empty()) {
+  if (!write_error.empty() || !sweep_error.empty()) {
     // the rows marked done are on disk: keep them for --resume, and say so
     target->keep();
+    const std::string what = write_error.empty() ? "the sweep failed: " + sweep_error
+                                                 : "writing " + partial + " failed: " + write_error;
     std::fprintf(stderr,
-                 "error: writing %s failed: %s\n%zu of %zu members are kept in %s (not a result: complete = "
-                 "FALSE); once the cause is fixed, resume with: %s\n",
-                 partial.c_str(), write_error.c_str(), done_before, rows, partial.c_str(),
-                 resume_command(options).c_str());
+                 "error: %s\n%zu of %zu members are kept in %s (not a result: complete = FALSE); once the "
+                 "cause is fixed, resume with: %s\n",
+                 what.c_str(), done_before, rows, partial.c_str(), resume_command(options).c_str());
     return 1;
   }
   if (outcome.interrupted) {

@@ -22,6 +22,9 @@ std::string output_path(const RunOptions& options, const ensemble::Scene& scene,
 void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene);
 /// Whether `rows` members' file fits on the disk of `partial`; says how much it needs when not.
 bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, const std::string& partial);
+/// Whether every thread's lane block fits in 80 % of the memory this process may use; says how much
+/// it needs when not.
+bool fits_in_memory(const ensemble::Scene& scene, int threads);
 /// The one-line description of the run on stderr.
 void print_header(const RunOptions& options, const ensemble::Scene& scene, std::size_t members, int threads,
                   const std::optional<io::ShardLabel>& shard);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <mutex>
 
 #include "ensemble/engine/compile_time_choice.hpp"
@@ -21,6 +22,8 @@
 namespace rotorsweep::ensemble {
 
 /// Runs the members of `range` (one variant) on `threads` lane schedulers that share one counter.
+/// An exception in one of them (an allocation that fails) stops the others like the stop flag and
+/// is rethrown here, after every finished member has reached the sink.
 template <class Model, class Integrator, class Setup>
 SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, const Setup& setup,
                                  int threads, const SweepControl& control, const ResultSink& sink) {
@@ -32,12 +35,15 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, 
   std::mutex progress_lock, statistics_lock;
   const auto start = std::chrono::steady_clock::now();
   const Member variant = range.source->at(range.begin);
+  std::atomic<bool> failed{false};
+  std::exception_ptr failure;
+  const auto stopped = [&] { return failed.load(std::memory_order_relaxed) || control.stopped(); };
 
 #pragma omp parallel num_threads(threads)
-  {
+  try {
     LaneScheduler<Model, Integrator, Setup> scheduler(scene, variant, setup);
     const auto next_member = [&]() -> std::optional<Member> {
-      if (control.stopped()) return std::nullopt;
+      if (stopped()) return std::nullopt;
       const std::size_t k =
           range.source->claim ? range.source->claim(range) : next.fetch_add(1, std::memory_order_relaxed);
       if (k >= range.end) return std::nullopt;
@@ -51,11 +57,16 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, 
         progress_lock.unlock();
       }
     };
-    scheduler.run(next_member, retire, [&] { return control.stopped(); });
+    scheduler.run(next_member, retire, stopped);
     const std::lock_guard guard(statistics_lock);
     stats.lane_steps_busy += scheduler.lane_steps_busy();
     stats.lane_steps_total += scheduler.lane_steps_total();
+  } catch (...) {
+    const std::lock_guard guard(statistics_lock);
+    if (!failure) failure = std::current_exception();
+    failed = true;
   }
+  if (failure) std::rethrow_exception(failure);
   stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.interrupted = control.stopped();
   return outcome;

@@ -224,6 +224,28 @@ TEST_CASE("plans too large to count or to hold are refused before any work", "[a
   CHECK_FALSE(std::filesystem::exists(dir / "m.h5"));
 }
 
+TEST_CASE("a sweep whose lane blocks would not fit in memory is refused before any work", "[apps][run]") {
+  const auto dir = scratch_directory("run-working-set");
+  // a dense coupling table at N = 20000: tens of GiB per thread for the factors alone
+  const auto dense = write_text(dir / "dense.toml",
+                                "[model]\nrows = 20000\ncouplings = \"dipolar\"\nrange = \"all\"\n"
+                                "[drive]\ng = 0.01\n[sweep]\nA = 1\n");
+  auto run = run_cli("run '" + dense.string() + "' -q -o '" + (dir / "d.h5").string() + "'", dir);
+  INFO(run.output);
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::Contains("GiB to work in") && Catch::Contains("N = 20000"));
+  // within the machine's memory, but not within the process's address-space limit
+  const auto big = write_text(dir / "big.toml",
+                              "[model]\nrows = 4000\ncouplings = \"dipolar\"\nrange = \"all\"\n"
+                              "[drive]\ng = 0.01\n[sweep]\nA = 1\n");
+  run = run_cli("run '" + big.string() + "' -q --threads 2 -o '" + (dir / "b.h5").string() + "'", dir,
+                "ulimit -v 2000000; ");
+  CHECK(run.exit_code == 2);
+  CHECK_THAT(run.output, Catch::Contains("ulimit -v"));
+  for (const char* left : {"d.h5", "d.h5.partial", "b.h5", "b.h5.partial"})
+    CHECK_FALSE(std::filesystem::exists(dir / left));
+}
+
 TEST_CASE("thread counts from OMP_NUM_THREADS and flush intervals obey one rule", "[apps][run]") {
   const auto dir = scratch_directory("run-threads");
   const auto scene = write_text(dir / "small.toml", "[model]\nrows = 4\n[drive]\ng = 0.01\n[sweep]\nA = 1\n");

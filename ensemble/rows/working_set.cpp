@@ -1,0 +1,32 @@
+// lane_block_bytes: the integration loop of the scene's stepper and row model, counted for the
+// lane type this unit is compiled for (kernels::counted_storage; docs/architecture.md "Lanes").
+#include "ensemble/rows/working_set.hpp"
+
+#include <tuple>
+
+#include "ensemble/engine/integration_loop.hpp"
+#include "ensemble/rows/row_setup.hpp"
+#include "ensemble/rows/sweep_runner.hpp"
+#include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/stepper_list.hpp"
+
+namespace rotorsweep::ensemble {
+
+double lane_block_bytes(const Scene& scene) {
+  const std::size_t rows = scene.max_rows();
+  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
+    return with_row_model(scene, [&]<class Model>() {
+      using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
+      using Loop = IntegrationLoop<Model, kernels::AdaptiveIntegrator<Model, Stepper>>;
+      const RowSetup<Model> setup(&scene);
+      const std::size_t values = std::apply(
+          [&](const auto&... arguments) {
+            return Loop::storage_size(rows, typename Loop::Settings{}, arguments...);
+          },
+          setup.model_arguments());
+      return double(values) * double(sizeof(typename Model::lane_type));
+    });
+  });
+}
+
+}  // namespace rotorsweep::ensemble
