@@ -37,7 +37,7 @@ ProgressLine::ProgressLine(std::size_t total, bool enabled, std::string unit)
       start_(clock::now()),
       last_draw_(start_) {}
 
-void ProgressLine::update(std::size_t done) {
+void ProgressLine::update(std::size_t done, std::size_t periods) {
   if (!enabled_) return;
   const auto now = clock::now();
   const double since_draw = std::chrono::duration<double>(now - last_draw_).count();
@@ -46,9 +46,11 @@ void ProgressLine::update(std::size_t done) {
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double rate = double(done) / elapsed;
   const std::string eta = rate > 0 ? format_duration(double(total_ - done) / rate) : "?";
-  char line[160];
-  const int width = std::snprintf(line, sizeof line, "  %zu / %zu %s  %.1f %s/s  ETA %s", done, total_,
-                                  unit_.c_str(), rate, unit_.c_str(), eta.c_str());
+  char line[200];
+  int width = std::snprintf(line, sizeof line, "  %zu / %zu %s  %.1f %s/s  ETA %s", done, total_,
+                            unit_.c_str(), rate, unit_.c_str(), eta.c_str());
+  if (periods > 0 && width > 0 && std::size_t(width) < sizeof line)
+    width += std::snprintf(line + width, sizeof line - std::size_t(width), "  (%zu periods closed)", periods);
   if (terminal_) {
     std::fprintf(stderr, "\r%s%*s", line, int(last_width_ > std::size_t(width) ? last_width_ - width : 0),
                  "");

@@ -11,8 +11,9 @@ namespace rotorsweep::apps {
 class ProgressLine {
  public:
   ProgressLine(std::size_t total, bool enabled, std::string unit = "members");
-  /// Reports `done` items; draws only if enough time has passed since the last draw.
-  void update(std::size_t done);
+  /// Reports `done` items (and, where it helps with long members, the periods they closed);
+  /// draws only if enough time has passed since the last draw.
+  void update(std::size_t done, std::size_t periods = 0);
   /// Clears the in-place line (terminal) before the closing message.
   void finish();
 

@@ -319,6 +319,7 @@ int run_sweep_command(const RunOptions& options) {
     std::fprintf(stderr, "resuming from %s: %zu members done, %zu to run\n", partial.c_str(), done_before,
                  to_run);
   ProgressLine progress(to_run, !options.quiet);
+  std::atomic<std::size_t> periods{0};
   ensemble::SweepOutcome outcome;
   int signal_number = 0;
   std::string write_error, sweep_error;
@@ -328,7 +329,9 @@ int run_sweep_command(const RunOptions& options) {
                             [&signals] { signals.stop(); });
     try {
       outcome = ensemble::run_members(
-          scene, source, threads, {[&](std::size_t count) { progress.update(count); }, signals.flag()},
+          scene, source, threads,
+          {[&](std::size_t count) { progress.update(count, periods.load(std::memory_order_relaxed)); },
+           signals.flag(), &periods},
           [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); });
     } catch (const std::bad_alloc&) {
       sweep_error = "out of memory (an allocation in a worker thread failed)";

@@ -80,8 +80,12 @@ class LaneScheduler {
   /// Takes members from next_member() (a std::optional<Member>; empty when the plan is
   /// exhausted) until none is left and every lane has retired; hands each result to retire().
   /// Returns at once, abandoning the members in its lanes, when stopped() turns true.
-  template <class NextMember, class Retire, class Stopped>
-  void run(NextMember&& next_member, Retire&& retire, Stopped&& stopped) {
+  /// period_closed() is called after each period a member closes.
+  struct Nothing {
+    void operator()() const {}
+  };
+  template <class NextMember, class Retire, class Stopped, class PeriodClosed = Nothing>
+  void run(NextMember&& next_member, Retire&& retire, Stopped&& stopped, PeriodClosed&& period_closed = {}) {
     for (;;) {
       if (stopped()) return;
       if (scene_.refill || occupied_ == 0) fill_idle_lanes(next_member);
@@ -93,7 +97,7 @@ class LaneScheduler {
         if (loop_.failed(l))
           retire(finish(l, false));
         else if (period_ends && loop_.period_ended(l))
-          close_period(l, retire);
+          close_period(l, retire, period_closed);
       }
     }
   }
@@ -152,8 +156,8 @@ class LaneScheduler {
     total_ += double(width);
   }
 
-  template <class Retire>
-  void close_period(std::size_t l, Retire& retire) {
+  template <class Retire, class PeriodClosed>
+  void close_period(std::size_t l, Retire& retire, PeriodClosed& period_closed) {
     PeriodRecord record;
     record_quadratures(
         channels_, carried_, record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period);
@@ -175,6 +179,7 @@ class LaneScheduler {
     auto& history = lanes_[l].history;
     history.push_back(record);
     forget_old_periods(history);
+    period_closed();
     if (lanes_[l].progress.close_period(period_schedule_, record.dissipation())) {
       retire(finish(l, lanes_[l].progress.settled()));
       return;

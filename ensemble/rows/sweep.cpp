@@ -53,7 +53,7 @@ SweepOutcome run_members(const Scene& scene, const MemberSource& source, int thr
     const SweepControl part_control{[&](std::size_t done) {
                                       if (control.progress) control.progress(before + done);
                                     },
-                                    control.stop};
+                                    control.stop, control.periods};
     if (scene.device == Device::gpu)
       outcome.append(run_gpu_row_sweep(scene, range, threads, part_control, sink));
     else if (scene.thermal.on())

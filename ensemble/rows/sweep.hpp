@@ -41,6 +41,9 @@ using ProgressCallback = std::function<void(std::size_t done)>;
 struct SweepControl {
   ProgressCallback progress;
   const std::atomic<bool>* stop = nullptr;
+  /// Counts the periods members close (CPU lanes), and progress is also called after them: the
+  /// progress of runs whose members are long (a few members of large N).
+  std::atomic<std::size_t>* periods = nullptr;
   bool stopped() const { return stop != nullptr && stop->load(std::memory_order_relaxed); }
 };
 

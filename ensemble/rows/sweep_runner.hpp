@@ -57,7 +57,15 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, 
         progress_lock.unlock();
       }
     };
-    scheduler.run(next_member, retire, stopped);
+    const auto period_closed = [&] {  // progress within long members
+      if (!control.periods) return;
+      control.periods->fetch_add(1, std::memory_order_relaxed);
+      if (control.progress && progress_lock.try_lock()) {
+        control.progress(done.load(std::memory_order_relaxed));
+        progress_lock.unlock();
+      }
+    };
+    scheduler.run(next_member, retire, stopped, period_closed);
     const std::lock_guard guard(statistics_lock);
     stats.lane_steps_busy += scheduler.lane_steps_busy();
     stats.lane_steps_total += scheduler.lane_steps_total();

@@ -2,6 +2,7 @@
 // or off, and on scalar or SIMD lanes; steady_tol retires settled members early; a failing
 // member is isolated from the members sharing its lanes; without the period series only the last
 // periods are kept, with the same summary; the stop flag ends a sweep early.
+#include <atomic>
 #include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -244,4 +245,29 @@ TEST_CASE("the stop flag ends a sweep early and says so", "[ensemble][sweep]") {
       &stop);
   CHECK(during.interrupted);
   CHECK(seen < members.size());
+}
+
+TEST_CASE("progress moves within members: every closed period is counted and reported", "[ensemble][sweep]") {
+  // two long members: without the period count the progress would stay at 0 of 2 until the end
+  const auto scene = rotorsweep::io::parse_scene_text(
+      "[model]\nrows = 20\n[drive]\ng = 0.001\n[sweep]\nA = [4, 6]\n[schedule]\nrelax_periods = 3\n"
+      "average_periods = 3\n",
+      "progress.toml");
+  const auto members = plan_members(scene);
+  const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  std::atomic<std::size_t> periods{0};
+  std::vector<std::size_t> reports;
+  std::vector<std::size_t> periods_seen;
+  const SweepControl control{[&](std::size_t done) {
+                               reports.push_back(done);
+                               periods_seen.push_back(periods.load());
+                             },
+                             nullptr, &periods};
+  run_members(scene, source, 1, control, [](MemberResult&&) {});
+  CHECK(periods.load() == 12);  // 2 members × (3 + 3) periods
+  CHECK(reports.size() >= 12);
+  REQUIRE(!reports.empty());
+  CHECK(reports.front() == 0);  // reported while both members were still running
+  CHECK(periods_seen.front() >= 1);
+  CHECK(reports.back() == 2);
 }
