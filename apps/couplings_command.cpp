@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "ensemble/rows/coupling_table.hpp"
 #include "io/output_target.hpp"
+#include "progress_line.hpp"
 
 namespace rotorsweep::apps {
 
@@ -17,7 +18,10 @@ std::size_t row_length_value(const std::string& text) { return text == "infinite
 
 int run_couplings(const CouplingsOptions& options) {
   const std::size_t row_length = row_length_value(options.row_length);
-  const auto table = ensemble::dipolar_table(options.range, row_length);
+  ProgressLine progress(options.range, true, "row distances");
+  const auto table =
+      ensemble::dipolar_table(options.range, row_length, [&](std::size_t u) { progress.update(u); });
+  progress.finish();
   const auto reduced = ensemble::two_angle_coefficients(table);
   std::printf("point dipoles, rows %s, range %zu rows\n",
               row_length == 0 ? "infinite" : (std::to_string(row_length) + " rotors long").c_str(),

@@ -64,12 +64,19 @@ int write_landscape_file(const std::string& path, const std::string& kind,
   return 0;
 }
 
-/// The landscape's coefficients: given, from a point-dipole table, or nearest neighbours.
+/// The landscape's coefficients: given, from a point-dipole table (computed once, with a progress
+/// line: long ranges take minutes), or nearest neighbours.
 landscape::TwoAngleCoefficients coefficients(const LandscapeOptions& o) {
   if (o.coefficients.size() == 3) return {o.coefficients[0], o.coefficients[1], o.coefficients[2]};
-  if (o.range > 0)
-    return ensemble::two_angle_coefficients(ensemble::dipolar_table(o.range, row_length_value(o.row_length)));
-  return {};
+  if (o.range == 0) return {};
+  static std::optional<landscape::TwoAngleCoefficients> table_coefficients;  // one command per process
+  if (!table_coefficients) {
+    ProgressLine progress(o.range, !o.quiet, "row distances");
+    table_coefficients = ensemble::two_angle_coefficients(ensemble::dipolar_table(
+        o.range, row_length_value(o.row_length), [&](std::size_t u) { progress.update(u); }));
+    progress.finish();
+  }
+  return *table_coefficients;
 }
 
 /// The coefficients and the CP interval as file attributes; the alignment curve's type changes.

@@ -30,7 +30,8 @@ double cube_tail(double K) { return 1.0 / (2 * K * K) - 1.0 / (2 * K * K * K) + 
 
 CouplingTable nearest_neighbour_table() { return {}; }
 
-CouplingTable dipolar_table(std::size_t range, std::size_t row_length) {
+CouplingTable dipolar_table(std::size_t range, std::size_t row_length,
+                            const std::function<void(std::size_t)>& progress) {
   CouplingTable table;
   table.b.assign(range, 0.0);
   table.c.assign(range, 0.0);
@@ -57,6 +58,7 @@ CouplingTable dipolar_table(std::size_t range, std::size_t row_length) {
     }
     table.b[u - 1] = same;
     table.c[u - 1] = opposite;
+    if (progress) progress(u);
   }
   return table;
 }

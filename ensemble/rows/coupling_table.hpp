@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "landscape/two_angle_energy.hpp"
@@ -22,8 +23,10 @@ CouplingTable nearest_neighbour_table();
 /// Point dipoles on a square lattice of spacing 1, moments in the xz-plane, rows uniform along x:
 /// the energy per rotor of a row of `row_length` rotors (0: an infinite row), for rows u = 1 .. range
 /// apart. A pair offset by (k, u), r² = k² + u², has r⁻³[(1 − 3k²/2r²) cos(θ1 − θ2) − (3k²/2r²)
-/// cos(θ1 + θ2)]; a finite row weighs offset k by its share of pairs, (L − |k|)/L.
-CouplingTable dipolar_table(std::size_t range, std::size_t row_length);
+/// cos(θ1 + θ2)]; a finite row weighs offset k by its share of pairs, (L − |k|)/L. `progress(u)`
+/// is called after row distance u (long tables: each u sums every offset of a row).
+CouplingTable dipolar_table(std::size_t range, std::size_t row_length,
+                            const std::function<void(std::size_t)>& progress = {});
 
 /// The model section's couplings as a scene gives them (docs/model.md §1 "Extended couplings"):
 /// nearest neighbours, point dipoles over a range of rows, or an explicit table; periodic or open rows.

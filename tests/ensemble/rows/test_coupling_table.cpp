@@ -2,6 +2,7 @@
 // (ζ(3), a row of one or two rotors, 1/u² far away), the stated sums and the paper's 2-D lattice check.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <vector>
 
 #include "ensemble/rows/coupling_table.hpp"
 
@@ -71,4 +72,15 @@ TEST_CASE("the two-angle reduction folds even rows into the anisotropy", "[ensem
   CHECK(reduced.a == Approx(2.2));
   CHECK(reduced.b == Approx(2 * (1.0 + 0.25)));
   CHECK(reduced.c == Approx(2 * (0.1 + 0.3)));
+}
+
+TEST_CASE("a long point-dipole table reports its progress, row distance by row distance",
+          "[ensemble][couplings]") {
+  std::vector<std::size_t> seen;
+  const auto reported = dipolar_table(40, 0, [&](std::size_t u) { seen.push_back(u); });
+  REQUIRE(seen.size() == 40);
+  for (std::size_t u = 1; u <= 40; ++u) CHECK(seen[u - 1] == u);
+  const auto silent = dipolar_table(40, 0);
+  CHECK(reported.b == silent.b);  // the same bits with or without it
+  CHECK(reported.c == silent.c);
 }
