@@ -24,12 +24,11 @@ namespace rotorsweep::kernels {
 /// evaluation; the pair terms follow from products. It carries the quadratures of the Integrals
 /// given at construction and satisfies LaneModel.
 template <class V>
-class CoupledRows {
+class CoupledRows : public CarriedRowQuadratures {
  public:
   using lane_type = V;
   using Jacobian = DenseSymmetric<V>;
   static constexpr double period = two_pi;
-  static constexpr std::size_t max_quadratures = Integrals::max_count;
 
   /// One lane's parameters; the table (a, b[0 .. range), c[0 .. range)) and the boundary must be
   /// the same in every lane.
@@ -61,7 +60,7 @@ class CoupledRows {
   };
 
   ROTORSWEEP_HD CoupledRows(std::size_t rows, LaneArena<V>& arena, Integrals carried)
-      : rows_(rows), integrals_(carried), b_(arena.take(rows)), c_(arena.take(rows)) {}  // zeros
+      : CarriedRowQuadratures(carried), rows_(rows), b_(arena.take(rows)), c_(arena.take(rows)) {}  // zeros
   ROTORSWEEP_HD CoupledRows(std::size_t rows, LaneArena<V>& arena, Integrals carried, const Parameters& p)
       : CoupledRows(rows, arena, carried) {
     for (std::size_t l = 0; l < lane_width<V>; ++l) set_lane(l, p);
@@ -82,15 +81,7 @@ class CoupledRows {
   }
 
   ROTORSWEEP_HD std::size_t dimension() const { return rows_; }
-  /// The quadratures it carries and which of them steer the step size
-  /// (kernels/models/rows/row_quadratures.hpp).
-  ROTORSWEEP_HD Integrals integrals() const { return integrals_; }
-  ROTORSWEEP_HD std::size_t quadrature_count() const { return integrals_.count(); }
-  ROTORSWEEP_HD bool error_controlled(std::size_t p) const { return row_error_controlled(integrals_, p); }
   ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
-  ROTORSWEEP_HD StateScale quadrature_scale(std::size_t p) const {
-    return row_quadrature_scale(integrals_, p);
-  }
 
   ROTORSWEEP_HD void evaluate(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
     trigonometry(w, theta, t);
@@ -228,7 +219,6 @@ class CoupledRows {
   }
 
   std::size_t rows_;
-  Integrals integrals_;
   V *b_, *c_;  ///< b_u, c_u at u − 1, the same in every lane
   V a_ = V(1.5);
   std::size_t range_ = 0;

@@ -30,12 +30,11 @@ namespace rotorsweep::kernels {
 /// chosen at run time). Scratch lives in a Workspace, the per-row factors in storage_size(N) lane
 /// values of caller-owned storage. It satisfies LaneModel (kernels/models/model_concept.hpp).
 template <class V>
-class NearestNeighbourRows {
+class NearestNeighbourRows : public CarriedRowQuadratures {
  public:
   using lane_type = V;
   using Jacobian = CyclicTridiagonal<V>;
   static constexpr double period = two_pi;  ///< the drive period
-  static constexpr std::size_t max_quadratures = Integrals::max_count;
 
   /// One lane's parameters. `strict_fm` marks a member that starts exactly in the strict-FM set
   /// (all rows equal): its stage solves keep all-equal rows exactly equal (CyclicTridiagonal),
@@ -78,8 +77,8 @@ class NearestNeighbourRows {
 
   /// A uniform model (every factor 1) carrying `carried` over storage_size(rows) values of `arena`.
   ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena, Integrals carried)
-      : rows_(rows),
-        integrals_(carried),
+      : CarriedRowQuadratures(carried),
+        rows_(rows),
         reads_rows_(carried.work || carried.energy),
         A_row_(arena.take(rows)),
         anisotropy_row_(arena.take(rows)),
@@ -118,16 +117,8 @@ class NearestNeighbourRows {
   }
 
   ROTORSWEEP_HD std::size_t dimension() const { return rows_; }
-  /// The quadratures it carries, in Integrals order, and which of them steer the step size
-  /// (kernels/models/rows/row_quadratures.hpp).
-  ROTORSWEEP_HD Integrals integrals() const { return integrals_; }
-  ROTORSWEEP_HD std::size_t quadrature_count() const { return integrals_.count(); }
-  ROTORSWEEP_HD bool error_controlled(std::size_t p) const { return row_error_controlled(integrals_, p); }
   /// Every state component is an angle: its error is measured absolutely.
   ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
-  ROTORSWEEP_HD StateScale quadrature_scale(std::size_t p) const {
-    return row_quadrature_scale(integrals_, p);
-  }
 
   /// f = dθ/dt and the quadrature integrands qdot at (θ, t).
   ROTORSWEEP_HD void evaluate(Workspace& w, const V* theta, V t, V* f, V* qdot) const {
@@ -390,7 +381,6 @@ class NearestNeighbourRows {
   }
 
   std::size_t rows_;
-  Integrals integrals_;
   bool reads_rows_;  ///< W or H carried: their integrands read every row's trigonometry
   V *A_row_, *anisotropy_row_, *coupling_row_;  ///< 1 + δ_j, 1 + α_j, 1 + β_j per lane
   bool disordered_ = false;  ///< some lane has a factor other than 1: the per-row loops run

@@ -27,6 +27,25 @@ ROTORSWEEP_HD constexpr StateScale row_quadrature_scale(Integrals q, std::size_t
   return q.drive && p == q.drive_index() ? StateScale::capped_relative : StateScale::relative;
 }
 
+/// What both row models say of the quadratures they carry (the LaneModel members, chosen at run
+/// time from the scene's observables): the set, how many, which steer the step, how they are weighed.
+class CarriedRowQuadratures {
+ public:
+  static constexpr std::size_t max_quadratures = Integrals::max_count;
+
+  ROTORSWEEP_HD explicit CarriedRowQuadratures(Integrals carried) : integrals_(carried) {}
+  /// The quadratures carried, in Integrals order.
+  ROTORSWEEP_HD Integrals integrals() const { return integrals_; }
+  ROTORSWEEP_HD std::size_t quadrature_count() const { return integrals_.count(); }
+  ROTORSWEEP_HD bool error_controlled(std::size_t p) const { return row_error_controlled(integrals_, p); }
+  ROTORSWEEP_HD StateScale quadrature_scale(std::size_t p) const {
+    return row_quadrature_scale(integrals_, p);
+  }
+
+ protected:
+  Integrals integrals_;
+};
+
 /// Σ_j x_j over n rows, in row order.
 template <class V>
 ROTORSWEEP_HD V row_sum(std::size_t n, const V* x) {
