@@ -50,7 +50,11 @@ struct RunOptions : SceneCommandOptions {
 };
 int run_sweep_command(const RunOptions& options);
 
-int run_slider(const SceneCommandOptions& options);
+struct SliderOptions : SceneCommandOptions {
+  std::string shard;    ///< "I/N": run part I of N of the plan; `merge` joins the parts
+  bool resume = false;  ///< continue from OUTPUT.partial, left by a scan that stopped early
+};
+int run_slider(const SliderOptions& options);
 
 struct MergeOptions {
   std::vector<std::string> shards;

@@ -75,13 +75,19 @@ int main(int argc, char** argv) {
     cmd->add_flag("-q,--quiet", options.quiet, "No progress line");
     cmd->add_flag("--force", options.force, force_help);
   };
+  // --resume and --shard of a command that streams its members into OUT.h5.partial
+  const auto add_partial_options = [](CLI::App* cmd, bool& resume, std::string& shard) {
+    cmd->add_flag("--resume", resume,
+                  "Continue the run that stopped early (from OUT.h5.partial): same scene, same program");
+    cmd->add_option("--shard", shard,
+                    "Run part I of N of the plan (I/N; members I-1, I-1+N, ...); `merge` joins the parts");
+  };
   RunOptions run;
   auto* run_cmd =
       app.add_subcommand("run", "Run the sweep a scene file describes and write its HDF5 result file");
   add_scene_options(run_cmd, run, "Scene file (TOML)",
                     "Replace an existing output file even if it is not an HDF5 file, or a partial file");
-  run_cmd->add_flag("--resume", run.resume,
-                    "Continue the run that stopped early (from OUT.h5.partial): same scene, same program");
+  add_partial_options(run_cmd, run.resume, run.shard);
   run_cmd
       ->add_option("--flush-seconds", run.flush_seconds,
                    "Write finished members to the file at least this often (seconds)")
@@ -95,14 +101,13 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run_cmd->add_option("--device", run.device, "Where members run: cpu or gpu (overrides numerics.device)")
       ->check(CLI::IsMember({"cpu", "gpu"}));
-  run_cmd->add_option("--shard", run.shard,
-                      "Run part I of N of the plan (I/N; members I-1, I-1+N, ...); `merge` joins the parts");
 
-  SceneCommandOptions slider;
+  SliderOptions slider;
   auto* slider_cmd = app.add_subcommand(
       "slider", "Run the experiment's many-body slider over the separations a slider scene describes");
   add_scene_options(slider_cmd, slider, "Slider scene file (TOML)",
-                    "Replace an existing output file even if it is not an HDF5 file");
+                    "Replace an existing output file even if it is not an HDF5 file, or a partial file");
+  add_partial_options(slider_cmd, slider.resume, slider.shard);
 
   InfoOptions info;
   MergeOptions merge;

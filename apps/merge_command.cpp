@@ -1,5 +1,5 @@
-// `rotorsweep merge SHARD.h5... -o OUT.h5`: checks that the shards come from one scene and one
-// version and cover its plan exactly once, and writes the result file the unsharded run writes.
+// `rotorsweep merge SHARD.h5... -o OUT.h5`: checks that the shards (of `run` or `slider`) come from one scene
+// and one version and cover its plan exactly once, and writes the result file the unsharded run writes.
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -16,6 +16,8 @@
 #include "io/result_file.hpp"
 #include "io/result_reader.hpp"
 #include "io/scene_parser.hpp"
+#include "io/slider_result_file.hpp"
+#include "io/slider_scene_parser.hpp"
 #include "remove_on_signal.hpp"
 
 namespace rotorsweep::apps {
@@ -26,12 +28,13 @@ namespace {
 struct ShardFile {
   std::string path, scene_text, scene_path, version, device, isa;
   std::size_t index = 0, count = 0, plan_members = 0;
+  bool slider = false;  ///< a slider scan's shard (`rotorsweep slider --shard`)
   double wall_seconds = 0, threads = 1, lane_width = 1, lane_occupancy = 0;
 };
 
 ShardFile describe(const std::string& path, const io::Hdf5Location& file) {
   if (!file.has_attribute("shard_index") || !file.has("members"))
-    throw std::runtime_error("'" + path + "' is not a shard file (written by run --shard I/N)");
+    throw std::runtime_error("'" + path + "' is not a shard file (written by run or slider --shard I/N)");
   if (!file.attribute_flag("complete"))
     throw std::runtime_error("'" + path + "' is incomplete: its run did not finish; run that shard again");
   ShardFile shard;
@@ -44,10 +47,13 @@ ShardFile describe(const std::string& path, const io::Hdf5Location& file) {
   shard.index = std::size_t(file.attribute_double("shard_index"));
   shard.count = std::size_t(file.attribute_double("shard_count"));
   shard.plan_members = std::size_t(file.attribute_double("plan_members"));
+  shard.slider = file.has_attribute("kind") && file.attribute_string("kind") == "slider";
   shard.wall_seconds = file.attribute_double("wall_seconds");
   shard.threads = file.attribute_double("threads");
-  shard.lane_width = file.attribute_double("lane_width");
-  shard.lane_occupancy = file.attribute_double("lane_occupancy");
+  if (!shard.slider) {  // the slider's lanes are not counted
+    shard.lane_width = file.attribute_double("lane_width");
+    shard.lane_occupancy = file.attribute_double("lane_occupancy");
+  }
   return shard;
 }
 
@@ -69,6 +75,7 @@ constexpr std::size_t block_members = 4096;
 int run_merge(const MergeOptions& options) {
   // first pass: the shards' attributes and plan indices, checked to make one plan exactly once
   ensemble::Scene scene;
+  ensemble::SliderScene slider;
   std::optional<ShardFile> first;
   std::set<std::string> isas;  // shards run by different binaries give the same bits; all are named
   ensemble::SweepStatistics stats;
@@ -81,14 +88,18 @@ int run_merge(const MergeOptions& options) {
       const ShardFile shard = describe(path, file);
       if (!first) {
         first = shard;
-        scene = io::parse_scene_text(shard.scene_text, shard.scene_path);
-        if (scene.member_count() != shard.plan_members)
+        if (shard.slider)
+          slider = io::parse_slider_scene_text(shard.scene_text, shard.scene_path);
+        else
+          scene = io::parse_scene_text(shard.scene_text, shard.scene_path);
+        const std::size_t plan_members = shard.slider ? slider.member_count() : scene.member_count();
+        if (plan_members != shard.plan_members)
           throw std::runtime_error("'" + path + "': its plan size does not match its scene");
         if (shard.version != program_identity())
           throw std::runtime_error("'" + path + "' was written by rotorsweep " + shard.version +
                                    ", this is " + program_identity() +
                                    ": merge with the program that ran the shards");
-        covered.assign(scene.member_count(), 0);
+        covered.assign(plan_members, 0);
       }
       check_same_plan(*first, shard);
       if (shard.index < 1 || shard.index > shard.count)
@@ -145,21 +156,31 @@ int run_merge(const MergeOptions& options) {
     return 2;
   }
   // second pass: the shards' rows, a block at a time, into their plan rows of the output
+  std::size_t members = 0;
   try {
     std::optional<RemoveOnSignal> on_signal(std::in_place, *target);
-    const ensemble::MemberPlan plan(scene);
-    io::ResultFile out(target->temporary(), scene,
-                       io::Provenance{first->scene_path, version, revision, first->device,
-                                      launcher::joined({isas.begin(), isas.end()})});
-    for (const auto& path : options.shards) {
-      const auto file = io::Hdf5Location::open_file(path);
-      const std::size_t rows = io::member_rows(file);
-      for (std::size_t row = 0; row < rows; row += block_members)
-        out.write_results(plan,
-                          io::read_member_rows(file, scene, plan, row, std::min(block_members, rows - row)));
+    const io::Provenance provenance{first->scene_path, version, revision, first->device,
+                                    launcher::joined({isas.begin(), isas.end()})};
+    if (first->slider) {
+      io::SliderResultFile out(target->temporary(), slider, provenance);
+      for (const auto& path : options.shards) out.copy_done_rows(io::Hdf5Location::open_file(path));
+      out.finish(stats.wall_seconds, stats.threads);
+      out.close();
+      members = slider.member_count();
+    } else {
+      const ensemble::MemberPlan plan(scene);
+      io::ResultFile out(target->temporary(), scene, provenance);
+      for (const auto& path : options.shards) {
+        const auto file = io::Hdf5Location::open_file(path);
+        const std::size_t rows = io::member_rows(file);
+        for (std::size_t row = 0; row < rows; row += block_members)
+          out.write_results(
+              plan, io::read_member_rows(file, scene, plan, row, std::min(block_members, rows - row)));
+      }
+      out.finish(stats);
+      out.close();
+      members = scene.member_count();
     }
-    out.finish(stats);
-    out.close();
     on_signal.reset();
     target->commit();
   } catch (const std::exception& e) {
@@ -167,8 +188,8 @@ int run_merge(const MergeOptions& options) {
               << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";
     return 1;
   }
-  std::fprintf(stderr, "wrote %s: %zu members from %zu shards\n", options.output.c_str(),
-               scene.member_count(), options.shards.size());
+  std::fprintf(stderr, "wrote %s: %zu members from %zu shards\n", options.output.c_str(), members,
+               options.shards.size());
   return 0;
 }
 

@@ -18,6 +18,7 @@
 #include "io/member_stream.hpp"
 #include "io/output_target.hpp"
 #include "io/result_reader.hpp"
+#include "mpi_session.hpp"
 #include "progress_line.hpp"
 #include "run_support.hpp"
 
@@ -29,37 +30,6 @@ bool launched_by_mpi() {
 }
 
 namespace {
-
-/// MPI from construction to destruction; threads call MPI one at a time (MPI_THREAD_SERIALIZED).
-class MpiSession {
- public:
-  MpiSession() {
-    int provided = 0;
-    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-    MPI_Comm_size(MPI_COMM_WORLD, &size_);
-  }
-  ~MpiSession() { MPI_Finalize(); }
-  MpiSession(const MpiSession&) = delete;
-  MpiSession& operator=(const MpiSession&) = delete;
-  int rank() const { return rank_; }
-  int size() const { return size_; }
-  /// Rank 0's value of `value`, on every rank.
-  int broadcast(int value) const {
-    MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    return value;
-  }
-  std::string broadcast(std::string text) const {
-    int length = int(text.size());
-    MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    text.resize(std::size_t(length));
-    MPI_Bcast(text.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
-    return text;
-  }
-
- private:
-  int rank_ = 0, size_ = 1;
-};
 
 /// One counter per variant in a window on rank 0; every rank's threads fetch-and-add them.
 class SharedCounters {
@@ -103,10 +73,6 @@ class SharedCounters {
   std::mutex lock_;
 };
 
-std::string rank_file(const std::string& partial, int rank) {
-  return partial + ".rank-" + std::to_string(rank);
-}
-
 /// Rank 0: the rows each rank marked done, read back a block at a time into `out`; returns the
 /// members joined and removes the rank files.
 std::size_t join_rank_files(const io::ResultFile& out, const ensemble::Scene& scene,
@@ -137,39 +103,14 @@ std::size_t join_rank_files(const io::ResultFile& out, const ensemble::Scene& sc
 int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int threads) {
   MpiSession mpi;
   const bool root = mpi.rank() == 0;
-  if (options.resume || !options.shard.empty()) {
-    if (root)
-      std::cerr
-          << "error: --resume and --shard run in one process; under mpirun the ranks share the whole plan "
-             "(resume an MPI run's partial file without mpirun)\n";
-    return 2;
-  }
-  const std::string path = output_path(options, scene, std::nullopt);
+  const std::string path = output_path(options, scene.output_path, std::nullopt);
   std::optional<io::OutputTarget> target;
-  int status = 0;
   std::string partial;
-  if (root) {
-    try {
-      target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force,
-                     true);
-      partial = target->temporary();
-      if (!options.force && std::filesystem::exists(partial)) {
-        std::cerr
-            << "error: " << partial
-            << " holds the finished members of an earlier run: continue it with --resume (without mpirun), "
-               "or start afresh with --force\n";
-        target->keep();
-        status = 2;
-      } else if (!fits_on_disk(scene, scene.member_count(), partial)) {
-        status = 2;
-      }
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << " (-o or output.path)\n";
-      status = 2;
-    }
-  }
-  if ((status = mpi.broadcast(status)) != 0) return status;
-  partial = mpi.broadcast(partial);
+  if (const int status = prepare_mpi_output(
+          mpi, options, options.resume, options.shard, path, target, partial,
+          [&](const std::string& at) { return fits_on_disk(scene, scene.member_count(), at); });
+      status != 0)
+    return status;
 
   // every rank: the members it takes, streamed into a whole-plan file of its own
   const ensemble::MemberPlan plan(scene);
@@ -258,10 +199,9 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
         target->keep();
         std::fprintf(stderr,
                      "%s: %zu of %zu members done (per rank: %s), kept in %s (complete = FALSE).\n"
-                     "resume with: rotorsweep run %s%s%s --resume\n",
+                     "resume with: %s\n",
                      failed ? "error: a rank failed" : "stopped", joined, plan.size(), shares.c_str(),
-                     partial.c_str(), options.scene.c_str(), options.output.empty() ? "" : " -o ",
-                     options.output.c_str());
+                     partial.c_str(), resume_command("run", options, "").c_str());
         code = failed ? 1 : 128 + (signal_number ? signal_number : SIGINT);
       }
     } catch (const std::exception& e) {

@@ -32,13 +32,13 @@ namespace rotorsweep::apps {
 
 /// -o, else output.path, else SCENE's stem + ".h5" in the working directory; a shard without -o
 /// gets ".shard-I-of-N" before the extension, so that shards do not overwrite each other.
-std::string output_path(const RunOptions& options, const ensemble::Scene& scene,
+std::string output_path(const SceneCommandOptions& options, const std::string& scene_output_path,
                         const std::optional<io::ShardLabel>& shard) {
   if (!options.output.empty()) return options.output;
   std::filesystem::path path =
-      scene.output_path.empty()
+      scene_output_path.empty()
           ? std::filesystem::path(std::filesystem::path(options.scene).stem().string() + ".h5")
-          : std::filesystem::path(scene.output_path);
+          : std::filesystem::path(scene_output_path);
   if (shard) {
     const std::string tag = ".shard-" + std::to_string(shard->index) + "-of-" + std::to_string(shard->count);
     path.replace_filename(path.stem().string() + tag + path.extension().string());
@@ -46,9 +46,6 @@ std::string output_path(const RunOptions& options, const ensemble::Scene& scene,
   return path.string();
 }
 
-namespace {
-
-/// "I/N" with 1 ≤ I ≤ N; nothing for an empty text; throws std::invalid_argument otherwise.
 std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t plan_members) {
   if (text.empty()) return std::nullopt;
   std::size_t index = 0, count = 0;
@@ -58,8 +55,6 @@ std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t p
     throw std::invalid_argument("--shard '" + text + "': must be I/N with 1 <= I <= N (e.g. 2/8)");
   return io::ShardLabel{index, count, plan_members};
 }
-
-}  // namespace
 
 /// Members that did not finish, by status, and finished members whose D is not resolved, read from
 /// the written file a block at a time.
@@ -93,11 +88,7 @@ void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene) 
                                     : "tighten numerics.rtol and atol");
 }
 
-namespace {
-
-/// Checks that `partial` is an unfinished file of this scene, shard and program, and returns its
-/// done mask and the wall time spent on it so far.
-std::vector<char> check_partial(const std::string& partial, const ensemble::Scene& scene,
+std::vector<char> check_partial(const std::string& partial, const std::string& scene_text,
                                 const std::optional<io::ShardLabel>& shard, double& earlier_seconds) {
   if (!std::filesystem::exists(partial))
     throw std::runtime_error("--resume: there is no '" + partial +
@@ -105,7 +96,7 @@ std::vector<char> check_partial(const std::string& partial, const ensemble::Scen
   const auto file = io::Hdf5Location::open_file(partial);
   if (!file.has("members") || !file.open_group("members").has("done") || file.attribute_flag("complete"))
     throw std::runtime_error("--resume: '" + partial + "' is not the partial file of an unfinished run");
-  if (file.attribute_string("scene") != scene.text)
+  if (file.attribute_string("scene") != scene_text)
     throw std::runtime_error("--resume: '" + partial +
                              "' was made from a different scene; run without --resume to start afresh");
   if (io::written_by(file) != program_identity())
@@ -127,11 +118,7 @@ std::vector<char> check_partial(const std::string& partial, const ensemble::Scen
   return io::read_done(file);
 }
 
-}  // namespace
-
-/// Whether the file fits on its disk (its columns are allocated up front); says how much it needs when not.
-bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, const std::string& partial) {
-  const double needed = double(rows) * io::member_row_bytes(io::member_columns(scene));
+bool fits_on_disk(double needed, double members, const std::string& partial, const std::string& advice) {
   std::error_code error;
   auto directory = std::filesystem::absolute(partial, error).parent_path();
   const auto space = std::filesystem::space(directory, error);
@@ -139,10 +126,15 @@ bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, const std::str
   std::fprintf(
       stderr,
       "error: the plan's %.3g members need about %.3g GiB on disk for their results; %s has %.3g GiB "
-      "free. Split the sweep (fewer A, g, replicas per scene, or --shard)%s.\n",
-      double(rows), needed / 0x1p30, directory.c_str(), double(space.available) / 0x1p30,
-      scene.period_series ? " or switch off observables.period_series" : "");
+      "free. %s.\n",
+      members, needed / 0x1p30, directory.c_str(), double(space.available) / 0x1p30, advice.c_str());
   return false;
+}
+
+bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, const std::string& partial) {
+  return fits_on_disk(double(rows) * io::member_row_bytes(io::member_columns(scene)), double(rows), partial,
+                      std::string("Split the sweep (fewer A, g, replicas per scene, or --shard)") +
+                          (scene.period_series ? " or switch off observables.period_series" : ""));
 }
 
 bool fits_in_memory(const ensemble::Scene& scene, int threads) {
@@ -203,16 +195,40 @@ void print_header(const RunOptions& options, const ensemble::Scene& scene, std::
                couplings.open ? "open" : "periodic");
 }
 
-namespace {
-
-std::string resume_command(const RunOptions& options) {
-  std::string command = "rotorsweep run " + options.scene;
-  if (!options.output.empty()) command += " -o " + options.output;
-  if (!options.shard.empty()) command += " --shard " + options.shard;
-  return command + " --resume";
+std::string resume_command(const std::string& command, const SceneCommandOptions& options,
+                           const std::string& shard) {
+  std::string line = "rotorsweep " + command + " " + options.scene;
+  if (!options.output.empty()) line += " -o " + options.output;
+  if (!shard.empty()) line += " --shard " + shard;
+  return line + " --resume";
 }
 
-}  // namespace
+int keep_failed_run(io::OutputTarget& target, const std::string& what, std::size_t done, std::size_t rows,
+                    const std::string& resume) {
+  target.keep();  // the rows marked done are on disk: keep them for --resume, and say so
+  std::fprintf(stderr,
+               "error: %s\n%zu of %zu members are kept in %s (not a result: complete = FALSE); once the "
+               "cause is fixed, resume with: %s\n",
+               what.c_str(), done, rows, target.temporary().c_str(), resume.c_str());
+  return 1;
+}
+
+int keep_stopped_run(io::OutputTarget& target, const std::function<void()>& keep_partial, int signal_number,
+                     std::size_t done, std::size_t rows, const std::string& resume) {
+  const char* name = signal_number == SIGTERM ? "SIGTERM" : "SIGINT";
+  try {
+    keep_partial();
+  } catch (const std::exception& e) {
+    std::cerr << "\nstopped by " << name << "; closing " << target.temporary() << " failed: " << e.what()
+              << "\n";
+  }
+  target.keep();
+  std::fprintf(stderr,
+               "\nstopped by %s: %zu of %zu members done, kept in %s (not a result: complete = FALSE).\n"
+               "resume with: %s\n",
+               name, done, rows, target.temporary().c_str(), resume.c_str());
+  return 128 + (signal_number ? signal_number : SIGINT);
+}
 
 int run_sweep_command(const RunOptions& options) {
   ensemble::Scene scene;
@@ -249,7 +265,7 @@ int run_sweep_command(const RunOptions& options) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
-  const std::string path = output_path(options, scene, shard);
+  const std::string path = output_path(options, scene.output_path, shard);
   std::optional<io::OutputTarget> target;
   try {
     target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force, true);
@@ -285,7 +301,7 @@ int run_sweep_command(const RunOptions& options) {
   double earlier_seconds = 0;
   if (options.resume) {
     try {
-      const auto done = check_partial(partial, scene, shard, earlier_seconds);
+      const auto done = check_partial(partial, scene.text, shard, earlier_seconds);
       file.emplace(io::ResultFile::reopen(partial, scene));
       for (std::size_t row = 0; row < done.size(); ++row)
         if (done[row])
@@ -350,32 +366,20 @@ int run_sweep_command(const RunOptions& options) {
   auto& stats = outcome.statistics;
   stats.wall_seconds += earlier_seconds;
 
-  if (!write_error.empty() || !sweep_error.empty()) {
-    // the rows marked done are on disk: keep them for --resume, and say so
-    target->keep();
-    const std::string what = write_error.empty() ? "the sweep failed: " + sweep_error
-                                                 : "writing " + partial + " failed: " + write_error;
-    std::fprintf(stderr,
-                 "error: %s\n%zu of %zu members are kept in %s (not a result: complete = FALSE); once the "
-                 "cause is fixed, resume with: %s\n",
-                 what.c_str(), done_before, rows, partial.c_str(), resume_command(options).c_str());
-    return 1;
-  }
-  if (outcome.interrupted) {
-    const char* name = signal_number == SIGTERM ? "SIGTERM" : "SIGINT";
-    try {
-      file->keep_partial(done_before, stats);
-      file->close();
-    } catch (const std::exception& e) {
-      std::cerr << "\nstopped by " << name << "; closing " << partial << " failed: " << e.what() << "\n";
-    }
-    target->keep();
-    std::fprintf(stderr,
-                 "\nstopped by %s: %zu of %zu members done, kept in %s (not a result: complete = FALSE).\n"
-                 "resume with: %s\n",
-                 name, done_before, rows, partial.c_str(), resume_command(options).c_str());
-    return 128 + (signal_number ? signal_number : SIGINT);
-  }
+  const std::string resume = resume_command("run", options, options.shard);
+  if (!write_error.empty() || !sweep_error.empty())
+    return keep_failed_run(*target,
+                           write_error.empty() ? "the sweep failed: " + sweep_error
+                                               : "writing " + partial + " failed: " + write_error,
+                           done_before, rows, resume);
+  if (outcome.interrupted)
+    return keep_stopped_run(
+        *target,
+        [&] {
+          file->keep_partial(done_before, stats);
+          file->close();
+        },
+        signal_number, done_before, rows, resume);
 
   try {
     file->finish(stats);
@@ -385,7 +389,7 @@ int run_sweep_command(const RunOptions& options) {
   } catch (const std::exception& e) {
     target->keep();
     std::cerr << "error: finishing " << path << " failed: " << e.what() << "; the members are kept in "
-              << partial << " (complete = FALSE); resume with: " << resume_command(options) << "\n";
+              << partial << " (complete = FALSE); resume with: " << resume << "\n";
     return 1;
   }
   std::fprintf(stderr, "wrote %s%s: %zu members in %s (%s, lane occupancy %.1f %%)\n", path.c_str(),

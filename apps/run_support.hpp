@@ -1,30 +1,57 @@
-// What `rotorsweep run` shares between its single-process and its MPI form: the output path, the
-// header line, the disk-space check, the outcome report, and stopping on SIGINT and SIGTERM.
+// What `rotorsweep run` shares with its MPI form and with `rotorsweep slider`: the output path, shards,
+// partial files to resume, the header line, the disk-space check, the outcome report, stopping on signals.
 #pragma once
 
 #include <atomic>
 #include <csignal>
+#include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "ensemble/rows/scene.hpp"
+#include "ensemble/slider/slider_scene.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/output_target.hpp"
 #include "io/result_file.hpp"
 
 namespace rotorsweep::apps {
 
-/// -o, else output.path, else SCENE's stem + ".h5" in the working directory; a shard without -o
-/// gets ".shard-I-of-N" before the extension, so that shards do not overwrite each other.
-std::string output_path(const RunOptions& options, const ensemble::Scene& scene,
+/// -o, else the scene's output.path, else SCENE's stem + ".h5" in the working directory; a shard
+/// without -o gets ".shard-I-of-N" before the extension, so that shards do not overwrite each other.
+std::string output_path(const SceneCommandOptions& options, const std::string& scene_output_path,
                         const std::optional<io::ShardLabel>& shard);
+/// "I/N" with 1 ≤ I ≤ N; nothing for an empty text; throws std::invalid_argument otherwise.
+std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t plan_members);
+/// Checks that `partial` is an unfinished file of this scene (its text), shard and program, and
+/// returns its done mask and the wall time spent on it so far; throws std::runtime_error saying why not.
+std::vector<char> check_partial(const std::string& partial, const std::string& scene_text,
+                                const std::optional<io::ShardLabel>& shard, double& earlier_seconds);
+/// A streamed run that failed (`what`): its rows marked done stay in the partial file for --resume;
+/// says so and how to resume, and returns exit code 1.
+int keep_failed_run(io::OutputTarget& target, const std::string& what, std::size_t done, std::size_t rows,
+                    const std::string& resume);
+/// A streamed run stopped by SIGINT or SIGTERM: keep_partial() writes its counts and closes the file,
+/// which stays for --resume; says what is kept and how to resume, and returns 128 + the signal.
+int keep_stopped_run(io::OutputTarget& target, const std::function<void()>& keep_partial, int signal_number,
+                     std::size_t done, std::size_t rows, const std::string& resume);
+/// The command line that resumes a run: "rotorsweep COMMAND SCENE [-o OUT] [--shard I/N] --resume".
+std::string resume_command(const std::string& command, const SceneCommandOptions& options,
+                           const std::string& shard);
 /// Members that did not finish, by status, and unresolved D, read from a written file (stderr).
 void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene);
-/// Whether `rows` members' file fits on the disk of `partial`; says how much it needs when not.
+/// Whether `needed` bytes for `members` members' results fit on the disk of `partial`; says how much
+/// they need, and `advice`, when not.
+bool fits_on_disk(double needed, double members, const std::string& partial, const std::string& advice);
+/// fits_on_disk for `rows` members of a row sweep.
 bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, const std::string& partial);
 /// Whether every thread's lane block fits in 80 % of the memory this process may use; says how much
 /// it needs when not.
 bool fits_in_memory(const ensemble::Scene& scene, int threads);
+/// The one-line description of a slider scan on stderr (and the shard's members).
+void print_slider_header(const SliderOptions& options, const ensemble::SliderScene& scene, int threads,
+                         const std::optional<io::ShardLabel>& shard);
 /// The one-line description of the run on stderr.
 void print_header(const RunOptions& options, const ensemble::Scene& scene, std::size_t members, int threads,
                   const std::optional<io::ShardLabel>& shard);
@@ -34,6 +61,8 @@ void print_header(const RunOptions& options, const ensemble::Scene& scene, std::
 bool launched_by_mpi();
 /// `rotorsweep run` as one rank of an MPI job (apps/mpi_run.cpp).
 int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int threads);
+/// `rotorsweep slider` as one rank of an MPI job (apps/mpi_slider.cpp).
+int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& scene, int threads);
 #endif
 
 /// SIGINT and SIGTERM raise the sweep's stop flag while an instance lives (the previous handlers

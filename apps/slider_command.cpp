@@ -1,11 +1,13 @@
 // `rotorsweep slider SCENE`: the experiment's many-body slider over a scan of layer separations
-// (docs/model.md §9); one HDF5 file put in place only when complete, a progress line, a summary;
-// SIGINT or SIGTERM stops it before the next lane block with nothing written (exit 130 or 143).
+// (docs/model.md §9), streamed into OUT.h5.partial as lane blocks finish, like `run`: a progress line,
+// SIGINT or SIGTERM keeps the finished members (exit 130 or 143), --resume, --shard and `merge`.
 
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -24,33 +26,16 @@
 
 namespace rotorsweep::apps {
 
-int run_slider(const SceneCommandOptions& options) {
-  ensemble::SliderScene scene;
-  try {
-    scene = io::parse_slider_scene_file(options.scene);
-  } catch (const io::SceneError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
-  }
-  int threads = 0;
-  try {
-    threads = ensemble::thread_count(options.threads);
-  } catch (const ensemble::ThreadCountError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
-  }
-  const std::string path = options.output.empty() ? scene.output_path : options.output;
-  std::optional<io::OutputTarget> target;
-  try {
-    target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force);
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << " (-o or output.path)\n";
-    return 2;
-  }
+void print_slider_header(const SliderOptions& options, const ensemble::SliderScene& scene, int threads,
+                         const std::optional<io::ShardLabel>& shard) {
   const auto [closest, farthest] = std::minmax_element(scene.separations.begin(), scene.separations.end());
   std::string sizes;
   for (const auto& size : scene.sizes)
     sizes += (sizes.empty() ? "" : ", ") + std::to_string(size.columns) + " × " + std::to_string(size.rows);
+  if (shard)
+    std::fprintf(stderr, "shard %zu/%zu: members %zu, %zu, %zu, ... of the plan's %zu\n", shard->index,
+                 shard->count, shard->index - 1, shard->index - 1 + shard->count,
+                 shard->index - 1 + 2 * shard->count, shard->plan_members);
   std::fprintf(
       stderr,
       "rotorsweep slider %s: %zu members (%zu sizes × %zu separations h = %g … %g mm × %zu replicas), rotors "
@@ -60,37 +45,161 @@ int run_slider(const SceneCommandOptions& options) {
       scene.substrate_rows, scene.overdamped ? "overdamped" : "inertial",
       kernels::stepper_names[scene.stepper].data(), scene.rtol, threads,
       kernels::lane_width<kernels::simd_lane>);
-  ProgressLine progress(scene.member_count(), !options.quiet);
-  const StopOnSignals signals;
-  const auto result = ensemble::run_slider_scan(
-      scene, threads, [&](std::size_t done, std::size_t) { progress.update(done); },
-      [&] { return signals.flag()->load(); });
-  progress.finish();
-  if (result.stopped) {
-    const int number = signals.signal() ? signals.signal() : SIGINT;
-    std::fprintf(stderr, "stopped by %s: nothing written (a slider scan does not resume; run it again)\n",
-                 number == SIGTERM ? "SIGTERM" : "SIGINT");
-    return 128 + number;
+}
+
+namespace {
+
+/// Members that did not finish, by status, and the mean step attempts, read from the written file.
+void report_slider_outcome(const io::Hdf5Location& file, std::string& steps) {
+  const auto members = file.open_group("members");
+  const auto status = members.read_strings("status");
+  const auto accepted = members.read_doubles("steps_accepted"),
+             rejected = members.read_doubles("steps_rejected");
+  double attempts = 0;
+  std::map<std::string, std::size_t> failures;
+  for (std::size_t m = 0; m < status.size(); ++m) {
+    attempts += accepted[m] + rejected[m];
+    if (status[m] != "ok") ++failures[status[m]];
   }
+  char text[64];
+  std::snprintf(text, sizeof text, "%.0f step attempts per member", attempts / double(status.size()));
+  steps = text;
+  if (failures.empty()) return;
+  std::fprintf(stderr, "warning: members that stopped early (their friction is NaN):");
+  for (const auto& [name, count] : failures) std::fprintf(stderr, " %s %zu", name.c_str(), count);
+  std::fprintf(stderr, "; see /members/status\n");
+}
+
+}  // namespace
+
+int run_slider(const SliderOptions& options) {
+  ensemble::SliderScene scene;
   try {
-    io::write_slider_result(
-        target->temporary(), scene, result,
-        io::Provenance{options.scene, version, revision, "cpu", ensemble::instruction_set().name}, threads);
+    scene = io::parse_slider_scene_file(options.scene);
+  } catch (const io::SceneError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+  int threads = 0;
+  std::optional<io::ShardLabel> shard;
+  try {
+    threads = ensemble::thread_count(options.threads);
+    shard = parse_shard(options.shard, scene.member_count());
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+#if ROTORSWEEP_HAVE_MPI
+  if (launched_by_mpi()) return run_slider_mpi(options, scene, threads);
+#endif
+  const std::string path = output_path(options, scene.output_path, shard);
+  std::optional<io::OutputTarget> target;
+  try {
+    target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force, true);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << " (-o or output.path)\n";
+    return 2;
+  }
+  const std::string partial = target->temporary();
+  if (!options.resume && !options.force && std::filesystem::exists(partial)) {
+    std::cerr
+        << "error: " << partial
+        << " holds the finished members of an earlier scan that stopped early: continue it with --resume, "
+           "or start afresh with --force\n";
+    target->keep();
+    return 2;
+  }
+  const std::size_t shard_members =
+      shard ? (scene.member_count() + shard->count - shard->index) / shard->count : scene.member_count();
+  if (!options.resume &&
+      !fits_on_disk(double(shard_members) * (1 + io::table_row_bytes(io::slider_columns(
+                                                     scene, ensemble::slider_timeline(scene)))),
+                    double(shard_members), partial,
+                    "Split the scan (fewer separations or replicas per scene, or --shard) or switch off "
+                    "observables.series"))
+    return 2;
+
+  std::optional<io::SliderResultFile> file;
+  std::vector<std::size_t> to_run;  // plan indices
+  std::size_t done_before = 0;
+  double earlier_seconds = 0;
+  try {
+    if (options.resume) {
+      const auto done = check_partial(partial, scene.text, shard, earlier_seconds);
+      file.emplace(io::SliderResultFile::reopen(partial, scene));
+      for (std::size_t row = 0; row < done.size(); ++row)
+        if (done[row])
+          ++done_before;
+        else
+          to_run.push_back(file->plan_index_of(row));
+    } else {
+      file.emplace(partial, scene,
+                   io::Provenance{options.scene, version, revision, "cpu", ensemble::instruction_set().name},
+                   shard);
+      for (std::size_t row = 0; row < file->rows(); ++row) to_run.push_back(file->plan_index_of(row));
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << (options.resume ? "" : "creating " + partial + " failed: ") << e.what() << "\n";
+    if (options.resume) target->keep();  // the file is not touched
+    return options.resume ? 2 : 1;
+  }
+  const std::size_t rows = file->rows();
+  print_slider_header(options, scene, threads, shard);
+  if (options.resume)
+    std::fprintf(stderr, "resuming from %s: %zu members done, %zu to run\n", partial.c_str(), done_before,
+                 to_run.size());
+
+  ProgressLine progress(to_run.size(), !options.quiet);
+  io::SliderStreamOutcome outcome;
+  std::string sweep_error;
+  int signal_number = 0;
+  {
+    const StopOnSignals signals;
+    try {
+      outcome = io::stream_slider_scan(*file, scene, to_run,
+                                       {threads, [&](std::size_t done) { progress.update(done); },
+                                        [&] { return signals.flag()->load(); }});
+    } catch (const std::bad_alloc&) {
+      sweep_error = "out of memory (an allocation in a worker thread failed)";
+    } catch (const std::exception& e) {
+      sweep_error = e.what();
+    }
+    signal_number = signals.signal();
+  }
+  progress.finish();
+  done_before += outcome.written;
+  const double seconds = earlier_seconds + outcome.seconds;
+  const std::string resume = resume_command("slider", options, options.shard);
+
+  if (!outcome.write_error.empty() || !sweep_error.empty())
+    return keep_failed_run(*target,
+                           outcome.write_error.empty()
+                               ? "the scan failed: " + sweep_error
+                               : "writing " + partial + " failed: " + outcome.write_error,
+                           done_before, rows, resume);
+  if (outcome.stopped)
+    return keep_stopped_run(
+        *target,
+        [&] {
+          file->keep_partial(done_before, seconds, threads);
+          file->close();
+        },
+        signal_number, done_before, rows, resume);
+  std::string steps;
+  try {
+    file->finish(seconds, threads);
+    file->close();
+    report_slider_outcome(io::Hdf5Location::open_file(partial), steps);
     target->commit();
   } catch (const std::exception& e) {
-    std::cerr << "error: writing " << path << " failed: " << e.what() << "; no file was written\n";
+    target->keep();
+    std::cerr << "error: finishing " << path << " failed: " << e.what() << "; the members are kept in "
+              << partial << " (complete = FALSE); resume with: " << resume << "\n";
     return 1;
   }
-  const auto failed = std::count_if(result.members.begin(), result.members.end(),
-                                    [](const ensemble::SliderMember& m) { return m.status != "ok"; });
-  double steps = 0;
-  for (const auto& m : result.members) steps += m.steps_accepted + m.steps_rejected;
-  std::fprintf(stderr, "wrote %s%s: %zu members in %s (%.0f step attempts per member)\n", path.c_str(),
-               target->replaced() ? " (replacing the previous file)" : "", result.members.size(),
-               format_duration(result.seconds).c_str(), steps / double(result.members.size()));
-  if (failed)
-    std::fprintf(stderr, "warning: %ld members stopped early; see /members/status (their friction is NaN)\n",
-                 long(failed));
+  std::fprintf(stderr, "wrote %s%s: %zu members in %s (%s)\n", path.c_str(),
+               target->replaced() ? " (replacing the previous file)" : "", rows,
+               format_duration(seconds).c_str(), steps.c_str());
   return 0;
 }
 

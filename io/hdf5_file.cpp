@@ -238,6 +238,7 @@ void Hdf5Location::create_column(const std::string& name, ColumnType type, const
                                  const std::string& description) const {
   std::vector<hsize_t> dims{shape.rows};
   if (shape.width > 0) dims.push_back(shape.width);
+  if (shape.width > 0 && shape.depth > 0) dims.push_back(shape.depth);
   const Hdf5Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose);
   const auto dcpl = untimed(H5P_DATASET_CREATE);
   H5Pset_layout(dcpl.id(), H5D_CONTIGUOUS);
@@ -265,20 +266,21 @@ void Hdf5Location::write_selected_rows(const std::string& name, const std::vecto
   auto set = open_dataset(name);
   const Hdf5Handle file_space(H5Dget_space(set.id()), H5Sclose);
   const int rank = H5Sget_simple_extent_ndims(file_space.id());
-  hsize_t dims[2] = {0, 1};
+  if (rank > 3) fail("write rows of", name);
+  hsize_t dims[3] = {0, 1, 1};
   H5Sget_simple_extent_dims(file_space.id(), dims, nullptr);
   H5Sselect_none(file_space.id());
   // one hyperslab per run of consecutive rows
   for (std::size_t i = 0; i < rows.size();) {
     std::size_t j = i + 1;
     while (j < rows.size() && rows[j] == rows[j - 1] + 1) ++j;
-    const hsize_t start[2] = {rows[i], 0}, count[2] = {hsize_t(j - i), dims[1]};
+    const hsize_t start[3] = {rows[i], 0, 0}, count[3] = {hsize_t(j - i), dims[1], dims[2]};
     if (rows[j - 1] >= dims[0] ||
         H5Sselect_hyperslab(file_space.id(), H5S_SELECT_OR, start, nullptr, count, nullptr) < 0)
       fail("select rows of", name);
     i = j;
   }
-  const hsize_t memory_dims[2] = {hsize_t(rows.size()), dims[1]};
+  const hsize_t memory_dims[3] = {hsize_t(rows.size()), dims[1], dims[2]};
   const Hdf5Handle memory_space(H5Screate_simple(rank, memory_dims, nullptr), H5Sclose);
   if (H5Dwrite(set.id(), memory_type, memory_space.id(), file_space.id(), H5P_DEFAULT, data) < 0)
     fail("write rows of", name);
@@ -320,10 +322,10 @@ void Hdf5Location::write_rows(const std::string& name, const std::vector<hsize_t
 std::pair<hsize_t, hsize_t> Hdf5Location::shape(const std::string& name) const {
   const auto set = open_dataset(name);
   const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
-  hsize_t dims[2] = {0, 1};
-  if (H5Sget_simple_extent_ndims(space.id()) > 2) fail("read the shape of", name);
+  hsize_t dims[3] = {0, 1, 1};
+  if (H5Sget_simple_extent_ndims(space.id()) > 3) fail("read the shape of", name);
   H5Sget_simple_extent_dims(space.id(), dims, nullptr);
-  return {dims[0], dims[1]};
+  return {dims[0], dims[1] * dims[2]};
 }
 
 void Hdf5Location::read_selected_rows(const std::string& name, hsize_t first, hsize_t count,
@@ -331,11 +333,12 @@ void Hdf5Location::read_selected_rows(const std::string& name, hsize_t first, hs
   const auto set = open_dataset(name);
   const Hdf5Handle file_space(H5Dget_space(set.id()), H5Sclose);
   const int rank = H5Sget_simple_extent_ndims(file_space.id());
-  hsize_t dims[2] = {0, 1};
+  hsize_t dims[3] = {0, 1, 1};
+  if (rank > 3) fail("read rows of", name);
   H5Sget_simple_extent_dims(file_space.id(), dims, nullptr);
   if (first + count > dims[0]) fail("read rows beyond the end of", name);
   if (count == 0) return;
-  const hsize_t start[2] = {first, 0}, counts[2] = {count, dims[1]};
+  const hsize_t start[3] = {first, 0, 0}, counts[3] = {count, dims[1], dims[2]};
   H5Sselect_hyperslab(file_space.id(), H5S_SELECT_SET, start, nullptr, counts, nullptr);
   const Hdf5Handle memory_space(H5Screate_simple(rank, counts, nullptr), H5Sclose);
   if (H5Dread(set.id(), memory_type, memory_space.id(), file_space.id(), H5P_DEFAULT, data) < 0)

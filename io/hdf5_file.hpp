@@ -37,12 +37,13 @@ class Hdf5Handle {
 /// The element type of a pre-sized table column (Hdf5Location::create_column).
 enum class ColumnType { float64, int64, flag, text };
 
-/// A column of a table: `rows` elements, or rows × `width` when width > 0; text columns hold
-/// fixed-length UTF-8 strings of at most text_length bytes.
+/// A column of a table: `rows` elements, or rows × `width` when width > 0, or rows × width ×
+/// `depth` when depth > 0 too; text columns hold fixed-length UTF-8 strings of at most text_length bytes.
 struct ColumnShape {
   hsize_t rows = 0;
   hsize_t width = 0;
   std::size_t text_length = 0;
+  hsize_t depth = 0;
 };
 
 /// A file or group to write into or read from.
@@ -91,13 +92,13 @@ class Hdf5Location {
   void write_rows(const std::string& name, const std::vector<hsize_t>& rows, const signed char* data) const;
   void write_rows(const std::string& name, const std::vector<hsize_t>& rows,
                   const std::vector<std::string>& data) const;
-  /// Rows [first, first + count) of a column (any number of columns per row).
+  /// Rows [first, first + count) of a column (any number of values per row).
   std::vector<double> read_rows_doubles(const std::string& name, hsize_t first, hsize_t count) const;
   std::vector<std::int64_t> read_rows_integers(const std::string& name, hsize_t first, hsize_t count) const;
   std::vector<std::string> read_rows_strings(const std::string& name, hsize_t first, hsize_t count) const;
   /// A flag column as 0 / 1.
   std::vector<signed char> read_flags(const std::string& name) const;
-  /// The number of rows and the row width (1 for a 1-D dataset).
+  /// The number of rows and the values per row (1 for a 1-D dataset).
   std::pair<hsize_t, hsize_t> shape(const std::string& name) const;
 
   std::vector<double> read_doubles(const std::string& name, std::vector<hsize_t>* dims = nullptr) const;

@@ -29,40 +29,6 @@ std::size_t attractor_length(const ensemble::Scene& scene) {
          std::string(":p0").size();
 }
 
-MemberColumn real(std::string name, std::string description,
-                  std::function<double(const Member&, const MemberResult&)> value) {
-  MemberColumn c{std::move(name), ColumnType::float64, 0, 0, std::move(description), {}, {}, {}};
-  c.real = [value = std::move(value)](const Member& m, const MemberResult& r, double* out) {
-    *out = value(m, r);
-  };
-  return c;
-}
-
-MemberColumn integer(std::string name, std::string description,
-                     std::function<std::int64_t(const Member&, const MemberResult&)> value) {
-  MemberColumn c{std::move(name), ColumnType::int64, 0, 0, std::move(description), {}, {}, {}};
-  c.integer = std::move(value);
-  return c;
-}
-
-MemberColumn text(std::string name, std::size_t length, std::string description,
-                  std::function<std::string(const Member&, const MemberResult&)> value) {
-  MemberColumn c{std::move(name), ColumnType::text, 0, length, std::move(description), {}, {}, {}};
-  c.text = std::move(value);
-  return c;
-}
-
-/// A (members × width) column whose row is a vector, NaN beyond its length.
-MemberColumn row_vector(std::string name, hsize_t width, std::string description,
-                        std::function<std::vector<double>(const Member&, const MemberResult&)> value) {
-  MemberColumn c{std::move(name), ColumnType::float64, width, 0, std::move(description), {}, {}, {}};
-  c.real = [value = std::move(value), width](const Member& m, const MemberResult& r, double* out) {
-    const auto values = value(m, r);
-    std::copy_n(values.begin(), std::min<std::size_t>(values.size(), width), out);
-  };
-  return c;
-}
-
 template <class F>
 void for_each_channel(const ensemble::Scene& scene, F&& f) {
   for (std::size_t i = 0; i < ensemble::observable_count; ++i) {
@@ -73,19 +39,26 @@ void for_each_channel(const ensemble::Scene& scene, F&& f) {
 }
 
 void add_plan_axes(std::vector<MemberColumn>& columns) {
-  columns.push_back(real("A", "substrate strength A", [](auto& m, auto&) { return m.A; }));
-  columns.push_back(real("g", "g = damping × drive speed", [](auto& m, auto&) { return m.g; }));
-  columns.push_back(integer("rows", "N", [](auto& m, auto&) { return std::int64_t(m.rows); }));
-  columns.push_back(real("rtol", "relative tolerance", [](auto& m, auto&) { return m.rtol; }));
-  columns.push_back(real("atol", "absolute tolerance", [](auto& m, auto&) { return m.atol; }));
-  columns.push_back(text("ic", longest({"FM", "AFM", "random", "exact"}),
-                         "initial condition kind: FM, AFM, random, exact",
-                         [](auto& m, auto&) { return std::string(ensemble::kind_name(m.kind)); }));
-  columns.push_back(real("noise", "η: FM/AFM starts draw θ_j - θ0 - (π for odd rows in AFM) from U[-η, η]",
-                         [](auto& m, auto&) { return m.noise; }));
-  columns.push_back(real("offset", "θ0 added to FM/AFM starts", [](auto& m, auto&) { return m.offset; }));
-  columns.push_back(integer("replica", "replica index at this (A, g, ic)",
-                            [](auto& m, auto&) { return std::int64_t(m.replica); }));
+  columns.push_back(
+      MemberColumn::real_valued("A", "substrate strength A", [](auto& m, auto&) { return m.A; }));
+  columns.push_back(
+      MemberColumn::real_valued("g", "g = damping × drive speed", [](auto& m, auto&) { return m.g; }));
+  columns.push_back(
+      MemberColumn::integer_valued("rows", "N", [](auto& m, auto&) { return std::int64_t(m.rows); }));
+  columns.push_back(
+      MemberColumn::real_valued("rtol", "relative tolerance", [](auto& m, auto&) { return m.rtol; }));
+  columns.push_back(
+      MemberColumn::real_valued("atol", "absolute tolerance", [](auto& m, auto&) { return m.atol; }));
+  columns.push_back(MemberColumn::text_valued(
+      "ic", longest({"FM", "AFM", "random", "exact"}), "initial condition kind: FM, AFM, random, exact",
+      [](auto& m, auto&) { return std::string(ensemble::kind_name(m.kind)); }));
+  columns.push_back(MemberColumn::real_valued(
+      "noise", "η: FM/AFM starts draw θ_j - θ0 - (π for odd rows in AFM) from U[-η, η]",
+      [](auto& m, auto&) { return m.noise; }));
+  columns.push_back(MemberColumn::real_valued("offset", "θ0 added to FM/AFM starts",
+                                              [](auto& m, auto&) { return m.offset; }));
+  columns.push_back(MemberColumn::integer_valued("replica", "replica index at this (A, g, ic)",
+                                                 [](auto& m, auto&) { return std::int64_t(m.replica); }));
 }
 
 void add_outcome(std::vector<MemberColumn>& columns, const ensemble::Scene& scene) {
@@ -93,57 +66,60 @@ void add_outcome(std::vector<MemberColumn>& columns, const ensemble::Scene& scen
   for_each_channel(scene, [&](const ensemble::ChannelDeclaration& channel) {
     for (std::size_t k = 0; k < channel.summary_count; ++k) {
       const auto& summary = channel.summaries[k];
-      columns.push_back(real(std::string(summary.column), std::string(summary.description) + averaged,
-                             [summary, channel](auto&, const MemberResult& r) {
-                               return r.summary(summary.summary, channel.channel);
-                             }));
+      columns.push_back(MemberColumn::real_valued(std::string(summary.column),
+                                                  std::string(summary.description) + averaged,
+                                                  [summary, channel](auto&, const MemberResult& r) {
+                                                    return r.summary(summary.summary, channel.channel);
+                                                  }));
     }
   });
   if (scene.classifies_regimes())
-    columns.push_back(text("regime", longest({"FM", "AFM", "CP", "unsettled"}),
-                           "FM, AFM, CP or unsettled (README: regime rule)",
-                           [](auto&, auto& r) { return std::string(ensemble::regime_name(r.regime)); }));
-  columns.push_back(text("status", longest({"ok", "non_finite", "step_underflow", "step_budget"}),
-                         "ok, non_finite, step_underflow or step_budget",
-                         [](auto&, auto& r) { return std::string(kernels::status_name(r.status)); }));
+    columns.push_back(MemberColumn::text_valued(
+        "regime", longest({"FM", "AFM", "CP", "unsettled"}), "FM, AFM, CP or unsettled (README: regime rule)",
+        [](auto&, auto& r) { return std::string(ensemble::regime_name(r.regime)); }));
+  columns.push_back(
+      MemberColumn::text_valued("status", longest({"ok", "non_finite", "step_underflow", "step_budget"}),
+                                "ok, non_finite, step_underflow or step_budget",
+                                [](auto&, auto& r) { return std::string(kernels::status_name(r.status)); }));
   if (scene.has(ensemble::Observable::dissipation))
-    columns.push_back(integer("dissipation_resolved",
-                              "1 when D is resolved: status ok and dissipation_error < 0.1 |D|",
-                              [](auto&, auto& r) { return std::int64_t(r.dissipation_resolved()); }));
-  columns.push_back(integer("settled",
-                            "1 when the schedule ended as planned (steady_tol reached, or fixed schedule)",
-                            [](auto&, auto& r) { return std::int64_t(r.settled); }));
-  columns.push_back(integer("periods_run", "drive periods completed",
-                            [](auto&, auto& r) { return std::int64_t(r.periods_run); }));
-  columns.push_back(integer("steps_accepted", "accepted steps",
-                            [](auto&, auto& r) { return std::int64_t(r.steps_accepted); }));
-  columns.push_back(integer("steps_rejected", "rejected steps",
-                            [](auto&, auto& r) { return std::int64_t(r.steps_rejected); }));
+    columns.push_back(MemberColumn::integer_valued(
+        "dissipation_resolved", "1 when D is resolved: status ok and dissipation_error < 0.1 |D|",
+        [](auto&, auto& r) { return std::int64_t(r.dissipation_resolved()); }));
+  columns.push_back(MemberColumn::integer_valued(
+      "settled", "1 when the schedule ended as planned (steady_tol reached, or fixed schedule)",
+      [](auto&, auto& r) { return std::int64_t(r.settled); }));
+  columns.push_back(MemberColumn::integer_valued("periods_run", "drive periods completed",
+                                                 [](auto&, auto& r) { return std::int64_t(r.periods_run); }));
+  columns.push_back(MemberColumn::integer_valued(
+      "steps_accepted", "accepted steps", [](auto&, auto& r) { return std::int64_t(r.steps_accepted); }));
+  columns.push_back(MemberColumn::integer_valued(
+      "steps_rejected", "rejected steps", [](auto&, auto& r) { return std::int64_t(r.steps_rejected); }));
 }
 
 void add_angles_and_disorder(std::vector<MemberColumn>& columns, const ensemble::Scene& scene) {
   const hsize_t width = scene.max_rows();
   const std::string rows = " (members × largest N; NaN beyond a member's rows)";
-  columns.push_back(
-      row_vector("theta_initial", width, "θ_j at t = 0, as drawn from the member's stream" + rows,
-                 [scene](const Member& m, auto&) { return ensemble::member_initial_angles(scene, m); }));
-  columns.push_back(row_vector("theta_final", width, "θ_j at the end, in [0, 2π)" + rows,
-                               [](auto&, const MemberResult& r) { return r.theta_final; }));
+  columns.push_back(MemberColumn::vector_valued(
+      "theta_initial", width, "θ_j at t = 0, as drawn from the member's stream" + rows,
+      [scene](const Member& m, auto&) { return ensemble::member_initial_angles(scene, m); }));
+  columns.push_back(MemberColumn::vector_valued("theta_final", width, "θ_j at the end, in [0, 2π)" + rows,
+                                                [](auto&, const MemberResult& r) { return r.theta_final; }));
   const auto& disorder = scene.disorder;
   const auto deviations = [disorder](const Member& m) {
     return ensemble::row_deviations(disorder, m.rows, m.replica);
   };
   if (disorder.A > 0 || !disorder.A_rows.empty())
-    columns.push_back(row_vector("disorder_A", width, "δ_j: row j's substrate strength is A (1 + δ_j)" + rows,
-                                 [deviations](const Member& m, auto&) { return deviations(m).A; }));
+    columns.push_back(MemberColumn::vector_valued(
+        "disorder_A", width, "δ_j: row j's substrate strength is A (1 + δ_j)" + rows,
+        [deviations](const Member& m, auto&) { return deviations(m).A; }));
   if (disorder.anisotropy > 0 || !disorder.anisotropy_rows.empty())
-    columns.push_back(row_vector("disorder_anisotropy", width,
-                                 "α_j: row j's anisotropy is (3/2)(1 + α_j)" + rows,
-                                 [deviations](const Member& m, auto&) { return deviations(m).anisotropy; }));
+    columns.push_back(MemberColumn::vector_valued(
+        "disorder_anisotropy", width, "α_j: row j's anisotropy is (3/2)(1 + α_j)" + rows,
+        [deviations](const Member& m, auto&) { return deviations(m).anisotropy; }));
   if (disorder.coupling > 0 || !disorder.coupling_rows.empty())
-    columns.push_back(row_vector("disorder_coupling", width,
-                                 "β_j: the coupling of rows j and j+1 is 1 + β_j" + rows,
-                                 [deviations](const Member& m, auto&) { return deviations(m).coupling; }));
+    columns.push_back(MemberColumn::vector_valued(
+        "disorder_coupling", width, "β_j: the coupling of rows j and j+1 is 1 + β_j" + rows,
+        [deviations](const Member& m, auto&) { return deviations(m).coupling; }));
 }
 
 /// R_j per row and the alignment per link (docs/model.md §3, "Row profiles").
@@ -151,58 +127,63 @@ void add_row_profiles(std::vector<MemberColumn>& columns, const ensemble::Scene&
   const hsize_t width = scene.max_rows();
   const std::string averaged =
       ", mean over the averaged periods (members × largest N; NaN beyond a member's ";
-  columns.push_back(row_vector("row_dissipation", width,
-                               "D_j = A_j ∫ sin(θ_j - t) dt per period, row j's share of D" + averaged +
-                                   "rows, or when status is not ok)",
-                               [](auto&, const MemberResult& r) { return r.row_dissipation; }));
   columns.push_back(
-      row_vector("link_alignment", width,
-                 "time mean of cos²((θ_j - θ_{j+1})/2) on link j (N links periodic, N - 1 open)" + averaged +
-                     "links, or when status is not ok)",
-                 [](auto&, const MemberResult& r) { return r.link_alignment; }));
+      MemberColumn::vector_valued("row_dissipation", width,
+                                  "D_j = A_j ∫ sin(θ_j - t) dt per period, row j's share of D" + averaged +
+                                      "rows, or when status is not ok)",
+                                  [](auto&, const MemberResult& r) { return r.row_dissipation; }));
+  columns.push_back(MemberColumn::vector_valued(
+      "link_alignment", width,
+      "time mean of cos²((θ_j - θ_{j+1})/2) on link j (N links periodic, N - 1 open)" + averaged +
+          "links, or when status is not ok)",
+      [](auto&, const MemberResult& r) { return r.link_alignment; }));
 }
 
 /// The final-state classification of every member (docs/model.md §3, "Final states").
 void add_final_state(std::vector<MemberColumn>& columns, const ensemble::Scene& scene) {
-  columns.push_back(real("sublattice_deviation",
-                         "largest distance (rad) of a row from its sublattice's circular mean at the last "
-                         "period ends",
-                         [](auto&, auto& r) { return r.final_state.sublattice_deviation; }));
-  columns.push_back(integer("domain_walls",
-                            "domain walls: sign changes of cos(θ_j - θ_{j+1}) around the ring, halved",
-                            [](auto&, auto& r) { return std::int64_t(r.final_state.domain_walls); }));
-  columns.push_back(integer("detached_rows",
-                            "rows farther than π/4 from the mean of the rest of their sublattice at the last "
-                            "period end",
-                            [](auto&, auto& r) { return std::int64_t(r.final_state.detached_rows); }));
-  columns.push_back(integer("orbit_period", "periods after which the state repeats (1..3; 0: not within 3)",
-                            [](auto&, auto& r) { return std::int64_t(r.final_state.orbit_period); }));
-  columns.push_back(integer("angle_groups",
-                            "clusters of the final angles on the circle (split at gaps > 0.1 rad)",
-                            [](auto&, auto& r) { return std::int64_t(r.final_state.angle_groups); }));
-  columns.push_back(integer("stray_rows", "rows outside the two largest clusters of final angles",
-                            [](auto&, auto& r) { return std::int64_t(r.final_state.stray_rows); }));
-  columns.push_back(row_vector(
+  columns.push_back(MemberColumn::real_valued(
+      "sublattice_deviation",
+      "largest distance (rad) of a row from its sublattice's circular mean at the last "
+      "period ends",
+      [](auto&, auto& r) { return r.final_state.sublattice_deviation; }));
+  columns.push_back(MemberColumn::integer_valued(
+      "domain_walls", "domain walls: sign changes of cos(θ_j - θ_{j+1}) around the ring, halved",
+      [](auto&, auto& r) { return std::int64_t(r.final_state.domain_walls); }));
+  columns.push_back(MemberColumn::integer_valued(
+      "detached_rows",
+      "rows farther than π/4 from the mean of the rest of their sublattice at the last "
+      "period end",
+      [](auto&, auto& r) { return std::int64_t(r.final_state.detached_rows); }));
+  columns.push_back(MemberColumn::integer_valued(
+      "orbit_period", "periods after which the state repeats (1..3; 0: not within 3)",
+      [](auto&, auto& r) { return std::int64_t(r.final_state.orbit_period); }));
+  columns.push_back(MemberColumn::integer_valued(
+      "angle_groups", "clusters of the final angles on the circle (split at gaps > 0.1 rad)",
+      [](auto&, auto& r) { return std::int64_t(r.final_state.angle_groups); }));
+  columns.push_back(
+      MemberColumn::integer_valued("stray_rows", "rows outside the two largest clusters of final angles",
+                                   [](auto&, auto& r) { return std::int64_t(r.final_state.stray_rows); }));
+  columns.push_back(MemberColumn::vector_valued(
       "sublattice_angles", 2, "circular means of the even and odd rows at the last period end, in [0, 2π)",
       [](auto&, auto& r) {
         return std::vector<double>{r.final_state.sublattice_even, r.final_state.sublattice_odd};
       }));
-  columns.push_back(text("attractor", attractor_length(scene),
-                         "<regime>:<structure>:p<period>, or failed (docs/model.md §3)",
-                         [](auto&, auto& r) { return r.final_state.attractor; }));
+  columns.push_back(MemberColumn::text_valued("attractor", attractor_length(scene),
+                                              "<regime>:<structure>:p<period>, or failed (docs/model.md §3)",
+                                              [](auto&, auto& r) { return r.final_state.attractor; }));
 }
 
 void add_period_series(std::vector<MemberColumn>& columns, const ensemble::Scene& scene) {
   const hsize_t width = period_series_width(scene);
   for_each_channel(scene, [&](const ensemble::ChannelDeclaration& channel) {
-    columns.push_back(row_vector("periods/" + std::string(channel.column), width,
-                                 std::string(channel.description) + " (members × periods)",
-                                 [channel](auto&, const MemberResult& r) {
-                                   std::vector<double> values;
-                                   for (const auto& record : r.periods)
-                                     values.push_back(record[channel.channel]);
-                                   return values;
-                                 }));
+    columns.push_back(MemberColumn::vector_valued("periods/" + std::string(channel.column), width,
+                                                  std::string(channel.description) + " (members × periods)",
+                                                  [channel](auto&, const MemberResult& r) {
+                                                    std::vector<double> values;
+                                                    for (const auto& record : r.periods)
+                                                      values.push_back(record[channel.channel]);
+                                                    return values;
+                                                  }));
   });
 }
 
@@ -225,55 +206,15 @@ std::vector<MemberColumn> member_columns(const ensemble::Scene& scene) {
 }
 
 double member_row_bytes(const std::vector<MemberColumn>& columns) {
-  double bytes = 1;  // the done flag
-  for (const auto& column : columns)
-    bytes += double(std::max<hsize_t>(column.width, 1)) *
-             double(column.type == ColumnType::text ? column.text_length : 8);
-  return bytes;
+  return 1 + table_row_bytes(columns);  // and the done flag
 }
 
 void create_member_columns(const Hdf5Location& members, const std::vector<MemberColumn>& columns,
                            hsize_t rows) {
-  bool periods = false;
-  for (const auto& column : columns) {
-    if (!periods && column.name.starts_with("periods/")) {
-      members.create_group("periods").set_attribute("fill", std::string("NaN beyond a member's periods_run"));
-      periods = true;
-    }
-    members.create_column(column.name, column.type, {rows, column.width, column.text_length},
-                          column.description);
-  }
-}
-
-void write_member_rows(const Hdf5Location& members, const std::vector<MemberColumn>& columns,
-                       const std::vector<hsize_t>& rows, const std::vector<Member>& plan_members,
-                       const std::vector<MemberResult>& results) {
-  const std::size_t n = rows.size();
-  for (const auto& column : columns) {
-    switch (column.type) {
-      case ColumnType::float64: {
-        const std::size_t width = std::max<std::size_t>(column.width, 1);
-        std::vector<double> values(n * width, std::numeric_limits<double>::quiet_NaN());
-        for (std::size_t i = 0; i < n; ++i)
-          column.real(plan_members[i], results[i], values.data() + i * width);
-        members.write_rows(column.name, rows, values.data());
-        break;
-      }
-      case ColumnType::int64: {
-        std::vector<std::int64_t> values(n);
-        for (std::size_t i = 0; i < n; ++i) values[i] = column.integer(plan_members[i], results[i]);
-        members.write_rows(column.name, rows, values.data());
-        break;
-      }
-      case ColumnType::text: {
-        std::vector<std::string> values(n);
-        for (std::size_t i = 0; i < n; ++i) values[i] = column.text(plan_members[i], results[i]);
-        members.write_rows(column.name, rows, values);
-        break;
-      }
-      case ColumnType::flag: break;
-    }
-  }
+  if (std::any_of(columns.begin(), columns.end(),
+                  [](const MemberColumn& c) { return c.name.starts_with("periods/"); }))
+    members.create_group("periods").set_attribute("fill", std::string("NaN beyond a member's periods_run"));
+  create_table_columns(members, columns, rows);
 }
 
 }  // namespace rotorsweep::io

@@ -1,72 +1,84 @@
-// Writes a slider scan: /members (one row per member), /series (members × samples), /curve (per separation:
-// replica mean and spread of the friction and order parameters) and the provenance attributes.
+// Writes a slider scan as its lane blocks finish: /members (one row per member), /series (members × samples),
+// /curve (per separation: replica mean and spread of the friction and order parameters) at the end.
 #include "io/slider_result_file.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
-#include "io/hdf5_file.hpp"
+#include "ensemble/engine/replica_statistics.hpp"
+#include "kernels/steppers/lane_status.hpp"
 
 namespace rotorsweep::io {
 
 namespace {
 
 using ensemble::SliderMember;
+using Column = SliderColumn;
 
-/// One value per member.
-template <class F>
-std::vector<double> column(const ensemble::SliderResult& result, F&& value) {
-  std::vector<double> out;
-  for (const auto& m : result.members) out.push_back(value(m));
-  return out;
+/// A per-member vector as a column of `width` (× `depth`) values.
+Column vector_column(std::string name, hsize_t width, std::string description,
+                     std::vector<double> SliderMember::*field, hsize_t depth = 0) {
+  return Column::vector_valued(
+      std::move(name), width, std::move(description), [field](const SliderMember& m) { return m.*field; },
+      depth);
 }
 
-/// A members × width table from one vector per member.
-std::vector<double> table(const ensemble::SliderResult& result, std::vector<double> SliderMember::*field) {
-  std::vector<double> out;
-  for (const auto& m : result.members) out.insert(out.end(), (m.*field).begin(), (m.*field).end());
-  return out;
+std::size_t status_length() {
+  std::size_t length = 0;
+  for (const auto status : {kernels::LaneStatus::ok, kernels::LaneStatus::non_finite,
+                            kernels::LaneStatus::step_underflow, kernels::LaneStatus::step_budget})
+    length = std::max(length, kernels::status_name(status).size());
+  return length;
 }
 
 /// Per (size, separation): the replicas' mean and spread of the friction, the order parameters, and the
-/// row model's A at that separation.
-void write_curve(const Hdf5Location& curve, const ensemble::SliderScene& scene,
-                 const ensemble::SliderResult& result) {
-  std::vector<double> separation, friction, spread, order_x, order_y, paper_A, field_A;
+/// row model's A at that separation, from the members' rows of a complete file.
+void write_curve(const Hdf5Location& file, const ensemble::SliderScene& scene) {
+  const auto members = file.open_group("members");
+  const auto friction_of = members.read_doubles("friction"), order_x_of = members.read_doubles("order_x"),
+             order_y_of = members.read_doubles("order_y");
+  const auto status = members.read_strings("status");
+  std::vector<double> separation, friction, spread, sem, order_x, order_y, paper_A, field_A;
   std::vector<std::int64_t> columns, rows, valid;
   for (std::size_t z = 0; z < scene.sizes.size(); ++z)
     for (std::size_t s = 0; s < scene.separations.size(); ++s) {
       const auto size = scene.sizes[z];
       const double h = scene.separations[s];
-      double sum = 0, sum2 = 0, sx = 0, sy = 0;
-      std::int64_t count = 0;
-      for (std::size_t r = 0; r < scene.replicas; ++r) {
-        const auto& m = result.members[(z * scene.separations.size() + s) * scene.replicas + r];
-        if (m.status != "ok") continue;
-        sum += m.friction;
-        sum2 += m.friction * m.friction;
-        sx += m.order_x;
-        sy += m.order_y;
-        ++count;
-      }
-      const double n = double(count);
+      const std::size_t first = (z * scene.separations.size() + s) * scene.replicas;
+      const auto ok = [&](std::size_t r) { return status[first + r] == "ok"; };
+      const auto f = ensemble::replica_statistics(
+          scene.replicas, [&](std::size_t r) { return friction_of[first + r]; }, ok);
+      const auto x = ensemble::replica_statistics(
+          scene.replicas, [&](std::size_t r) { return order_x_of[first + r]; }, ok);
+      const auto y = ensemble::replica_statistics(
+          scene.replicas, [&](std::size_t r) { return order_y_of[first + r]; }, ok);
+      const double n = double(f.count);
       separation.push_back(h);
       columns.push_back(std::int64_t(size.columns));
       rows.push_back(std::int64_t(size.rows));
-      friction.push_back(count ? sum / n : std::nan(""));
-      spread.push_back(count > 1 ? std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1))) : std::nan(""));
-      order_x.push_back(count ? sx / n : std::nan(""));
-      order_y.push_back(count ? sy / n : std::nan(""));
-      valid.push_back(count);
+      friction.push_back(f.mean);
+      spread.push_back(f.count > 1 ? f.std * std::sqrt(n / (n - 1)) : std::nan(""));
+      sem.push_back(f.sem);
+      order_x.push_back(x.mean);
+      order_y.push_back(y.mean);
+      valid.push_back(std::int64_t(f.count));
       paper_A.push_back(ensemble::paper_drive_amplitude(scene, h));
       field_A.push_back(ensemble::field_drive_amplitude(scene, size, h));
     }
+  const auto curve = file.create_group("curve");
   curve.write("separation", separation, {}, "layer separation h, m");
   curve.write("columns", columns, "the slider's rotors along x");
   curve.write("rows", rows, "the slider's rotors along y");
   curve.write("friction", friction, {}, "mean drive force over the replicas, N (NaN: no replica finished)");
-  curve.write("friction_std", spread, {}, "standard deviation over the replicas, N (NaN below 2 replicas)");
+  curve.write("friction_std", spread, {},
+              "sample standard deviation over the replicas (÷ (n − 1)), N (NaN below 2 replicas)");
+  curve.write("friction_sem", sem, {},
+              "standard error of friction: population spread / √(n − 1) over the replicas that finished, the "
+              "statistic of every result file's curves (README \"Output file\"), N (NaN below 2 replicas)");
   curve.write("order_x", order_x, {}, "mean alignment of x-neighbours, cos(θ_i − θ_j), while sliding");
   curve.write("order_y", order_y, {}, "mean alignment of y-neighbours while sliding");
   curve.write("replicas", valid, "replicas that finished (status ok)");
@@ -77,77 +89,207 @@ void write_curve(const Hdf5Location& curve, const ensemble::SliderScene& scene,
 
 }  // namespace
 
-void write_slider_result(const std::string& path, const ensemble::SliderScene& scene,
-                         const ensemble::SliderResult& result, const Provenance& provenance, int threads) {
-  auto file = Hdf5Location::create_file(path);
-  const ensemble::SliderUnits units(scene);
-  file.set_attribute("kind", std::string("slider"));
-  write_provenance(file, scene.text, provenance);
-  file.set_attribute("period", result.period);
-  file.set_attribute("spacing", scene.spacing);
-  file.set_attribute("g", scene.damping / (units.energy * units.time));
-  file.set_attribute("periods", std::int64_t(result.periods));
-  file.set_attribute("energy_unit", units.energy);
-  file.set_attribute("time_unit", units.time);
-  file.set_attribute("wall_seconds", result.seconds);
-  file.set_attribute("threads", std::int64_t(threads));
+std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
+                                         const ensemble::SliderTimeline& timeline) {
+  const hsize_t periods = timeline.periods, samples = timeline.sample_times.size();
+  std::vector<Column> c;
+  c.push_back(Column::real_valued("members/separation", "layer separation h, m",
+                                  [](const SliderMember& m) { return m.separation; }));
+  c.push_back(Column::integer_valued("members/columns", "the slider's rotors along x",
+                                     [](const SliderMember& m) { return std::int64_t(m.size.columns); }));
+  c.push_back(Column::integer_valued("members/rows", "the slider's rotors along y",
+                                     [](const SliderMember& m) { return std::int64_t(m.size.rows); }));
+  c.push_back(Column::integer_valued("members/replica", "replica index at this size and separation",
+                                     [](const SliderMember& m) { return std::int64_t(m.index.replica); }));
+  c.push_back(Column::real_valued(
+      "members/friction",
+      "mean drive force over the whole periods of sliding, N (NaN where status is not ok)",
+      [](const SliderMember& m) { return m.friction; }));
+  c.push_back(Column::real_valued("members/order_x",
+                                  "mean over the sliding samples of cos(θ_i − θ_j) for x-neighbours",
+                                  [](const SliderMember& m) { return m.order_x; }));
+  c.push_back(Column::real_valued("members/order_y",
+                                  "mean over the sliding samples of cos(θ_i − θ_j) for y-neighbours",
+                                  [](const SliderMember& m) { return m.order_y; }));
+  c.push_back(Column::real_valued("members/steps_accepted", "accepted steps",
+                                  [](const SliderMember& m) { return m.steps_accepted; }));
+  c.push_back(Column::real_valued("members/steps_rejected", "rejected steps",
+                                  [](const SliderMember& m) { return m.steps_rejected; }));
+  c.push_back(Column::text_valued("members/status", status_length(),
+                                  "ok, or why the member stopped (its values are then NaN or partial)",
+                                  [](const SliderMember& m) { return m.status; }));
+  c.push_back(vector_column("members/period_friction", periods,
+                            "mean drive force per substrate period a/v, N", &SliderMember::period_friction));
+  c.push_back(vector_column("members/period_work", periods, "work of the drive per period, J",
+                            &SliderMember::period_work));
+  c.push_back(vector_column("members/period_dissipation", periods, "γ ∫ Σ θ̇² dt per period, J",
+                            &SliderMember::period_dissipation));
+  c.push_back(vector_column("members/period_stored", periods,
+                            "change of magnetic plus kinetic energy over the period, J",
+                            &SliderMember::period_stored));
+  c.push_back(
+      vector_column("members/period_balance", periods,
+                    "(work − dissipation − stored) / max(|work|, dissipation): the energy balance's residual",
+                    &SliderMember::period_balance));
+  if (!scene.series) return c;
+  c.push_back(vector_column("series/friction", samples, "drive force F = ∂E/∂x_s, N",
+                            &SliderMember::friction_series));
+  c.push_back(vector_column("series/order_x", samples, "mean cos(θ_i − θ_j) over x-neighbours",
+                            &SliderMember::order_x_series));
+  c.push_back(vector_column("series/order_y", samples, "mean cos(θ_i − θ_j) over y-neighbours",
+                            &SliderMember::order_y_series));
+  c.push_back(vector_column("series/energy", samples, "magnetic plus kinetic energy, J",
+                            &SliderMember::energy_series));
+  if (scene.angles)
+    c.push_back(vector_column("series/angles", samples,
+                              "θ of rotor j·columns + i (column i along x, row j), rad, unwrapped",
+                              &SliderMember::angles, hsize_t(scene.sizes.front().rotors())));
+  return c;
+}
 
-  const auto members = file.create_group("members");
-  const hsize_t count = result.members.size(), periods = result.periods;
-  members.write("separation", column(result, [](const SliderMember& m) { return m.separation; }), {},
-                "layer separation h, m");
-  std::vector<std::int64_t> columns, rows, replica;
-  for (const auto& m : result.members) {
-    columns.push_back(std::int64_t(m.size.columns));
-    rows.push_back(std::int64_t(m.size.rows));
-    replica.push_back(std::int64_t(m.index.replica));
-  }
-  members.write("columns", columns, "the slider's rotors along x");
-  members.write("rows", rows, "the slider's rotors along y");
-  members.write("replica", replica, "replica index at this size and separation");
-  members.write("friction", column(result, [](const SliderMember& m) { return m.friction; }), {},
-                "mean drive force over the whole periods of sliding, N (NaN where status is not ok)");
-  members.write("order_x", column(result, [](const SliderMember& m) { return m.order_x; }), {},
-                "mean over the sliding samples of cos(θ_i − θ_j) for x-neighbours");
-  members.write("order_y", column(result, [](const SliderMember& m) { return m.order_y; }), {},
-                "mean over the sliding samples of cos(θ_i − θ_j) for y-neighbours");
-  members.write("steps_accepted", column(result, [](const SliderMember& m) { return m.steps_accepted; }));
-  members.write("steps_rejected", column(result, [](const SliderMember& m) { return m.steps_rejected; }));
-  std::vector<std::string> status;
-  for (const auto& m : result.members) status.push_back(m.status);
-  members.write("status", status, "ok, or why the member stopped (its values are then NaN or partial)");
-  members.write("period_friction", table(result, &SliderMember::period_friction), {count, periods},
-                "mean drive force per substrate period a/v, N");
-  members.write("period_work", table(result, &SliderMember::period_work), {count, periods},
-                "work of the drive per period, J");
-  members.write("period_dissipation", table(result, &SliderMember::period_dissipation), {count, periods},
-                "γ ∫ Σ θ̇² dt per period, J");
-  members.write("period_stored", table(result, &SliderMember::period_stored), {count, periods},
-                "change of magnetic plus kinetic energy over the period, J");
-  members.write("period_balance", table(result, &SliderMember::period_balance), {count, periods},
-                "(work − dissipation − stored) / max(|work|, dissipation): the energy balance's residual");
+SliderResultFile::SliderResultFile(const std::string& path, const ensemble::SliderScene& scene,
+                                   const Provenance& provenance, const std::optional<ShardLabel>& shard)
+    : SliderResultFile(Hdf5Location::create_file(path), scene, shard) {
+  create(provenance);
+  settle_on_disk(path);
+}
 
-  if (scene.series) {
-    const auto series = file.create_group("series");
-    const hsize_t samples = result.sample_times.size();
-    series.write("time", result.sample_times, {},
-                 "s since the start of the rest; sliding starts at drive.rest");
-    series.write("friction", table(result, &SliderMember::friction_series), {count, samples},
-                 "drive force F = ∂E/∂x_s, N");
-    series.write("order_x", table(result, &SliderMember::order_x_series), {count, samples},
-                 "mean cos(θ_i − θ_j) over x-neighbours");
-    series.write("order_y", table(result, &SliderMember::order_y_series), {count, samples},
-                 "mean cos(θ_i − θ_j) over y-neighbours");
-    series.write("energy", table(result, &SliderMember::energy_series), {count, samples},
-                 "magnetic plus kinetic energy, J");
-    if (scene.angles)
-      series.write("angles", table(result, &SliderMember::angles),
-                   {count, samples, hsize_t(scene.sizes.front().rotors())},
-                   "θ of rotor j·columns + i (column i along x, row j), rad, unwrapped");
+SliderResultFile SliderResultFile::reopen(const std::string& path, const ensemble::SliderScene& scene) {
+  auto location = Hdf5Location::open_file_for_writing(path);
+  auto shard = shard_label(location);
+  SliderResultFile file(std::move(location), scene, shard);
+  file.on_disk_ = true;
+  file.check_reopened();
+  return file;
+}
+
+SliderResultFile::SliderResultFile(Hdf5Location file, const ensemble::SliderScene& scene,
+                                   std::optional<ShardLabel> shard)
+    : MemberTableFile(std::move(file), scene.member_count(), shard),
+      scene_(scene),
+      timeline_(ensemble::slider_timeline(scene)),
+      columns_(slider_columns(scene, timeline_)) {}
+
+void SliderResultFile::create(const Provenance& provenance) const {
+  const ensemble::SliderUnits units(scene_);
+  file_.set_attribute("kind", std::string("slider"));
+  create_table(scene_.text, provenance);
+  file_.set_attribute("period", timeline_.period);
+  file_.set_attribute("spacing", scene_.spacing);
+  file_.set_attribute("g", scene_.damping / (units.energy * units.time));
+  file_.set_attribute("periods", std::int64_t(timeline_.periods));
+  file_.set_attribute("energy_unit", units.energy);
+  file_.set_attribute("time_unit", units.time);
+  file_.set_attribute("wall_seconds", 0.0);
+  file_.set_attribute("threads", std::int64_t(0));
+  create_table_columns(file_, columns_, rows_);
+  if (scene_.series)
+    file_.open_group("series").write("time", timeline_.sample_times, {},
+                                     "s since the start of the rest; sliding starts at drive.rest");
+}
+
+void SliderResultFile::write_members(const std::vector<ensemble::SliderMember>& members) const {
+  if (members.empty()) return;
+  std::vector<ensemble::SliderMember> sorted(members);
+  std::sort(sorted.begin(), sorted.end(),
+            [](const auto& a, const auto& b) { return a.plan_index < b.plan_index; });
+  std::vector<hsize_t> rows;
+  for (const auto& m : sorted) rows.push_back(row_of(m.plan_index));
+  write_table_rows(file_, columns_, rows, sorted);
+  mark_done(rows);
+}
+
+std::size_t SliderResultFile::copy_done_rows(const Hdf5Location& source) const {
+  constexpr hsize_t block = 256;
+  const auto members = source.open_group("members");
+  const auto done = members.read_flags("done");
+  const auto plan_index =
+      members.has("plan_index") ? members.read_integers("plan_index") : std::vector<std::int64_t>{};
+  std::size_t copied = 0;
+  for (hsize_t first = 0; first < done.size(); first += block) {
+    const hsize_t count = std::min<hsize_t>(block, done.size() - first);
+    std::vector<hsize_t> picked, rows;  // rows of the source block, and their rows here
+    for (hsize_t k = first; k < first + count; ++k)
+      if (done[k]) {
+        picked.push_back(k - first);
+        rows.push_back(row_of(plan_index.empty() ? std::size_t(k) : std::size_t(plan_index[k])));
+      }
+    if (picked.empty()) continue;
+    for (const auto& column : columns_) {
+      const std::size_t width = column.values();
+      switch (column.type) {
+        case ColumnType::float64: {
+          const auto all = source.read_rows_doubles(column.name, first, count);
+          std::vector<double> kept;
+          for (const auto k : picked)
+            kept.insert(kept.end(), all.begin() + std::ptrdiff_t(k * width),
+                        all.begin() + std::ptrdiff_t((k + 1) * width));
+          file_.write_rows(column.name, rows, kept.data());
+          break;
+        }
+        case ColumnType::int64: {
+          const auto all = source.read_rows_integers(column.name, first, count);
+          std::vector<std::int64_t> kept;
+          for (const auto k : picked) kept.push_back(all[k]);
+          file_.write_rows(column.name, rows, kept.data());
+          break;
+        }
+        case ColumnType::text: {
+          const auto all = source.read_rows_strings(column.name, first, count);
+          std::vector<std::string> kept;
+          for (const auto k : picked) kept.push_back(all[k]);
+          file_.write_rows(column.name, rows, kept);
+          break;
+        }
+        case ColumnType::flag: break;
+      }
+    }
+    mark_done(rows);
+    copied += rows.size();
   }
-  write_curve(file.create_group("curve"), scene, result);
-  file.set_flag("complete", true);  // written whole, and put in place only after this
-  file.close();
+  return copied;
+}
+
+void SliderResultFile::keep_partial(std::size_t members_done, double wall_seconds, int threads) const {
+  set_members_done(members_done);
+  file_.set_attribute("wall_seconds", wall_seconds);
+  file_.set_attribute("threads", std::int64_t(threads));
+  file_.flush();
+}
+
+void SliderResultFile::finish(double wall_seconds, int threads) const {
+  if (!shard_) {
+    reserve(double(scene_.sizes.size() * scene_.separations.size()) * 13 * 8, "/curve");
+    write_curve(file_, scene_);
+  }
+  set_members_done(rows_);
+  file_.set_attribute("wall_seconds", wall_seconds);
+  file_.set_attribute("threads", std::int64_t(threads));
+  set_complete();
+}
+
+SliderStreamOutcome stream_slider_scan(const SliderResultFile& file, const ensemble::SliderScene& scene,
+                                       const std::vector<std::size_t>& plan_indices,
+                                       const ensemble::SliderScanControl& control) {
+  SliderStreamOutcome outcome;
+  std::atomic<bool> failed{false};
+  ensemble::SliderScanControl streaming = control;
+  streaming.stopped = [&] { return failed.load() || (control.stopped && control.stopped()); };
+  const auto start = std::chrono::steady_clock::now();
+  const bool stopped = ensemble::run_slider_members(scene, plan_indices, streaming,
+                                                    [&](std::vector<ensemble::SliderMember>&& block) {
+                                                      if (failed) return;
+                                                      try {
+                                                        file.write_members(block);
+                                                        outcome.written += block.size();
+                                                      } catch (const std::exception& e) {
+                                                        outcome.write_error = e.what();
+                                                        failed = true;
+                                                      }
+                                                    });
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.stopped = stopped || failed;
+  return outcome;
 }
 
 }  // namespace rotorsweep::io

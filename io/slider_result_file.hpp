@@ -1,17 +1,67 @@
-// The slider scan's HDF5 result file (README "Slider scans"): per member its separation, mean friction,
-// per-period friction and energy balance, order parameters and time series, all in SI units.
+// The slider scan's HDF5 result file (README "The experiment's slider"): per member its separation, mean
+// friction, per-period friction and energy balance, order parameters and time series, all in SI units.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "ensemble/slider/slider_scene.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
-#include "io/result_file.hpp"
+#include "io/member_table_file.hpp"
+#include "io/table_columns.hpp"
 
 namespace rotorsweep::io {
 
-/// Writes the whole file at `path` (a temporary file the caller renames into place).
-void write_slider_result(const std::string& path, const ensemble::SliderScene& scene,
-                         const ensemble::SliderResult& result, const Provenance& provenance, int threads);
+/// One column of a slider file, below its root ("members/friction", "series/angles").
+using SliderColumn = TableColumn<ensemble::SliderMember>;
+
+/// Every column of /members and /series the scene asks for, in the order they are created.
+std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
+                                         const ensemble::SliderTimeline& timeline);
+
+/// A slider file being written, like a row sweep's (MemberTableFile): from construction on it holds
+/// the scene, the provenance and every column sized for its members; members are written as their
+/// lane blocks finish; /curve and complete = TRUE come last.
+class SliderResultFile : public MemberTableFile {
+ public:
+  /// Creates (truncates) path for the whole plan of `scene`, or for a shard's part of it.
+  SliderResultFile(const std::string& path, const ensemble::SliderScene& scene, const Provenance& provenance,
+                   const std::optional<ShardLabel>& shard = std::nullopt);
+  /// A file this class created (and did not finish), to write more members into.
+  static SliderResultFile reopen(const std::string& path, const ensemble::SliderScene& scene);
+
+  /// Writes the members (of any rows of the file) and marks their rows done.
+  void write_members(const std::vector<ensemble::SliderMember>& members) const;
+  /// Copies the rows marked done in `source`, a file of the same scene (a shard, or a whole plan's
+  /// file written in part), into their rows here and marks them done; returns how many.
+  std::size_t copy_done_rows(const Hdf5Location& source) const;
+  /// wall_seconds and threads of a run that stopped early with `members_done` rows; complete stays FALSE.
+  void keep_partial(std::size_t members_done, double wall_seconds, int threads) const;
+  /// wall_seconds and threads, /curve from the file's rows (not for shards), then complete = TRUE.
+  void finish(double wall_seconds, int threads) const;
+
+ private:
+  SliderResultFile(Hdf5Location file, const ensemble::SliderScene& scene, std::optional<ShardLabel> shard);
+  void create(const Provenance& provenance) const;
+
+  ensemble::SliderScene scene_;
+  ensemble::SliderTimeline timeline_;
+  std::vector<SliderColumn> columns_;
+};
+
+/// How a scan streamed into its file went.
+struct SliderStreamOutcome {
+  std::size_t written = 0;  ///< members written and marked done
+  bool stopped = false;     ///< control.stopped() or a failed write left members out
+  double seconds = 0;       ///< wall time of the scan
+  std::string write_error;  ///< why writing the file failed (the scan then stopped); empty if it did not
+};
+
+/// Runs the members `plan_indices` (ascending) of the file's scene and writes each lane block into
+/// `file` as it finishes (ensemble::run_slider_members).
+SliderStreamOutcome stream_slider_scan(const SliderResultFile& file, const ensemble::SliderScene& scene,
+                                       const std::vector<std::size_t>& plan_indices,
+                                       const ensemble::SliderScanControl& control);
 
 }  // namespace rotorsweep::io

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <numeric>
 #include <optional>
 #include <thread>
 
@@ -28,7 +29,8 @@ ensemble::SliderScene parse(const std::string& scene, bool is_path) {
 
 /// Runs the slider scene into `output` (checked before the start: ValueError) and returns its member
 /// count; `progress(done, total)` is called about ten times a second, and a signal Python wants to
-/// raise (Ctrl-C) stops the scan before its next lane block and is raised, with nothing written.
+/// raise (Ctrl-C) stops the scan before its next lane block and is raised, with nothing written. The
+/// members stream into the temporary file as `rotorsweep slider` streams them.
 std::size_t run_slider(const std::string& scene_text, bool is_path, int threads, const std::string& output,
                        bool force, const std::string& version, const std::string& revision,
                        const py::object& progress) {
@@ -36,14 +38,19 @@ std::size_t run_slider(const std::string& scene_text, bool is_path, int threads,
   threads = ensemble::thread_count(threads, "threads");
   const std::string source = is_path ? scene_text : std::string("<python>");
   io::OutputTarget target(output, {source}, io::Replaceable::hdf5, force);
+  io::SliderResultFile file(
+      target.temporary(), scene,
+      io::Provenance{source, version, revision, "cpu", ensemble::instruction_set().name});
   std::atomic<bool> stop{false}, finished{false};
   std::atomic<std::size_t> done{0};
-  ensemble::SliderResult result;
+  io::SliderStreamOutcome outcome;
   std::exception_ptr error;
   std::thread worker([&] {
     try {
-      result = ensemble::run_slider_scan(
-          scene, threads, [&](std::size_t now, std::size_t) { done = now; }, [&] { return stop.load(); });
+      std::vector<std::size_t> all(scene.member_count());
+      std::iota(all.begin(), all.end(), std::size_t(0));
+      outcome = io::stream_slider_scan(
+          file, scene, all, {threads, [&](std::size_t now) { done = now; }, [&] { return stop.load(); }});
     } catch (...) {
       error = std::current_exception();
     }
@@ -66,12 +73,13 @@ std::size_t run_slider(const std::string& scene_text, bool is_path, int threads,
   }
   if (interrupted) throw py::error_already_set();
   if (error) std::rethrow_exception(error);
+  if (!outcome.write_error.empty())
+    throw std::runtime_error("writing " + output + " failed: " + outcome.write_error);
   if (!progress.is_none()) progress(scene.member_count(), scene.member_count());
-  io::write_slider_result(target.temporary(), scene, result,
-                          io::Provenance{source, version, revision, "cpu", ensemble::instruction_set().name},
-                          threads);
+  file.finish(outcome.seconds, threads);
+  file.close();
   target.commit();
-  return result.members.size();
+  return scene.member_count();
 }
 
 }  // namespace

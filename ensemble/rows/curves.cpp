@@ -1,10 +1,8 @@
-// Aggregation of member results into curve points; std is the population spread over the
-// replicas that finished (0 for one replica), NaN statistics only where count = 0.
+// Aggregation of member results into curve points: counts by regime and attractor, and D's replica
+// statistics (ensemble/engine/replica_statistics.hpp), NaN only where no replica finished.
 #include "ensemble/rows/curves.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
+#include "ensemble/engine/replica_statistics.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -23,9 +21,6 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
     point.noise = m.noise;
     point.offset = m.offset;
     point.members = group;
-    double sum = 0;
-    point.dissipation_min = std::numeric_limits<double>::infinity();
-    point.dissipation_max = -std::numeric_limits<double>::infinity();
     for (std::size_t i = first; i < first + group; ++i) {
       const MemberResult& r = results[i];
       ++point.attractor_count[r.final_state.attractor];
@@ -34,27 +29,17 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
         continue;
       }
       ++point.regime_count[std::size_t(r.regime)];
-      ++point.count;
       point.unresolved += !r.dissipation_resolved();
-      sum += r.dissipation();
-      point.dissipation_min = std::min(point.dissipation_min, r.dissipation());
-      point.dissipation_max = std::max(point.dissipation_max, r.dissipation());
     }
-    if (point.count == 0) {
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      point.dissipation_mean = point.dissipation_std = point.dissipation_min = point.dissipation_max = nan;
-      point.dissipation_sem = nan;
-    } else {
-      point.dissipation_mean = sum / double(point.count);
-      double spread = 0;
-      for (std::size_t i = first; i < first + group; ++i)
-        if (results[i].status == kernels::LaneStatus::ok)
-          spread += std::pow(results[i].dissipation() - point.dissipation_mean, 2) / double(point.count);
-      point.dissipation_std = std::sqrt(spread);
-      const double n = double(point.count);
-      point.dissipation_sem =
-          n > 1 ? point.dissipation_std / std::sqrt(n - 1) : std::numeric_limits<double>::quiet_NaN();
-    }
+    const ReplicaStatistics d = replica_statistics(
+        group, [&](std::size_t k) { return results[first + k].dissipation(); },
+        [&](std::size_t k) { return results[first + k].status == kernels::LaneStatus::ok; });
+    point.count = d.count;
+    point.dissipation_mean = d.mean;
+    point.dissipation_std = d.std;
+    point.dissipation_sem = d.sem;
+    point.dissipation_min = d.min;
+    point.dissipation_max = d.max;
     curves.push_back(point);
   }
   return curves;

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
+#include <exception>
 #include <memory>
 
 #include "kernels/lanes/lane.hpp"
@@ -56,19 +56,18 @@ struct Schedule {
 
 /// The members of one lane block through the whole schedule.
 template <bool Inertial, class Stepper>
-void run_block(const SliderScene& scene, const Schedule& schedule, const std::vector<std::size_t>& block,
-               std::vector<SliderMember>& members) {
+void run_block(const SliderScene& scene, const Schedule& schedule, std::vector<SliderMember>& block) {
   using Model = kernels::SliderModel<V, Inertial>;
   using Integrator = kernels::AdaptiveIntegrator<Model, Stepper>;
   const SliderUnits units(scene);
-  const SliderSize size = members[block.front()].size;
+  const SliderSize size = block.front().size;
   const kernels::SliderGrid grid{size.columns, size.rows};
   const std::size_t n = grid.rotors(), dim = Inertial ? 2 * n : n;
 
   std::vector<std::unique_ptr<kernels::SubstrateTable>> tables;
   for (std::size_t l = 0; l < block.size(); ++l)
-    tables.push_back(std::make_unique<kernels::SubstrateTable>(
-        substrate_table(scene, size, members[block[l]].separation)));
+    tables.push_back(
+        std::make_unique<kernels::SubstrateTable>(substrate_table(scene, size, block[l].separation)));
 
   kernels::StepLimits limits;
   limits.h_max = kernels::two_pi / double(scene.samples_per_period);
@@ -107,14 +106,14 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
   V* q = parts.q;
 
   for (std::size_t l = 0; l < W; ++l) {
-    const auto& m = members[block[std::min(l, block.size() - 1)]];
+    const auto& m = block[std::min(l, block.size() - 1)];
     const auto theta = slider_start(scene, m.index);
     for (std::size_t r = 0; r < n; ++r) kernels::lane_set(state.y[r], l, theta[r]);
   }
 
   const std::size_t samples = schedule.stops.size();
   for (std::size_t l = 0; l < block.size(); ++l) {
-    auto& m = members[block[l]];
+    auto& m = block[l];
     m.friction_series.assign(samples, 0.0);
     m.order_x_series.assign(samples, 0.0);
     m.order_y_series.assign(samples, 0.0);
@@ -131,7 +130,7 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
     model.order_parameters(state.y, along_x, across_y);
     const V energy = model.energy(work, state.y, t) + model.kinetic_energy(state.y);
     for (std::size_t l = 0; l < block.size(); ++l) {
-      auto& m = members[block[l]];
+      auto& m = block[l];
       m.friction_series[k] = lane_get(q[Model::impulse_index], l) * units.force;
       m.order_x_series[k] = lane_get(along_x, l);
       m.order_y_series[k] = lane_get(across_y, l);
@@ -149,7 +148,7 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
 
   const double speed = 1.0 / kernels::two_pi, period = kernels::two_pi;
   for (std::size_t l = 0; l < block.size(); ++l) {
-    auto& m = members[block[l]];
+    auto& m = block[l];
     m.status = std::string(kernels::status_name(state.status[l]));
     m.steps_accepted = lane_get(state.steps_accepted, l);
     m.steps_rejected = lane_get(state.steps_rejected, l);
@@ -194,63 +193,87 @@ void run_block(const SliderScene& scene, const Schedule& schedule, const std::ve
 /// Runs the blocks; returns whether stopped() left any of them out.
 template <bool Inertial>
 bool run_blocks(const SliderScene& scene, const Schedule& schedule,
-                const std::vector<std::vector<std::size_t>>& blocks, std::vector<SliderMember>& members,
-                int threads, const std::function<void(std::size_t, std::size_t)>& progress,
-                const std::function<bool()>& stopped) {
+                std::vector<std::vector<SliderMember>>& blocks, const SliderScanControl& control,
+                const std::function<void(std::vector<SliderMember>&&)>& finished) {
   std::atomic<bool> skipped{false};
+  std::exception_ptr failure;  // the first exception of a worker (it must not leave the parallel region)
+  const int threads = control.threads > 0 ? control.threads : omp_get_max_threads();
   kernels::with_stepper<kernels::SliderModel<V, Inertial>>(scene.stepper, [&]<class Stepper>() {
-    std::atomic<std::size_t> done{0};
+    std::size_t done = 0;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (std::size_t b = 0; b < blocks.size(); ++b) {
-      if (stopped && stopped()) {
+      if (skipped || (control.stopped && control.stopped())) {
         skipped = true;
         continue;
       }
-      run_block<Inertial, Stepper>(scene, schedule, blocks[b], members);
-      const std::size_t now = done += blocks[b].size();
-      if (progress && omp_get_thread_num() == 0) progress(now, members.size());
+      try {
+        run_block<Inertial, Stepper>(scene, schedule, blocks[b]);
+      } catch (...) {
+#pragma omp critical(slider_failure)
+        if (!failure) failure = std::current_exception();
+        skipped = true;
+        continue;
+      }
+#pragma omp critical(slider_finished)
+      {
+        done += blocks[b].size();
+        finished(std::move(blocks[b]));
+        if (control.progress) control.progress(done);
+      }
     }
   });
+  if (failure) std::rethrow_exception(failure);
   return skipped;
 }
 
 }  // namespace
 
-SliderResult run_slider_scan(const SliderScene& scene, int threads,
-                             const std::function<void(std::size_t, std::size_t)>& progress,
-                             const std::function<bool()>& stopped) {
+SliderMember slider_plan_member(const SliderScene& scene, std::size_t plan_index) {
+  const std::size_t replicas = scene.replicas, separations = scene.separations.size();
+  SliderMember m;
+  m.plan_index = plan_index;
+  m.index = {plan_index / (separations * replicas), plan_index / replicas % separations,
+             plan_index % replicas};
+  m.size = scene.sizes[m.index.size];
+  m.separation = scene.separations[m.index.separation];
+  return m;
+}
+
+SliderTimeline slider_timeline(const SliderScene& scene) {
   const SliderUnits units(scene);
   const Schedule schedule(scene, units);
-  SliderResult result;
-  result.period = scene.spacing / scene.speed;
-  result.periods = schedule.periods;
-  for (const double t : schedule.stops) result.sample_times.push_back(t * units.time);
-  for (std::size_t z = 0; z < scene.sizes.size(); ++z)
-    for (std::size_t s = 0; s < scene.separations.size(); ++s)
-      for (std::size_t r = 0; r < scene.replicas; ++r) {
-        SliderMember m;
-        m.index = {z, s, r};
-        m.size = scene.sizes[z];
-        m.separation = scene.separations[s];
-        result.members.push_back(std::move(m));
-      }
+  SliderTimeline timeline;
+  timeline.period = scene.spacing / scene.speed;
+  timeline.periods = schedule.periods;
+  for (const double t : schedule.stops) timeline.sample_times.push_back(t * units.time);
+  return timeline;
+}
+
+bool run_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                        const SliderScanControl& control,
+                        const std::function<void(std::vector<SliderMember>&&)>& finished) {
+  const Schedule schedule(scene, SliderUnits(scene));
   // lane blocks of members of one size (a block shares its grid)
-  std::vector<std::vector<std::size_t>> blocks;
-  for (std::size_t i = 0; i < result.members.size();) {
-    std::vector<std::size_t> block;
-    for (; i < result.members.size() && block.size() < W; ++i) {
-      if (!block.empty() && !(result.members[i].size == result.members[block.front()].size)) break;
-      block.push_back(i);
-    }
-    blocks.push_back(std::move(block));
+  std::vector<std::vector<SliderMember>> blocks;
+  for (const std::size_t i : plan_indices) {
+    SliderMember m = slider_plan_member(scene, i);
+    if (blocks.empty() || blocks.back().size() == W || !(blocks.back().front().size == m.size))
+      blocks.emplace_back();
+    blocks.back().push_back(std::move(m));
   }
-  if (threads <= 0) threads = omp_get_max_threads();
-  const auto start = std::chrono::steady_clock::now();
-  result.stopped =
-      scene.overdamped
-          ? run_blocks<false>(scene, schedule, blocks, result.members, threads, progress, stopped)
-          : run_blocks<true>(scene, schedule, blocks, result.members, threads, progress, stopped);
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return scene.overdamped ? run_blocks<false>(scene, schedule, blocks, control, finished)
+                          : run_blocks<true>(scene, schedule, blocks, control, finished);
+}
+
+SliderResult run_slider_scan(const SliderScene& scene, const SliderScanControl& control) {
+  SliderResult result;
+  result.timeline = slider_timeline(scene);
+  result.members.resize(scene.member_count());
+  std::vector<std::size_t> all(scene.member_count());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  result.stopped = run_slider_members(scene, all, control, [&](std::vector<SliderMember>&& block) {
+    for (auto& m : block) result.members[m.plan_index] = std::move(m);
+  });
   return result;
 }
 

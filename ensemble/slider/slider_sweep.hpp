@@ -13,7 +13,8 @@ namespace rotorsweep::ensemble {
 
 /// One member's results, SI units.
 struct SliderMember {
-  SliderMemberIndex index;  ///< its place in the plan (size, separation, replica)
+  std::size_t plan_index = 0;  ///< its row in the plan: size-major, then separation, then replica
+  SliderMemberIndex index;     ///< its place in the plan (size, separation, replica)
   SliderSize size;
   double separation = 0.0;  ///< h, m
   double friction = 0.0;    ///< mean drive force over the whole periods of sliding, N
@@ -26,19 +27,39 @@ struct SliderMember {
   std::string status = "ok";
 };
 
-struct SliderResult {
-  std::vector<double> sample_times;   ///< s (0 = start of the rest)
-  std::size_t periods = 0;            ///< whole substrate periods of sliding
-  double period = 0.0;                ///< a / v, s
-  std::vector<SliderMember> members;  ///< size-major, then separation, then replica
-  double seconds = 0.0;               ///< wall time of the integration
-  bool stopped = false;               ///< stopped() turned true: members of blocks not run are empty
+/// Member `plan_index` of the scene's plan before it runs: its place, size and separation.
+SliderMember slider_plan_member(const SliderScene& scene, std::size_t plan_index);
+
+/// When every member is sampled: the sample grid and the whole periods of sliding it holds.
+struct SliderTimeline {
+  std::vector<double> sample_times;  ///< s (0 = start of the rest)
+  std::size_t periods = 0;           ///< whole substrate periods of sliding
+  double period = 0.0;               ///< a / v, s
+};
+SliderTimeline slider_timeline(const SliderScene& scene);
+
+/// How a scan runs: on `threads` threads (0: all); `progress(done)` after each lane block with the
+/// members finished so far; once `stopped()` is true no further block starts (the running ones finish).
+struct SliderScanControl {
+  int threads = 0;
+  std::function<void(std::size_t)> progress;
+  std::function<bool()> stopped;
 };
 
-/// Runs every member of the scene on `threads` threads (0: all); `progress(done, total)` after each lane
-/// block; once `stopped()` is true no further block starts (the running ones finish).
-SliderResult run_slider_scan(const SliderScene& scene, int threads,
-                             const std::function<void(std::size_t, std::size_t)>& progress = {},
-                             const std::function<bool()>& stopped = {});
+/// Runs the members `plan_indices` (ascending) in lane blocks of one size each and hands each block's
+/// members to `finished` as the block ends (one call at a time, blocks in any order). A member's
+/// results do not depend on which members share its block. Returns whether stopped() left members out;
+/// an exception in a worker (std::bad_alloc) stops the other blocks and is rethrown here.
+bool run_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                        const SliderScanControl& control,
+                        const std::function<void(std::vector<SliderMember>&&)>& finished);
+
+/// Every member of the scene's plan, held in memory.
+struct SliderResult {
+  SliderTimeline timeline;
+  std::vector<SliderMember> members;  ///< in plan order; members left out by stopped() are empty
+  bool stopped = false;               ///< stopped() turned true
+};
+SliderResult run_slider_scan(const SliderScene& scene, const SliderScanControl& control = {});
 
 }  // namespace rotorsweep::ensemble

@@ -29,7 +29,7 @@ def from_hdf5(h5file):
                                       names=["size", "separation", "replica"])
     variables = {}
     for name, dataset in members.items():
-        if name in ("separation", "replica", "columns", "rows"):
+        if name in ("separation", "replica", "columns", "rows", "done", "plan_index"):
             continue
         values = dataset[:]
         if values.dtype.kind in "OS":

@@ -45,18 +45,6 @@ std::size_t rows_done(const fs::path& path) {
   return count;
 }
 
-void check_same_datasets(const fs::path& expected, const fs::path& actual) {
-  const auto a = Hdf5Location::open_file(expected.string());
-  const auto b = Hdf5Location::open_file(actual.string());
-  const auto paths = dataset_paths(a);
-  CHECK(paths == dataset_paths(b));
-  for (const auto& path : paths) {
-    INFO(path);
-    CHECK(a.read_bytes(path) == b.read_bytes(path));
-  }
-  CHECK(b.attribute_flag("complete"));
-}
-
 }  // namespace
 
 TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[apps][run][resume]") {

@@ -1,11 +1,12 @@
 // `rotorsweep slider` end to end (README "The experiment's slider"): scene in, complete HDF5 file out with
 // its datasets and units, `info` on it; bad keys and the wrong kind of scene as exit code 2, no file written;
-// SIGINT and SIGTERM stop it with nothing written.
+// SIGINT and SIGTERM keep the finished members for --resume; shards merge to the single-process file.
 #include <catch2/catch.hpp>
 #include <filesystem>
 
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
+#include "support/result_datasets.hpp"
 #include "support/scene_text.hpp"
 
 using namespace rotorsweep::testing;
@@ -68,20 +69,68 @@ TEST_CASE("slider refuses bad scenes with exit code 2 and writes nothing", "[app
   expect_refusal("run", small_slider, "run them with `rotorsweep slider FILE`");
 }
 
-TEST_CASE("slider stops on SIGINT and SIGTERM with nothing written", "[apps][slider]") {
+TEST_CASE("an interrupted slider scan keeps its finished members and resumes to the whole scan's datasets",
+          "[apps][slider][resume]") {
   // the experiment's 7 × 7 slider at 64 separations: several seconds on two cores
-  const auto dir = scratch_directory("slider-signal");
+  const auto dir = scratch_directory("slider-resume");
   const auto scene =
       write_text(dir / "long.toml", "[sweep]\nseparation = { from = 5e-3, to = 13e-3, count = 64 }\n");
+  const auto whole = dir / "whole.h5", out = dir / "out.h5";
+  REQUIRE(run_cli("slider -q '" + scene.string() + "' -o '" + whole.string() + "'", dir).exit_code == 0);
+  const std::string base = "slider -q --threads 1 '" + scene.string() + "' -o '" + out.string() + "'";
+  const auto partial = dir / "out.h5.partial";
+  CHECK(run_cli(base + " --resume", dir).exit_code == 2);  // nothing to resume yet
+  std::size_t kept = 0;
   for (const auto& [signal, code] : {std::pair<std::string, int>{"INT", 130}, {"TERM", 143}}) {
-    const auto out = dir / ("long-" + signal + ".h5");
-    const auto run =
-        run_cli_signalled("slider -q '" + scene.string() + "' -o '" + out.string() + "'", dir, signal, "0.5");
+    const auto run = run_cli_signalled(base + (kept > 0 ? " --resume" : ""), dir, signal, "1.2");
     INFO(run.output);
-    CHECK(run.exit_code == code);
-    CHECK_THAT(run.output, Catch::Contains("stopped by SIG" + signal) && Catch::Contains("nothing written"));
+    REQUIRE(run.exit_code == code);
+    CHECK_THAT(run.output, Catch::Contains("stopped by SIG" + signal) && Catch::Contains("--resume"));
     CHECK_FALSE(std::filesystem::exists(out));
+    REQUIRE(std::filesystem::exists(partial));
+    const auto file = rotorsweep::io::Hdf5Location::open_file(partial.string());
+    CHECK_FALSE(file.attribute_flag("complete"));
+    std::size_t done = 0;
+    for (const auto flag : file.open_group("members").read_flags("done")) done += flag != 0;
+    CHECK(std::size_t(file.attribute_double("members_done")) == done);
+    CHECK(done >= kept);
+    CHECK(done < 64);
+    kept = std::max<std::size_t>(done, 1);
   }
-  for (const auto& entry : std::filesystem::directory_iterator(dir))  // no temporary file left
-    CHECK((entry.path().filename() == "long.toml" || entry.path().filename() == "cli-output.txt"));
+  const auto fresh = run_cli(base, dir);  // a fresh scan does not overwrite the partial file
+  CHECK(fresh.exit_code == 2);
+  CHECK_THAT(fresh.output, Catch::Contains("--resume") && Catch::Contains("--force"));
+  const auto last = run_cli(base + " --resume", dir);
+  INFO(last.output);
+  REQUIRE(last.exit_code == 0);
+  CHECK_THAT(last.output, Catch::Contains("resuming from"));
+  CHECK_FALSE(std::filesystem::exists(partial));
+  check_same_datasets(whole, out);
+}
+
+TEST_CASE("slider shards merge to the single-process file", "[apps][slider][merge]") {
+  const auto dir = scratch_directory("slider-shards");
+  const auto scene = write_text(dir / "slider.toml", small_slider + "[initial]\nreplicas = 3\n");
+  const auto whole = dir / "whole.h5";
+  REQUIRE(run_cli("slider -q '" + scene.string() + "' -o '" + whole.string() + "'", dir).exit_code == 0);
+  std::string shards;
+  for (const int i : {1, 2, 3}) {
+    const auto part = dir / ("part-" + std::to_string(i) + ".h5");
+    const auto run = run_cli(
+        "slider -q '" + scene.string() + "' --shard " + std::to_string(i) + "/3 -o '" + part.string() + "'",
+        dir);
+    INFO(run.output);
+    REQUIRE(run.exit_code == 0);
+    CHECK_THAT(run.output, Catch::Contains("shard " + std::to_string(i) + "/3"));
+    shards = "'" + part.string() + "' " + shards;  // in reverse order
+  }
+  const auto two = run_cli(
+      "merge " + shards.substr(0, shards.rfind(" '")) + " -o '" + (dir / "two.h5").string() + "'", dir);
+  CHECK(two.exit_code == 2);  // a shard missing
+  const auto merged = run_cli("merge " + shards + "-o '" + (dir / "merged.h5").string() + "'", dir);
+  INFO(merged.output);
+  REQUIRE(merged.exit_code == 0);
+  check_same_datasets(whole, dir / "merged.h5");
+  CHECK(rotorsweep::io::Hdf5Location::open_file((dir / "merged.h5").string()).attribute_string("kind") ==
+        "slider");
 }

@@ -70,3 +70,31 @@ TEST_CASE("unopenable files are errors naming the path", "[io][hdf5]") {
   CHECK_THROWS_WITH(Hdf5Location::create_file((dir / "no" / "such" / "dir.h5").string()),
                     Catch::Contains("dir.h5"));
 }
+
+TEST_CASE("pre-sized table columns of one, two and three dimensions take rows in any subset", "[io][hdf5]") {
+  using rotorsweep::io::ColumnType;
+  const auto dir = rotorsweep::testing::scratch_directory("hdf5-columns");
+  const std::string path = (dir / "columns.h5").string();
+  {
+    const auto file = Hdf5Location::create_file(path);
+    file.create_column("flat", ColumnType::float64, {4, 0, 0}, "");
+    file.create_column("rows", ColumnType::int64, {4, 3, 0}, "");
+    file.create_column("blocks", ColumnType::float64, {4, 2, 0, 3}, "samples × rotors");
+    const std::vector<hsize_t> rows{0, 2, 3};  // row 1 is left unwritten
+    file.write_rows("flat", rows, std::vector<double>{1, 3, 4}.data());
+    file.write_rows("rows", rows, std::vector<std::int64_t>{0, 1, 2, 20, 21, 22, 30, 31, 32}.data());
+    std::vector<double> blocks;
+    for (const int r : {0, 2, 3})
+      for (int k = 0; k < 6; ++k) blocks.push_back(10 * r + k);
+    file.write_rows("blocks", rows, blocks.data());
+  }
+  const auto file = Hdf5Location::open_file(path);
+  CHECK(file.shape("blocks") == std::pair<hsize_t, hsize_t>{4, 6});  // values per row
+  std::vector<hsize_t> dims;
+  file.read_doubles("blocks", &dims);
+  CHECK(dims == std::vector<hsize_t>{4, 2, 3});
+  CHECK(file.read_rows_doubles("blocks", 2, 2) ==
+        std::vector<double>{20, 21, 22, 23, 24, 25, 30, 31, 32, 33, 34, 35});
+  CHECK(file.read_rows_integers("rows", 2, 1) == std::vector<std::int64_t>{20, 21, 22});
+  CHECK(file.read_rows_doubles("flat", 3, 1) == std::vector<double>{4});
+}

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# `mpirun -np 2 rotorsweep run` against the single-process run: every dataset equal byte for byte,
-# both ranks took members, the ranks' files are gone, and --shard under mpirun is exit code 2.
+# `mpirun -np 2 rotorsweep run` and `... slider` against the single-process runs: every dataset equal
+# byte for byte, both ranks took members, the ranks' files are gone, and --shard under mpirun is exit code 2.
 # Usage: mpi_run.sh ROTORSWEEP_EXECUTABLE SCRATCH_DIR
 set -euo pipefail
 exe=$1 scratch=$2
@@ -29,17 +29,37 @@ mpirun -np 2 "$exe" run "$scratch/curve.toml" -q --shard 1/2 -o "$scratch/shard.
 code=$?
 set -e
 [ "$code" -eq 2 ] && grep -q "one process" "$scratch/shard.log" || { cat "$scratch/shard.log"; echo "--shard under mpirun: exit $code" >&2; exit 1; }
-/usr/bin/python3 - "$scratch/single.h5" "$scratch/mpi.h5" <<'PY'
+cat > "$scratch/slider.toml" <<'SCENE'
+[slider]
+columns = [3, 4]
+rows = 3
+[substrate]
+columns = 11
+rows = 11
+[drive]
+rest = 0.5
+end = 4.5
+[sweep]
+separation = { from = 6e-3, to = 9e-3, count = 7 }
+[initial]
+replicas = 3
+SCENE
+"$exe" slider "$scratch/slider.toml" -q -o "$scratch/slider-single.h5"
+mpirun -np 2 "$exe" slider "$scratch/slider.toml" -q --threads 1 -o "$scratch/slider-mpi.h5" 2> "$scratch/slider-mpi.log"
+cat "$scratch/slider-mpi.log"
+if ls "$scratch"/*.rank-* > /dev/null 2>&1; then echo "a rank's slider file was left behind" >&2; exit 1; fi
+/usr/bin/python3 - "$scratch/single.h5" "$scratch/mpi.h5" "$scratch/slider-single.h5" "$scratch/slider-mpi.h5" <<'PY'
 import sys, h5py
-single, mpi = (h5py.File(p, "r") for p in sys.argv[1:])
 def datasets(f):
     names = []
     f.visititems(lambda name, obj: names.append(name) if isinstance(obj, h5py.Dataset) else None)
     return names
-names = datasets(single)
-assert names == datasets(mpi), "different datasets"
-differing = [n for n in names if single[n][()].tobytes() != mpi[n][()].tobytes()]
-assert not differing, differing
-assert mpi.attrs["complete"]
-print(f"mpirun -np 2: {len(names)} datasets equal to the single-process run")
+for single_path, mpi_path in zip(sys.argv[1::2], sys.argv[2::2]):
+    single, mpi = h5py.File(single_path, "r"), h5py.File(mpi_path, "r")
+    names = datasets(single)
+    assert names == datasets(mpi), "different datasets"
+    differing = [n for n in names if single[n][()].tobytes() != mpi[n][()].tobytes()]
+    assert not differing, differing
+    assert mpi.attrs["complete"]
+    print(f"mpirun -np 2: {len(names)} datasets of {mpi_path} equal to the single-process run")
 PY

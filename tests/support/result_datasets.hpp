@@ -1,7 +1,9 @@
 // Test support: the dataset paths of a result file (/members, /members/periods, /curves,
-// /curves/attractors), for comparing two files dataset by dataset.
+// /curves/attractors; a slider's /curve and /series), and two files compared dataset by dataset.
 #pragma once
 
+#include <catch2/catch.hpp>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,19 @@ inline std::vector<std::string> dataset_paths(const io::Hdf5Location& file) {
       if (name != "periods" && name != "attractors") paths.push_back(group + "/" + name);
   }
   return paths;
+}
+
+/// Every dataset of `actual` holds the bytes of `expected`'s, and `actual` is complete.
+inline void check_same_datasets(const std::filesystem::path& expected, const std::filesystem::path& actual) {
+  const auto a = io::Hdf5Location::open_file(expected.string());
+  const auto b = io::Hdf5Location::open_file(actual.string());
+  const auto paths = dataset_paths(a);
+  CHECK(paths == dataset_paths(b));
+  for (const auto& path : paths) {
+    INFO(path);
+    CHECK(a.read_bytes(path) == b.read_bytes(path));
+  }
+  CHECK(b.attribute_flag("complete"));
 }
 
 }  // namespace rotorsweep::testing

@@ -26,7 +26,7 @@ std::string small_scene(const std::string& numerics = "rtol = 1e-7\natol = 1e-7\
 }
 
 SliderResult scan(const std::string& text, int threads = 1) {
-  return run_slider_scan(rotorsweep::io::parse_slider_scene_text(text, "slider-test"), threads);
+  return run_slider_scan(rotorsweep::io::parse_slider_scene_text(text, "slider-test"), {threads});
 }
 
 }  // namespace
@@ -44,10 +44,10 @@ TEST_CASE("slider units: the experiment's energy and time scales", "[ensemble][s
 TEST_CASE("slider scan: samples, periods, energy balance and friction", "[ensemble][slider]") {
   const auto result = scan(small_scene());
   REQUIRE(result.members.size() == 4);
-  CHECK(result.periods == 2);
-  CHECK(result.period == Approx(2.0));
-  CHECK(result.sample_times.front() == 0.0);
-  CHECK(result.sample_times.back() == Approx(4.5));
+  CHECK(result.timeline.periods == 2);
+  CHECK(result.timeline.period == Approx(2.0));
+  CHECK(result.timeline.sample_times.front() == 0.0);
+  CHECK(result.timeline.sample_times.back() == Approx(4.5));
   for (const auto& m : result.members) {
     CHECK(m.status == "ok");
     REQUIRE(m.period_friction.size() == 2);
@@ -57,7 +57,7 @@ TEST_CASE("slider scan: samples, periods, energy balance and friction", "[ensemb
       CHECK(m.period_work[p] == Approx(m.period_friction[p] * 16e-3).epsilon(1e-9));  // W = F̄ a
       CHECK(m.period_dissipation[p] > 0.0);
     }
-    CHECK(m.friction_series.size() == result.sample_times.size());
+    CHECK(m.friction_series.size() == result.timeline.sample_times.size());
   }
   // replicas start from different angles
   CHECK(result.members[0].friction_series.back() != result.members[1].friction_series.back());
@@ -187,8 +187,8 @@ TEST_CASE("slider scan: the experiment's 7 x 7 slider matches the reference code
     const auto& m = result.members[k];
     double force = 0, order = 0;
     std::size_t samples = 0;
-    for (std::size_t i = 0; i < result.sample_times.size(); ++i) {
-      if (result.sample_times[i] <= 2.5) continue;
+    for (std::size_t i = 0; i < result.timeline.sample_times.size(); ++i) {
+      if (result.timeline.sample_times[i] <= 2.5) continue;
       force += m.friction_series[i];
       order += m.order_y_series[i];
       ++samples;

@@ -1,0 +1,107 @@
+// `mpirun -np K rotorsweep slider SCENE`: rank r runs plan members r, r + K, r + 2K, ... into a file of
+// its own, and rank 0 joins the rows they finished into OUT.h5.partial and puts the result in place.
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "build_info.hpp"
+#include "ensemble/engine/instruction_set.hpp"
+#include "io/slider_result_file.hpp"
+#include "mpi_session.hpp"
+#include "progress_line.hpp"
+#include "run_support.hpp"
+
+namespace rotorsweep::apps {
+
+int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& scene, int threads) {
+  MpiSession mpi;
+  const bool root = mpi.rank() == 0;
+  const std::string path = output_path(options, scene.output_path, std::nullopt);
+  std::optional<io::OutputTarget> target;
+  std::string partial;
+  const double row_bytes =
+      1 + io::table_row_bytes(io::slider_columns(scene, ensemble::slider_timeline(scene)));
+  if (const int status =
+          prepare_mpi_output(mpi, options, options.resume, options.shard, path, target, partial,
+                             [&](const std::string& at) {
+                               const double members = double(scene.member_count());
+                               return fits_on_disk(2 * members * row_bytes, members, at,
+                                                   "Split the scan (fewer separations or replicas)");
+                             });
+      status != 0)
+    return status;
+
+  const io::Provenance provenance{options.scene, version, revision, "cpu", ensemble::instruction_set().name};
+  std::vector<std::size_t> mine;
+  for (std::size_t i = std::size_t(mpi.rank()); i < scene.member_count(); i += std::size_t(mpi.size()))
+    mine.push_back(i);
+  std::string error;
+  io::SliderStreamOutcome outcome;
+  int signal_number = 0;
+  {
+    if (root) {
+      print_slider_header(options, scene, threads, std::nullopt);
+      std::fprintf(stderr, "MPI: %d ranks share the plan (members rank, rank + %d, ...)\n", mpi.size(),
+                   mpi.size());
+    }
+    ProgressLine progress(mine.size(), root && !options.quiet);  // rank 0's share
+    const StopOnSignals signals;
+    try {
+      const io::SliderResultFile file(rank_file(partial, mpi.rank()), scene, provenance);
+      outcome = io::stream_slider_scan(file, scene, mine,
+                                       {threads, [&](std::size_t done) { progress.update(done); },
+                                        [&] { return signals.flag()->load(); }});
+      error = outcome.write_error;
+    } catch (const std::bad_alloc&) {
+      error = "out of memory (an allocation in a worker thread failed)";
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    signal_number = signals.signal();
+    MPI_Barrier(MPI_COMM_WORLD);
+    progress.finish();
+  }
+  if (!error.empty()) std::fprintf(stderr, "error: rank %d: %s\n", mpi.rank(), error.c_str());
+  double wall = outcome.seconds;
+  int failed = error.empty() ? 0 : 1, all_threads = threads;
+  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &all_threads, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &signal_number, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+
+  int code = 0;
+  if (root) {
+    try {
+      io::SliderResultFile out(partial, scene, provenance);
+      std::size_t joined = 0;
+      for (int r = 0; r < mpi.size(); ++r) {
+        const std::string from = rank_file(partial, r);
+        if (std::filesystem::exists(from)) joined += out.copy_done_rows(io::Hdf5Location::open_file(from));
+        std::filesystem::remove(from);
+      }
+      if (joined == scene.member_count() && !failed) {
+        out.finish(wall, all_threads);
+        out.close();
+        target->commit();
+        std::fprintf(stderr, "wrote %s: %zu members in %s (%d ranks)\n", path.c_str(), joined,
+                     format_duration(wall).c_str(), mpi.size());
+      } else {
+        out.keep_partial(joined, wall, all_threads);
+        out.close();
+        target->keep();
+        std::fprintf(stderr, "%s: %zu of %zu members done, kept in %s (complete = FALSE).\nresume with: %s\n",
+                     failed ? "error: a rank failed" : "stopped", joined, scene.member_count(),
+                     partial.c_str(), resume_command("slider", options, "").c_str());
+        code = failed ? 1 : 128 + (signal_number ? signal_number : SIGINT);
+      }
+    } catch (const std::exception& e) {
+      std::cerr << "error: joining the ranks' files into " << partial << " failed: " << e.what() << "\n";
+      target->keep();
+      code = 1;
+    }
+  }
+  return mpi.broadcast(code);
+}
+
+}  // namespace rotorsweep::apps

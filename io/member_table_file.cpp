@@ -1,0 +1,120 @@
+// The kind-independent rows of a streamed result file: creation with the done mask and a shard's plan
+// indices, rows marked done only after they are on disk, reserved space for the finishing writes.
+#include "io/member_table_file.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <numeric>
+#include <stdexcept>
+
+namespace rotorsweep::io {
+
+void write_provenance(const Hdf5Location& file, const std::string& scene_text, const Provenance& provenance) {
+  file.set_attribute("scene", scene_text);
+  file.set_attribute("scene_path", provenance.scene_path);
+  file.set_attribute("version", provenance.version);
+  file.set_attribute("revision", provenance.revision);
+  file.set_attribute("device", provenance.device);
+  file.set_attribute("isa", provenance.isa);
+}
+
+MemberTableFile::MemberTableFile(Hdf5Location file, std::size_t plan_members, std::optional<ShardLabel> shard)
+    : file_(std::move(file)), shard_(shard) {
+  rows_ = shard ? (plan_members + shard->count - shard->index) / shard->count : plan_members;
+}
+
+std::optional<ShardLabel> MemberTableFile::shard_label(const Hdf5Location& file) {
+  if (!file.has_attribute("shard_index")) return std::nullopt;
+  return ShardLabel{std::size_t(file.attribute_double("shard_index")),
+                    std::size_t(file.attribute_double("shard_count")),
+                    std::size_t(file.attribute_double("plan_members"))};
+}
+
+void MemberTableFile::check_reopened() const {
+  if (file_.open_group("members").shape("done").first != rows_)
+    throw std::runtime_error("'" + file_.path() +
+                             "' does not have a row for every member of its scene's plan");
+}
+
+hsize_t MemberTableFile::row_of(std::size_t plan_index) const {
+  return shard_ ? (plan_index - (shard_->index - 1)) / shard_->count : plan_index;
+}
+
+std::size_t MemberTableFile::plan_index_of(std::size_t row) const {
+  return shard_ ? shard_->index - 1 + row * shard_->count : row;
+}
+
+std::vector<char> MemberTableFile::done() const {
+  const auto flags = file_.open_group("members").read_flags("done");
+  return std::vector<char>(flags.begin(), flags.end());
+}
+
+Hdf5Location MemberTableFile::create_table(const std::string& scene_text,
+                                           const Provenance& provenance) const {
+  file_.set_flag("complete", false);
+  write_provenance(file_, scene_text, provenance);
+  file_.set_attribute("plan_members", std::int64_t(shard_ ? shard_->plan_members : rows_));
+  // every attribute written later exists from the start, so that writing it changes bytes in place
+  file_.set_attribute("members_done", std::int64_t(0));
+  auto members = file_.create_group("members");
+  std::vector<hsize_t> all(rows_);
+  std::iota(all.begin(), all.end(), hsize_t(0));
+  members.create_column("done", ColumnType::flag, {rows_, 0, 0},
+                        "TRUE when the row holds its finished member (all TRUE in a complete file)");
+  members.write_rows("done", all, std::vector<signed char>(rows_, 0).data());
+  if (shard_) {
+    file_.set_attribute("shard_index", std::int64_t(shard_->index));
+    file_.set_attribute("shard_count", std::int64_t(shard_->count));
+    members.create_column("plan_index", ColumnType::int64, {rows_, 0, 0},
+                          "the member's index in the whole plan (shard files only)");
+    std::vector<std::int64_t> index(rows_);
+    for (std::size_t k = 0; k < rows_; ++k) index[k] = std::int64_t(plan_index_of(k));
+    members.write_rows("plan_index", all, index.data());
+  }
+  return members;
+}
+
+void MemberTableFile::settle_on_disk(const std::string& path) {
+  file_.flush();
+  file_.close();
+  file_ = Hdf5Location::open_file_for_writing(path);
+  on_disk_ = true;
+}
+
+void MemberTableFile::mark_done(const std::vector<hsize_t>& rows) const {
+  file_.flush();
+  file_.open_group("members").write_rows("done", rows, std::vector<signed char>(rows.size(), 1).data());
+  file_.flush();
+}
+
+void MemberTableFile::set_members_done(std::size_t count) const {
+  file_.set_attribute("members_done", std::int64_t(count));
+}
+
+void MemberTableFile::set_complete() const {
+  file_.flush();
+  file_.set_flag("complete", true);
+  file_.flush();
+}
+
+void MemberTableFile::reserve(double bytes, const std::string& what) const {
+  if (!on_disk_) return;
+  const int fd = ::open(file_.path().c_str(), O_WRONLY);
+  if (fd < 0) return;
+  struct stat status {};
+  ::fstat(fd, &status);
+  // twice the data and 1 MiB for the groups' metadata, beyond the file's end, the length unchanged
+  const int failed =
+      ::fallocate(fd, FALLOC_FL_KEEP_SIZE, status.st_size, off_t(2 * bytes) + (off_t(1) << 20));
+  const int error = errno;
+  ::close(fd);
+  if (failed != 0 && error != EOPNOTSUPP)
+    throw std::runtime_error("cannot reserve " + std::to_string(long(bytes / 1e6) + 1) + " MB for " + what +
+                             " in " + file_.path() + ": " + std::strerror(error));
+}
+
+}  // namespace rotorsweep::io

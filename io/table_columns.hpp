@@ -1,0 +1,122 @@
+// The columns of a pre-sized table (README "Output file"): name, type, shape, description and how a
+// row is filled from what one member produced, so that creating a file and writing its rows share one list.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "io/hdf5_file.hpp"
+
+namespace rotorsweep::io {
+
+/// One column (`name` is a path below the table's location, e.g. "periods/dissipation"), filled from
+/// a member's `Row` values. Exactly one of real (writes max(1, width) · max(1, depth) values, NaN
+/// where it writes none), integer and text fills a row, matching `type`.
+template <class... Row>
+struct TableColumn {
+  std::string name;
+  ColumnType type = ColumnType::float64;
+  hsize_t width = 0;  ///< 0: one value per member
+  std::size_t text_length = 0;
+  std::string description;
+  std::function<void(const Row&..., double*)> real;
+  std::function<std::int64_t(const Row&...)> integer;
+  std::function<std::string(const Row&...)> text;
+  hsize_t depth = 0;  ///< > 0 (with width > 0): a width × depth block per member
+
+  /// Values per member.
+  std::size_t values() const {
+    return std::size_t(std::max<hsize_t>(width, 1) * std::max<hsize_t>(depth, 1));
+  }
+
+  static TableColumn real_valued(std::string name, std::string description,
+                                 std::function<double(const Row&...)> value) {
+    TableColumn c{std::move(name), ColumnType::float64, 0, 0, std::move(description), {}, {}, {}};
+    c.real = [value = std::move(value)](const Row&... row, double* out) { *out = value(row...); };
+    return c;
+  }
+  static TableColumn integer_valued(std::string name, std::string description,
+                                    std::function<std::int64_t(const Row&...)> value) {
+    TableColumn c{std::move(name), ColumnType::int64, 0, 0, std::move(description), {}, {}, {}};
+    c.integer = std::move(value);
+    return c;
+  }
+  static TableColumn text_valued(std::string name, std::size_t length, std::string description,
+                                 std::function<std::string(const Row&...)> value) {
+    TableColumn c{std::move(name), ColumnType::text, 0, length, std::move(description), {}, {}, {}};
+    c.text = std::move(value);
+    return c;
+  }
+  /// A (members × width) column whose row is a vector, NaN beyond its length; with depth > 0 a
+  /// (members × width × depth) column whose row is the vector's first width · depth values.
+  static TableColumn vector_valued(std::string name, hsize_t width, std::string description,
+                                   std::function<std::vector<double>(const Row&...)> value,
+                                   hsize_t depth = 0) {
+    TableColumn c{std::move(name), ColumnType::float64, width, 0, std::move(description), {}, {}, {}, depth};
+    const std::size_t n = c.values();
+    c.real = [value = std::move(value), n](const Row&... row, double* out) {
+      const auto values = value(row...);
+      std::copy_n(values.begin(), std::min(values.size(), n), out);
+    };
+    return c;
+  }
+};
+
+/// Bytes one member's row takes over all columns.
+template <class... Row>
+double table_row_bytes(const std::vector<TableColumn<Row...>>& columns) {
+  double bytes = 0;
+  for (const auto& column : columns)
+    bytes += double(column.values()) * double(column.type == ColumnType::text ? column.text_length : 8);
+  return bytes;
+}
+
+/// Creates every column with `rows` rows below `at`, and the groups their names pass through.
+template <class... Row>
+void create_table_columns(const Hdf5Location& at, const std::vector<TableColumn<Row...>>& columns,
+                          hsize_t rows) {
+  for (const auto& column : columns) {
+    for (std::size_t slash = column.name.find('/'); slash != std::string::npos;
+         slash = column.name.find('/', slash + 1))
+      if (const std::string group = column.name.substr(0, slash); !at.has(group)) at.create_group(group);
+    at.create_column(column.name, column.type, {rows, column.width, column.text_length, column.depth},
+                     column.description);
+  }
+}
+
+/// Writes member i (values[i]... of each Row) into row rows[i] of every column (rows ascending).
+template <class... Row>
+void write_table_rows(const Hdf5Location& at, const std::vector<TableColumn<Row...>>& columns,
+                      const std::vector<hsize_t>& rows, const std::vector<Row>&... values) {
+  const std::size_t n = rows.size();
+  for (const auto& column : columns) {
+    switch (column.type) {
+      case ColumnType::float64: {
+        const std::size_t width = column.values();
+        std::vector<double> out(n * width, std::numeric_limits<double>::quiet_NaN());
+        for (std::size_t i = 0; i < n; ++i) column.real(values[i]..., out.data() + i * width);
+        at.write_rows(column.name, rows, out.data());
+        break;
+      }
+      case ColumnType::int64: {
+        std::vector<std::int64_t> out(n);
+        for (std::size_t i = 0; i < n; ++i) out[i] = column.integer(values[i]...);
+        at.write_rows(column.name, rows, out.data());
+        break;
+      }
+      case ColumnType::text: {
+        std::vector<std::string> out(n);
+        for (std::size_t i = 0; i < n; ++i) out[i] = column.text(values[i]...);
+        at.write_rows(column.name, rows, out);
+        break;
+      }
+      case ColumnType::flag: break;
+    }
+  }
+}
+
+}  // namespace rotorsweep::io
