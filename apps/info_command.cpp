@@ -154,6 +154,14 @@ int run_info(const InfoOptions& options) {
       if (unresolved > 0)
         std::printf("%-12s %zu members whose D is not resolved (dissipation_error >= 0.1 |D|)\n", "warning",
                     unresolved);
+      if (members.has("symmetry_limited")) {
+        const auto symmetry = kept(members.read_integers("symmetry_limited"));
+        std::size_t limited = 0;
+        for (std::size_t i = 0; i < symmetry.size(); ++i) limited += status[i] == "ok" && symmetry[i] != 0;
+        if (limited > 0)
+          std::printf("%-12s %zu members whose D the integration error decides (symmetry_limited)\n",
+                      "warning", limited);
+      }
     }
     std::printf("%-12s /members:", "datasets");
     for (const auto& name : members.members()) std::printf(" %s", name.c_str());

@@ -61,17 +61,20 @@ std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t p
 void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene) {
   const auto members = file.open_group("members");
   const std::size_t rows = members.shape("status").first, block = 1 << 16;
-  const bool dissipation = members.has("dissipation_resolved");
+  const bool dissipation = members.has("dissipation_resolved"), shadows = members.has("symmetry_limited");
   std::map<std::string, std::size_t> failures;
-  std::size_t unresolved = 0;
+  std::size_t unresolved = 0, limited = 0;
   for (std::size_t first = 0; first < rows; first += block) {
     const std::size_t count = std::min(block, rows - first);
     const auto status = members.read_rows_strings("status", first, count);
     const auto resolved = dissipation ? members.read_rows_integers("dissipation_resolved", first, count)
                                       : std::vector<std::int64_t>(count, 1);
+    const auto symmetry = shadows ? members.read_rows_integers("symmetry_limited", first, count)
+                                  : std::vector<std::int64_t>(count, 0);
     for (std::size_t i = 0; i < count; ++i) {
       if (status[i] != "ok") ++failures[status[i]];
       unresolved += status[i] == "ok" && resolved[i] == 0;
+      limited += status[i] == "ok" && symmetry[i] != 0;
     }
   }
   if (!failures.empty()) {
@@ -86,6 +89,13 @@ void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene) 
                  unresolved,
                  scene.thermal.on() ? "at T > 0 this is the statistical error: average more periods"
                                     : "tighten numerics.rtol and atol");
+  if (limited > 0)
+    std::fprintf(
+        stderr,
+        "warning: %zu members whose D the integration error decides (symmetry-limited: they slip and no "
+        "disorder or temperature exceeds rtol, so D depends on rtol itself); give the scene disorder or "
+        "temperature above rtol (README: regime rule); see /members/symmetry_limited\n",
+        limited);
 }
 
 std::vector<char> check_partial(const std::string& partial, const std::string& scene_text,

@@ -78,7 +78,17 @@ std::vector<CurveColumn> curve_columns(const ensemble::Scene& scene) {
              [](auto& p) { return p.dissipation_sem; }));
     c.push_back(integer("unresolved", "members of count whose D is not resolved (dissipation_resolved)",
                         [](auto& p) { return double(p.unresolved); }));
+    c.push_back(
+        real("dissipation_bias",
+             "bound on the integration's bias of dissipation_mean: the mean of the members' "
+             "dissipation_error; the mean is limited by the tolerance where it exceeds dissipation_sem",
+             [](auto& p) { return p.dissipation_bias; }));
   }
+  if (scene.runs_shadows())
+    c.push_back(
+        integer("symmetry_limited",
+                "members of count whose D the integration error decides (symmetry_limited in /members)",
+                [](auto& p) { return double(p.symmetry_limited); }));
   if (scene.classifies_regimes())
     for (auto regime : ensemble::all_regimes) {
       const std::string name(ensemble::regime_name(regime));

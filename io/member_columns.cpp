@@ -3,8 +3,10 @@
 #include "io/member_columns.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 
+#include "ensemble/engine/shadow_run.hpp"
 #include "ensemble/rows/disorder.hpp"
 #include "ensemble/rows/initial_conditions.hpp"
 
@@ -14,6 +16,13 @@ namespace {
 
 using ensemble::Member;
 using ensemble::MemberResult;
+
+/// A constant in a description, as printf's %g writes it.
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 std::size_t longest(std::initializer_list<std::string_view> names) {
   std::size_t n = 0;
@@ -85,6 +94,21 @@ void add_outcome(std::vector<MemberColumn>& columns, const ensemble::Scene& scen
     columns.push_back(MemberColumn::integer_valued(
         "dissipation_resolved", "1 when D is resolved: status ok and dissipation_error < 0.1 |D|",
         [](auto&, auto& r) { return std::int64_t(r.dissipation_resolved()); }));
+  if (scene.runs_shadows()) {
+    columns.push_back(MemberColumn::real_valued(
+        "dissipation_shadow",
+        "D of the member's averaged periods run again at tolerances × " +
+            number(ensemble::shadow_tolerance_scale) +
+            " where they slip (NaN: not run); dissipation_error ≥ " + number(ensemble::shadow_safety) +
+            " |D − dissipation_shadow| / " + number(1 - ensemble::shadow_tolerance_scale) +
+            " (docs/numerics.md \"The global error of D\")",
+        [](auto&, auto& r) { return r.dissipation_shadow; }));
+    columns.push_back(MemberColumn::integer_valued(
+        "symmetry_limited",
+        "1 when D is set by the integration error: the member slips and no disorder or temperature of the "
+        "scene exceeds rtol (README: regime rule)",
+        [](auto&, auto& r) { return std::int64_t(r.symmetry_limited); }));
+  }
   columns.push_back(MemberColumn::integer_valued(
       "settled", "1 when the schedule ended as planned (steady_tol reached, or fixed schedule)",
       [](auto&, auto& r) { return std::int64_t(r.settled); }));

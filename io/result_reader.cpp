@@ -86,6 +86,12 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
   const auto theta = read_matrix(group, "theta_final", first, count);
   std::vector<std::string> regime;
   if (scene.classifies_regimes()) regime = group.read_rows_strings("regime", first, count);
+  std::vector<double> shadow;
+  std::vector<std::int64_t> limited;
+  if (scene.runs_shadows()) {
+    shadow = group.read_rows_doubles("dissipation_shadow", first, count);
+    limited = integers("symmetry_limited");
+  }
   std::optional<Matrix> row_dissipation, link_alignment;
   if (scene.row_profiles) {
     row_dissipation = read_matrix(group, "row_dissipation", first, count);
@@ -112,6 +118,10 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
     f.sublattice_even = sublattice.row(m)[0];
     f.sublattice_odd = sublattice.row(m)[1];
     f.attractor = attractor[m];
+    if (!shadow.empty()) {
+      r.dissipation_shadow = shadow[m];
+      r.symmetry_limited = limited[m] != 0;
+    }
     if (row_dissipation) {
       const std::size_t rows = plan[r.index].rows, links = scene.couplings.open ? rows - 1 : rows;
       r.row_dissipation.assign(row_dissipation->row(m), row_dissipation->row(m) + rows);

@@ -40,7 +40,8 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
        return keys;
      }()},
     {"numerics",
-     {"stepper", "rtol", "atol", "h_max", "max_steps", "controller", "lanes", "wrap_angles", "device"}},
+     {"stepper", "rtol", "atol", "h_max", "max_steps", "controller", "lanes", "wrap_angles", "device",
+      "global_error"}},
     {"output", {"path"}},
 };
 
@@ -314,6 +315,7 @@ Scene read_scene(const toml::table& root) {
                                                                                : ensemble::LaneKind::scalar;
 
   scene.wrap_angles = numerics.boolean("wrap_angles", scene.wrap_angles);
+  scene.shadow_runs = numerics.choice("global_error", "shadow", {"shadow", "local"}) == "shadow";
   scene.device = numerics.choice("device", "cpu", {"cpu", "gpu"}) == "gpu" ? ensemble::Device::gpu
                                                                            : ensemble::Device::cpu;
 

@@ -48,6 +48,7 @@ struct DeviceMember {
 
     for (std::size_t j = 0; j < n; ++j) state.y[j] = slots.y0[k * n + j];
     state.t_stop = Model::period;
+    state.tolerance_scale = slots.tolerance_scale[k];
     model.set_lane(0, {slots.A[k], slots.g[k], slots.strict_fm[k] != 0});
     AlignmentExtrema<double> alignment;
     DissipationSwing<double> swing;
@@ -76,7 +77,7 @@ struct DeviceMember {
       if (Q.drive) swing.end_period(0, s.error_rtol, s.atol, record);
       if (s.slips) slips.end_period(0, record);
       const std::size_t closed = std::size_t(progress.periods());
-      double* end = slots.end_states + (k * 4 + closed % 4) * n;
+      double* end = slots.end_states + (k * s.end_capacity + closed % s.end_capacity) * n;
       for (std::size_t j = 0; j < n; ++j) end[j] = state.y[j];
       const std::size_t ring = s.record_capacity;
       double* slot = slots.records + (k * ring + closed % ring) * channel_count;

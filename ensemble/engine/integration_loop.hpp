@@ -73,8 +73,14 @@ class IntegrationLoop {
     kernels::lane_set(state_.t_stop, lane, period);
     kernels::lane_set(state_.steps_accepted, lane, 0.0);
     kernels::lane_set(state_.steps_rejected, lane, 0.0);
+    kernels::lane_set(state_.tolerance_scale, lane, 1.0);
     state_.status[lane] = kernels::LaneStatus::ok;
     model_.set_lane(lane, parameters);
+  }
+
+  /// The member in `lane` integrates at tolerances rtol·scale, atol·scale (after start()).
+  void set_tolerance_scale(std::size_t lane, double scale) {
+    kernels::lane_set(state_.tolerance_scale, lane, scale);
   }
 
   /// The noise stream (its key) and damping g of the member in `lane` (stochastic integrators).

@@ -75,6 +75,7 @@ class LaneScheduler {
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
         profiles_(variant.rows, scene.row_profiles),
         period_schedule_(scene.period_schedule()),
+        end_capacity_(end_state_capacity(scene.average_periods)),
         lanes_(width) {}
 
   /// Takes members from next_member() (a std::optional<Member>; empty when the plan is
@@ -109,10 +110,11 @@ class LaneScheduler {
   struct Lane {
     bool occupied = false;
     Member member;
-    std::vector<PeriodRecord> history;            ///< every period with period_series, else the last ones
-    MemberProgress progress;                      ///< periods closed, steady state
-    std::vector<std::vector<double>> end_states;  ///< θ at the last period ends (up to 4, oldest first)
-    std::deque<std::vector<double>> profiles;     ///< row profiles of the last average_periods periods
+    std::vector<PeriodRecord> history;  ///< every period with period_series, else the last ones
+    MemberProgress progress;            ///< periods closed, steady state
+    std::vector<std::vector<double>>
+        end_states;  ///< θ at the last period ends (up to end_capacity_, oldest first)
+    std::deque<std::vector<double>> profiles;  ///< row profiles of the last average_periods periods
   };
 
   template <class F>
@@ -135,6 +137,7 @@ class LaneScheduler {
   void start(std::size_t l, const Member& member) {
     const std::vector<double> y0 = setup_.initial_state(member);
     loop_.start(l, setup_.parameters(member, y0), y0);
+    if (member.tolerance_scale != 1.0) loop_.set_tolerance_scale(l, member.tolerance_scale);
     if constexpr (Loop::stochastic) {
       loop_.start_noise(l, setup_.noise_key(member), member.g);
       slips_.set_rate(l, thermal_slip_rate(member.g));
@@ -166,7 +169,7 @@ class LaneScheduler {
       record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
 
     auto& ends = lanes_[l].end_states;
-    if (ends.size() == 4) ends.erase(ends.begin());
+    if (ends.size() == end_capacity_) ends.erase(ends.begin());
     ends.emplace_back(loop_.dimension());
     for (std::size_t k = 0; k < loop_.dimension(); ++k) ends.back()[k] = loop_.component(l, k);
 
@@ -214,7 +217,9 @@ class LaneScheduler {
                         loop_.steps_rejected(l),
                         std::vector<double>(loop_.dimension()),
                         std::move(lane.history),
-                        std::move(lane.end_states)};
+                        {},
+                        {}};
+    keep_end_states(retired, std::move(lane.end_states), scene_.average_periods);
     for (std::size_t k = 0; k < loop_.dimension(); ++k) retired.theta[k] = loop_.component(l, k);
     const std::size_t averaged =
         std::min<std::size_t>(retired.history.size(), std::size_t(scene_.average_periods));
@@ -263,6 +268,7 @@ class LaneScheduler {
   SlipObserver<Loop> slips_;
   RowProfileObserver<Loop> profiles_;
   PeriodSchedule period_schedule_;
+  std::size_t end_capacity_;  ///< period ends a lane keeps (end_state_capacity)
   std::vector<Lane> lanes_;
   std::size_t occupied_ = 0;
   bool plan_exhausted_ = false;

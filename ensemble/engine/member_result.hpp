@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -97,6 +98,13 @@ struct MemberResult {
   /// With observables.row_profiles, means over the averaged periods (NaN when it failed): D_j, row
   /// j's share of D, and the time mean of cos²((θ_j − θ_{j+1})/2) for each link (docs/model.md §3).
   std::vector<double> row_dissipation, link_alignment;
+  /// D of the member's shadow run at tighter tolerances (NaN where it had none:
+  /// ensemble/engine/shadow_run.hpp), and whether no physical perturbation of the scene exceeds the
+  /// tolerance, so that the integration error decides D (symmetry-limited).
+  double dissipation_shadow = std::numeric_limits<double>::quiet_NaN();
+  bool symmetry_limited = false;
+  std::vector<double>
+      averaging_start;  ///< θ where the averaged periods began (empty: θ(0)), a shadow's start
 
   double& summary(Summary s, Channel c) { return summaries[std::size_t(c)][std::size_t(s)]; }
   double summary(Summary s, Channel c) const { return summaries[std::size_t(c)][std::size_t(s)]; }

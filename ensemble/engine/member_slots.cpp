@@ -29,6 +29,7 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   // the averaged periods and the two the steady test compares; every period with period_series
   s.record_capacity = std::size_t(std::max(scene.average_periods, 2));
   if (scene.period_series) s.record_capacity = std::max(s.record_capacity, std::size_t(s.periods.limit()));
+  s.end_capacity = end_state_capacity(scene.average_periods);
   return s;
 }
 
@@ -39,6 +40,7 @@ SlotChunk::SlotChunk(const SlotSchedule& schedule, std::size_t capacity)
       A_(capacity),
       g_(capacity),
       y0_(capacity * schedule.rows),
+      tolerance_scale_(capacity),
       strict_fm_(capacity),
       status_(capacity),
       settled_(capacity),
@@ -46,7 +48,7 @@ SlotChunk::SlotChunk(const SlotSchedule& schedule, std::size_t capacity)
       steps_(2 * capacity),
       theta_(capacity * schedule.rows),
       records_(capacity * schedule.record_capacity * channel_count),
-      end_states_(capacity * 4 * schedule.rows) {}
+      end_states_(capacity * schedule.end_capacity * schedule.rows) {}
 
 void SlotChunk::fill(const Scene& scene, const VariantRange& range, std::size_t first, std::size_t count) {
   const std::size_t n = schedule_.rows;
@@ -57,6 +59,7 @@ void SlotChunk::fill(const Scene& scene, const VariantRange& range, std::size_t 
     index_[k] = member.index;
     A_[k] = member.A;
     g_[k] = member.g;
+    tolerance_scale_[k] = member.tolerance_scale;
     strict_fm_[k] = std::all_of(y0.begin(), y0.end(), [&](double x) { return x == y0[0]; }) ? 1 : 0;
     std::copy(y0.begin(), y0.end(), y0_.begin() + std::ptrdiff_t(k * n));
   }
@@ -79,10 +82,13 @@ MemberResult SlotChunk::result(const Scene& scene, std::size_t k) const {
     std::copy(slot, slot + channel_count, record.values.begin());
     lane.history.push_back(record);
   }
-  for (std::size_t p = periods - std::min<std::size_t>(periods, 4); p < periods; ++p) {
-    const double* end = &end_states_[(k * 4 + p % 4) * n];
-    lane.end_states.emplace_back(end, end + n);
+  const std::size_t ends = schedule_.end_capacity;
+  std::vector<std::vector<double>> kept;
+  for (std::size_t p = periods - std::min(periods, ends); p < periods; ++p) {
+    const double* end = &end_states_[(k * ends + p % ends) * n];
+    kept.emplace_back(end, end + n);
   }
+  keep_end_states(lane, std::move(kept), scene.average_periods);
   return retired_member_result(std::move(lane), scene.average_periods, scene.classifies_regimes(),
                                scene.period_series);
 }
@@ -109,6 +115,7 @@ std::vector<SlotChunk::Buffer> SlotChunk::buffers() {
           {g_.data(), bytes(g_), true},
           {strict_fm_.data(), bytes(strict_fm_), true},
           {y0_.data(), bytes(y0_), true},
+          {tolerance_scale_.data(), bytes(tolerance_scale_), true},
           {status_.data(), bytes(status_), false},
           {settled_.data(), bytes(settled_), false},
           {periods_.data(), bytes(periods_), false},

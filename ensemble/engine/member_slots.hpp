@@ -28,6 +28,7 @@ struct SlotSchedule {
   kernels::StepController controller = kernels::StepController::integral;
   double first_step_scale = 0;       ///< computed on the host (kernels::AdaptiveIntegrator)
   std::size_t record_capacity = 0;   ///< period records a slot keeps (a ring)
+  std::size_t end_capacity = 4;      ///< period end states a slot keeps (a ring, end_state_capacity)
   kernels::Integrals quadratures{};  ///< what the row model carries (the scene's observables)
   QuadratureChannels channels{};     ///< the period channels those quadratures fill
 };
@@ -38,13 +39,14 @@ struct SlotViews {
   const double* g = nullptr;                ///< [k]
   const std::uint8_t* strict_fm = nullptr;  ///< [k]
   const double* y0 = nullptr;               ///< [k · rows + j]
+  const double* tolerance_scale = nullptr;  ///< [k] Member::tolerance_scale
   std::uint8_t* status = nullptr;           ///< [k] kernels::LaneStatus
   std::uint8_t* settled = nullptr;          ///< [k]
   std::int32_t* periods = nullptr;          ///< [k] periods closed
   double* steps = nullptr;                  ///< [2k] accepted, [2k + 1] rejected
   double* theta = nullptr;                  ///< [k · rows + j] the state at retirement
   double* records = nullptr;  ///< [(k · record_capacity + r) · channel_count + c], r = period mod capacity
-  double* end_states = nullptr;  ///< [(k · 4 + r) · rows + j], r = period mod 4
+  double* end_states = nullptr;  ///< [(k · end_capacity + r) · rows + j], r = period mod end_capacity
 };
 
 /// Views over the buffers of a chunk given in SlotChunk::buffers() order (host or device memory).
@@ -53,13 +55,14 @@ inline SlotViews slot_views(void* const* p) {
           static_cast<const double*>(p[1]),
           static_cast<const std::uint8_t*>(p[2]),
           static_cast<const double*>(p[3]),
-          static_cast<std::uint8_t*>(p[4]),
+          static_cast<const double*>(p[4]),
           static_cast<std::uint8_t*>(p[5]),
-          static_cast<std::int32_t*>(p[6]),
-          static_cast<double*>(p[7]),
+          static_cast<std::uint8_t*>(p[6]),
+          static_cast<std::int32_t*>(p[7]),
           static_cast<double*>(p[8]),
           static_cast<double*>(p[9]),
-          static_cast<double*>(p[10])};
+          static_cast<double*>(p[10]),
+          static_cast<double*>(p[11])};
 }
 
 /// Host buffers of one chunk in the SlotViews layout.
@@ -93,7 +96,7 @@ class SlotChunk {
   SlotSchedule schedule_;
   std::size_t capacity_, count_ = 0;
   std::vector<std::size_t> index_;  ///< plan index of each chunk member
-  std::vector<double> A_, g_, y0_;
+  std::vector<double> A_, g_, y0_, tolerance_scale_;
   std::vector<std::uint8_t> strict_fm_, status_, settled_;
   std::vector<std::int32_t> periods_;
   std::vector<double> steps_, theta_, records_, end_states_;

@@ -30,6 +30,7 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
       }
       ++point.regime_count[std::size_t(r.regime)];
       point.unresolved += !r.dissipation_resolved();
+      point.symmetry_limited += r.symmetry_limited;
     }
     const ReplicaStatistics d = replica_statistics(
         group, [&](std::size_t k) { return results[first + k].dissipation(); },
@@ -40,6 +41,11 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
     point.dissipation_sem = d.sem;
     point.dissipation_min = d.min;
     point.dissipation_max = d.max;
+    point.dissipation_bias =
+        replica_statistics(
+            group, [&](std::size_t k) { return results[first + k].dissipation_error(); },
+            [&](std::size_t k) { return results[first + k].status == kernels::LaneStatus::ok; })
+            .mean;
     curves.push_back(point);
   }
   return curves;

@@ -24,6 +24,9 @@ struct CurvePoint {
   std::size_t unresolved = 0;  ///< of those, members whose D is not resolved (dissipation_resolved)
   double dissipation_mean = 0, dissipation_std = 0, dissipation_min = 0, dissipation_max = 0;
   double dissipation_sem = 0;  ///< standard error of dissipation_mean: sample spread / √count (NaN for one)
+  /// Bound on the integration's bias of dissipation_mean: the mean of the members' dissipation_error
+  double dissipation_bias = 0;
+  std::size_t symmetry_limited = 0;  ///< members of count whose D the integration error decides
   /// Members of the point in each regime (all_regimes order; finished members only) and failed.
   std::array<std::size_t, 4> regime_count{};
   std::size_t failed = 0;

@@ -33,7 +33,9 @@ Member MemberPlan::operator[](std::size_t index) const {
           variants_[v].rtol,
           variants_[v].atol,
           noise,
-          offset};
+          offset,
+          1.0,
+          nullptr};
 }
 
 std::vector<Member> plan_members(const Scene& scene) {
@@ -51,6 +53,7 @@ std::vector<Member> shard_members(const std::vector<Member>& plan, std::size_t i
 }
 
 std::vector<double> member_initial_angles(const Scene& scene, const Member& member) {
+  if (member.start) return *member.start;
   const InitialCondition ic{member.kind, member.noise, member.offset, scene.exact_angles};
   return initial_angles(ic, member.rows, scene.seed, member.stream);
 }

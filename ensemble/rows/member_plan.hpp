@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "ensemble/rows/scene.hpp"
@@ -22,6 +23,11 @@ struct Member {
   double rtol = 1e-6, atol = 1e-9;
   double noise = 0.01;  ///< η of its FM/AFM start
   double offset = 0.0;  ///< θ0 of its FM/AFM start
+  /// 1; below 1 for the member's shadow run at tolerances rtol·scale, atol·scale
+  /// (ensemble/engine/shadow_run.hpp)
+  double tolerance_scale = 1.0;
+  /// θ(0) given rather than drawn: a shadow run starts where its primary's averaged periods began
+  std::shared_ptr<const std::vector<double>> start;
 };
 
 /// The plan of a scene without holding it: member i is computed from i (mixed radix over the axes).
@@ -45,7 +51,7 @@ std::vector<Member> plan_members(const Scene& scene);
 std::vector<Member> shard_members(const std::vector<Member>& plan, std::size_t index, std::size_t count);
 
 /// θ(0) of a member: its kind with its noise and offset and the scene's angles, drawn from the
-/// stream (scene seed, member.stream).
+/// stream (scene seed, member.stream); or member.start where that is given.
 std::vector<double> member_initial_angles(const Scene& scene, const Member& member);
 
 }  // namespace rotorsweep::ensemble

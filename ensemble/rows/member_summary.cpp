@@ -54,6 +54,19 @@ void summarize(const std::vector<PeriodRecord>& history, int average_periods, bo
   result.regime = (classify && result.settled) ? classify_regime(averaged) : Regime::unsettled;
 }
 
+std::size_t end_state_capacity(int average_periods) {
+  return std::max<std::size_t>(4, std::size_t(average_periods) + 1);
+}
+
+void keep_end_states(RetiredLane& lane, std::vector<std::vector<double>> ends, int average_periods) {
+  const std::size_t averaged = std::size_t(average_periods);
+  lane.averaging_start.clear();
+  if (lane.periods > average_periods && ends.size() > averaged)
+    lane.averaging_start = ends[ends.size() - 1 - averaged];
+  if (ends.size() > 4) ends.erase(ends.begin(), ends.end() - 4);
+  lane.end_states = std::move(ends);
+}
+
 MemberResult retired_member_result(RetiredLane&& lane, int average_periods, bool classify,
                                    bool period_series) {
   MemberResult result;
@@ -73,6 +86,7 @@ MemberResult retired_member_result(RetiredLane&& lane, int average_periods, bool
   else
     result.final_state.attractor = ok ? "unsettled:none:p0" : "failed";
   if (period_series) result.periods = std::move(lane.history);
+  result.averaging_start = std::move(lane.averaging_start);
   return result;
 }
 

@@ -30,7 +30,16 @@ struct RetiredLane {
   std::vector<double> theta;          ///< the state at retirement (unwrapped)
   std::vector<PeriodRecord> history;  ///< the last periods (at least the averaged ones), oldest first
   std::vector<std::vector<double>> end_states;  ///< θ at the last period ends (up to 4), oldest first
+  std::vector<double> averaging_start;          ///< θ where the averaged periods began (empty: θ(0))
 };
+
+/// Period ends a lane keeps, oldest first: the last 4 (final state) and the one before the averaged
+/// periods (a shadow run's start).
+std::size_t end_state_capacity(int average_periods);
+
+/// Sets lane.end_states (the last 4 of `ends`, θ at the last period ends oldest first) and
+/// lane.averaging_start (θ at the end of period lane.periods − average_periods; empty when that is 0).
+void keep_end_states(RetiredLane& lane, std::vector<std::vector<double>> ends, int average_periods);
 
 /// The member's result: its counts, final angles in [0, 2π), summaries over the averaged periods
 /// (NaN when it failed) and final state. `history` is moved into result.periods with period_series.

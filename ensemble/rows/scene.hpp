@@ -77,12 +77,20 @@ struct Scene {
   LaneKind lanes = LaneKind::simd;
   Device device = Device::cpu;
   bool wrap_angles = false;  ///< restart every period at t = 0 with θ_j in [0, 2π)
+  /// numerics.global_error = "shadow": a member whose averaged periods slip runs again at tolerances
+  /// × shadow_tolerance_scale, and D's error covers the difference (ensemble/engine/shadow_run.hpp);
+  /// "local": D's error is the local estimate alone
+  bool shadow_runs = true;
 
   std::string output_path;
 
   bool has(Observable o) const { return observables[o]; }
   /// Whether the regime rule has what it needs (alignment extrema and slip counts).
   bool classifies_regimes() const { return observables.classifies_regimes(); }
+  /// Whether members that slip get shadow runs: global_error = "shadow", T = 0, D and slips observed.
+  bool runs_shadows() const {
+    return shadow_runs && !thermal.on() && has(Observable::slips) && has(Observable::dissipation);
+  }
   /// Every N × every (rtol, atol) pair, N outermost.
   std::vector<Variant> variants() const {
     std::vector<Variant> out;

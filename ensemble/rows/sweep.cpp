@@ -1,9 +1,15 @@
 // run_sweep: variant by variant, dispatch from the scene's stepper to its instantiation (one
-// generated translation unit per entry of kernels::steppers), or to the Langevin stepper at T > 0.
+// generated translation unit per entry of kernels::steppers), or to the Langevin stepper at T > 0;
+// members whose averaged periods slip get their shadow runs in a second pass (docs/numerics.md).
 #include "ensemble/rows/sweep.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
 
+#include "ensemble/engine/shadow_run.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
@@ -28,6 +34,88 @@ void SweepOutcome::append(SweepOutcome&& part) {
   interrupted = interrupted || part.interrupted;
 }
 
+namespace {
+
+/// The members of `range` on the scene's backend.
+SweepOutcome run_range(const Scene& scene, const VariantRange& range, int threads,
+                       const SweepControl& control, const ResultSink& sink) {
+  if (scene.device == Device::gpu) return run_gpu_row_sweep(scene, range, threads, control, sink);
+  if (scene.thermal.on()) return run_thermal_row_sweep(scene, range, threads, control, sink);
+  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
+    return run_row_sweep<id>(scene, range, threads, control, sink);
+  });
+}
+
+/// Whether no physical perturbation of the scene exceeds the tolerance rtol: T = 0 and every
+/// disorder below rtol, so that the integration error breaks the symmetry at each slip.
+bool symmetry_limited(const Scene& scene, double rtol) {
+  if (scene.thermal.on()) return false;
+  const Disorder& d = scene.disorder;
+  double largest = std::max({d.A, d.anisotropy, d.coupling});
+  for (const auto* rows : {&d.A_rows, &d.anisotropy_rows, &d.coupling_rows})
+    for (const double x : *rows) largest = std::max(largest, std::fabs(x));
+  return largest < rtol;
+}
+
+/// The members of one variant's range whose averaged periods slipped wait for their shadow runs
+/// (the same members at tolerances × shadow_tolerance_scale), which a second pass runs.
+class ShadowedRange {
+ public:
+  ShadowedRange(const Scene& scene, const VariantRange& range) : on_(scene.runs_shadows()), plan_(scene) {
+    if (range.end > range.begin) limited_ = symmetry_limited(scene, range.source->at(range.begin).rtol);
+  }
+
+  /// Hands `result` to `sink`, or holds it for its shadow run.
+  void take(MemberResult&& result, const ResultSink& sink) {
+    if (!on_ || !needs_shadow(result)) return sink(std::move(result));
+    const std::lock_guard guard(lock_);
+    held_.emplace(result.index, std::move(result));
+  }
+  std::size_t held() const {
+    const std::lock_guard guard(lock_);
+    return held_.size();
+  }
+
+  /// The shadow runs of the held members: each integrates its primary's averaged periods again, from
+  /// where they began, and its result completes its primary, which goes to `sink`.
+  SweepOutcome run_shadows(const Scene& scene, int threads, const SweepControl& control,
+                           const ResultSink& sink) {
+    std::vector<Member> members;
+    for (const auto& [index, primary] : held_) {
+      Member m = plan_[index];
+      m.tolerance_scale = shadow_tolerance_scale;
+      if (!primary.averaging_start.empty())
+        m.start = std::make_shared<const std::vector<double>>(primary.averaging_start);
+      members.push_back(std::move(m));
+    }
+    Scene averaged_periods = scene;
+    averaged_periods.relax_periods = 0;
+    averaged_periods.steady_tol = 0;
+    const MemberSource shadows{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+    return run_range(averaged_periods, {&shadows, 0, members.size()}, threads, control,
+                     [&](MemberResult&& shadow) {
+                       MemberResult primary;
+                       {
+                         const std::lock_guard guard(lock_);
+                         const auto at = held_.find(shadow.index);
+                         primary = std::move(at->second);
+                         held_.erase(at);
+                       }
+                       take_shadow(primary, shadow, limited_);
+                       sink(std::move(primary));
+                     });
+  }
+
+ private:
+  bool on_;
+  bool limited_ = false;
+  MemberPlan plan_;
+  mutable std::mutex lock_;
+  std::map<std::size_t, MemberResult> held_;
+};
+
+}  // namespace
+
 SweepOutcome run_members(const Scene& scene, const MemberSource& source, int threads,
                          const SweepControl& control, const ResultSink& sink) {
   SweepOutcome outcome;
@@ -49,19 +137,24 @@ SweepOutcome run_members(const Scene& scene, const MemberSource& source, int thr
       outcome.interrupted = true;
       break;
     }
+    // progress counts the members handed to the sink: a held member counts once its shadow is done
+    ShadowedRange shadowed(scene, range);
     const std::size_t before = done_before;
-    const SweepControl part_control{[&](std::size_t done) {
-                                      if (control.progress) control.progress(before + done);
-                                    },
-                                    control.stop, control.periods};
-    if (scene.device == Device::gpu)
-      outcome.append(run_gpu_row_sweep(scene, range, threads, part_control, sink));
-    else if (scene.thermal.on())
-      outcome.append(run_thermal_row_sweep(scene, range, threads, part_control, sink));
-    else
-      outcome.append(kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-        return run_row_sweep<id>(scene, range, threads, part_control, sink);
-      }));
+    const SweepControl first_pass{[&](std::size_t done) {
+                                    if (control.progress) control.progress(before + done - shadowed.held());
+                                  },
+                                  control.stop, control.periods};
+    outcome.append(run_range(scene, range, threads, first_pass,
+                             [&](MemberResult&& result) { shadowed.take(std::move(result), sink); }));
+    const std::size_t held = shadowed.held();
+    if (held > 0 && !outcome.interrupted) {
+      const std::size_t delivered = before + (range.end - range.begin) - held;
+      const SweepControl second_pass{[&](std::size_t done) {
+                                       if (control.progress) control.progress(delivered + done);
+                                     },
+                                     control.stop, control.periods};
+      outcome.append(shadowed.run_shadows(scene, threads, second_pass, sink));
+    }
     done_before += range.end - range.begin;
   }
   return outcome;

@@ -75,7 +75,9 @@ class AdaptiveIntegrator {
     const V h = lane_select(active, lane_min(s.h, remaining), V(idle_step));
     const lane_mask<V> resolved =
         stepper_.attempt(system, s.t, h, s.y, s.quad, y_new_, q_new_, y_error_, q_error_);
-    const V err = error_norm(system, tol_, s.y, y_new_, y_error_, s.quad, q_new_, q_error_);
+    // the norm against rtol·scale, atol·scale (dividing by a scale of 1 changes no bit)
+    const V err =
+        error_norm(system, tol_, s.y, y_new_, y_error_, s.quad, q_new_, q_error_) / s.tolerance_scale;
 
     const std::size_t carried = system.quadrature_count();
     V checksum(0.0);

@@ -30,6 +30,9 @@ struct LaneState {
   V t_stop = V(0.0);  ///< each lane integrates up to here
   V steps_accepted = V(0.0);
   V steps_rejected = V(0.0);
+  /// Each lane's tolerances are rtol·scale and atol·scale: 1, or a member's shadow run at tighter
+  /// tolerances (docs/numerics.md "The global error of D").
+  V tolerance_scale = V(1.0);
   std::array<LaneStatus, lane_width<V>> status;
 
   /// Lanes that still integrate (status ok).

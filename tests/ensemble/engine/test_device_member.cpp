@@ -2,11 +2,13 @@
 // it gives the CPU lanes' (scalar and SIMD) results bit for bit, for every stepper and schedule.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "ensemble/engine/device_member.hpp"
 #include "ensemble/engine/member_slots.hpp"
+#include "ensemble/engine/shadow_run.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
@@ -108,4 +110,31 @@ TEST_CASE("the device member driver with the PI step controller", "[device_membe
   check_backends_agree(io::parse_scene_text(
       scene_text("rodas4", 6, "relax_periods = 1\naverage_periods = 2", "controller = \"pi\"\n"),
       "device-member-pi"));
+}
+
+TEST_CASE("the device member driver runs a shadow run as the CPU does: its tolerance scale and its start",
+          "[device_member][shadow]") {
+  const auto scene = io::parse_scene_text(
+      scene_text("rodas4p2", 6, "relax_periods = 0\naverage_periods = 2", "global_error = \"local\"\n"),
+      "device-member-shadow");
+  const ensemble::MemberPlan plan(scene);
+  std::vector<ensemble::Member> members;
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    ensemble::Member m = plan[i];
+    m.tolerance_scale = ensemble::shadow_tolerance_scale;
+    auto start = ensemble::member_initial_angles(scene, m);
+    for (double& theta : start) theta += 0.25;  // a start of its own, as a primary's averaged periods give
+    m.start = std::make_shared<const std::vector<double>>(std::move(start));
+    members.push_back(std::move(m));
+  }
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const auto slots = run_through_slots(scene, source);
+  const auto cpu = ensemble::run_sweep(scene, members, 2, {});
+  std::string first;
+  CHECK(testing::count_differences(cpu.results, slots, first) == 0);
+  INFO(first);
+  CHECK(first.empty());
+  // and the scale and the start took effect: the plain members give other results
+  const auto plain = ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {});
+  CHECK(testing::count_differences(plain.results, slots, first) > 0);
 }
