@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <deque>
 #include <limits>
+#include <map>
+#include <memory>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -16,6 +18,7 @@
 #include "ensemble/engine/lane_observers.hpp"
 #include "ensemble/engine/member_progress.hpp"
 #include "ensemble/engine/member_result.hpp"
+#include "ensemble/engine/shadow_run.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_summary.hpp"
 #include "ensemble/rows/observables.hpp"
@@ -75,6 +78,9 @@ class LaneScheduler {
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
         profiles_(variant.rows, scene.row_profiles),
         period_schedule_(scene.period_schedule()),
+        shadow_schedule_{0, scene.average_periods, 0, 0.0},
+        shadows_on_(scene.runs_shadows() && !Loop::stochastic),
+        symmetry_limited_(scene.symmetry_limited(variant.rtol)),
         end_capacity_(end_state_capacity(scene.average_periods)),
         lanes_(width) {}
 
@@ -96,7 +102,7 @@ class LaneScheduler {
       for (std::size_t l = 0; l < width; ++l) {
         if (!lanes_[l].occupied) continue;
         if (loop_.failed(l))
-          retire(finish(l, false));
+          finish(l, false, retire);
         else if (period_ends && loop_.period_ended(l))
           close_period(l, retire, period_closed);
       }
@@ -112,6 +118,8 @@ class LaneScheduler {
     Member member;
     std::vector<PeriodRecord> history;  ///< every period with period_series, else the last ones
     MemberProgress progress;            ///< periods closed, steady state
+    bool shadow = false;                ///< a shadow run (ensemble/engine/shadow_run.hpp)
+    PeriodSchedule schedule;            ///< the scene's, or a shadow run's: its averaged periods only
     std::vector<std::vector<double>>
         end_states;  ///< θ at the last period ends (up to end_capacity_, oldest first)
     std::deque<std::vector<double>> profiles;  ///< row profiles of the last average_periods periods
@@ -123,10 +131,16 @@ class LaneScheduler {
     f(slips_);
   }
 
+  /// Idle lanes take the shadow runs waiting, then members of the plan.
   template <class NextMember>
   void fill_idle_lanes(NextMember& next_member) {
-    for (std::size_t l = 0; l < width && occupied_ < width && !plan_exhausted_; ++l) {
+    for (std::size_t l = 0; l < width && occupied_ < width && (!plan_exhausted_ || !shadows_.empty()); ++l) {
       if (lanes_[l].occupied) continue;
+      if (!shadows_.empty()) {
+        start(l, shadows_.front(), true);
+        shadows_.pop_front();
+        continue;
+      }
       const std::optional<Member> member = next_member();
       plan_exhausted_ = !member;
       if (plan_exhausted_) break;
@@ -134,7 +148,7 @@ class LaneScheduler {
     }
   }
 
-  void start(std::size_t l, const Member& member) {
+  void start(std::size_t l, const Member& member, bool shadow = false) {
     const std::vector<double> y0 = setup_.initial_state(member);
     loop_.start(l, setup_.parameters(member, y0), y0);
     if (member.tolerance_scale != 1.0) loop_.set_tolerance_scale(l, member.tolerance_scale);
@@ -148,6 +162,8 @@ class LaneScheduler {
     lanes_[l].member = member;
     lanes_[l].history.clear();
     lanes_[l].progress = MemberProgress{};
+    lanes_[l].shadow = shadow;
+    lanes_[l].schedule = shadow ? shadow_schedule_ : period_schedule_;
     lanes_[l].end_states.clear();
     lanes_[l].profiles.clear();
     ++occupied_;
@@ -183,8 +199,8 @@ class LaneScheduler {
     history.push_back(record);
     forget_old_periods(history);
     period_closed();
-    if (lanes_[l].progress.close_period(period_schedule_, record.dissipation())) {
-      retire(finish(l, lanes_[l].progress.settled()));
+    if (lanes_[l].progress.close_period(lanes_[l].schedule, record.dissipation())) {
+      finish(l, lanes_[l].progress.settled(), retire);
       return;
     }
     loop_.next_period(l, scene_.wrap_angles);
@@ -207,7 +223,35 @@ class LaneScheduler {
     if (history.size() >= 2 * keep) history.erase(history.begin(), history.end() - std::ptrdiff_t(keep));
   }
 
-  MemberResult finish(std::size_t l, bool settled) {
+  /// Retires lane l's member: its result goes to retire(), or, where it needs a shadow run
+  /// (ensemble/engine/shadow_run.hpp), waits for it; a shadow run's result completes its primary's.
+  template <class Retire>
+  void finish(std::size_t l, bool settled, Retire& retire) {
+    MemberResult result = summarize_lane(l, settled);
+    const Member& member = lanes_[l].member;
+    release_lane(l);
+    if (lanes_[l].shadow) {  // its primary waits for it
+      const auto at = held_.find(member.index);
+      MemberResult primary = std::move(at->second);
+      held_.erase(at);
+      take_shadow(primary, result, symmetry_limited_);
+      retire(std::move(primary));
+      return;
+    }
+    if (!shadows_on_ || !needs_shadow(result)) {
+      retire(std::move(result));
+      return;
+    }
+    Member shadow = member;
+    shadow.tolerance_scale = shadow_tolerance_scale;
+    shadow.start = std::make_shared<const std::vector<double>>(
+        result.averaging_start.empty() ? setup_.initial_state(member) : result.averaging_start);
+    shadows_.push_back(std::move(shadow));
+    held_.emplace(member.index, std::move(result));
+  }
+
+  /// The result of the member in lane l, from its records.
+  MemberResult summarize_lane(std::size_t l, bool settled) {
     Lane& lane = lanes_[l];
     RetiredLane retired{lane.member.index,
                         loop_.status(l),
@@ -232,13 +276,17 @@ class LaneScheduler {
           n > 1 ? result.dissipation_std() / std::sqrt(n - 1) : std::numeric_limits<double>::infinity();
     }
     if (profiles_.enabled()) average_profiles(lane.profiles, result);
+    return result;
+  }
+
+  void release_lane(std::size_t l) {
+    Lane& lane = lanes_[l];
     lane.occupied = false;
     lane.history.clear();
     lane.end_states.clear();
     lane.profiles.clear();
     loop_.release(l);
     --occupied_;
-    return result;
   }
 
   /// Means over the averaged periods of D_j and of each link's alignment (NaN when the member failed).
@@ -268,7 +316,12 @@ class LaneScheduler {
   SlipObserver<Loop> slips_;
   RowProfileObserver<Loop> profiles_;
   PeriodSchedule period_schedule_;
-  std::size_t end_capacity_;  ///< period ends a lane keeps (end_state_capacity)
+  PeriodSchedule shadow_schedule_;            ///< a shadow run's: the averaged periods, no steady test
+  bool shadows_on_;                           ///< members whose averaged periods slip get shadow runs
+  bool symmetry_limited_;                     ///< no physical perturbation of the scene exceeds rtol
+  std::deque<Member> shadows_;                ///< shadow runs waiting for a lane
+  std::map<std::size_t, MemberResult> held_;  ///< primaries waiting for their shadow runs
+  std::size_t end_capacity_;                  ///< period ends a lane keeps (end_state_capacity)
   std::vector<Lane> lanes_;
   std::size_t occupied_ = 0;
   bool plan_exhausted_ = false;

@@ -2,7 +2,9 @@
 // conditions, schedule, observables, numerics, output. Plain data; io/ parses and validates it.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -90,6 +92,15 @@ struct Scene {
   /// Whether members that slip get shadow runs: global_error = "shadow", T = 0, D and slips observed.
   bool runs_shadows() const {
     return shadow_runs && !thermal.on() && has(Observable::slips) && has(Observable::dissipation);
+  }
+  /// Whether no physical perturbation exceeds the tolerance rtol: T = 0 and every disorder below
+  /// rtol, so that the integration error breaks the symmetry at each slip (symmetry-limited).
+  bool symmetry_limited(double rtol) const {
+    if (thermal.on()) return false;
+    double largest = std::max({disorder.A, disorder.anisotropy, disorder.coupling});
+    for (const auto* rows : {&disorder.A_rows, &disorder.anisotropy_rows, &disorder.coupling_rows})
+      for (const double x : *rows) largest = std::max(largest, std::fabs(x));
+    return largest < rtol;
   }
   /// Every N × every (rtol, atol) pair, N outermost.
   std::vector<Variant> variants() const {

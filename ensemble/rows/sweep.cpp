@@ -1,6 +1,6 @@
 // run_sweep: variant by variant, dispatch from the scene's stepper to its instantiation (one
 // generated translation unit per entry of kernels::steppers), or to the Langevin stepper at T > 0;
-// members whose averaged periods slip get their shadow runs in a second pass (docs/numerics.md).
+// on the GPU, members whose averaged periods slip get their shadow runs in a second pass (docs/numerics.md).
 #include "ensemble/rows/sweep.hpp"
 
 #include <algorithm>
@@ -46,23 +46,14 @@ SweepOutcome run_range(const Scene& scene, const VariantRange& range, int thread
   });
 }
 
-/// Whether no physical perturbation of the scene exceeds the tolerance rtol: T = 0 and every
-/// disorder below rtol, so that the integration error breaks the symmetry at each slip.
-bool symmetry_limited(const Scene& scene, double rtol) {
-  if (scene.thermal.on()) return false;
-  const Disorder& d = scene.disorder;
-  double largest = std::max({d.A, d.anisotropy, d.coupling});
-  for (const auto* rows : {&d.A_rows, &d.anisotropy_rows, &d.coupling_rows})
-    for (const double x : *rows) largest = std::max(largest, std::fabs(x));
-  return largest < rtol;
-}
-
-/// The members of one variant's range whose averaged periods slipped wait for their shadow runs
-/// (the same members at tolerances × shadow_tolerance_scale), which a second pass runs.
+/// On the GPU (whose threads run a member from start to retirement) the members of one variant's range
+/// whose averaged periods slipped wait for their shadow runs, which a second pass runs; the CPU lanes
+/// run a shadow as soon as its primary retires (LaneScheduler).
 class ShadowedRange {
  public:
-  ShadowedRange(const Scene& scene, const VariantRange& range) : on_(scene.runs_shadows()), plan_(scene) {
-    if (range.end > range.begin) limited_ = symmetry_limited(scene, range.source->at(range.begin).rtol);
+  ShadowedRange(const Scene& scene, const VariantRange& range)
+      : on_(scene.runs_shadows() && scene.device == Device::gpu), plan_(scene) {
+    if (range.end > range.begin) limited_ = scene.symmetry_limited(range.source->at(range.begin).rtol);
   }
 
   /// Hands `result` to `sink`, or holds it for its shadow run.
