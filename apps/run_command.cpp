@@ -21,6 +21,7 @@
 #include "io/output_target.hpp"
 #include "io/result_file.hpp"
 #include "io/result_reader.hpp"
+#include "io/run_description.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -162,47 +163,14 @@ bool fits_in_memory(const ensemble::Scene& scene, int threads) {
   return false;
 }
 
-/// The one-line description of the run on stderr.
+/// The description of the run on stderr.
 void print_header(const RunOptions& options, const ensemble::Scene& scene, std::size_t members, int threads,
                   const std::optional<io::ShardLabel>& shard) {
-  const std::size_t lanes =
-      scene.lanes == ensemble::LaneKind::simd ? kernels::lane_width<kernels::simd_lane> : 1;
-  std::string rows, tolerances;
-  for (std::size_t n : scene.row_counts) {
-    if (!rows.empty()) rows += ",";
-    rows += std::to_string(n);
-  }
-  for (double r : scene.rtol_values) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%s%g", tolerances.empty() ? "" : ",", r);
-    tolerances += text;
-  }
   if (shard)
     std::fprintf(stderr, "shard %zu/%zu: members %zu, %zu, %zu, ... of the plan's %zu\n", shard->index,
                  shard->count, shard->index - 1, shard->index - 1 + shard->count,
                  shard->index - 1 + 2 * shard->count, shard->plan_members);
-  std::fprintf(stderr,
-               "rotorsweep run %s: %zu members (%zu N × %zu rtol × %zu A × %zu g × %zu noise × %zu offset × "
-               "%zu kinds × %d replicas), N = %s, %s rtol %s, %d threads × %zu lanes\n",
-               options.scene.c_str(), members, scene.row_counts.size(), scene.rtol_values.size(),
-               scene.A_values.size(), scene.g_values.size(), scene.noise_values.size(),
-               scene.offset_values.size(), scene.kinds.size(), scene.replicas, rows.c_str(),
-               kernels::stepper_names[std::size_t(scene.stepper)].data(), tolerances.c_str(), threads, lanes);
-  if (scene.device == ensemble::Device::gpu)
-    std::fprintf(stderr, "device: %s, one member per GPU thread (%d host threads summarize)\n",
-                 ensemble::gpu_info().name.c_str(), threads);
-  const auto& couplings = scene.couplings;
-  if (couplings.nearest_neighbour()) return;
-  std::string what = "nearest neighbours";
-  if (couplings.kind == ensemble::RowCouplings::Kind::table)
-    what = "the table of model.coupling_table (range " + std::to_string(couplings.table.range()) + ")";
-  else if (couplings.kind == ensemble::RowCouplings::Kind::dipolar)
-    what = "point dipoles over " +
-           (couplings.all_rows ? std::string("all rows") : std::to_string(couplings.range) + " rows") +
-           (couplings.row_length ? ", rows of " + std::to_string(couplings.row_length) + " rotors"
-                                 : std::string(", infinite rows"));
-  std::fprintf(stderr, "couplings: %s; %s boundary (LDLT over the Jacobian's envelope)\n", what.c_str(),
-               couplings.open ? "open" : "periodic");
+  std::fputs(io::run_description(scene, options.scene, members, threads).c_str(), stderr);
 }
 
 std::string resume_command(const std::string& command, const SceneCommandOptions& options,

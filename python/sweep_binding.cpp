@@ -5,9 +5,11 @@
 
 #include "bindings.hpp"
 #include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/paper_table.hpp"
+#include "io/run_description.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -84,6 +86,15 @@ void bind_sweep(py::module_& m) {
       },
       py::arg("scene"), py::arg("is_path") = false,
       "The validated scene: its text, output.path ('' when not given) and member count.");
+  m.def(
+      "run_description",
+      [](const std::string& scene, bool is_path, int threads) {
+        return io::run_description(parse(scene, is_path), is_path ? scene : std::string("<python>"),
+                                   parse(scene, is_path).member_count(),
+                                   ensemble::thread_count(threads, "threads"));
+      },
+      py::arg("scene"), py::arg("is_path"), py::arg("threads"),
+      "The lines `rotorsweep run` prints before it starts (threads 0: the default count).");
   m.attr("paper_table") = paper_table();
   m.attr("lane_width") = kernels::lane_width<kernels::simd_lane>;
   m.attr("instruction_set") = ensemble::instruction_set().name;

@@ -7,6 +7,7 @@ two-angle energy landscape (README "Python"; docs/architecture.md "Python module
 """
 
 import io
+import sys
 import os
 import tempfile
 
@@ -31,13 +32,15 @@ __all__ = ["run", "slider", "open", "members", "scene_text", "plan_axes", "criti
 _POLL_SECONDS = 0.1
 
 
-def run(scene, threads=None, progress=True, output=None, force=False):
+def run(scene, threads=None, progress=True, output=None, force=False, quiet=False):
     """Runs a scene and returns its results as an xarray.Dataset (see open()).
 
     scene: TOML text, a path to a scene file, or a dict of tables ({"sweep": {"A": [...]}, ...});
         validated by the command line's parser: a bad key raises ValueError naming it.
     threads: OpenMP threads, 1 to 4096 (None: OMP_NUM_THREADS, else all cores); others raise ValueError.
     progress: draw a progress line on stderr.
+    quiet: print nothing (without it, stderr gets the command line's first lines and a last line with
+        the time taken and the warnings `rotorsweep run` gives).
     output: None keeps the result in memory only; a path writes that file exactly as
         `rotorsweep run -o PATH` does; True writes to the scene's output.path.
     force: replace an existing file at output that is not an HDF5 file.
@@ -53,7 +56,9 @@ def run(scene, threads=None, progress=True, output=None, force=False):
     path = "" if output is None or output is False else _output_path(output)
     job = _core.SweepJob(text, is_path, 0 if threads is None else int(threads), path, bool(force),
                          _core.version, _core.revision)
-    line = _progress.ProgressLine(job.total, progress)
+    if not quiet:
+        sys.stderr.write(_core.run_description(text, is_path, 0 if threads is None else int(threads)))
+    line = _progress.ProgressLine(job.total, progress and not quiet)
     try:
         while not job.wait(_POLL_SECONDS):
             line.update(job.done)
@@ -64,10 +69,10 @@ def run(scene, threads=None, progress=True, output=None, force=False):
         raise
     line.finish()
     image = job.take_image()
-    if path:
-        return open(path)
-    with h5py.File(io.BytesIO(image), "r") as h5file:
-        return _dataset.from_hdf5(h5file)
+    with h5py.File(path if path else io.BytesIO(image), "r") as h5file:
+        if not quiet:
+            _progress.report(h5file, path)
+        return open(path) if path else _dataset.from_hdf5(h5file)
 
 
 def slider(scene, threads=None, progress=True, output=None, force=False):

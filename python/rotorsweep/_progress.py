@@ -1,5 +1,5 @@
 """The progress line of rotorsweep.run on sys.stderr: members done / total, rate, time left; redrawn
-in place on a terminal, one line every 10 s otherwise (like the command line's)."""
+in place on a terminal, one line every 10 s otherwise (like the command line's); and its last line."""
 
 import sys
 import time
@@ -35,3 +35,31 @@ class ProgressLine:
         if self.terminal and self.width:
             sys.stderr.write("\r" + " " * self.width + "\r")
             sys.stderr.flush()
+
+
+def report(h5file, path):
+    """The last lines `rotorsweep run` prints, from a finished result: members, time, rate and lane
+    occupancy, then the members that did not finish, are not resolved or are symmetry-limited."""
+    attrs, members = h5file.attrs, h5file["members"]
+    count = members["status"].shape[0]
+    seconds = float(attrs["wall_seconds"])
+    where = f"wrote {path}" if path else "rotorsweep.run"
+    rate = f"{count / seconds:.1f} members/s" if seconds > 0 else "instant"
+    sys.stderr.write(f"{where}: {count} members in {seconds:.3g} s ({rate}, lane occupancy "
+                     f"{100 * float(attrs['lane_occupancy']):.1f} %)\n")
+    status = [s.decode() if isinstance(s, bytes) else str(s) for s in members["status"][:]]
+    ok = [s == "ok" for s in status]
+    failed = {}
+    for s in status:
+        if s != "ok":
+            failed[s] = failed.get(s, 0) + 1
+    if failed:
+        listed = " ".join(f"{name} {n}" for name, n in sorted(failed.items()))
+        sys.stderr.write(f"warning: members that did not finish (their observables are NaN): {listed}\n")
+    for column, text in (("dissipation_resolved", "whose D is not resolved (dissipation_error >= 0.1 |D|)"),
+                         ("symmetry_limited", "whose D the integration error decides (symmetry-limited)")):
+        if column in members:
+            values = members[column][:]
+            flagged = sum(1 for k, v in zip(ok, values) if k and (v == 0 if column == "dissipation_resolved" else v != 0))
+            if flagged:
+                sys.stderr.write(f"warning: {flagged} members {text}; see /members/{column}\n")

@@ -144,3 +144,21 @@ def test_open_names_a_file_that_is_not_a_result(tmp_path):
         f.create_group("members").create_dataset("A", data=[1.0])
     with pytest.raises(ValueError, match="no scene attribute"):
         rotorsweep.open(path)
+
+
+def test_run_prints_the_command_lines_first_and_last_lines_unless_quiet(small_scene, capsys):
+    rotorsweep.run(small_scene, progress=False)
+    err = capsys.readouterr().err
+    assert err.startswith("rotorsweep run <python>: ")
+    assert " members (" in err and "threads × " in err
+    assert "rotorsweep.run: " in err and "lane occupancy" in err
+    rotorsweep.run(small_scene, quiet=True)
+    assert capsys.readouterr().err == ""
+
+
+def test_a_thermal_runs_header_names_the_langevin_stepper(capsys):
+    scene = {"model": {"rows": 2}, "drive": {"g": [1.0]}, "sweep": {"A": [0.0]}, "initial": {"kinds": ["random"]},
+             "thermal": {"temperature": 0.5}, "schedule": {"relax_periods": 1, "average_periods": 1}}
+    rotorsweep.run(scene, progress=False)
+    first = capsys.readouterr().err.splitlines()[0]
+    assert "Langevin" in first and "T = 0.5" in first and "rtol 1e" not in first

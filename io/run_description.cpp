@@ -1,0 +1,63 @@
+// The description of a row sweep: the plan's axes, the stepper (or the Langevin stepper at T > 0)
+// with its tolerances or steps, the threads, lanes, device and couplings, as `run` prints it.
+#include "io/run_description.hpp"
+
+#include <cstdio>
+
+#include "ensemble/gpu/gpu_backend.hpp"
+#include "kernels/lanes/lane.hpp"
+#include "kernels/steppers/stepper_list.hpp"
+
+namespace rotorsweep::io {
+
+namespace {
+
+std::string format(const char* pattern, auto... values) {
+  char text[512];
+  std::snprintf(text, sizeof text, pattern, values...);
+  return text;
+}
+
+/// The integrator that runs the members: the stepper and its tolerances, or at T > 0 the Langevin stepper.
+std::string integrator(const ensemble::Scene& scene) {
+  if (scene.thermal.on())
+    return format("Langevin (Euler–Maruyama) at T = %g, at least %d steps per period and h ≤ %g g",
+                  scene.thermal.temperature, scene.thermal.steps_per_period, scene.thermal.step_fraction);
+  std::string tolerances;
+  for (double r : scene.rtol_values) tolerances += format("%s%g", tolerances.empty() ? "" : ",", r);
+  return std::string(kernels::stepper_names[std::size_t(scene.stepper)]) + " rtol " + tolerances;
+}
+
+}  // namespace
+
+std::string run_description(const ensemble::Scene& scene, const std::string& name, std::size_t members,
+                            int threads) {
+  const std::size_t lanes =
+      scene.lanes == ensemble::LaneKind::simd ? kernels::lane_width<kernels::simd_lane> : 1;
+  std::string rows;
+  for (std::size_t n : scene.row_counts) rows += (rows.empty() ? "" : ",") + std::to_string(n);
+  std::string text = format(
+      "rotorsweep run %s: %zu members (%zu N × %zu rtol × %zu A × %zu g × %zu noise × %zu offset × %zu kinds "
+      "× "
+      "%d replicas), N = %s, %s, %d threads × %zu lanes\n",
+      name.c_str(), members, scene.row_counts.size(), scene.rtol_values.size(), scene.A_values.size(),
+      scene.g_values.size(), scene.noise_values.size(), scene.offset_values.size(), scene.kinds.size(),
+      scene.replicas, rows.c_str(), integrator(scene).c_str(), threads, lanes);
+  if (scene.device == ensemble::Device::gpu)
+    text += format("device: %s, one member per GPU thread (%d host threads summarize)\n",
+                   ensemble::gpu_info().name.c_str(), threads);
+  const auto& couplings = scene.couplings;
+  if (couplings.nearest_neighbour()) return text;
+  std::string what = "nearest neighbours";
+  if (couplings.kind == ensemble::RowCouplings::Kind::table)
+    what = "the table of model.coupling_table (range " + std::to_string(couplings.table.range()) + ")";
+  else if (couplings.kind == ensemble::RowCouplings::Kind::dipolar)
+    what = "point dipoles over " +
+           (couplings.all_rows ? std::string("all rows") : std::to_string(couplings.range) + " rows") +
+           (couplings.row_length ? ", rows of " + std::to_string(couplings.row_length) + " rotors"
+                                 : std::string(", infinite rows"));
+  return text + "couplings: " + what + "; " + (couplings.open ? "open" : "periodic") +
+         " boundary (LDLT over the Jacobian's envelope)\n";
+}
+
+}  // namespace rotorsweep::io
