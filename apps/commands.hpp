@@ -60,6 +60,7 @@ struct MergeOptions {
   std::vector<std::string> shards;
   std::string output;
   bool force = false;
+  bool quiet = false;  ///< no summary line
 };
 int run_merge(const MergeOptions& options);
 
@@ -82,6 +83,7 @@ int run_info(const InfoOptions& options);
 struct LandscapeOptions {
   std::string output;
   bool quiet = false;
+  bool force = false;  ///< replace an existing output file even if it is not an HDF5 file
   // whose landscape: nearest neighbours, point-dipole rows (range, row length) or (a, b, c) given
   std::size_t range = 0;  ///< 0: nearest neighbours
   std::string row_length = "infinite";

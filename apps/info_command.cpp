@@ -81,7 +81,8 @@ int run_info(const InfoOptions& options) {
     if (file.has_attribute("scene_path"))
       std::printf("%-12s %s\n", "scene", file.attribute_string("scene_path").c_str());
     if (file.has_attribute("device") && file.has_attribute("isa"))
-      std::printf("%-12s %s, instruction set %s\n", "ran on", file.attribute_string("device").c_str(),
+      std::printf("%-12s %s, instruction set%s %s\n", "ran on", file.attribute_string("device").c_str(),
+                  file.attribute_string("isa").find(", ") == std::string::npos ? "" : "s",
                   file.attribute_string("isa").c_str());
     if (file.has_attribute("kind")) {
       print_landscape(file);

@@ -28,12 +28,12 @@ using Clock = std::chrono::steady_clock;
 /// Creates the file (beside its final path, see io/output_target.hpp) with `complete` = FALSE,
 /// lets `fill` write it, records the wall time, sets `complete` = TRUE and puts it in place.
 /// Exit code 2 when the path cannot be used, 1 on a later failure (no file is left behind).
-int write_landscape_file(const std::string& path, const std::string& kind,
+int write_landscape_file(const std::string& path, bool force, const std::string& kind,
                          const std::function<void(const io::Hdf5Location&)>& fill) {
   std::optional<io::OutputTarget> target;
   std::optional<io::Hdf5Location> file;
   try {
-    target.emplace(path, std::vector<std::string>{}, io::Replaceable::hdf5, false);
+    target.emplace(path, std::vector<std::string>{}, io::Replaceable::hdf5, force);
     file = io::Hdf5Location::create_file(target->temporary());
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << " (-o)\n";
@@ -116,7 +116,7 @@ int run_landscape_chambers(const LandscapeOptions& o) {
   const std::size_t cells = std::size_t(grid.A_cells) * grid.tau_cells;
   const int min_cells =
       o.min_zone_cells > 0 ? o.min_zone_cells : int(std::max<std::size_t>(10, cells / 10000));
-  return write_landscape_file(o.output, "chambers", [&](const io::Hdf5Location& file) {
+  return write_landscape_file(o.output, o.force, "chambers", [&](const io::Hdf5Location& file) {
     ProgressLine progress(std::size_t(grid.A_cells), !o.quiet, "A rows");
     const auto map = landscape::chamber_map(grid, [&](int rows) { progress.update(std::size_t(rows)); });
     progress.finish();
@@ -165,7 +165,7 @@ int run_landscape_chambers(const LandscapeOptions& o) {
 }
 
 int run_landscape_curves(const LandscapeOptions& o) {
-  return write_landscape_file(o.output, "curves", [&](const io::Hdf5Location& file) {
+  return write_landscape_file(o.output, o.force, "curves", [&](const io::Hdf5Location& file) {
     for (auto curve : landscape::all_curves) {
       const auto points = landscape::sample_curve(curve, o.samples, o.A_max, coefficients(o));
       std::vector<double> A, tau, parameter;
@@ -192,7 +192,7 @@ int run_landscape_jump_friction(const LandscapeOptions& o) {
     std::cerr << "error: --A-min, --A-max: need 0 <= A-min <= A-max (got " << lo << ", " << hi << ")\n";
     return 2;
   }
-  return write_landscape_file(o.output, "jump-friction", [&](const io::Hdf5Location& file) {
+  return write_landscape_file(o.output, o.force, "jump-friction", [&](const io::Hdf5Location& file) {
     std::vector<double> A, J, J_cycle, rho_cycle, drop_transverse, drop_low, zeta_low, zeta_landing,
         tau_transverse, tau_low;
     std::vector<std::int64_t> jumps;

@@ -117,6 +117,7 @@ int main(int argc, char** argv) {
   merge_cmd->add_option("-o,--output", merge.output, "Result file to write")->required();
   merge_cmd->add_flag("--force", merge.force,
                       "Replace an existing output file even if it is not an HDF5 file");
+  merge_cmd->add_flag("-q,--quiet", merge.quiet, "No summary line (errors are still printed)");
 
   auto* info_cmd = app.add_subcommand("info", "Summarise a result file");
   info_cmd->add_option("file", info.file, "Result file (HDF5)")->required();
@@ -138,6 +139,8 @@ int main(int argc, char** argv) {
   const auto output_option = [&](CLI::App* cmd) {
     cmd->add_option("-o,--output", landscape.output, "HDF5 file to write")->required();
     cmd->add_flag("-q,--quiet", landscape.quiet, "No progress line");
+    cmd->add_flag("--force", landscape.force,
+                  "Replace an existing output file even if it is not an HDF5 file");
     auto* range =
         cmd->add_option("--range", landscape.range,
                         "Point-dipole rows up to M apart (docs/model.md §8); default: nearest neighbours")

@@ -188,8 +188,9 @@ int run_merge(const MergeOptions& options) {
               << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";
     return 1;
   }
-  std::fprintf(stderr, "wrote %s: %zu members from %zu shards\n", options.output.c_str(), members,
-               options.shards.size());
+  if (!options.quiet)
+    std::fprintf(stderr, "wrote %s: %zu members from %zu shards\n", options.output.c_str(), members,
+                 options.shards.size());
   return 0;
 }
 

@@ -13,6 +13,7 @@ namespace {
 
 constexpr std::size_t path_bytes = 4096, most_directories = 16;
 char temporary_path[path_bytes];
+char lock_path[path_bytes];
 char directories[most_directories][path_bytes];
 std::size_t directory_count = 0;
 
@@ -25,6 +26,7 @@ bool copy_path(const std::string& path, char* buffer) {
 
 extern "C" void remove_and_exit(int number) {
   if (temporary_path[0]) ::unlink(temporary_path);
+  if (lock_path[0]) ::unlink(lock_path);  // the lock itself goes with the process
   for (std::size_t i = directory_count; i-- > 0;) ::rmdir(directories[i]);  // innermost first
   const char* message =
       number == SIGTERM ? "stopped by SIGTERM: nothing written\n" : "stopped by SIGINT: nothing written\n";
@@ -36,6 +38,7 @@ extern "C" void remove_and_exit(int number) {
 
 RemoveOnSignal::RemoveOnSignal(const io::OutputTarget& target) {
   if (!copy_path(target.temporary(), temporary_path)) temporary_path[0] = '\0';
+  if (!copy_path(target.lock_file(), lock_path)) lock_path[0] = '\0';
   directory_count = 0;
   for (const auto& directory : target.created_directories())
     if (directory_count < most_directories && copy_path(directory.string(), directories[directory_count]))

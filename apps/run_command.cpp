@@ -281,6 +281,7 @@ int run_sweep_command(const RunOptions& options) {
     try {
       const auto done = check_partial(partial, scene.text, shard, earlier_seconds);
       file.emplace(io::ResultFile::reopen(partial, scene));
+      file->add_writer_isa(ensemble::instruction_set().name);
       for (std::size_t row = 0; row < done.size(); ++row)
         if (done[row])
           ++done_before;

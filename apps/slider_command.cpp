@@ -127,6 +127,7 @@ int run_slider(const SliderOptions& options) {
     if (options.resume) {
       const auto done = check_partial(partial, scene.text, shard, earlier_seconds);
       file.emplace(io::SliderResultFile::reopen(partial, scene));
+      file->add_writer_isa(ensemble::instruction_set().name);
       for (std::size_t row = 0; row < done.size(); ++row)
         if (done[row])
           ++done_before;

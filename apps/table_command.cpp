@@ -42,9 +42,17 @@ ensemble::SweepOutcome integrate(kernels::StepperId stepper, double rtol) {
   scene.stepper = stepper;
   scene.lanes = ensemble::LaneKind::scalar;
   std::vector<ensemble::Member> members;
-  for (const auto& entry : paper::entries)
-    members.push_back(
-        {members.size(), 0, entry.A, paper::g, entry.kind, 0, 0, paper::rows, rtol, rtol * 1e-3});
+  for (const auto& entry : paper::entries) {
+    ensemble::Member m;
+    m.index = members.size();
+    m.A = entry.A;
+    m.g = paper::g;
+    m.kind = entry.kind;
+    m.rows = paper::rows;
+    m.rtol = rtol;
+    m.atol = rtol * 1e-3;
+    members.push_back(m);
+  }
   return ensemble::run_sweep(scene, members, 1, {});
 }
 

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <numeric>
@@ -51,6 +52,17 @@ std::size_t MemberTableFile::plan_index_of(std::size_t row) const {
 std::vector<char> MemberTableFile::done() const {
   const auto flags = file_.open_group("members").read_flags("done");
   return std::vector<char>(flags.begin(), flags.end());
+}
+
+void MemberTableFile::add_writer_isa(const std::string& isa) const {
+  std::string list = file_.has_attribute("isa") ? file_.attribute_string("isa") : std::string();
+  for (std::size_t begin = 0; begin <= list.size();) {
+    const std::size_t end = std::min(list.find(", ", begin), list.size());
+    if (list.substr(begin, end - begin) == isa) return;
+    begin = end + 2;
+  }
+  file_.set_attribute("isa", list.empty() ? isa : list + ", " + isa);
+  file_.flush();
 }
 
 Hdf5Location MemberTableFile::create_table(const std::string& scene_text,

@@ -43,6 +43,9 @@ class MemberTableFile {
   std::size_t rows() const { return rows_; }
   /// /members/done: 1 for the rows written.
   std::vector<char> done() const;
+  /// Adds `isa` to the file's list of instruction sets that wrote its rows (attribute isa, ", "
+  /// between names) when it is not there: a run resumed by another binary.
+  void add_writer_isa(const std::string& isa) const;
 
   /// Closes the file; throws when its last buffers cannot be written.
   void close() { file_.close(); }

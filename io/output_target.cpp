@@ -2,8 +2,12 @@
 // puts a complete file in place (or the clean-up that leaves no trace of a failed one).
 #include "io/output_target.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <cstring>
@@ -97,6 +101,7 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
     throw OutputPathError("output path " + name + ": " + in_quotes(parent.string()) + " is not a directory");
   if (::access(parent.empty() ? "." : parent.c_str(), W_OK) != 0)
     throw OutputPathError("output path " + name + ": cannot write in its directory: " + std::strerror(errno));
+  lock(parent, name);
   if (resumable) {
     temporary_ = target_;
     temporary_ += ".partial";
@@ -110,7 +115,53 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
   temporary_ = parent / hidden_name;
 }
 
+void OutputTarget::lock(const fs::path& parent, const std::string& name) {
+  std::string lock_name(1, '.');
+  lock_name.append(target_.filename().string()).append(".lock");
+  lock_path_ = parent / lock_name;
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    const int fd = ::open(lock_path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0)
+      throw OutputPathError("output path " + name + ": cannot create its lock file " +
+                            in_quotes(lock_path_.string()) + ": " + std::strerror(errno));
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      std::array<char, 32> pid{};
+      const ssize_t n = ::pread(fd, pid.data(), pid.size() - 1, 0);
+      ::close(fd);
+      std::string holder(pid.data(), std::size_t(std::max<ssize_t>(n, 0)));
+      while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' ')) holder.pop_back();
+      throw OutputPathError("output path " + name + " is being written by another process" +
+                            (holder.empty() ? std::string() : " (PID " + holder + ")") +
+                            "; wait for it to finish, or stop it and resume, or choose another output");
+    }
+    // the holder may have removed the file between our open and our lock: then take the new one
+    struct stat held {
+    }, named{};
+    if (::fstat(fd, &held) == 0 && ::stat(lock_path_.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
+        held.st_dev == named.st_dev) {
+      const std::string text = std::to_string(::getpid()) + "\n";
+      // the PID only makes another process's message more helpful: a failed write is no error
+      [[maybe_unused]] const bool written =
+          ::ftruncate(fd, 0) == 0 && ::pwrite(fd, text.data(), text.size(), 0) == ssize_t(text.size());
+      lock_fd_ = fd;
+      return;
+    }
+    ::close(fd);
+  }
+  throw OutputPathError("output path " + name + ": its lock file " + in_quotes(lock_path_.string()) +
+                        " keeps changing; another process is writing there");
+}
+
+void OutputTarget::unlock() {
+  if (lock_fd_ < 0) return;
+  std::error_code error;
+  fs::remove(lock_path_, error);  // before closing: nobody else can hold it meanwhile
+  ::close(lock_fd_);
+  lock_fd_ = -1;
+}
+
 OutputTarget::~OutputTarget() {
+  unlock();
   if (committed_) return;
   std::error_code error;
   fs::remove(temporary_, error);

@@ -22,12 +22,15 @@ enum class Replaceable { hdf5, any };
 /// The file at `path` is written as a temporary file in the same directory, which commit()
 /// renames over `path` (atomically: a reader sees the old file or the new one). Until then an
 /// existing file at `path` is untouched; without commit() (an error, an exception) the temporary
-/// file and the directories created for it are removed.
+/// file and the directories created for it are removed. For its whole life it holds a lock on the
+/// path (flock on ".NAME.lock" beside it, which holds its PID), so that a second process writing
+/// there is refused before it touches anything; the system drops the lock of a process that dies.
 class OutputTarget {
  public:
   /// Checks the path and creates missing parent directories. Throws OutputPathError when the path
   /// is empty or names a directory, is the same file as one of `inputs` (also through a link),
-  /// or is an existing file that is not `replaceable` (unless `force`).
+  /// is an existing file that is not `replaceable` (unless `force`), or another process holds its
+  /// lock (the message names its PID).
   /// With `resumable` the temporary file is path + ".partial", which keep() leaves in place.
   OutputTarget(const std::string& path, const std::vector<std::string>& inputs, Replaceable replaceable,
                bool force, bool resumable = false);
@@ -37,6 +40,8 @@ class OutputTarget {
 
   /// Where to write until commit().
   std::string temporary() const { return temporary_.string(); }
+  /// The lock file beside the target (removed with the target's lock).
+  std::string lock_file() const { return lock_path_.string(); }
   /// The final path as the user gave it.
   const std::string& path() const { return path_; }
   /// Whether commit() replaced an existing file.
@@ -56,6 +61,11 @@ class OutputTarget {
   std::vector<std::filesystem::path> created_directories_;  ///< innermost last
   bool replaced_ = false;
   bool committed_ = false;
+  std::filesystem::path lock_path_;  ///< ".NAME.lock" beside target_
+  int lock_fd_ = -1;                 ///< holds the flock
+
+  void lock(const std::filesystem::path& parent, const std::string& name);
+  void unlock();
 };
 
 /// Whether the file at `path` starts with the HDF5 signature (at 0, 512, 1024, ... bytes).

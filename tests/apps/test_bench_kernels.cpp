@@ -20,13 +20,18 @@ TEST_CASE("bench kernels reports every stepper against the bound of its evaluati
   // the evaluations per attempt: Rosenbrock stages (the linearisation is the first), dopri5's stages
   const auto line_of = [&](const std::string& stepper) {
     const auto start = run.output.find("steps " + stepper + " ");
-    return start == std::string::npos ? std::string() : run.output.substr(start, run.output.find('\n', start) - start);
+    return start == std::string::npos ? std::string()
+                                      : run.output.substr(start, run.output.find('\n', start) - start);
   };
-  for (const auto& [stepper, evaluations] : {std::pair<std::string, int>{"rodas4", 6}, {"rodas4p2", 6},
-                                             {"rodas5p", 8}, {"ros2", 2}, {"dopri5", 7}}) {
+  for (const auto& [stepper, evaluations] : {std::pair<std::string, int>{"rodas4", 6},
+                                             {"rodas4p2", 6},
+                                             {"rodas5p", 8},
+                                             {"ros2", 2},
+                                             {"dopri5", 7}}) {
     INFO(stepper);
-    CHECK_THAT(line_of(stepper), Catch::Contains("member-steps/s") &&
-                                     Catch::EndsWith("of the bound for " + std::to_string(evaluations) + " RHS)"));
+    CHECK_THAT(line_of(stepper),
+               Catch::Contains("member-steps/s") &&
+                   Catch::EndsWith("of the bound for " + std::to_string(evaluations) + " RHS)"));
   }
 }
 

@@ -30,7 +30,10 @@ TEST_CASE("info flags incomplete files and rejects others", "[apps][info]") {
   const auto dir = scratch_directory("info-incomplete");
   const auto scene =
       rotorsweep::io::parse_scene_text("[model]\nrows = 4\n[drive]\ng = [0.01]\n[sweep]\nA = [1]\n", "s");
-  { rotorsweep::io::ResultFile started((dir / "started.h5").string(), scene, {"s", "0", "unknown", "cpu", "sse2"}); }
+  {
+    rotorsweep::io::ResultFile started((dir / "started.h5").string(), scene,
+                                       {"s", "0", "unknown", "cpu", "sse2"});
+  }
   const auto info = run_cli("info '" + (dir / "started.h5").string() + "'", dir);
   CHECK(info.exit_code == 1);
   CHECK_THAT(info.output, Catch::Contains("INCOMPLETE"));
@@ -41,9 +44,9 @@ TEST_CASE("info flags incomplete files and rejects others", "[apps][info]") {
 TEST_CASE("an empty shard reports no rate, never NaN", "[apps][info]") {
   const auto dir = scratch_directory("info-empty");
   write_text(dir / "two.toml", "[model]\nrows = 4\n[drive]\ng = 0.01\n[sweep]\nA = [1, 2]\n");
-  const auto run = run_cli("run '" + (dir / "two.toml").string() + "' --shard 3/3 -q -o '" +
-                               (dir / "empty.h5").string() + "'",
-                           dir);
+  const auto run = run_cli(
+      "run '" + (dir / "two.toml").string() + "' --shard 3/3 -q -o '" + (dir / "empty.h5").string() + "'",
+      dir);
   INFO(run.output);
   REQUIRE(run.exit_code == 0);
   CHECK_THAT(run.output, Catch::Contains("0 members in") && Catch::Contains("no members run"));
@@ -54,4 +57,22 @@ TEST_CASE("an empty shard reports no rate, never NaN", "[apps][info]") {
     CHECK(text->find("nan") == std::string::npos);
     CHECK(text->find("inf ") == std::string::npos);
   }
+}
+
+TEST_CASE("a file resumed by another instruction set lists both, and info prints them",
+          "[apps][info][provenance]") {
+  using namespace rotorsweep;
+  const auto dir = scratch_directory("writer-isa");
+  const auto path = (dir / "out.h5").string();
+  const auto scene =
+      io::parse_scene_text("[model]\nrows = 2\n[drive]\ng = 0.1\n[sweep]\nA = [1.0]\n", "isa.toml");
+  { io::ResultFile created(path, scene, {"isa.toml", "1", "r", "cpu", "avx512"}); }
+  for (const char* isa : {"sse2", "avx512", "sse2"}) {  // as `run --resume` does under ROTORSWEEP_ISA
+    auto file = io::ResultFile::reopen(path, scene);
+    file.add_writer_isa(isa);
+    file.close();
+  }
+  CHECK(io::Hdf5Location::open_file(path).attribute_string("isa") == "avx512, sse2");
+  const auto info = run_cli("info '" + path + "'", dir);
+  CHECK_THAT(info.output, Catch::Contains("instruction sets avx512, sse2"));
 }

@@ -176,3 +176,32 @@ TEST_CASE("a disk that fills up mid-run keeps the finished members for --resume"
   REQUIRE(resumed.exit_code == 0);
   check_same_datasets(dir / "whole.h5", dir / "out.h5");
 }
+
+TEST_CASE("a second writer of a running run's output is refused and the first run is untouched",
+          "[apps][run][lock]") {
+  const auto dir = scratch_directory("second-writer");
+  const auto scene = dir / "long.toml";
+  write_text(scene, long_scene);
+  const auto slider = write_text(dir / "slider.toml", "[sweep]\nseparation = 8e-3\n");
+  const auto log = dir / "log.txt";
+  const std::string exe = ROTORSWEEP_EXECUTABLE, out = "'" + (dir / "out.h5").string() + "'";
+  // the first run in the background; while it runs, every way of writing there: each must exit 2
+  const std::string second = exe + " run '" + scene.string() + "' -q -o " + out;
+  const std::string command =
+      "cd '" + dir.string() + "'; " + second + " 2> first.txt & pid=$!; sleep 0.5; " +  //
+      "for extra in '' --force --resume '--shard 1/2'; do " + second +
+      " $extra 2>> refused.txt; echo \"run $extra: $?\"; done; " +  //
+      exe + " slider -q '" + slider.string() + "' -o " + out + " 2>> refused.txt; echo \"slider: $?\"; " +
+      exe + " merge part.h5 -o " + out + " 2>> refused.txt; echo \"merge: $?\"; " +
+      "wait $pid; echo \"first: $?\"; cat refused.txt";
+  const auto result = detail::run_logged("(" + command + ") > '" + log.string() + "' 2>&1", log);
+  INFO(result.output);
+  for (const char* line : {"run : 2", "run --force: 2", "run --resume: 2", "run --shard 1/2: 2", "slider: 2"})
+    CHECK_THAT(result.output, Catch::Contains(line));
+  CHECK_THAT(result.output, Catch::Contains("first: 0"));
+  CHECK_THAT(result.output, Catch::Contains("being written by another process (PID "));
+  const auto file = Hdf5Location::open_file((dir / "out.h5").string());
+  CHECK(file.attribute_flag("complete"));
+  CHECK(rows_done(dir / "out.h5") == 2000);
+  CHECK_FALSE(fs::exists(dir / ".out.h5.lock"));
+}

@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "io/hdf5_file.hpp"
+#include "io/output_target.hpp"
 #include "support/cli.hpp"
 #include "support/scene_text.hpp"
 
@@ -142,4 +143,15 @@ TEST_CASE("landscape and table stop on SIGINT and SIGTERM leaving no temporary f
   CHECK(table.exit_code == 130);
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     CHECK(entry.path().filename() == "cli-output.txt");
+}
+
+TEST_CASE("landscape replaces a file that is not HDF5 only with --force", "[apps][landscape]") {
+  const auto dir = scratch_directory("landscape-force");
+  const auto path = write_text(dir / "notes.h5", "not a result\n");
+  const std::string base = "landscape curves --samples 50 -o '" + path.string() + "'";
+  const auto refused = run_cli(base, dir);
+  CHECK(refused.exit_code == 2);
+  CHECK_THAT(refused.output, Catch::Contains("--force"));
+  CHECK(run_cli(base + " --force", dir).exit_code == 0);
+  CHECK(rotorsweep::io::is_hdf5_file(path));
 }

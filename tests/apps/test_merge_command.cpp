@@ -58,6 +58,11 @@ TEST_CASE("three shards merged equal the unsharded run, byte for byte", "[apps][
   }
   CHECK(joined.attribute_flag("complete"));
   CHECK(joined.attribute_string("scene") == whole.attribute_string("scene"));
+  // -q: nothing printed, the same file
+  const auto quiet = run_cli("merge -q " + shards + "-o " + quoted(dir / "quiet.h5"), dir);
+  REQUIRE(quiet.exit_code == 0);
+  CHECK(quiet.output.empty());
+  CHECK(Hdf5Location::open_file((dir / "quiet.h5").string()).attribute_flag("complete"));
 }
 
 TEST_CASE("shards that do not make one plan are refused", "[apps][merge]") {

@@ -1,5 +1,7 @@
 // OutputTarget (io/output_target): refused paths, the temporary file beside the target, the
 // rename on commit, and the clean-up (file and created directories) without it.
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -143,4 +145,32 @@ TEST_CASE("HDF5 files are told from others by their signature", "[io][output]") 
   CHECK_FALSE(is_hdf5_file(write_text(dir / "b.h5", "\x89HDF but not really")));
   CHECK_FALSE(is_hdf5_file(write_text(dir / "empty", "")));
   CHECK_FALSE(is_hdf5_file(dir / "absent"));
+}
+
+TEST_CASE("a second writer of the same output is refused, naming the first's PID, until it is done",
+          "[io][output][lock]") {
+  const auto dir = scratch_directory("output-lock");
+  const std::string path = (dir / "out.h5").string();
+  const auto lock_file = dir / ".out.h5.lock";
+  {
+    const OutputTarget first(path, {}, Replaceable::hdf5, false, true);
+    CHECK(fs::exists(lock_file));
+    for (const bool force : {false, true}) {
+      try {
+        const OutputTarget second(path, {}, Replaceable::hdf5, force, true);
+        FAIL("a second target on the same path was allowed");
+      } catch (const OutputPathError& e) {
+        CHECK_THAT(e.what(), Catch::Contains("being written by another process (PID " +
+                                             std::to_string(::getpid()) + ")"));
+      }
+    }
+    // through a link to it, too
+    fs::create_symlink(dir / "out.h5", dir / "link.h5");
+    CHECK_THROWS_AS(OutputTarget((dir / "link.h5").string(), {}, Replaceable::hdf5, true), OutputPathError);
+  }
+  CHECK_FALSE(fs::exists(lock_file));  // released and removed with the first target
+  // a lock file left by a process that died (SIGKILL) holds no lock: it does not block
+  write_text(lock_file, "999999\n");
+  const OutputTarget again(path, {}, Replaceable::hdf5, false, true);
+  CHECK(fs::exists(lock_file));
 }
