@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Plots a sweep's friction curve: dissipation per period and row d = D/N against A, one curve
-per (g, initial kind), members coloured by regime, with the small-A (AFM) and large-A (FM)
-limits of model.md §4 drawn over it, and the quasi-static CP friction J(A) of the landscape
+"""Plots a sweep's friction curve: dissipation per period and row d = D/N against A, one coloured
+curve per (g, initial kind), members coloured by regime, with the small-A (AFM, dashed) and
+large-A (FM, dotted) limits of model.md §4 for each g in its curve's colour, and the quasi-static CP friction J(A) of the landscape
 (D/N → J as g → 0). Reads the file with the rotorsweep Python module (build/python).
 Usage: plot_friction.py RESULT.h5 OUT.png [--no-jump]"""
 import argparse
@@ -18,6 +18,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "build" / "python")
 import rotorsweep  # noqa: E402
 
 REGIME_COLOURS = {"AFM": "tab:blue", "CP": "tab:orange", "FM": "tab:red", "unsettled": "tab:gray"}
+#: one per (g, initial kind) curve, apart from the regimes' colours and J(A)'s green
+CURVE_COLOURS = ["tab:purple", "tab:brown", "tab:olive", "tab:cyan", "tab:pink", "k"]
 
 
 def small_A_limit(A, g):
@@ -53,9 +55,13 @@ def main(h5_path, png_path, jump=True):
     # the replica mean of each curve point (/curves), one line per (g, initial kind)
     points = ds.curve_dissipation_mean / ds.rows
     lines = [d for d in points.dims if d != "A"]
-    for _, line in (points.stack(line=lines).groupby("line") if lines else [(None, points)]):
+    palette = CURVE_COLOURS
+    g_colour = {}  # the limit laws of a g take the colour of its first curve
+    for k, (_, line) in enumerate(points.stack(line=lines).groupby("line") if lines else [(None, points)]):
         g_value, kind = np.atleast_1d(line.g.values)[0], np.atleast_1d(line.ic.values)[0]
-        ax.plot(line.A.values, np.ravel(line.values), color="k", lw=0.8, alpha=0.6,
+        colour = palette[k % len(palette)]
+        g_colour.setdefault(float(g_value), colour)
+        ax.plot(line.A.values, np.ravel(line.values), color=colour, lw=1.0, alpha=0.8,
                 label=f"g = {g_value:g}, {kind} start")
     for name, colour in REGIME_COLOURS.items():
         sel = (regime == name) & (status == "ok")
@@ -68,12 +74,13 @@ def main(h5_path, png_path, jump=True):
 
     A_line = np.linspace(max(A.min(), 1e-3), A.max(), 400)
     for g_value in np.unique(g):
+        colour = g_colour.get(float(g_value), "k")
         small = A_line <= 0.5 * A.max()
-        ax.plot(A_line[small], small_A_limit(A_line[small], g_value), "--", color="tab:blue", lw=1,
-                label=r"small A: $\pi A^2 g/(100+g^2)$" if g_value == g.min() else None)
+        ax.plot(A_line[small], small_A_limit(A_line[small], g_value), "--", color=colour, lw=1,
+                label=rf"small A: $\pi A^2 g/(100+g^2)$, g = {g_value:g}")
         large = A_line >= 0.5 * A.max()
-        ax.plot(A_line[large], large_A_limit(A_line[large], g_value), "--", color="tab:red", lw=1,
-                label=r"large A: $2\pi g + 36\pi g/A^2$" if g_value == g.min() else None)
+        ax.plot(A_line[large], large_A_limit(A_line[large], g_value), ":", color=colour, lw=1.2,
+                label=rf"large A: $2\pi g + 36\pi g/A^2$, g = {g_value:g}")
     if jump and A.min() < rotorsweep.A_star and A.max() > rotorsweep.A_minus:
         A_J = np.linspace(rotorsweep.A_minus, rotorsweep.A_star, 2000)
         J = rotorsweep.jump_friction(A_J)
