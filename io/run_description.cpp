@@ -35,7 +35,10 @@ std::string run_description(const ensemble::Scene& scene, const std::string& nam
   const std::size_t lanes =
       scene.lanes == ensemble::LaneKind::simd ? kernels::lane_width<kernels::simd_lane> : 1;
   std::string rows;
-  for (std::size_t n : scene.row_counts) rows += (rows.empty() ? "" : ",") + std::to_string(n);
+  for (std::size_t n : scene.row_counts) {
+    if (!rows.empty()) rows += ',';
+    rows += std::to_string(n);
+  }
   std::string text = format(
       "rotorsweep run %s: %zu members (%zu N × %zu rtol × %zu A × %zu g × %zu noise × %zu offset × %zu kinds "
       "× "

@@ -43,7 +43,14 @@ inline ensemble::MemberResult run_member(std::size_t rows, double A, double g, S
   scene.stepper = *kernels::parse_stepper(stepper);
   scene.lanes = ensemble::LaneKind::scalar;
   const auto kind = start == Start::afm ? ensemble::InitialKind::afm : ensemble::InitialKind::fm;
-  const std::vector<ensemble::Member> members{{0, 0, A, g, kind, 0, 0, rows, rtol, atol}};
+  ensemble::Member member;
+  member.A = A;
+  member.g = g;
+  member.kind = kind;
+  member.rows = rows;
+  member.rtol = rtol;
+  member.atol = atol;
+  const std::vector<ensemble::Member> members{member};
   return ensemble::run_sweep(scene, members, 1, {}).results.front();
 }
 
