@@ -1,10 +1,14 @@
 #!/usr/bin/python3
 """Robustness to the initial condition: D/N against A for each initial noise η (mean over the
 replicas ± its standard error), one panel per initial kind, with the FM→CP and CP→AFM transitions
-(where the CP fraction crosses 1/2) marked per η.
-Usage: plot_robustness.py RESULT.h5 OUT.png"""
+(where the CP fraction crosses 1/2) marked per η: between grid points by linear interpolation, or
+with --bisect located by bisection in A, running the file's own scene (its replicas, schedule and
+numerics) at one A at a time until the bracket is narrower than --tolerance.
+Usage: plot_robustness.py RESULT.h5 OUT.png [--bisect] [--tolerance 1e-3]"""
 import argparse
 import sys
+import tomllib
+from pathlib import Path
 
 import h5py
 import matplotlib
@@ -24,10 +28,39 @@ def crossings(A, fraction):
     return out
 
 
-def main(h5_path, png_path):
+def cp_fraction(scene, A, kind, eta):
+    """The CP fraction of the scene's replicas at one A, one initial kind and one noise η."""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "build" / "python"))
+    import rotorsweep
+
+    one = {section: dict(values) for section, values in scene.items()}
+    one["sweep"]["A"] = [float(A)]
+    one["initial"]["kinds"] = [kind]
+    one["initial"]["noise"] = [float(eta)]
+    one.pop("output", None)
+    ds = rotorsweep.run(one, progress=False, quiet=True)
+    regime = ds["regime"].values.astype(str)
+    return float(np.mean(regime == "CP"))
+
+
+def bisect(scene, low, high, f_low, kind, eta, tolerance):
+    """The A in [low, high] where the CP fraction crosses 1/2 (f_low: its value at low), to tolerance;
+    returns the bracket."""
+    while high - low > tolerance:
+        mid = 0.5 * (low + high)
+        f_mid = cp_fraction(scene, mid, kind, eta)
+        if (f_mid - 0.5) * (f_low - 0.5) > 0:
+            low, f_low = mid, f_mid
+        else:
+            high = mid
+    return low, high
+
+
+def main(h5_path, png_path, bisection=False, tolerance=1e-3):
     with h5py.File(h5_path, "r") as f:
         if not f.attrs.get("complete", False):
             sys.exit(f"error: {h5_path} is incomplete (the run did not finish)")
+        scene = tomllib.loads(f.attrs["scene"])
         c = f["curves"]
         A, noise, rows = c["A"][:], c["noise"][:], c["rows"][:]
         ic = c["ic"].asstr()[:]
@@ -44,9 +77,19 @@ def main(h5_path, png_path):
             line = ax.errorbar(a, d[sel][order], yerr=np.nan_to_num(sem[sel][order]), marker=".", ms=3, lw=1,
                                capsize=2, label=f"η = {eta:g}")
             if cp is not None:
-                for x in crossings(a, cp[sel][order]):
+                fraction = cp[sel][order]
+                for x in crossings(a, fraction):
+                    if bisection:
+                        i = int(np.searchsorted(a, x)) - 1
+                        low, high = bisect(scene, a[i], a[i + 1], fraction[i], kind, eta, tolerance)
+                        x = 0.5 * (low + high)
+                        lines.append(f"{kind} η = {eta:g}: CP fraction crosses 1/2 at A = {x:.4f} "
+                                     f"(bisected to [{low:.4f}, {high:.4f}])")
+                    else:
+                        lines.append(f"{kind} η = {eta:g}: CP fraction crosses 1/2 at A = {x:.3f} "
+                                     f"(between grid points {a[int(np.searchsorted(a, x)) - 1]:g} and "
+                                     f"{a[int(np.searchsorted(a, x))]:g}; --bisect locates it)")
                     ax.axvline(x, color=line[0].get_color(), ls=":", lw=1)
-                    lines.append(f"{kind} η = {eta:g}: CP fraction crosses 1/2 at A = {x:.3f}")
         ax.set_xlabel("A")
         ax.set_ylabel("d = D/N per period")
         ax.set_title(f"{kind} starts: friction against A for each noise η")
@@ -61,5 +104,7 @@ if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("result")
     parser.add_argument("png")
+    parser.add_argument("--bisect", action="store_true", help="locate each transition by bisection in A")
+    parser.add_argument("--tolerance", type=float, default=1e-3, help="width of the final A bracket")
     args = parser.parse_args()
-    main(args.result, args.png)
+    main(args.result, args.png, args.bisect, args.tolerance)

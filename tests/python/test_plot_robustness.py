@@ -1,0 +1,51 @@
+"""scripts/plot_robustness.py: the figure is written, and with --bisect each transition lies inside
+the grid bracket the crossing of 1/2 was found in, located to the tolerance, with the CP fraction on
+either side of the final bracket on either side of 1/2."""
+
+import pathlib
+import re
+import subprocess
+import sys
+import tomllib
+
+from conftest import run_cli
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+SCRIPT = ROOT / "scripts" / "plot_robustness.py"
+sys.path.insert(0, str(ROOT / "scripts"))
+import plot_robustness  # noqa: E402
+
+SCENE = """
+[model]
+rows = 20
+[drive]
+g = [0.0011]
+[sweep]
+A = { from = 3.5, to = 5.5, count = 5 }
+[initial]
+kinds = ["AFM"]
+noise = [0.01]
+replicas = 2
+[schedule]
+relax_periods = 2
+average_periods = 2
+"""
+
+
+def test_bisection_locates_the_transition_inside_its_grid_bracket(tmp_path, executable):
+    (tmp_path / "robust.toml").write_text(SCENE)
+    result = run_cli(executable, tmp_path / "robust.toml", tmp_path / "robust.h5")
+    png = tmp_path / "robust.png"
+    done = subprocess.run([sys.executable, str(SCRIPT), str(result), str(png), "--bisect", "--tolerance", "0.01"],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert png.stat().st_size > 10000
+    found = re.findall(r"at A = ([0-9.]+) \(bisected to \[([0-9.]+), ([0-9.]+)\]\)", done.stdout)
+    assert len(found) == 1, done.stdout  # the AFM-CP transition between A = 4.5 and 5
+    x, low, high = (float(v) for v in found[0])
+    assert 4.5 <= low < x < high <= 5.0
+    assert high - low <= 0.01
+    scene = tomllib.loads(SCENE)
+    below = plot_robustness.cp_fraction(scene, low, "AFM", 0.01)
+    above = plot_robustness.cp_fraction(scene, high, "AFM", 0.01)
+    assert (below - 0.5) * (above - 0.5) < 0
