@@ -25,6 +25,7 @@ struct CurveColumn {
   std::string description;
   std::function<double(const CurvePoint&)> value;  ///< as a double, also for integers and text codes
   std::function<std::string(const CurvePoint&)> text;
+  std::string units = "1";  ///< of a numeric column (UDUNITS spelling)
 };
 
 CurveColumn real(std::string name, std::string description, std::function<double(const CurvePoint&)> value) {
@@ -62,7 +63,9 @@ std::vector<CurveColumn> curve_columns(const ensemble::Scene& scene) {
                  return std::string(ensemble::kind_name(p.kind));
                }});
   c.push_back(real("noise", "η of the point's FM/AFM starts", [](auto& p) { return p.noise; }));
+  c.back().units = "rad";
   c.push_back(real("offset", "θ0 of the point's FM/AFM starts", [](auto& p) { return p.offset; }));
+  c.back().units = "rad";
   c.push_back(integer("members", "replicas at this point", [](auto& p) { return double(p.members); }));
   c.push_back(integer("count", "members with status ok (the statistics use these)",
                       [](auto& p) { return double(p.count); }));
@@ -145,7 +148,8 @@ void write_curves_from_members(const Hdf5Location& file, const ensemble::Scene& 
           double(labels.size() * label_length));
   const auto group = file.create_group("curves");
   for (const auto& column : columns)
-    group.create_column(column.name, column.type, {points, 0, kind_length()}, column.description);
+    group.create_column(column.name, column.type, {points, 0, kind_length()}, column.description,
+                        column.units);
   const auto attractors = group.create_group("attractors");
   const hsize_t width = labels.size();
   attractors.create_column("labels", ColumnType::text, {width, 0, label_length},

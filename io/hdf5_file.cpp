@@ -93,9 +93,17 @@ herr_t write_string_attribute(hid_t loc, const std::string& name, const std::str
   return attribute.id() < 0 ? -1 : H5Awrite(attribute.id(), type.id(), &pointer);
 }
 
-/// The "description" attribute every dataset carries (units and meaning).
+/// The "description" attribute every dataset carries (its meaning).
 void describe(hid_t object, const std::string& description) {
   write_string_attribute(object, "description", description);
+}
+
+/// The "units" attribute of a numeric dataset (UDUNITS spelling, "1" for dimensionless); strings and
+/// flags have none.
+void give_units(hid_t set, const std::string& units) {
+  const Hdf5Handle type(H5Dget_type(set), H5Tclose);
+  const H5T_class_t kind = H5Tget_class(type.id());
+  if (kind == H5T_INTEGER || kind == H5T_FLOAT) write_string_attribute(set, "units", units);
 }
 
 }  // namespace
@@ -208,6 +216,12 @@ void Hdf5Location::write_dataset(const std::string& name, hid_t file_type, hid_t
   if (set.id() < 0 || H5Dwrite(set.id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
     fail("write dataset", name);
   if (!description.empty()) describe(set.id(), description);
+  give_units(set.id(), "1");
+}
+
+void Hdf5Location::set_units(const std::string& name, const std::string& units) const {
+  const auto set = open_dataset(name);
+  give_units(set.id(), units);
 }
 
 void Hdf5Location::write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> dims,
@@ -235,7 +249,7 @@ void Hdf5Location::write(const std::string& name, const std::vector<std::string>
 }
 
 void Hdf5Location::create_column(const std::string& name, ColumnType type, const ColumnShape& shape,
-                                 const std::string& description) const {
+                                 const std::string& description, const std::string& units) const {
   std::vector<hsize_t> dims{shape.rows};
   if (shape.width > 0) dims.push_back(shape.width);
   if (shape.width > 0 && shape.depth > 0) dims.push_back(shape.depth);
@@ -258,6 +272,7 @@ void Hdf5Location::create_column(const std::string& name, ColumnType type, const
       H5Dclose);
   if (set.id() < 0) fail("create dataset", name);
   if (!description.empty()) describe(set.id(), description);
+  give_units(set.id(), units);
 }
 
 void Hdf5Location::write_selected_rows(const std::string& name, const std::vector<hsize_t>& rows,

@@ -71,7 +71,7 @@ class Hdf5Location {
   /// reader, e.g. h5py.File(io.BytesIO(image)).
   std::vector<unsigned char> file_image() const;
 
-  /// dims empty: one dimension of data.size().
+  /// dims empty: one dimension of data.size(). Numeric datasets get units "1" (set_units changes them).
   void write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> dims = {},
              const std::string& description = "") const;
   void write(const std::string& name, const std::vector<std::int64_t>& data,
@@ -83,8 +83,9 @@ class Hdf5Location {
 
   /// A dataset whose file space is allocated at creation and never changes (contiguous, no
   /// fill written): writing its rows later changes raw data only, never the file's metadata.
+  /// Numeric columns carry `units` (UDUNITS spelling, "1" for dimensionless).
   void create_column(const std::string& name, ColumnType type, const ColumnShape& shape,
-                     const std::string& description) const;
+                     const std::string& description, const std::string& units = "1") const;
   /// Rows `rows` (ascending, distinct) of a column, from consecutive rows in memory.
   void write_rows(const std::string& name, const std::vector<hsize_t>& rows, const double* data) const;
   void write_rows(const std::string& name, const std::vector<hsize_t>& rows, const std::int64_t* data) const;
@@ -106,6 +107,9 @@ class Hdf5Location {
   std::vector<std::string> read_strings(const std::string& name) const;
   /// The raw bytes of a dataset in its file type (for byte-for-byte comparisons).
   std::vector<unsigned char> read_bytes(const std::string& name) const;
+
+  /// The units attribute of numeric dataset `name` (UDUNITS spelling, e.g. "m", "N", "rad").
+  void set_units(const std::string& name, const std::string& units) const;
 
   void set_attribute(const std::string& name, double value) const;
   void set_attribute(const std::string& name, std::int64_t value) const;

@@ -62,10 +62,12 @@ void add_plan_axes(std::vector<MemberColumn>& columns) {
       "ic", longest({"FM", "AFM", "random", "exact"}), "initial condition kind: FM, AFM, random, exact",
       [](auto& m, auto&) { return std::string(ensemble::kind_name(m.kind)); }));
   columns.push_back(MemberColumn::real_valued(
-      "noise", "η: FM/AFM starts draw θ_j - θ0 - (π for odd rows in AFM) from U[-η, η]",
-      [](auto& m, auto&) { return m.noise; }));
-  columns.push_back(MemberColumn::real_valued("offset", "θ0 added to FM/AFM starts",
-                                              [](auto& m, auto&) { return m.offset; }));
+                        "noise", "η: FM/AFM starts draw θ_j - θ0 - (π for odd rows in AFM) from U[-η, η]",
+                        [](auto& m, auto&) { return m.noise; })
+                        .in_units("rad"));
+  columns.push_back(MemberColumn::real_valued("offset", "θ0 added to FM/AFM starts", [](auto& m, auto&) {
+                      return m.offset;
+                    }).in_units("rad"));
   columns.push_back(MemberColumn::integer_valued("replica", "replica index at this (A, g, ic)",
                                                  [](auto& m, auto&) { return std::int64_t(m.replica); }));
 }
@@ -124,10 +126,12 @@ void add_angles_and_disorder(std::vector<MemberColumn>& columns, const ensemble:
   const hsize_t width = scene.max_rows();
   const std::string rows = " (members × largest N; NaN beyond a member's rows)";
   columns.push_back(MemberColumn::vector_valued(
-      "theta_initial", width, "θ_j at t = 0, as drawn from the member's stream" + rows,
-      [scene](const Member& m, auto&) { return ensemble::member_initial_angles(scene, m); }));
+                        "theta_initial", width, "θ_j at t = 0, as drawn from the member's stream" + rows,
+                        [scene](const Member& m, auto&) { return ensemble::member_initial_angles(scene, m); })
+                        .in_units("rad"));
   columns.push_back(MemberColumn::vector_valued("theta_final", width, "θ_j at the end, in [0, 2π)" + rows,
-                                                [](auto&, const MemberResult& r) { return r.theta_final; }));
+                                                [](auto&, const MemberResult& r) { return r.theta_final; })
+                        .in_units("rad"));
   const auto& disorder = scene.disorder;
   const auto deviations = [disorder](const Member& m) {
     return ensemble::row_deviations(disorder, m.rows, m.replica);
@@ -166,10 +170,11 @@ void add_row_profiles(std::vector<MemberColumn>& columns, const ensemble::Scene&
 /// The final-state classification of every member (docs/model.md §3, "Final states").
 void add_final_state(std::vector<MemberColumn>& columns, const ensemble::Scene& scene) {
   columns.push_back(MemberColumn::real_valued(
-      "sublattice_deviation",
-      "largest distance (rad) of a row from its sublattice's circular mean at the last "
-      "period ends",
-      [](auto&, auto& r) { return r.final_state.sublattice_deviation; }));
+                        "sublattice_deviation",
+                        "largest distance (rad) of a row from its sublattice's circular mean at the last "
+                        "period ends",
+                        [](auto&, auto& r) { return r.final_state.sublattice_deviation; })
+                        .in_units("rad"));
   columns.push_back(MemberColumn::integer_valued(
       "domain_walls", "domain walls: sign changes of cos(θ_j - θ_{j+1}) around the ring, halved",
       [](auto&, auto& r) { return std::int64_t(r.final_state.domain_walls); }));
@@ -187,11 +192,14 @@ void add_final_state(std::vector<MemberColumn>& columns, const ensemble::Scene& 
   columns.push_back(
       MemberColumn::integer_valued("stray_rows", "rows outside the two largest clusters of final angles",
                                    [](auto&, auto& r) { return std::int64_t(r.final_state.stray_rows); }));
-  columns.push_back(MemberColumn::vector_valued(
-      "sublattice_angles", 2, "circular means of the even and odd rows at the last period end, in [0, 2π)",
-      [](auto&, auto& r) {
-        return std::vector<double>{r.final_state.sublattice_even, r.final_state.sublattice_odd};
-      }));
+  columns.push_back(
+      MemberColumn::vector_valued(
+          "sublattice_angles", 2,
+          "circular means of the even and odd rows at the last period end, in [0, 2π)",
+          [](auto&, auto& r) {
+            return std::vector<double>{r.final_state.sublattice_even, r.final_state.sublattice_odd};
+          })
+          .in_units("rad"));
   columns.push_back(MemberColumn::text_valued("attractor", attractor_length(scene),
                                               "<regime>:<structure>:p<period>, or failed (docs/model.md §3)",
                                               [](auto&, auto& r) { return r.final_state.attractor; }));

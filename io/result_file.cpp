@@ -37,6 +37,9 @@ ResultFile::ResultFile(Hdf5Location file, const ensemble::Scene& scene, std::opt
 
 void ResultFile::create(const Provenance& provenance) const {
   const auto members = create_table(scene_.text, provenance);
+  // the row model is dimensionless: its datasets say units "1" (angles "rad") in these scales
+  file_.set_attribute("scaled_units", std::string("energies in ε = μ0 m0² N / (4π P³), time in 1/ṽ (a drive "
+                                                  "period is 2π), angles in rad (docs/model.md)"));
   write_statistics({});
   create_member_columns(members, columns_, rows_);
 }

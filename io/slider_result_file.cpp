@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "ensemble/engine/replica_statistics.hpp"
@@ -85,6 +86,8 @@ void write_curve(const Hdf5Location& file, const ensemble::SliderScene& scene) {
   curve.write("A_paper", paper_A, {}, "row model's A = (a/h)³ m_sub/m (docs/model.md §9)");
   curve.write("A_field", field_A, {},
               "row model's A from the substrate field's first harmonic (docs/model.md §9)");
+  curve.set_units("separation", "m");
+  for (const char* force : {"friction", "friction_std", "friction_sem"}) curve.set_units(force, "N");
 }
 
 }  // namespace
@@ -131,19 +134,32 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
       vector_column("members/period_balance", periods,
                     "(work − dissipation − stored) / max(|work|, dissipation): the energy balance's residual",
                     &SliderMember::period_balance));
-  if (!scene.series) return c;
-  c.push_back(vector_column("series/friction", samples, "drive force F = ∂E/∂x_s, N",
-                            &SliderMember::friction_series));
-  c.push_back(vector_column("series/order_x", samples, "mean cos(θ_i − θ_j) over x-neighbours",
-                            &SliderMember::order_x_series));
-  c.push_back(vector_column("series/order_y", samples, "mean cos(θ_i − θ_j) over y-neighbours",
-                            &SliderMember::order_y_series));
-  c.push_back(vector_column("series/energy", samples, "magnetic plus kinetic energy, J",
-                            &SliderMember::energy_series));
-  if (scene.angles)
-    c.push_back(vector_column("series/angles", samples,
-                              "θ of rotor j·columns + i (column i along x, row j), rad, unwrapped",
-                              &SliderMember::angles, hsize_t(scene.sizes.front().rotors())));
+  if (scene.series) {
+    c.push_back(vector_column("series/friction", samples, "drive force F = ∂E/∂x_s, N",
+                              &SliderMember::friction_series));
+    c.push_back(vector_column("series/order_x", samples, "mean cos(θ_i − θ_j) over x-neighbours",
+                              &SliderMember::order_x_series));
+    c.push_back(vector_column("series/order_y", samples, "mean cos(θ_i − θ_j) over y-neighbours",
+                              &SliderMember::order_y_series));
+    c.push_back(vector_column("series/energy", samples, "magnetic plus kinetic energy, J",
+                              &SliderMember::energy_series));
+    if (scene.angles)
+      c.push_back(vector_column("series/angles", samples,
+                                "θ of rotor j·columns + i (column i along x, row j), rad, unwrapped",
+                                &SliderMember::angles, hsize_t(scene.sizes.front().rotors())));
+  }
+  // SI units of the dimensional columns; the others are "1"
+  const std::map<std::string, std::string> units{{"members/separation", "m"},
+                                                 {"members/friction", "N"},
+                                                 {"members/period_friction", "N"},
+                                                 {"members/period_work", "J"},
+                                                 {"members/period_dissipation", "J"},
+                                                 {"members/period_stored", "J"},
+                                                 {"series/friction", "N"},
+                                                 {"series/energy", "J"},
+                                                 {"series/angles", "rad"}};
+  for (auto& column : c)
+    if (const auto at = units.find(column.name); at != units.end()) column.units = at->second;
   return c;
 }
 
@@ -183,9 +199,12 @@ void SliderResultFile::create(const Provenance& provenance) const {
   file_.set_attribute("wall_seconds", 0.0);
   file_.set_attribute("threads", std::int64_t(0));
   create_table_columns(file_, columns_, rows_);
-  if (scene_.series)
-    file_.open_group("series").write("time", timeline_.sample_times, {},
-                                     "s since the start of the rest; sliding starts at drive.rest");
+  if (scene_.series) {
+    const auto series = file_.open_group("series");
+    series.write("time", timeline_.sample_times, {},
+                 "s since the start of the rest; sliding starts at drive.rest");
+    series.set_units("time", "s");
+  }
 }
 
 void SliderResultFile::write_members(const std::vector<ensemble::SliderMember>& members) const {

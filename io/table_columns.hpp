@@ -26,7 +26,14 @@ struct TableColumn {
   std::function<void(const Row&..., double*)> real;
   std::function<std::int64_t(const Row&...)> integer;
   std::function<std::string(const Row&...)> text;
-  hsize_t depth = 0;  ///< > 0 (with width > 0): a width × depth block per member
+  hsize_t depth = 0;        ///< > 0 (with width > 0): a width × depth block per member
+  std::string units = "1";  ///< of a numeric column (UDUNITS spelling; "1": dimensionless)
+
+  /// The same column with other units.
+  TableColumn in_units(std::string u) && {
+    units = std::move(u);
+    return std::move(*this);
+  }
 
   /// Values per member.
   std::size_t values() const {
@@ -84,7 +91,7 @@ void create_table_columns(const Hdf5Location& at, const std::vector<TableColumn<
          slash = column.name.find('/', slash + 1))
       if (const std::string group = column.name.substr(0, slash); !at.has(group)) at.create_group(group);
     at.create_column(column.name, column.type, {rows, column.width, column.text_length, column.depth},
-                     column.description);
+                     column.description, column.units);
   }
 }
 

@@ -12,18 +12,16 @@ AXES = ("rows", "rtol", "A", "g", "noise", "offset", "ic", "replica")
 #: axes that stay dimensions even with one value (a friction curve is over A, averages over replica)
 ALWAYS_DIMENSIONS = ("A", "replica")
 
-ENERGY = "ε (docs/model.md: energies in units of ε)"
 ANGLE = "rad"
 
 
-def _units(name):
+def _units(name, values=None):
+    """The units of a file written before datasets carried their own "units" attribute (None for text)."""
+    if values is not None and values.dtype.kind in "OSU":
+        return None
     bare = name.removeprefix("curve_").removeprefix("period_")
     if bare.startswith(("theta_", "sublattice_angles", "sublattice_deviation")) or bare in ("noise", "offset"):
         return ANGLE
-    if bare.startswith(("dissipation", "energy_mean", "row_dissipation")) and "resolved" not in bare or bare == "A":
-        return ENERGY
-    if bare == "g":
-        return "ε/ṽ (damping × drive speed)"
     return "1"
 
 
@@ -38,15 +36,17 @@ def _second_dimension(name):
 
 
 def _read(dataset):
-    """A dataset's values (strings decoded) and its description."""
-    description = dataset.attrs.get("description", "")
+    """A dataset's values (strings decoded), its description and its units (None where it has none)."""
+    description, units = dataset.attrs.get("description", ""), dataset.attrs.get("units")
     if isinstance(description, bytes):
         description = description.decode()
+    if isinstance(units, bytes):
+        units = units.decode()
     if dataset.dtype.kind in "OS":
         values = np.array(dataset.asstr()[()], dtype=object)
     else:
         values = dataset[()]
-    return values, description
+    return values, description, units
 
 
 def _attributes(h5file):
@@ -85,28 +85,33 @@ def from_hdf5(h5file, allow_incomplete=False):
     done = np.asarray(members["done"][()], dtype=bool) if "done" in members else np.ones(count, dtype=bool)
     coords = {axis: (axis, np.asarray(values)) for axis, values in axes.items()}
     variables = {}
+    axis_units = {}  # the plan axes' units, from their /members columns
 
-    def add(var_name, values, description, leading, trailing=()):
+    def add(var_name, values, description, leading, trailing=(), units=None):
         values = values.reshape(leading + values.shape[1:])
         var_dims = dims[: len(leading)] + tuple(trailing)
-        attrs = {"description": description, "units": _units(var_name)}
+        attrs = {"description": description}
+        units = units if units is not None else _units(var_name, values)
+        if units is not None:
+            attrs["units"] = units
         variables[var_name] = xr.Variable(var_dims, values, attrs)
 
     for column, dataset in members.items():
         if not hasattr(dataset, "dtype"):
             continue
-        values, description = _read(dataset)
+        values, description, units = _read(dataset)
         if column in AXES:
+            axis_units[column] = units if units is not None else _units(column, values)
             grid = np.broadcast_to(
                 np.asarray(axes[column]).reshape([-1 if a == column else 1 for a in dims]), shape)
             if not np.array_equal(values[done], grid.reshape(-1)[done]):
                 raise ValueError(f"'{name}': /members/{column} does not follow the scene's plan")
             continue
-        add(column, values, description, shape, [_second_dimension(column)] if values.ndim == 2 else [])
+        add(column, values, description, shape, [_second_dimension(column)] if values.ndim == 2 else [], units)
     if "periods" in members:
         for channel, dataset in members["periods"].items():
-            values, description = _read(dataset)
-            add("period_" + channel, values, description, shape, ["period"])
+            values, description, units = _read(dataset)
+            add("period_" + channel, values, description, shape, ["period"], units)
 
     if "curves" in h5file:
         curves = h5file["curves"]
@@ -114,23 +119,24 @@ def from_hdf5(h5file, allow_incomplete=False):
         for column, dataset in curves.items():
             if not hasattr(dataset, "dtype") or column in AXES:
                 continue
-            values, description = _read(dataset)
-            add("curve_" + column, values, description, point_shape)
+            values, description, units = _read(dataset)
+            add("curve_" + column, values, description, point_shape, (), units)
         if "attractors" in curves:
             group = curves["attractors"]
-            labels, _ = _read(group["labels"])
+            labels, _, _ = _read(group["labels"])
             coords["attractor_label"] = ("attractor_label", labels.astype(str))
             for column, dataset in group.items():
                 if column == "labels":
                     continue
-                values, description = _read(dataset)
-                add("curve_attractor_" + column, values, description, point_shape, ["attractor_label"])
+                values, description, units = _read(dataset)
+                add("curve_attractor_" + column, values, description, point_shape, ["attractor_label"], units)
 
     coords["plan_index"] = (dims, np.arange(count).reshape(shape))
     dataset = xr.Dataset(variables, coords=coords, attrs=attrs)
     dataset["plan_index"].attrs["description"] = "the member's index in the plan (row of /members)"
-    for axis in AXES:
-        dataset[axis].attrs["units"] = _units(axis)
+    for axis, units in axis_units.items():
+        if units is not None:
+            dataset[axis].attrs["units"] = units
     for index in ("row", "link"):
         if index in dataset.dims:
             dataset = dataset.assign_coords({index: np.arange(dataset.sizes[index])})

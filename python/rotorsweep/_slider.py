@@ -8,9 +8,19 @@ import xarray as xr
 
 from ._dataset import _attributes
 
-#: SI units of the /members and /series datasets ("1": dimensionless)
+#: SI units of the /members and /series datasets of files written before datasets carried their own
+#: "units" attribute ("1": dimensionless)
 _UNITS = {"separation": "m", "friction": "N", "period_friction": "N", "period_work": "J",
           "period_dissipation": "J", "period_stored": "J", "energy": "J", "time": "s"}
+
+
+def _attrs(name, dataset, text=False):
+    """description and units (the file's own where it has them; none for text)."""
+    attrs = {"description": dataset.attrs.get("description", "")}
+    if not text:
+        units = dataset.attrs.get("units", _UNITS.get(name, "1"))
+        attrs["units"] = units.decode() if isinstance(units, bytes) else units
+    return attrs
 
 
 def _text(values):
@@ -32,18 +42,16 @@ def from_hdf5(h5file):
         if name in ("separation", "replica", "columns", "rows", "done", "plan_index"):
             continue
         values = dataset[:]
-        if values.dtype.kind in "OS":
+        text = values.dtype.kind in "OS"
+        if text:
             values = _text(values)
         dims = ("member",) if values.ndim == 1 else ("member", "period")
-        variables[name] = xr.Variable(dims, values, {"description": dataset.attrs.get("description", ""),
-                                                     "units": _UNITS.get(name, "1")})
+        variables[name] = xr.Variable(dims, values, _attrs(name, dataset, text))
     series = h5file["series"]
     for name, dataset in series.items():
         if name == "time":
             continue
-        variables[f"series_{name}"] = xr.Variable(("member", "time"), dataset[:],
-                                                  {"description": dataset.attrs.get("description", ""),
-                                                   "units": _UNITS.get(name, "1")})
+        variables[f"series_{name}"] = xr.Variable(("member", "time"), dataset[:], _attrs(name, dataset))
     coords = {"member": index, "time": ("time", series["time"][:], {"units": "s"})}
     dataset = xr.Dataset(variables, coords=coords, attrs=attrs).unstack("member")
     sizes = list(dict.fromkeys(size))  # the scene's order

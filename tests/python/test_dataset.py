@@ -1,6 +1,7 @@
 """The result as an xarray.Dataset: the plan's axes as dimensions, the member plan as a stacked
 coordinate, units and descriptions, and open() of a written file giving the same Dataset."""
 
+import h5py
 import numpy as np
 import pytest
 import rotorsweep
@@ -38,8 +39,15 @@ def test_three_axes_become_dimensions_with_their_values():
     assert dict(ds.theta_final.sizes) == {"A": 3, "g": 2, "noise": 2, "replica": 3, "row": 6}
     assert ds.period_dissipation.sizes["period"] == 2
     assert dict(ds.curve_dissipation_mean.sizes) == {"A": 3, "g": 2, "noise": 2}
-    assert ds.dissipation.attrs["units"].startswith("ε") and "mean" in ds.dissipation.attrs["description"]
-    assert ds.theta_final.attrs["units"] == "rad"
+    # every dataset says its units (UDUNITS spelling): the row model is dimensionless, angles in rad
+    assert ds.dissipation.attrs["units"] == "1" and "mean" in ds.dissipation.attrs["description"]
+    assert ds.attrs["scaled_units"].startswith("energies in ε")
+    assert ds.theta_final.attrs["units"] == "rad" and ds.noise.attrs["units"] == "rad"
+    assert ds.g.attrs["units"] == "1" and ds.A.attrs["units"] == "1"
+    assert "units" not in ds.status.attrs  # text has none
+    for name, variable in ds.data_vars.items():
+        if variable.dtype.kind in "fiu":
+            assert "units" in variable.attrs, name
     assert ds.status.dtype == object and set(np.unique(ds.status.values)) == {"ok"}
     # curves are the replica statistics of the members
     np.testing.assert_allclose(ds.curve_dissipation_mean, ds.dissipation.mean("replica"), rtol=1e-14)
@@ -109,3 +117,14 @@ def test_scene_helpers():
     assert "A = { from = 1.0, to = 2.0, count = 3 }" in rotorsweep.scene_text(scene)
     scene["drive"]["g"] = np.array([1e-3])
     assert rotorsweep.plan_axes(scene)["A"] == [1.0, 1.5, 2.0]
+
+
+def test_every_numeric_dataset_of_a_file_carries_units(tmp_path):
+    path = tmp_path / "units.h5"
+    rotorsweep.run(THREE_AXES, progress=False, quiet=True, output=str(path))
+    missing = []
+    with h5py.File(path, "r") as f:
+        f.visititems(lambda name, obj: missing.append(name) if isinstance(obj, h5py.Dataset)
+                     and obj.dtype.kind in "fiu" and "units" not in obj.attrs else None)
+        assert f["members/theta_initial"].attrs["units"] in (b"rad", "rad")
+    assert not missing

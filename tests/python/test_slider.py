@@ -33,7 +33,12 @@ def test_the_dataset_holds_the_command_lines_members_in_plan_order(tmp_path):
     assert list(ds["size"].values) == ["3x2", "2x2"]  # the scene's order, not sorted
     assert list(ds["columns"].values) == [3, 2] and list(ds["rows"].values) == [2, 2]
     assert ds["friction"].attrs["units"] == "N" and ds["separation"].attrs["units"] == "m"
+    assert ds["series_energy"].attrs["units"] == "J" and "units" not in ds["status"].attrs
     with h5py.File(cli) as f:
+        missing = []
+        f.visititems(lambda name, obj: missing.append(name) if isinstance(obj, h5py.Dataset)
+                     and obj.dtype.kind in "fiu" and "units" not in obj.attrs else None)
+        assert not missing
         members = f["members"]
         for k in range(members["friction"].shape[0]):
             size = f"{members['columns'][k]}x{members['rows'][k]}"
