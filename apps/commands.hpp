@@ -13,7 +13,8 @@ namespace rotorsweep::apps {
 struct TableOptions {
   std::string stepper = std::string(kernels::default_stepper_name);
   double rtol = 1e-9;
-  std::string output;  ///< CSV path; empty: stdout only
+  double estimator_rtol = 1e-12;  ///< W and S come from a run at this tolerance
+  std::string output;             ///< CSV path; empty: stdout only
 };
 int run_table(const TableOptions& options);
 

@@ -63,6 +63,13 @@ int main(int argc, char** argv) {
   table_cmd->add_option("--rtol", table.rtol, "Relative tolerance (atol = rtol/1000)")
       ->check(finite & CLI::Range(1e-14, 1e-2))
       ->capture_default_str();
+  table_cmd
+      ->add_option(
+          "--estimator-rtol", table.estimator_rtol,
+          "Tolerance of the run W and S come from (they do not steer the step: at 1e-9 they are off by "
+          "up to 5e-4)")
+      ->check(finite & CLI::Range(1e-14, 1e-2))
+      ->capture_default_str();
   table_cmd->add_option("-o,--output", table.output, "Write the table as CSV to this file");
 
   // the scene, -o, --threads, -q and --force of a command that runs a scene file
