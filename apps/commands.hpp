@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@ struct TableOptions {
   std::string stepper = std::string(kernels::default_stepper_name);
   double rtol = 1e-9;
   double estimator_rtol = 1e-12;  ///< W and S come from a run at this tolerance
+  int replicas = 8;               ///< noise draws of each CP entry for its spread (1: none)
+  std::uint64_t seed = 1;         ///< their seed
   std::string output;             ///< CSV path; empty: stdout only
 };
 int run_table(const TableOptions& options);

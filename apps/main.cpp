@@ -70,6 +70,13 @@ int main(int argc, char** argv) {
           "up to 5e-4)")
       ->check(finite & CLI::Range(1e-14, 1e-2))
       ->capture_default_str();
+  table_cmd
+      ->add_option(
+          "--replicas", table.replicas,
+          "Noise draws of each CP entry for its spread, global error and symmetry-limited count (1: none)")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  table_cmd->add_option("--seed", table.seed, "Seed of those draws")->capture_default_str();
   table_cmd->add_option("-o,--output", table.output, "Write the table as CSV to this file");
 
   // the scene, -o, --threads, -q and --force of a command that runs a scene file

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "ensemble/engine/replica_statistics.hpp"
+#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/paper_table.hpp"
 #include "ensemble/rows/scene.hpp"
@@ -26,9 +28,8 @@ namespace {
 
 namespace paper = ensemble::paper_table;
 
-/// The paper's members as a sweep of the scalar lane with the W, S, R estimators; every member
-/// draws stream 0 of seed 1, whatever its place in the table.
-ensemble::SweepOutcome integrate(kernels::StepperId stepper, double rtol) {
+/// The paper's scene as a sweep of the scalar lane with the W, S, R estimators.
+ensemble::Scene paper_scene(kernels::StepperId stepper, double rtol) {
   ensemble::Scene scene;
   scene.row_counts = {paper::rows};
   scene.rtol_values = {rtol};
@@ -41,19 +42,72 @@ ensemble::SweepOutcome integrate(kernels::StepperId stepper, double rtol) {
   scene.observables.set(ensemble::Observable::estimators, true);
   scene.stepper = stepper;
   scene.lanes = ensemble::LaneKind::scalar;
+  return scene;
+}
+
+/// Member `index` of the sweep: `entry` with noise draw `stream`.
+ensemble::Member paper_member(std::size_t index, const paper::Entry& entry, double rtol, std::size_t stream) {
+  ensemble::Member m;
+  m.index = index;
+  m.stream = stream;
+  m.replica = int(stream);
+  m.A = entry.A;
+  m.g = paper::g;
+  m.kind = entry.kind;
+  m.rows = paper::rows;
+  m.rtol = rtol;
+  m.atol = rtol * 1e-3;
+  return m;
+}
+
+/// The paper's members; every member draws stream 0 of seed 1, whatever its place in the table.
+ensemble::SweepOutcome integrate(kernels::StepperId stepper, double rtol) {
   std::vector<ensemble::Member> members;
+  for (const auto& entry : paper::entries) members.push_back(paper_member(members.size(), entry, rtol, 0));
+  return ensemble::run_sweep(paper_scene(stepper, rtol), members, 1, {});
+}
+
+/// The CP entries over `replicas` noise draws of `seed`, with slips counted, so that each gets its
+/// global error and its symmetry-limited flag (ensemble/engine/shadow_run.hpp); then a line per entry.
+void print_cp_draws(kernels::StepperId stepper, double rtol, int replicas, std::uint64_t seed) {
+  auto scene = paper_scene(stepper, rtol);
+  scene.seed = seed;
+  scene.observables.set(ensemble::Observable::slips, true);
+  std::vector<ensemble::Member> members;
+  std::vector<const paper::Entry*> entries;
   for (const auto& entry : paper::entries) {
-    ensemble::Member m;
-    m.index = members.size();
-    m.A = entry.A;
-    m.g = paper::g;
-    m.kind = entry.kind;
-    m.rows = paper::rows;
-    m.rtol = rtol;
-    m.atol = rtol * 1e-3;
-    members.push_back(m);
+    if (!entry.cp) continue;
+    entries.push_back(&entry);
+    for (int r = 0; r < replicas; ++r)
+      members.push_back(paper_member(members.size(), entry, rtol, std::size_t(r)));
   }
-  return ensemble::run_sweep(scene, members, 1, {});
+  const auto outcome = ensemble::run_sweep(scene, members, ensemble::thread_count(0), {});
+  std::printf(
+      "\nCP entries over %d noise draws (seed %llu; the table's draw is draw 0):\n%5s %4s %14s %11s %11s "
+      "%12s %11s %s\n",
+      replicas, static_cast<unsigned long long>(seed), "A", "IC", "mean R", "sd", "sem", "(paper-mean)/sd",
+      "error/R", "symmetry-limited");
+  for (std::size_t e = 0; e < entries.size(); ++e) {
+    const std::size_t first = e * std::size_t(replicas);
+    const auto ok = [&](std::size_t k) {
+      return outcome.results[first + k].status == kernels::LaneStatus::ok;
+    };
+    const auto D = ensemble::replica_statistics(
+        std::size_t(replicas), [&](std::size_t k) { return outcome.results[first + k].dissipation(); }, ok);
+    const auto error = ensemble::replica_statistics(
+        std::size_t(replicas), [&](std::size_t k) { return outcome.results[first + k].dissipation_error(); },
+        ok);
+    std::size_t limited = 0;
+    for (std::size_t k = 0; k < std::size_t(replicas); ++k)
+      limited += outcome.results[first + k].symmetry_limited;
+    const double sample_sd = D.count > 1 ? D.std * std::sqrt(double(D.count) / double(D.count - 1)) : NAN;
+    std::printf("%5.0f %4s %14.7e %11.3e %11.3e %12.2f %11.2e %zu of %zu\n", entries[e]->A,
+                ensemble::kind_name(entries[e]->kind).data(), D.mean, sample_sd, D.sem,
+                (entries[e]->paper_R - D.mean) / sample_sd, error.mean / D.mean, limited, D.count);
+  }
+  std::printf(
+      "error/R: the mean global error estimate; symmetry-limited members' D depends on the tolerance "
+      "itself (README, \"Regimes and slips\")\n");
 }
 
 }  // namespace
@@ -119,6 +173,7 @@ int run_table(const TableOptions& options) {
     std::printf(", table written to %s%s", options.output.c_str(), target->replaced() ? " (replaced)" : "");
   }
   std::printf("\n");
+  if (options.replicas > 1) print_cp_draws(stepper, options.rtol, options.replicas, options.seed);
   return 0;
 }
 

@@ -183,4 +183,6 @@ TEST_CASE("table prints W and S that agree with R outside CP, beside the paper's
     CHECK(std::fabs(S / R - 1) < 1e-6);
   }
   CHECK(outside_cp == 6);
+  // each CP entry over noise draws, with its spread and its symmetry-limited count
+  CHECK_THAT(run.output, Catch::Contains("CP entries over 8 noise draws (seed 1") && Catch::Contains("8 of 8"));
 }
