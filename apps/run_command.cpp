@@ -173,6 +173,22 @@ void print_header(const RunOptions& options, const ensemble::Scene& scene, std::
   std::fputs(io::run_description(scene, options.scene, members, threads).c_str(), stderr);
 }
 
+bool open_resumable_target(const SceneCommandOptions& options, bool resume, const std::string& path,
+                           std::optional<io::OutputTarget>& target) {
+  try {
+    target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force, true);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << " (-o or output.path)\n";
+    return false;
+  }
+  if (resume || options.force || !std::filesystem::exists(target->temporary())) return true;
+  std::cerr << "error: " << target->temporary()
+            << " holds the finished members of an earlier run that stopped early: continue it with --resume, "
+               "or start afresh with --force\n";
+  target->keep();
+  return false;
+}
+
 std::string resume_command(const std::string& command, const SceneCommandOptions& options,
                            const std::string& shard) {
   std::string line = "rotorsweep " + command + " " + options.scene;
@@ -245,21 +261,8 @@ int run_sweep_command(const RunOptions& options) {
   }
   const std::string path = output_path(options, scene.output_path, shard);
   std::optional<io::OutputTarget> target;
-  try {
-    target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force, true);
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << " (-o or output.path)\n";
-    return 2;
-  }
+  if (!open_resumable_target(options, options.resume, path, target)) return 2;
   const std::string partial = target->temporary();
-  if (!options.resume && !options.force && std::filesystem::exists(partial)) {
-    std::cerr
-        << "error: " << partial
-        << " holds the finished members of an earlier run that stopped early: continue it with --resume, "
-           "or start afresh with --force\n";
-    target->keep();
-    return 2;
-  }
 
   if (!options.resume &&
       !fits_on_disk(

@@ -36,6 +36,10 @@ int keep_failed_run(io::OutputTarget& target, const std::string& what, std::size
 /// which stays for --resume; says what is kept and how to resume, and returns 128 + the signal.
 int keep_stopped_run(io::OutputTarget& target, const std::function<void()>& keep_partial, int signal_number,
                      std::size_t done, std::size_t rows, const std::string& resume);
+/// Checks `path` and takes it (OutputTarget with OUT.h5.partial), refusing a partial file of an
+/// earlier run unless `resume` or --force; says why and returns false when the command must exit 2.
+bool open_resumable_target(const SceneCommandOptions& options, bool resume, const std::string& path,
+                           std::optional<io::OutputTarget>& target);
 /// The command line that resumes a run: "rotorsweep COMMAND SCENE [-o OUT] [--shard I/N] --resume".
 std::string resume_command(const std::string& command, const SceneCommandOptions& options,
                            const std::string& shard);

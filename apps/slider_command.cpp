@@ -94,21 +94,8 @@ int run_slider(const SliderOptions& options) {
 #endif
   const std::string path = output_path(options, scene.output_path, shard);
   std::optional<io::OutputTarget> target;
-  try {
-    target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force, true);
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << " (-o or output.path)\n";
-    return 2;
-  }
+  if (!open_resumable_target(options, options.resume, path, target)) return 2;
   const std::string partial = target->temporary();
-  if (!options.resume && !options.force && std::filesystem::exists(partial)) {
-    std::cerr
-        << "error: " << partial
-        << " holds the finished members of an earlier scan that stopped early: continue it with --resume, "
-           "or start afresh with --force\n";
-    target->keep();
-    return 2;
-  }
   const std::size_t shard_members =
       shard ? (scene.member_count() + shard->count - shard->index) / shard->count : scene.member_count();
   if (!options.resume &&
