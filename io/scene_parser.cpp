@@ -80,23 +80,20 @@ void read_disorder(const Section& disorder, Scene& scene) {
   d.coupling_rows = rows_of("coupling_rows", "coupling", d.coupling);
 }
 
-/// numerics.device = "gpu" runs the adaptive steppers on nearest-neighbour periodic rows without
-/// disorder, up to the rows one GPU thread's scratch holds.
+/// numerics.device = "gpu" runs every row scene (any stepper or temperature, disorder, coupling
+/// tables, open rows, row profiles) up to the rows one GPU thread's scratch holds.
 void check_gpu_scene(const Scene& scene) {
-  const std::string why =
-      "; numerics.device = \"gpu\" runs nearest-neighbour periodic rows without disorder at "
-      "T = 0 (set numerics.device = \"cpu\")";
-  if (scene.thermal.on()) fail("thermal.temperature", "must be 0 on the GPU" + why);
-  if (scene.disorder.any()) fail("disorder", "is not available on the GPU" + why);
-  if (!scene.couplings.nearest_neighbour())
-    fail(scene.couplings.open ? "model.boundary" : "model.couplings", "is not available on the GPU" + why);
-  if (scene.row_profiles) fail("observables.row_profiles", "must be false on the GPU" + why);
   const std::size_t limit = ensemble::gpu_max_rows(scene);
-  if (scene.max_rows() > limit)
-    fail("model.rows", "at most " + std::to_string(limit) +
-                           " rows run on the GPU with numerics.stepper = \"" +
-                           std::string(kernels::stepper_names[scene.stepper]) + "\" (got " +
-                           std::to_string(scene.max_rows()) + "); numerics.device = \"cpu\" has no limit");
+  if (scene.max_rows() <= limit) return;
+  const std::string integrator =
+      scene.thermal.on()
+          ? std::string("the Langevin stepper (thermal.temperature > 0)")
+          : "numerics.stepper = \"" + std::string(kernels::stepper_names[scene.stepper]) + "\"";
+  const std::string model = scene.couplings.nearest_neighbour() ? "" : ", a coupling table or open rows";
+  const std::string profiles = scene.row_profiles ? ", row profiles" : "";
+  fail("model.rows", "at most " + std::to_string(limit) + " rows run on the GPU with " + integrator + model +
+                         profiles + " (got " + std::to_string(scene.max_rows()) +
+                         "); numerics.device = \"cpu\" has no limit");
 }
 
 constexpr std::size_t max_members = 100000000;

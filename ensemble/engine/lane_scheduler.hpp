@@ -82,6 +82,7 @@ class LaneScheduler {
         shadows_on_(scene.runs_shadows() && !Loop::stochastic),
         symmetry_limited_(scene.symmetry_limited(variant.rtol)),
         end_capacity_(end_state_capacity(scene.average_periods)),
+        rules_(summary_rules(scene, Loop::stochastic, Loop::period, profiles_.enabled())),
         lanes_(width) {}
 
   /// Takes members from next_member() (a std::optional<Member>; empty when the plan is
@@ -206,12 +207,9 @@ class LaneScheduler {
     loop_.next_period(l, scene_.wrap_angles);
   }
 
-  /// At T > 0 one step of h turns a row by about √(2T h/g) from noise alone, a rate of √(2T/(g h)):
-  /// a step counts as fast only above max(slip_rate, 6 √(2T/(g h))), six standard deviations of the
-  /// noise (docs/model.md §7).
   double thermal_slip_rate(double g) const {
     const double h = Loop::period / Integrator::steps_for(settings_, g);
-    return std::max(scene_.slip_rate, 6.0 * std::sqrt(2.0 * scene_.thermal.temperature / (g * h)));
+    return ensemble::thermal_slip_rate(scene_.slip_rate, scene_.thermal.temperature, g, h);
   }
 
   /// Without period_series only the averaged periods (and the two the steady test compares) are
@@ -253,30 +251,20 @@ class LaneScheduler {
   /// The result of the member in lane l, from its records.
   MemberResult summarize_lane(std::size_t l, bool settled) {
     Lane& lane = lanes_[l];
-    RetiredLane retired{lane.member.index,
-                        loop_.status(l),
-                        settled,
-                        lane.progress.periods(),
-                        loop_.steps_accepted(l),
-                        loop_.steps_rejected(l),
-                        std::vector<double>(loop_.dimension()),
-                        std::move(lane.history),
-                        {},
-                        {}};
-    keep_end_states(retired, std::move(lane.end_states), scene_.average_periods);
+    RetiredLane retired;
+    retired.index = lane.member.index;
+    retired.status = loop_.status(l);
+    retired.settled = settled;
+    retired.periods = lane.progress.periods();
+    retired.steps_accepted = loop_.steps_accepted(l);
+    retired.steps_rejected = loop_.steps_rejected(l);
+    retired.theta.resize(loop_.dimension());
     for (std::size_t k = 0; k < loop_.dimension(); ++k) retired.theta[k] = loop_.component(l, k);
-    const std::size_t averaged =
-        std::min<std::size_t>(retired.history.size(), std::size_t(scene_.average_periods));
-    MemberResult result = retired_member_result(std::move(retired), scene_.average_periods,
-                                                scene_.classifies_regimes(), scene_.period_series);
-    if constexpr (Loop::stochastic) {
-      // D is a random quantity: its error is the standard error of the mean over the averaged periods
-      const double n = double(averaged);
-      result.summary(Summary::mean, Channel::dissipation_error) =
-          n > 1 ? result.dissipation_std() / std::sqrt(n - 1) : std::numeric_limits<double>::infinity();
-    }
-    if (profiles_.enabled()) average_profiles(lane.profiles, result);
-    return result;
+    retired.history = std::move(lane.history);
+    keep_end_states(retired, std::move(lane.end_states), scene_.average_periods);
+    retired.profiles.assign(lane.profiles.begin(), lane.profiles.end());
+    retired.links = profiles_.links();
+    return retired_member_result(std::move(retired), rules_);
   }
 
   void release_lane(std::size_t l) {
@@ -287,22 +275,6 @@ class LaneScheduler {
     lane.profiles.clear();
     loop_.release(l);
     --occupied_;
-  }
-
-  /// Means over the averaged periods of D_j and of each link's alignment (NaN when the member failed).
-  void average_profiles(const std::deque<std::vector<double>>& profiles, MemberResult& result) const {
-    const std::size_t n = loop_.dimension(), links = profiles_.links();
-    const bool ok = result.status == kernels::LaneStatus::ok && !profiles.empty();
-    result.row_dissipation.assign(n, ok ? 0.0 : std::numeric_limits<double>::quiet_NaN());
-    result.link_alignment.assign(links, ok ? 0.0 : std::numeric_limits<double>::quiet_NaN());
-    if (!ok) return;
-    for (const auto& values : profiles) {
-      for (std::size_t j = 0; j < n; ++j) result.row_dissipation[j] += values[j];
-      for (std::size_t j = 0; j < links; ++j) result.link_alignment[j] += values[n + j];
-    }
-    const double count = double(profiles.size());
-    for (double& d : result.row_dissipation) d /= count;
-    for (double& rho : result.link_alignment) rho /= count * Loop::period;
   }
 
   const Scene& scene_;
@@ -322,6 +294,7 @@ class LaneScheduler {
   std::deque<Member> shadows_;                ///< shadow runs waiting for a lane
   std::map<std::size_t, MemberResult> held_;  ///< primaries waiting for their shadow runs
   std::size_t end_capacity_;                  ///< period ends a lane keeps (end_state_capacity)
+  SummaryRules rules_;                        ///< how a retired lane becomes a result
   std::vector<Lane> lanes_;
   std::size_t occupied_ = 0;
   bool plan_exhausted_ = false;

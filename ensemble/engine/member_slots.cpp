@@ -1,11 +1,15 @@
 // The host side of member slots: a chunk's inputs from the plan (initial angles, A, g, the
-// strict-FM mark as RowSetup gives them) and each slot's result, summarized as LaneScheduler does.
+// strict-FM mark, disorder, couplings and noise keys as RowSetup gives them) and each slot's
+// result, summarized as LaneScheduler does.
 #include "ensemble/engine/member_slots.hpp"
 
 #include <algorithm>
 
+#include "ensemble/rows/disorder.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_summary.hpp"
+#include "kernels/lanes/angles.hpp"
+#include "kernels/lanes/counter_random.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -30,6 +34,24 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   s.record_capacity = std::size_t(std::max(scene.average_periods, 2));
   if (scene.period_series) s.record_capacity = std::max(s.record_capacity, std::size_t(s.periods.limit()));
   s.end_capacity = end_state_capacity(scene.average_periods);
+  s.stochastic = scene.thermal.on();
+  s.temperature = scene.thermal.temperature;
+  s.steps_per_period = scene.thermal.steps_per_period;
+  s.step_fraction = scene.thermal.step_fraction;
+  s.row_profiles = scene.row_profiles;
+  s.links = scene.couplings.open ? s.rows - 1 : s.rows;
+  s.profile_capacity = scene.row_profiles ? std::size_t(scene.average_periods) : 0;
+  if (scene.couplings.nearest_neighbour()) {
+    const RowDeviations d = row_deviations(scene.disorder, s.rows, 0);
+    s.A_rows = !d.A.empty();
+    s.anisotropy_rows = !d.anisotropy.empty();
+    s.coupling_rows = !d.coupling.empty();
+  } else {
+    const CouplingTable table = scene.couplings.for_rows(s.rows);
+    s.coupling_a = table.a;
+    s.coupling_range = table.range();
+    s.open = scene.couplings.open;
+  }
   return s;
 }
 
@@ -41,6 +63,12 @@ SlotChunk::SlotChunk(const SlotSchedule& schedule, std::size_t capacity)
       g_(capacity),
       y0_(capacity * schedule.rows),
       tolerance_scale_(capacity),
+      A_rows_(schedule.A_rows ? capacity * schedule.rows : 0),
+      anisotropy_rows_(schedule.anisotropy_rows ? capacity * schedule.rows : 0),
+      coupling_rows_(schedule.coupling_rows ? capacity * schedule.rows : 0),
+      noise_key_(schedule.stochastic ? capacity : 0),
+      table_b_(schedule.coupling_range),
+      table_c_(schedule.coupling_range),
       strict_fm_(capacity),
       status_(capacity),
       settled_(capacity),
@@ -48,7 +76,8 @@ SlotChunk::SlotChunk(const SlotSchedule& schedule, std::size_t capacity)
       steps_(2 * capacity),
       theta_(capacity * schedule.rows),
       records_(capacity * schedule.record_capacity * channel_count),
-      end_states_(capacity * schedule.end_capacity * schedule.rows) {}
+      end_states_(capacity * schedule.end_capacity * schedule.rows),
+      profiles_(capacity * schedule.profile_capacity * 2 * schedule.rows) {}
 
 void SlotChunk::fill(const Scene& scene, const VariantRange& range, std::size_t first, std::size_t count) {
   const std::size_t n = schedule_.rows;
@@ -62,6 +91,20 @@ void SlotChunk::fill(const Scene& scene, const VariantRange& range, std::size_t 
     tolerance_scale_[k] = member.tolerance_scale;
     strict_fm_[k] = std::all_of(y0.begin(), y0.end(), [&](double x) { return x == y0[0]; }) ? 1 : 0;
     std::copy(y0.begin(), y0.end(), y0_.begin() + std::ptrdiff_t(k * n));
+    if (schedule_.stochastic) noise_key_[k] = kernels::RandomStream(scene.thermal.seed, member.stream).key();
+    if (!schedule_.A_rows && !schedule_.anisotropy_rows && !schedule_.coupling_rows) continue;
+    const RowDeviations d = row_deviations(scene.disorder, n, member.replica);
+    const auto at = std::ptrdiff_t(k * n);
+    if (schedule_.A_rows) std::copy(d.A.begin(), d.A.end(), A_rows_.begin() + at);
+    if (schedule_.anisotropy_rows)
+      std::copy(d.anisotropy.begin(), d.anisotropy.end(), anisotropy_rows_.begin() + at);
+    if (schedule_.coupling_rows) std::copy(d.coupling.begin(), d.coupling.end(), coupling_rows_.begin() + at);
+  }
+  if (schedule_.coupling_range > 0 && !table_filled_) {
+    const CouplingTable table = scene.couplings.for_rows(n);
+    std::copy(table.b.begin(), table.b.end(), table_b_.begin());
+    std::copy(table.c.begin(), table.c.end(), table_c_.begin());
+    table_filled_ = true;
   }
 }
 
@@ -89,8 +132,14 @@ MemberResult SlotChunk::result(const Scene& scene, std::size_t k) const {
     kept.emplace_back(end, end + n);
   }
   keep_end_states(lane, std::move(kept), scene.average_periods);
-  return retired_member_result(std::move(lane), scene.average_periods, scene.classifies_regimes(),
-                               scene.period_series);
+  const std::size_t profiles = schedule_.profile_capacity, stride = 2 * n;
+  for (std::size_t p = periods - std::min(periods, profiles); p < periods; ++p) {
+    const double* profile = &profiles_[(k * profiles + p % profiles) * stride];
+    lane.profiles.emplace_back(profile, profile + n + schedule_.links);
+  }
+  lane.links = schedule_.links;
+  return retired_member_result(
+      std::move(lane), summary_rules(scene, schedule_.stochastic, kernels::two_pi, schedule_.row_profiles));
 }
 
 double SlotChunk::deliver(const Scene& scene, int threads, const ResultSink& sink) const {
@@ -116,13 +165,20 @@ std::vector<SlotChunk::Buffer> SlotChunk::buffers() {
           {strict_fm_.data(), bytes(strict_fm_), true},
           {y0_.data(), bytes(y0_), true},
           {tolerance_scale_.data(), bytes(tolerance_scale_), true},
+          {A_rows_.data(), bytes(A_rows_), true},
+          {anisotropy_rows_.data(), bytes(anisotropy_rows_), true},
+          {coupling_rows_.data(), bytes(coupling_rows_), true},
+          {noise_key_.data(), bytes(noise_key_), true},
+          {table_b_.data(), bytes(table_b_), true},
+          {table_c_.data(), bytes(table_c_), true},
           {status_.data(), bytes(status_), false},
           {settled_.data(), bytes(settled_), false},
           {periods_.data(), bytes(periods_), false},
           {steps_.data(), bytes(steps_), false},
           {theta_.data(), bytes(theta_), false},
           {records_.data(), bytes(records_), false},
-          {end_states_.data(), bytes(end_states_), false}};
+          {end_states_.data(), bytes(end_states_), false},
+          {profiles_.data(), bytes(profiles_), false}};
 }
 
 }  // namespace rotorsweep::ensemble

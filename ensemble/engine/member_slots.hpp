@@ -1,6 +1,7 @@
 // Members laid out as flat arrays for a device backend (docs/architecture.md "Backends"): a chunk
-// of members' inputs (parameters, y(0)) and the slots their retired lanes write (status, counts,
-// the last period records and end states), with the host side that fills and reads them.
+// of members' inputs (parameters, disorder, couplings, noise keys, y(0)) and the slots their retired
+// lanes write (status, counts, the last period records, end states and row profiles), with the
+// host side that fills and reads them.
 #pragma once
 
 #include <cstddef>
@@ -31,23 +32,68 @@ struct SlotSchedule {
   std::size_t end_capacity = 4;      ///< period end states a slot keeps (a ring, end_state_capacity)
   kernels::Integrals quadratures{};  ///< what the row model carries (the scene's observables)
   QuadratureChannels channels{};     ///< the period channels those quadratures fill
+  /// The Langevin stepper's settings (stochastic: thermal.temperature > 0).
+  bool stochastic = false;
+  double temperature = 0, step_fraction = 0;
+  int steps_per_period = 0;
+  /// Row profiles: on, the links a member has (N, or N − 1 on open rows), and the averaged periods'
+  /// profiles a slot keeps (a ring of average_periods, each 2N values: rows, then links).
+  bool row_profiles = false;
+  std::size_t links = 0, profile_capacity = 0;
+  /// Which disorder arrays the members carry (each N values per member).
+  bool A_rows = false, anisotropy_rows = false, coupling_rows = false;
+  /// The coupling table of CoupledRows (its b, c are inputs of the chunk): a, range, open rows.
+  double coupling_a = 0;
+  std::size_t coupling_range = 0;
+  bool open = false;
 };
 
 /// Device-visible views of a chunk of `count` members: inputs, then outputs (k: the chunk position).
 struct SlotViews {
-  const double* A = nullptr;                ///< [k]
-  const double* g = nullptr;                ///< [k]
-  const std::uint8_t* strict_fm = nullptr;  ///< [k]
-  const double* y0 = nullptr;               ///< [k · rows + j]
-  const double* tolerance_scale = nullptr;  ///< [k] Member::tolerance_scale
-  std::uint8_t* status = nullptr;           ///< [k] kernels::LaneStatus
-  std::uint8_t* settled = nullptr;          ///< [k]
-  std::int32_t* periods = nullptr;          ///< [k] periods closed
-  double* steps = nullptr;                  ///< [2k] accepted, [2k + 1] rejected
-  double* theta = nullptr;                  ///< [k · rows + j] the state at retirement
+  const double* A = nullptr;                 ///< [k]
+  const double* g = nullptr;                 ///< [k]
+  const std::uint8_t* strict_fm = nullptr;   ///< [k]
+  const double* y0 = nullptr;                ///< [k · rows + j]
+  const double* tolerance_scale = nullptr;   ///< [k] Member::tolerance_scale
+  const double* A_rows = nullptr;            ///< [k · rows + j] δ_j, where SlotSchedule::A_rows
+  const double* anisotropy_rows = nullptr;   ///< [k · rows + j] α_j, where SlotSchedule::anisotropy_rows
+  const double* coupling_rows = nullptr;     ///< [k · rows + j] β_j, where SlotSchedule::coupling_rows
+  const std::uint64_t* noise_key = nullptr;  ///< [k] the thermal noise stream's key
+  const double* table_b = nullptr;           ///< [u − 1] b_u of the coupling table
+  const double* table_c = nullptr;           ///< [u − 1] c_u
+  std::uint8_t* status = nullptr;            ///< [k] kernels::LaneStatus
+  std::uint8_t* settled = nullptr;           ///< [k]
+  std::int32_t* periods = nullptr;           ///< [k] periods closed
+  double* steps = nullptr;                   ///< [2k] accepted, [2k + 1] rejected
+  double* theta = nullptr;                   ///< [k · rows + j] the state at retirement
   double* records = nullptr;  ///< [(k · record_capacity + r) · channel_count + c], r = period mod capacity
   double* end_states = nullptr;  ///< [(k · end_capacity + r) · rows + j], r = period mod end_capacity
+  double* profiles = nullptr;  ///< [(k · profile_capacity + r) · 2 rows + j], r = period mod profile_capacity
 };
+
+/// The parameters of chunk member k for Model (NearestNeighbourRows with its disorder, or
+/// CoupledRows with the chunk's table), as RowSetup gives them on the CPU.
+template <class Model>
+ROTORSWEEP_HD typename Model::Parameters slot_parameters(const SlotSchedule& s, const SlotViews& v,
+                                                         std::size_t k) {
+  typename Model::Parameters p{};
+  p.A = v.A[k];
+  p.g = v.g[k];
+  p.strict_fm = v.strict_fm[k] != 0;
+  if constexpr (requires { p.range; }) {
+    p.a = s.coupling_a;
+    p.b = v.table_b;
+    p.c = v.table_c;
+    p.range = s.coupling_range;
+    p.open = s.open;
+  } else {
+    const std::size_t at = k * s.rows;
+    p.A_rows = s.A_rows ? v.A_rows + at : nullptr;
+    p.anisotropy_rows = s.anisotropy_rows ? v.anisotropy_rows + at : nullptr;
+    p.coupling_rows = s.coupling_rows ? v.coupling_rows + at : nullptr;
+  }
+  return p;
+}
 
 /// Views over the buffers of a chunk given in SlotChunk::buffers() order (host or device memory).
 inline SlotViews slot_views(void* const* p) {
@@ -56,13 +102,20 @@ inline SlotViews slot_views(void* const* p) {
           static_cast<const std::uint8_t*>(p[2]),
           static_cast<const double*>(p[3]),
           static_cast<const double*>(p[4]),
-          static_cast<std::uint8_t*>(p[5]),
-          static_cast<std::uint8_t*>(p[6]),
-          static_cast<std::int32_t*>(p[7]),
-          static_cast<double*>(p[8]),
-          static_cast<double*>(p[9]),
-          static_cast<double*>(p[10]),
-          static_cast<double*>(p[11])};
+          static_cast<const double*>(p[5]),
+          static_cast<const double*>(p[6]),
+          static_cast<const double*>(p[7]),
+          static_cast<const std::uint64_t*>(p[8]),
+          static_cast<const double*>(p[9]),
+          static_cast<const double*>(p[10]),
+          static_cast<std::uint8_t*>(p[11]),
+          static_cast<std::uint8_t*>(p[12]),
+          static_cast<std::int32_t*>(p[13]),
+          static_cast<double*>(p[14]),
+          static_cast<double*>(p[15]),
+          static_cast<double*>(p[16]),
+          static_cast<double*>(p[17]),
+          static_cast<double*>(p[18])};
 }
 
 /// Host buffers of one chunk in the SlotViews layout.
@@ -96,14 +149,17 @@ class SlotChunk {
   SlotSchedule schedule_;
   std::size_t capacity_, count_ = 0;
   std::vector<std::size_t> index_;  ///< plan index of each chunk member
-  std::vector<double> A_, g_, y0_, tolerance_scale_;
+  std::vector<double> A_, g_, y0_, tolerance_scale_, A_rows_, anisotropy_rows_, coupling_rows_;
+  std::vector<std::uint64_t> noise_key_;
+  std::vector<double> table_b_, table_c_;  ///< the coupling table, filled once
+  bool table_filled_ = false;
   std::vector<std::uint8_t> strict_fm_, status_, settled_;
   std::vector<std::int32_t> periods_;
-  std::vector<double> steps_, theta_, records_, end_states_;
+  std::vector<double> steps_, theta_, records_, end_states_, profiles_;
 };
 
 /// The schedule of a variant's members: the scene's schedule with the variant's tolerances,
-/// `first_step_scale` the stepper's first-step scale at them.
+/// `first_step_scale` the stepper's first-step scale at them (0 for the Langevin stepper).
 SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double first_step_scale);
 
 }  // namespace rotorsweep::ensemble

@@ -77,6 +77,15 @@ struct SlipCounter {
   }
 };
 
+/// The slip threshold of a member at temperature T > 0 with damping g and Langevin step h: one step
+/// turns a row by about √(2T h/g) from noise alone, a rate of √(2T/(g h)), so a step counts as
+/// fast only above max(slip_rate, 6 √(2T/(g h))), six standard deviations of the noise
+/// (docs/model.md §7).
+ROTORSWEEP_HD inline double thermal_slip_rate(double slip_rate, double temperature, double g, double h) {
+  const double noise = 6.0 * kernels::lane_sqrt(2.0 * temperature / (g * h));
+  return slip_rate < noise ? noise : slip_rate;
+}
+
 /// The error of a period's dissipation R_k. The step control holds the local error of the running
 /// integral R(t) below atol + rtol |R(t)|, and R(t) swings far above its final value R_k (D is a
 /// small remainder of that swing), so the error of R_k is estimated as error_rtol max_t |R(t)| +

@@ -5,9 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "ensemble/engine/device_member.hpp"
-#include "kernels/models/rows/nearest_neighbour_rows.hpp"
-#include "kernels/steppers/stepper_list.hpp"
+#include "ensemble/gpu/device_drivers.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -17,11 +15,16 @@ std::string device_label(const Scene& scene) {
 }
 
 std::size_t gpu_max_rows(const Scene& scene) {
-  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-    using Model = kernels::NearestNeighbourRows<double>;
-    using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
+  return with_device_driver(scene, [&]<class Model, class Integrator>() {
+    SlotSchedule s;  // what the scratch depends on: rows, quadratures, row profiles
+    s.quadratures = scene.observables.quadratures();
+    s.row_profiles = scene.row_profiles;
+    const auto fits = [&](std::size_t rows) {
+      s.rows = rows;
+      return DeviceMember<Model, Integrator>::storage_size(s) <= gpu_thread_scratch;
+    };
     std::size_t n = 2;
-    while (DeviceMember<Model, Stepper>::storage_size(n + 1) <= gpu_thread_scratch) ++n;
+    while (fits(n + 1)) ++n;
     return n - n % 2;  // rows come in even numbers
   });
 }

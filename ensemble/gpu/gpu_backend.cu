@@ -1,5 +1,5 @@
 // The GPU backend's entry points in a CUDA build: the device probe and the dispatch from the
-// scene's stepper to its translation unit (gpu_sweep_stepper.cu.in).
+// scene's stepper to its translation unit (gpu_sweep_stepper.cu.in), or at T > 0 to the Langevin one.
 #include <cuda_runtime.h>
 
 #include <stdexcept>
@@ -12,7 +12,8 @@ namespace rotorsweep::ensemble {
 namespace gpu {
 template <kernels::StepperId id>
 SweepOutcome run_stepper(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
-}
+SweepOutcome run_langevin(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
+}  // namespace gpu
 
 const GpuInfo& gpu_info() {
   static const GpuInfo info = [] {
@@ -44,6 +45,7 @@ const GpuInfo& gpu_info() {
 
 SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, int host_threads,
                                const SweepControl& control, const ResultSink& sink) {
+  if (scene.thermal.on()) return gpu::run_langevin(scene, range, host_threads, control, sink);
   return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
     return gpu::run_stepper<id>(scene, range, host_threads, control, sink);
   });

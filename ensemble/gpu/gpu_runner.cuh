@@ -1,5 +1,6 @@
 // The GPU sweep of one variant: a persistent grid whose threads each take the next member from a
-// counter (refill) and run it with DeviceMember; the host fills and reads chunks of member slots.
+// counter (refill) and run it with DeviceMember<Model, Integrator>; the host fills and reads chunks
+// of member slots.
 #pragma once
 
 #include <cuda_runtime.h>
@@ -11,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/engine/device_member.hpp"
 #include "ensemble/engine/member_slots.hpp"
+#include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 
 namespace rotorsweep::ensemble::gpu {
@@ -25,14 +26,14 @@ inline void check(cudaError_t status, const char* what) {
 
 /// A thread's scratch is an array in local memory, which the GPU interleaves across a warp's
 /// threads: the same offset in every thread is one coalesced access.
-template <class Model, class Stepper>
+template <class Model, class Integrator>
 __global__ void sweep_slots(SlotSchedule schedule, SlotViews slots, unsigned long long count,
                             unsigned long long* next) {
   double storage[gpu_thread_scratch];
   for (;;) {
     const unsigned long long k = atomicAdd(next, 1ull);
     if (k >= count) return;
-    DeviceMember<Model, Stepper>::run(schedule, slots, std::size_t(k), storage, gpu_thread_scratch);
+    DeviceMember<Model, Integrator>::run(schedule, slots, std::size_t(k), storage, gpu_thread_scratch);
   }
 }
 
@@ -81,22 +82,20 @@ class DeviceChunk {
 
 /// The variant's members in chunks: while the GPU runs one chunk, the host fills the next and
 /// summarizes the last. Stops between chunks when control.stop is raised.
-template <class Model, class Stepper>
+template <class Model, class Integrator>
 SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_threads,
                        const SweepControl& control, const ResultSink& sink) {
-  using Driver = DeviceMember<Model, Stepper>;
+  using Driver = DeviceMember<Model, Integrator>;
   const GpuInfo& info = gpu_info();
   if (!info.available) throw std::runtime_error("numerics.device = \"gpu\": " + info.why);
   const Member variant = range.source->at(range.begin);
-  const std::size_t needed = Driver::storage_size(variant.rows);
-  if (needed > gpu_thread_scratch)
+  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
+  if (Driver::storage_size(schedule) > gpu_thread_scratch)
     throw std::runtime_error("model.rows = " + std::to_string(variant.rows) +
                              " is more than the GPU backend holds (" + std::to_string(gpu_max_rows(scene)) +
-                             " rows with this stepper)");
-  const SlotSchedule schedule =
-      slot_schedule(scene, variant, Driver::Integrator::first_step_scale({variant.rtol, variant.atol}));
+                             " rows with this scene's model and stepper)");
 
-  const auto kernel = sweep_slots<Model, Stepper>;
+  const auto kernel = sweep_slots<Model, Integrator>;
   const GpuLaunch launch = gpu_launch();
   int blocks = launch.blocks;
   if (blocks <= 0) {

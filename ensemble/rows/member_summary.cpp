@@ -67,8 +67,38 @@ void keep_end_states(RetiredLane& lane, std::vector<std::vector<double>> ends, i
   lane.end_states = std::move(ends);
 }
 
-MemberResult retired_member_result(RetiredLane&& lane, int average_periods, bool classify,
-                                   bool period_series) {
+SummaryRules summary_rules(const Scene& scene, bool stochastic, double period, bool row_profiles) {
+  SummaryRules rules;
+  rules.average_periods = scene.average_periods;
+  rules.classify = scene.classifies_regimes();
+  rules.period_series = scene.period_series;
+  rules.statistical_error = stochastic;
+  rules.row_profiles = row_profiles;
+  rules.period = period;
+  return rules;
+}
+
+namespace {
+
+/// Means over the averaged periods of D_j and of each link's alignment (NaN when the member failed).
+void average_profiles(const RetiredLane& lane, double period, MemberResult& result) {
+  const std::size_t n = lane.theta.size(), links = lane.links;
+  const bool ok = result.status == kernels::LaneStatus::ok && !lane.profiles.empty();
+  result.row_dissipation.assign(n, ok ? 0.0 : std::numeric_limits<double>::quiet_NaN());
+  result.link_alignment.assign(links, ok ? 0.0 : std::numeric_limits<double>::quiet_NaN());
+  if (!ok) return;
+  for (const auto& values : lane.profiles) {
+    for (std::size_t j = 0; j < n; ++j) result.row_dissipation[j] += values[j];
+    for (std::size_t j = 0; j < links; ++j) result.link_alignment[j] += values[n + j];
+  }
+  const double count = double(lane.profiles.size());
+  for (double& d : result.row_dissipation) d /= count;
+  for (double& rho : result.link_alignment) rho /= count * period;
+}
+
+}  // namespace
+
+MemberResult retired_member_result(RetiredLane&& lane, const SummaryRules& rules) {
   MemberResult result;
   result.index = lane.index;
   result.status = lane.status;
@@ -80,12 +110,19 @@ MemberResult retired_member_result(RetiredLane&& lane, int average_periods, bool
   for (std::size_t k = 0; k < lane.theta.size(); ++k)
     result.theta_final[k] = kernels::wrap_2pi(lane.theta[k]);
   const bool ok = result.status == kernels::LaneStatus::ok;
-  summarize(ok ? lane.history : std::vector<PeriodRecord>{}, average_periods, classify, result);
+  summarize(ok ? lane.history : std::vector<PeriodRecord>{}, rules.average_periods, rules.classify, result);
   if (ok && !lane.end_states.empty())
     result.final_state = classify_final_state(lane.end_states, std::string(regime_name(result.regime)));
   else
     result.final_state.attractor = ok ? "unsettled:none:p0" : "failed";
-  if (period_series) result.periods = std::move(lane.history);
+  if (rules.statistical_error) {
+    // D is a random quantity: its error is the standard error of the mean over the averaged periods
+    const double n = double(std::min<std::size_t>(lane.history.size(), std::size_t(rules.average_periods)));
+    result.summary(Summary::mean, Channel::dissipation_error) =
+        n > 1 ? result.dissipation_std() / std::sqrt(n - 1) : std::numeric_limits<double>::infinity();
+  }
+  if (rules.row_profiles) average_profiles(lane, rules.period, result);
+  if (rules.period_series) result.periods = std::move(lane.history);
   result.averaging_start = std::move(lane.averaging_start);
   return result;
 }

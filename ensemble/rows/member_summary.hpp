@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/scene.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -31,7 +32,26 @@ struct RetiredLane {
   std::vector<PeriodRecord> history;  ///< the last periods (at least the averaged ones), oldest first
   std::vector<std::vector<double>> end_states;  ///< θ at the last period ends (up to 4), oldest first
   std::vector<double> averaging_start;          ///< θ where the averaged periods began (empty: θ(0))
+  /// With row profiles: the profile of each averaged period, oldest first (rows, then links).
+  std::vector<std::vector<double>> profiles;
+  std::size_t links = 0;  ///< links of the profiles (N, or N − 1 on open rows)
 };
+
+/// How a retired lane becomes a member result, the same for every backend.
+struct SummaryRules {
+  int average_periods = 1;
+  bool classify = false;       ///< the regime rule has its inputs
+  bool period_series = false;  ///< keep every period record
+  /// The integrator is stochastic: the error of D is the standard error of the mean over the
+  /// averaged periods, not the integration's.
+  bool statistical_error = false;
+  bool row_profiles = false;  ///< average RetiredLane::profiles into the result
+  double period = 0;          ///< the drive period (the links' time means)
+};
+
+/// The rules of a scene's members run by an integrator that is `stochastic` or not, over a drive
+/// period `period`; `row_profiles` where the model reports them.
+SummaryRules summary_rules(const Scene& scene, bool stochastic, double period, bool row_profiles);
 
 /// Period ends a lane keeps, oldest first: the last 4 (final state) and the one before the averaged
 /// periods (a shadow run's start).
@@ -42,8 +62,8 @@ std::size_t end_state_capacity(int average_periods);
 void keep_end_states(RetiredLane& lane, std::vector<std::vector<double>> ends, int average_periods);
 
 /// The member's result: its counts, final angles in [0, 2π), summaries over the averaged periods
-/// (NaN when it failed) and final state. `history` is moved into result.periods with period_series.
-MemberResult retired_member_result(RetiredLane&& lane, int average_periods, bool classify,
-                                   bool period_series);
+/// (NaN when it failed), final state and row profiles. `history` is moved into result.periods
+/// with period_series.
+MemberResult retired_member_result(RetiredLane&& lane, const SummaryRules& rules);
 
 }  // namespace rotorsweep::ensemble

@@ -271,14 +271,14 @@ TEST_CASE("thread counts from OMP_NUM_THREADS and flush intervals obey one rule"
 TEST_CASE("the GPU device: refusals exit 2 naming the key, and no GPU is a clear error", "[apps][run][gpu]") {
   const auto dir = scratch_directory("run-gpu");
   const std::string good = "[model]\nrows = 20\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n";
-  write_text(dir / "thermal.toml", good + "[thermal]\ntemperature = 0.01\n");
+  write_text(dir / "large.toml", "[model]\nrows = 100000\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n");
   const auto out = dir / "out.h5";
-  const auto thermal =
-      run_cli("run '" + (dir / "thermal.toml").string() + "' --device gpu -o '" + out.string() + "'", dir);
-  CHECK(thermal.exit_code == 2);
-  CHECK_THAT(thermal.output, Catch::Contains("'thermal.temperature'"));
+  const auto large =
+      run_cli("run '" + (dir / "large.toml").string() + "' --device gpu -o '" + out.string() + "'", dir);
+  CHECK(large.exit_code == 2);
+  CHECK_THAT(large.output, Catch::Contains("'model.rows'"));
   CHECK_FALSE(std::filesystem::exists(out));
-  const auto bad_device = run_cli("run '" + (dir / "thermal.toml").string() + "' --device tpu", dir);
+  const auto bad_device = run_cli("run '" + (dir / "large.toml").string() + "' --device tpu", dir);
   CHECK(bad_device.exit_code == 2);
   CHECK_THAT(bad_device.output, Catch::Contains("--device"));
   if (rotorsweep::ensemble::gpu_info().available) return;  // the rest is about a machine without one

@@ -1,6 +1,6 @@
 // The GPU backend on a GPU (ctest label gpu; skipped with a message where none is present): the
-// CPU lanes' bits for the paper's members and the demo scene, launch-shape invariance, and a
-// failing member that leaves the others untouched.
+// CPU lanes' bits for the paper's members, the example scenes and every scene kind, launch-shape
+// invariance, and a failing member that leaves the others untouched.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -75,6 +75,29 @@ TEST_CASE("the GPU gives the CPU's bits for the paper's table and the example sc
   }
   for (const char* path : {ROTORSWEEP_SOURCE_DIR "/examples/friction_curve.toml",
                            ROTORSWEEP_SOURCE_DIR "/examples/robustness.toml"}) {
+    INFO(path);
+    check_gpu_matches_cpu(io::parse_scene_file(path));
+  }
+}
+
+TEST_CASE(
+    "the GPU gives the CPU's bits for every scene kind: disorder, T > 0, couplings, open rows, "
+    "row profiles",
+    "[gpu]") {
+  const std::string base = curve_scene("rodas4p2", 8, "1e-8");
+  const std::string model = "[model]\nrows = 8\n";
+  const std::string rest = base.substr(model.size());
+  for (const std::string& scene :
+       {base + "[disorder]\nA = 1e-3\nanisotropy = 1e-3\ncoupling = 1e-3\n",
+        base + "[thermal]\ntemperature = 0.05\nsteps_per_period = 400\n[observables]\nrow_profiles = true\n",
+        model + "couplings = \"dipolar\"\nrange = \"all\"\n" + rest,
+        model + "couplings = \"dipolar\"\nrange = 3\nboundary = \"open\"\n" + rest,
+        base + "[observables]\nrow_profiles = true\nenergy = true\nestimators = true\n"}) {
+    INFO(scene);
+    check_gpu_matches_cpu(io::parse_scene_text(scene, "kinds"));
+  }
+  for (const char* path : {ROTORSWEEP_SOURCE_DIR "/examples/disorder_curve.toml",
+                           ROTORSWEEP_SOURCE_DIR "/examples/basins.toml"}) {
     INFO(path);
     check_gpu_matches_cpu(io::parse_scene_file(path));
   }

@@ -271,30 +271,27 @@ TEST_CASE("thermal: temperature, steps per period and seed, with the key named w
              Catch::Contains("'observables.estimators'"));
 }
 
-TEST_CASE("scenes the GPU does not run are refused with the key named", "[io][scene][gpu]") {
+TEST_CASE("the GPU takes every row scene up to its row limit, which the refusal names", "[io][scene][gpu]") {
   const std::string gpu = "[numerics]\ndevice = \"gpu\"\n";
   CHECK(parse_scene_text(minimal + gpu, "test.toml").device == rotorsweep::ensemble::Device::gpu);
   CHECK(parse_scene_text(minimal, "test.toml").device == rotorsweep::ensemble::Device::cpu);
   CHECK_THAT(error_of(minimal + "[numerics]\ndevice = \"tpu\"\n"),
              Catch::Contains("'numerics.device'") && Catch::Contains("cpu, gpu"));
-  CHECK_THAT(error_of(minimal + gpu + "[thermal]\ntemperature = 0.01\n"),
-             Catch::Contains("'thermal.temperature'") && Catch::Contains("numerics.device = \"cpu\""));
-  CHECK_THAT(error_of(minimal + gpu + "[disorder]\nA = 1e-6\n"), Catch::Contains("'disorder'"));
-  CHECK_THAT(error_of(minimal + gpu + "[observables]\nrow_profiles = true\n"),
-             Catch::Contains("'observables.row_profiles'") && Catch::Contains("cpu"));
-  CHECK_THAT(
-      error_of(
-          "[model]\nrows = 20\ncouplings = \"dipolar\"\nrange = 2\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" +
-          gpu),
-      Catch::Contains("'model.couplings'"));
-  CHECK_THAT(
-      error_of("[model]\nrows = 20\nboundary = \"open\"\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" + gpu),
-      Catch::Contains("'model.boundary'"));
+  for (const std::string kind :
+       {"[thermal]\ntemperature = 0.01\n", "[disorder]\nA = 1e-6\n", "[observables]\nrow_profiles = true\n"})
+    CHECK(error_of(minimal + gpu + kind) == "");
+  const std::string rest = "[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" + gpu;
+  CHECK(error_of("[model]\nrows = 20\ncouplings = \"dipolar\"\nrange = 2\n" + rest) == "");
+  CHECK(error_of("[model]\nrows = 20\nboundary = \"open\"\n" + rest) == "");
   const auto limit = rotorsweep::ensemble::gpu_max_rows(parse_scene_text(minimal + gpu, "test.toml"));
   CHECK(limit >= 128);
-  CHECK(error_of("[model]\nrows = " + std::to_string(limit) + "\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" +
-                 gpu) == "");
-  CHECK_THAT(error_of("[model]\nrows = " + std::to_string(limit + 2) +
-                      "\n[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" + gpu),
-             Catch::Contains("'model.rows'") && Catch::Contains("at most " + std::to_string(limit)));
+  CHECK(error_of("[model]\nrows = " + std::to_string(limit) + "\n" + rest) == "");
+  CHECK_THAT(error_of("[model]\nrows = " + std::to_string(limit + 2) + "\n" + rest),
+             Catch::Contains("'model.rows'") && Catch::Contains("at most " + std::to_string(limit)) &&
+                 Catch::Contains("numerics.device = \"cpu\""));
+  const std::string dipolar = "couplings = \"dipolar\"\nboundary = \"open\"\n";
+  const auto coupled_limit = rotorsweep::ensemble::gpu_max_rows(
+      parse_scene_text("[model]\nrows = 4\n" + dipolar + rest, "test.toml"));
+  CHECK_THAT(error_of("[model]\nrows = " + std::to_string(coupled_limit + 2) + "\n" + dipolar + rest),
+             Catch::Contains("'model.rows'") && Catch::Contains("coupling table"));
 }

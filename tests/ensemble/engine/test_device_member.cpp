@@ -1,18 +1,19 @@
 // The GPU backend's member driver compiled for the host: run member by member through member slots,
-// it gives the CPU lanes' (scalar and SIMD) results bit for bit, for every stepper and schedule.
+// it gives the CPU lanes' (scalar and SIMD) results bit for bit, for every stepper, schedule and
+// scene kind (disorder, temperature, coupling tables, open rows, row profiles).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "ensemble/engine/device_member.hpp"
 #include "ensemble/engine/member_slots.hpp"
 #include "ensemble/engine/shadow_run.hpp"
+#include "ensemble/gpu/device_drivers.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
-#include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "support/same_results.hpp"
 
@@ -20,19 +21,18 @@ using namespace rotorsweep;
 
 namespace {
 
-/// Members [0, count) of `source` through DeviceMember on the host, in one chunk of slots.
+/// Members [0, count) of `source` through DeviceMember on the host, in one chunk of slots, with the
+/// model and integrator the GPU backend picks for the scene.
 std::vector<ensemble::MemberResult> run_through_slots(const ensemble::Scene& scene,
                                                       const ensemble::MemberSource& source) {
-  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-    using Model = kernels::NearestNeighbourRows<double>;
-    using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
-    using Driver = ensemble::DeviceMember<Model, Stepper>;
+  return ensemble::with_device_driver(scene, [&]<class Model, class Integrator>() {
+    using Driver = ensemble::DeviceMember<Model, Integrator>;
     const ensemble::Member variant = source.at(0);
-    const auto schedule = ensemble::slot_schedule(
-        scene, variant, Driver::Integrator::first_step_scale({variant.rtol, variant.atol}));
+    const auto schedule =
+        ensemble::slot_schedule(scene, variant, ensemble::device_first_step_scale<Integrator>(variant));
     ensemble::SlotChunk chunk(schedule, source.count);
     chunk.fill(scene, {&source, 0, source.count}, 0, source.count);
-    std::vector<double> storage(Driver::storage_size(variant.rows));
+    std::vector<double> storage(Driver::storage_size(schedule));
     const ensemble::SlotViews views = chunk.views();
     for (std::size_t k = 0; k < source.count; ++k)
       Driver::run(schedule, views, k, storage.data(), storage.size());
@@ -43,14 +43,17 @@ std::vector<ensemble::MemberResult> run_through_slots(const ensemble::Scene& sce
 }
 
 std::string scene_text(const std::string& stepper, int rows, const std::string& schedule,
-                       const std::string& extra = "") {
-  return "[model]\nrows = " + std::to_string(rows) +
-         "\n[drive]\ng = [0.05, 0.3]\n[sweep]\nA = {from = 0.5, to = 14, count = 7}\n"
+                       const std::string& extra = "", const std::string& model = "") {
+  return "[model]\nrows = " + std::to_string(rows) + "\n" + model +
+         "[drive]\ng = [0.05, 0.3]\n[sweep]\nA = {from = 0.5, to = 14, count = 7}\n"
          "[initial]\nkinds = [\"AFM\", \"random\", \"FM\"]\nreplicas = 2\n[schedule]\n" +
          schedule + "\n[numerics]\nstepper = \"" + stepper + "\"\nrtol = 1e-7\natol = 1e-10\n" + extra;
 }
 
-void check_backends_agree(const ensemble::Scene& scene) {
+/// The members' own runs on both backends (the shadow runs of slipping members are a second pass
+/// over the same driver, ShadowedRange in sweep.cpp, and off here).
+void check_backends_agree(ensemble::Scene scene) {
+  scene.shadow_runs = false;
   const ensemble::MemberPlan plan(scene);
   std::vector<ensemble::Member> members;
   for (std::size_t i = 0; i < plan.size(); ++i) members.push_back(plan[i]);
@@ -137,4 +140,62 @@ TEST_CASE("the device member driver runs a shadow run as the CPU does: its toler
   // and the scale and the start took effect: the plain members give other results
   const auto plain = ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {});
   CHECK(testing::count_differences(plain.results, slots, first) > 0);
+}
+
+TEST_CASE("the device member driver with disorder: drawn and given per row", "[device_member][disorder]") {
+  check_backends_agree(io::parse_scene_text(
+      scene_text("rodas4p2", 6, "relax_periods = 1\naverage_periods = 2",
+                 "[disorder]\nA = 0.05\nanisotropy = 0.02\ncoupling_rows = [0.1, -0.1, 0.0]\nseed = 4\n"),
+      "device-member-disorder"));
+}
+
+TEST_CASE("the device member driver with row profiles, periodic and open rows",
+          "[device_member][row_profiles]") {
+  const std::string profiles = "[observables]\nrow_profiles = true\nenergy = true\n";
+  check_backends_agree(
+      io::parse_scene_text(scene_text("rodas5p", 6, "relax_periods = 1\naverage_periods = 3", profiles),
+                           "device-member-profiles"));
+  const auto open = io::parse_scene_text(
+      scene_text("rodas4", 8, "relax_periods = 1\naverage_periods = 2", profiles, "boundary = \"open\"\n"),
+      "device-member-open");
+  REQUIRE(open.couplings.open);
+  check_backends_agree(open);
+}
+
+TEST_CASE("the device member driver with coupling tables: dipolar rows, an explicit table",
+          "[device_member][couplings]") {
+  check_backends_agree(
+      io::parse_scene_text(scene_text("rodas4p2", 8, "relax_periods = 1\naverage_periods = 2", "",
+                                      "couplings = \"dipolar\"\nrange = \"all\"\n"),
+                           "device-member-dipolar"));
+  check_backends_agree(
+      io::parse_scene_text(scene_text("rodas4", 6, "relax_periods = 1\naverage_periods = 2", "",
+                                      "coupling_table = { a = 1.2, b = [1.0, 0.2], c = [0.1, 0.05] }\n"),
+                           "device-member-table"));
+}
+
+TEST_CASE("the device member driver at T > 0: the Langevin stepper, its noise and slip threshold",
+          "[device_member][thermal]") {
+  const auto scene =
+      io::parse_scene_text(scene_text("rodas4p2", 4, "relax_periods = 1\naverage_periods = 3",
+                                      "[thermal]\ntemperature = 0.05\nsteps_per_period = 400\nseed = 9\n"
+                                      "[observables]\nrow_profiles = true\nenergy = true\n"),
+                           "device-member-thermal");
+  REQUIRE(scene.thermal.on());
+  check_backends_agree(scene);
+}
+
+TEST_CASE("the GPU's row limit depends on the model, the integrator and the row profiles",
+          "[device_member]") {
+  const auto limit = [](const std::string& text) {
+    return ensemble::gpu_max_rows(io::parse_scene_text(text, "device-member-limit"));
+  };
+  const std::string plain = scene_text("rodas4p2", 6, "relax_periods = 1\naverage_periods = 2");
+  const std::size_t nearest = limit(plain);
+  CHECK(nearest % 2 == 0);
+  CHECK(nearest >= 100);
+  CHECK(limit(scene_text("rodas4p2", 6, "relax_periods = 1\naverage_periods = 2", "",
+                         "couplings = \"dipolar\"\n")) < nearest);
+  CHECK(limit(plain + "[observables]\nrow_profiles = true\n") < nearest);
+  CHECK(limit(plain + "[thermal]\ntemperature = 0.1\n") > nearest);  // one stage, no error estimate
 }

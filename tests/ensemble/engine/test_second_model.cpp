@@ -73,7 +73,15 @@ TEST_CASE("a second model through the same scheduler: the single rotor's closed 
   for (std::size_t i = 0; i < 11; ++i) {
     const double A = 0.6 + 0.4 * double(i);  // a = A/g from 1.2 to 9.2
     psi0.push_back(-1.0 + 0.25 * double(i));
-    members.push_back({i, i, A, g, ensemble::InitialKind::exact, 0, 0, 1, 1e-10, 1e-12});
+    ensemble::Member member;
+    member.index = member.stream = i;
+    member.A = A;
+    member.g = g;
+    member.kind = ensemble::InitialKind::exact;
+    member.rows = 1;
+    member.rtol = 1e-10;
+    member.atol = 1e-12;
+    members.push_back(member);
   }
   const auto scalar = run<double>(scene, members, psi0);
   const auto simd = run<kernels::simd_lane>(scene, members, psi0);

@@ -1,0 +1,52 @@
+// Which DeviceMember a row scene runs on the device (docs/architecture.md "Backends"): the row model
+// on the double lane (nearest neighbours, or a coupling table) and its integrator (a stepper, or Langevin).
+#pragma once
+
+#include "ensemble/engine/device_member.hpp"
+#include "ensemble/rows/scene.hpp"
+#include "kernels/models/rows/coupled_rows.hpp"
+#include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/langevin_euler.hpp"
+#include "kernels/steppers/stepper_list.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// The adaptive integrator of stepper `id` on Model.
+template <kernels::StepperId id, class Model>
+using DeviceAdaptiveIntegrator =
+    kernels::AdaptiveIntegrator<Model, typename kernels::stepper_at<id>::type::template type<Model>>;
+
+/// Calls f.template operator()<Model>() with the scene's row model on the double lane, as
+/// with_row_model picks it for the CPU: NearestNeighbourRows, or CoupledRows for a coupling table
+/// or open rows.
+template <class F>
+decltype(auto) with_device_model(const Scene& scene, F&& f) {
+  if (scene.couplings.nearest_neighbour())
+    return f.template operator()<kernels::NearestNeighbourRows<double>>();
+  return f.template operator()<kernels::CoupledRows<double>>();
+}
+
+/// Calls f.template operator()<Model, Integrator>() with the scene's model and integrator: the
+/// Langevin stepper at T > 0, else the adaptive integrator of the scene's stepper.
+template <class F>
+decltype(auto) with_device_driver(const Scene& scene, F&& f) {
+  return with_device_model(scene, [&]<class Model>() {
+    if (scene.thermal.on()) return f.template operator()<Model, kernels::LangevinEuler<Model>>();
+    return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
+      return f.template operator()<Model, DeviceAdaptiveIntegrator<id, Model>>();
+    });
+  });
+}
+
+/// The first-step scale a variant's schedule carries (computed on the host: a GPU's pow may round
+/// differently); 0 for the Langevin stepper, which has none.
+template <class Integrator>
+double device_first_step_scale(const Member& variant) {
+  if constexpr (Integrator::stochastic)
+    return 0.0;
+  else
+    return Integrator::first_step_scale({variant.rtol, variant.atol});
+}
+
+}  // namespace rotorsweep::ensemble
