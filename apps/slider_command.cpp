@@ -1,5 +1,5 @@
 // `rotorsweep slider SCENE`: the experiment's many-body slider over a scan of layer separations
-// (docs/model.md §9), streamed into OUT.h5.partial as lane blocks finish, like `run`: a progress line,
+// (docs/model.md §9), streamed into OUT.h5.partial as members finish, like `run`: a progress line,
 // SIGINT or SIGTERM keeps the finished members (exit 130 or 143), --resume, --shard and `merge`.
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Writes a slider scan as its lane blocks finish: /members (one row per member), /series (members × samples),
+// Writes a slider scan as its members finish: /members (one row per member), /series (members × samples),
 // /curve (per separation: replica mean and spread of the friction and order parameters) at the end.
 #include "io/slider_result_file.hpp"
 

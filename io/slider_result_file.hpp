@@ -21,8 +21,8 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
                                          const ensemble::SliderTimeline& timeline);
 
 /// A slider file being written, like a row sweep's (MemberTableFile): from construction on it holds
-/// the scene, the provenance and every column sized for its members; members are written as their
-/// lane blocks finish; /curve and complete = TRUE come last.
+/// the scene, the provenance and every column sized for its members; members are written as they
+/// finish; /curve and complete = TRUE come last.
 class SliderResultFile : public MemberTableFile {
  public:
   /// Creates (truncates) path for the whole plan of `scene`, or for a shard's part of it.
@@ -58,7 +58,7 @@ struct SliderStreamOutcome {
   std::string write_error;  ///< why writing the file failed (the scan then stopped); empty if it did not
 };
 
-/// Runs the members `plan_indices` (ascending) of the file's scene and writes each lane block into
+/// Runs the members `plan_indices` (ascending) of the file's scene and writes each member into
 /// `file` as it finishes (ensemble::run_slider_members).
 SliderStreamOutcome stream_slider_scan(const SliderResultFile& file, const ensemble::SliderScene& scene,
                                        const std::vector<std::size_t>& plan_indices,

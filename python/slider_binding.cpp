@@ -29,7 +29,7 @@ ensemble::SliderScene parse(const std::string& scene, bool is_path) {
 
 /// Runs the slider scene into `output` (checked before the start: ValueError) and returns its member
 /// count; `progress(done, total)` is called about ten times a second, and a signal Python wants to
-/// raise (Ctrl-C) stops the scan before its next lane block and is raised, with nothing written. The
+/// raise (Ctrl-C) stops the scan within one step and is raised, with nothing written. The
 /// members stream into the temporary file as `rotorsweep slider` streams them.
 std::size_t run_slider(const std::string& scene_text, bool is_path, int threads, const std::string& output,
                        bool force, const std::string& version, const std::string& revision,

@@ -78,6 +78,14 @@ class IntegrationLoop {
     model_.set_lane(lane, parameters);
   }
 
+  /// The parameters of `lane` without starting it: an idle lane still computes along, so it needs
+  /// valid ones (the slider's substrate table) before any member has been in it.
+  void set_parameters(std::size_t lane, const Parameters& parameters) { model_.set_lane(lane, parameters); }
+
+  /// The lane stops next at t_stop (a problem whose stops are not the drive's periods: the slider's
+  /// sample grid); its quadratures run on.
+  void set_stop(std::size_t lane, double t_stop) { kernels::lane_set(state_.t_stop, lane, t_stop); }
+
   /// The member in `lane` integrates at tolerances rtol·scale, atol·scale (after start()).
   void set_tolerance_scale(std::size_t lane, double scale) {
     kernels::lane_set(state_.tolerance_scale, lane, scale);

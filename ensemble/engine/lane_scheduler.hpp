@@ -1,89 +1,38 @@
-// The lane scheduler (docs/architecture.md "Layers"): takes members from the plan into the lanes
-// of an integration loop, closes their periods into records, and retires and refills lanes.
+// The lane scheduler (docs/architecture.md "Layers"): takes a problem's members into the lanes of
+// its integration loop, closes their periods, and retires and refills lanes; it knows no model.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
-#include <deque>
-#include <limits>
-#include <map>
-#include <memory>
 #include <optional>
-#include <tuple>
 #include <utility>
 #include <vector>
 
-#include "ensemble/engine/integration_loop.hpp"
-#include "ensemble/engine/lane_observers.hpp"
 #include "ensemble/engine/member_progress.hpp"
-#include "ensemble/engine/member_result.hpp"
-#include "ensemble/engine/shadow_run.hpp"
-#include "ensemble/rows/member_plan.hpp"
-#include "ensemble/rows/member_summary.hpp"
-#include "ensemble/rows/observables.hpp"
-#include "ensemble/rows/row_profile_observer.hpp"
-#include "ensemble/rows/scene.hpp"
-#include "kernels/lanes/angles.hpp"
-#include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
-/// The step observers a loop's model can feed, switched on by what it carries: the alignment
-/// extremes where it integrates ρ̄, the dissipation's error estimate where it integrates R with
-/// error control (the slip counter is always there; at T > 0 the error of D is statistical and
-/// comes from the periods, see finish()).
-template <class Loop>
-auto quadrature_observers(const Scene& scene, const Member& variant, kernels::Integrals carried) {
-  return std::tuple(AlignmentObserver<Loop>(carried.alignment, carried.alignment_index()),
-                    DissipationErrorObserver<Loop>(
-                        carried.drive && !Loop::stochastic, carried.drive_index(),
-                        kernels::stepper_swing_error_factors[scene.stepper] * variant.rtol, variant.atol));
-}
-
-/// The integrator settings of a variant: tolerances and step limits for the adaptive integrators,
-/// temperature and steps per period for the Langevin stepper.
-template <class Integrator>
-typename Integrator::Settings integrator_settings(const Scene& scene, const Member& variant) {
-  if constexpr (Integrator::stochastic)
-    return {scene.thermal.temperature, scene.thermal.steps_per_period, scene.thermal.step_fraction};
-  else
-    return {{variant.rtol, variant.atol},
-            {.h_max = scene.h_max, .max_steps = scene.max_steps, .controller = scene.controller}};
-}
-
-/// Runs members of one variant (one dimension and tolerances) through the lanes of an
-/// IntegrationLoop<Model, Integrator>. `Setup` gives the model's construction arguments after the
-/// dimension and the arena (model_arguments(), a tuple: the row models' quadratures) and turns a
-/// member into the model's parameters and its initial state: initial_state(member) and
-/// parameters(member, y0), and with a stochastic integrator its noise stream: noise_key(member).
-/// The model reports the quadratures it carries (integrals()). Each lane owns its member; a
-/// member that finishes or fails retires at once and (with scene.refill) its lane takes the next.
-template <kernels::LaneModel Model, class Integrator, class Setup>
+/// Runs the members of a Problem through its `width` lanes. The problem (ensemble/rows/row_problem.hpp
+/// for the row models) owns the integration loop and says what a member is and what it leaves:
+///   Member, Result, width, refill();
+///   start(lane, member, queued) → the member's PeriodSchedule;  step();
+///   failed(lane), any_period_ended(), period_ended(lane);
+///   close_period(lane) → the value the steady test compares;  next_period(lane);
+///   finish(lane, progress, settled, retire): hands zero or one Result to retire();
+///   take_queued() / has_queued(): members it adds itself (shadow runs), run before the plan's.
+/// Each lane owns its member and its MemberProgress (periods closed, steady state, when it retires:
+/// the state machine DeviceMember keeps on a GPU thread); a member that finishes or fails retires
+/// at once and (with refill()) its lane takes the next.
+template <class Problem>
 class LaneScheduler {
  public:
-  using Loop = IntegrationLoop<Model, Integrator>;
-  static constexpr std::size_t width = Loop::width;
+  using Member = typename Problem::Member;
+  using Result = typename Problem::Result;
+  static constexpr std::size_t width = Problem::width;
 
-  LaneScheduler(const Scene& scene, const Member& variant, Setup setup)
-      : scene_(scene),
-        setup_(std::move(setup)),
-        settings_(integrator_settings<Integrator>(scene, variant)),
-        loop_(
-            std::apply([&](const auto&... arguments) { return Loop(variant.rows, settings_, arguments...); },
-                       setup_.model_arguments())),
-        carried_(loop_.model().integrals()),
-        channels_(quadrature_channels(carried_)),
-        observers_(quadrature_observers<Loop>(scene, variant, carried_)),
-        slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
-        profiles_(variant.rows, scene.row_profiles),
-        period_schedule_(scene.period_schedule()),
-        shadow_schedule_{0, scene.average_periods, 0, 0.0},
-        shadows_on_(scene.runs_shadows() && !Loop::stochastic),
-        symmetry_limited_(scene.symmetry_limited(variant.rtol)),
-        end_capacity_(end_state_capacity(scene.average_periods)),
-        rules_(summary_rules(scene, Loop::stochastic, Loop::period, profiles_.enabled())),
-        lanes_(width) {}
+  /// Builds the problem in place from `arguments` (it owns the loop's storage).
+  template <class... Arguments>
+  explicit LaneScheduler(Arguments&&... arguments)
+      : problem_(std::forward<Arguments>(arguments)...), lanes_(width) {}
 
   /// Takes members from next_member() (a std::optional<Member>; empty when the plan is
   /// exhausted) until none is left and every lane has retired; hands each result to retire().
@@ -96,15 +45,17 @@ class LaneScheduler {
   void run(NextMember&& next_member, Retire&& retire, Stopped&& stopped, PeriodClosed&& period_closed = {}) {
     for (;;) {
       if (stopped()) return;
-      if (scene_.refill || occupied_ == 0) fill_idle_lanes(next_member);
+      if (problem_.refill() || occupied_ == 0) fill_idle_lanes(next_member);
       if (occupied_ == 0) return;
-      step();
-      const bool period_ends = loop_.any_period_ended();
+      problem_.step();
+      busy_ += double(occupied_);
+      total_ += double(width);
+      const bool period_ends = problem_.any_period_ended();
       for (std::size_t l = 0; l < width; ++l) {
         if (!lanes_[l].occupied) continue;
-        if (loop_.failed(l))
+        if (problem_.failed(l))
           finish(l, false, retire);
-        else if (period_ends && loop_.period_ended(l))
+        else if (period_ends && problem_.period_ended(l))
           close_period(l, retire, period_closed);
       }
     }
@@ -116,185 +67,53 @@ class LaneScheduler {
  private:
   struct Lane {
     bool occupied = false;
-    Member member;
-    std::vector<PeriodRecord> history;  ///< every period with period_series, else the last ones
-    MemberProgress progress;            ///< periods closed, steady state
-    bool shadow = false;                ///< a shadow run (ensemble/engine/shadow_run.hpp)
-    PeriodSchedule schedule;            ///< the scene's, or a shadow run's: its averaged periods only
-    std::vector<std::vector<double>>
-        end_states;  ///< θ at the last period ends (up to end_capacity_, oldest first)
-    std::deque<std::vector<double>> profiles;  ///< row profiles of the last average_periods periods
+    MemberProgress progress;  ///< periods closed, steady state
+    PeriodSchedule schedule;  ///< the member's (the scene's, or a shadow run's)
   };
 
-  template <class F>
-  void for_each_observer(F&& f) {
-    std::apply([&](auto&... observer) { (f(observer), ...); }, observers_);
-    f(slips_);
-  }
-
-  /// Idle lanes take the shadow runs waiting, then members of the plan.
+  /// Idle lanes take the problem's queued members, then members of the plan.
   template <class NextMember>
   void fill_idle_lanes(NextMember& next_member) {
-    for (std::size_t l = 0; l < width && occupied_ < width && (!plan_exhausted_ || !shadows_.empty()); ++l) {
+    for (std::size_t l = 0; l < width && occupied_ < width && (!plan_exhausted_ || problem_.has_queued());
+         ++l) {
       if (lanes_[l].occupied) continue;
-      if (!shadows_.empty()) {
-        start(l, shadows_.front(), true);
-        shadows_.pop_front();
+      if (std::optional<Member> queued = problem_.take_queued()) {
+        start(l, *queued, true);
         continue;
       }
       const std::optional<Member> member = next_member();
       plan_exhausted_ = !member;
       if (plan_exhausted_) break;
-      start(l, *member);
+      start(l, *member, false);
     }
   }
 
-  void start(std::size_t l, const Member& member, bool shadow = false) {
-    const std::vector<double> y0 = setup_.initial_state(member);
-    loop_.start(l, setup_.parameters(member, y0), y0);
-    if (member.tolerance_scale != 1.0) loop_.set_tolerance_scale(l, member.tolerance_scale);
-    if constexpr (Loop::stochastic) {
-      loop_.start_noise(l, setup_.noise_key(member), member.g);
-      slips_.set_rate(l, thermal_slip_rate(member.g));
-    }
-    for_each_observer([&](auto& observer) { observer.start(loop_, l); });
-    profiles_.start(loop_, l);
-    lanes_[l].occupied = true;
-    lanes_[l].member = member;
-    lanes_[l].history.clear();
+  void start(std::size_t l, const Member& member, bool queued) {
+    lanes_[l].schedule = problem_.start(l, member, queued);
     lanes_[l].progress = MemberProgress{};
-    lanes_[l].shadow = shadow;
-    lanes_[l].schedule = shadow ? shadow_schedule_ : period_schedule_;
-    lanes_[l].end_states.clear();
-    lanes_[l].profiles.clear();
+    lanes_[l].occupied = true;
     ++occupied_;
-  }
-
-  void step() {
-    std::apply([&](auto&... observer) { loop_.step(observer..., slips_, profiles_); }, observers_);
-    busy_ += double(occupied_);
-    total_ += double(width);
   }
 
   template <class Retire, class PeriodClosed>
   void close_period(std::size_t l, Retire& retire, PeriodClosed& period_closed) {
-    PeriodRecord record;
-    record_quadratures(
-        channels_, carried_, record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period);
-    for_each_observer([&](auto& observer) { observer.end_period(l, record); });
-    if constexpr (Loop::stochastic)
-      record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
-
-    auto& ends = lanes_[l].end_states;
-    if (ends.size() == end_capacity_) ends.erase(ends.begin());
-    ends.emplace_back(loop_.dimension());
-    for (std::size_t k = 0; k < loop_.dimension(); ++k) ends.back()[k] = loop_.component(l, k);
-
-    if (profiles_.enabled()) {
-      auto& profiles = lanes_[l].profiles;
-      profiles.push_back(profiles_.take_period(l));
-      if (profiles.size() > std::size_t(scene_.average_periods)) profiles.pop_front();
-    }
-
-    auto& history = lanes_[l].history;
-    history.push_back(record);
-    forget_old_periods(history);
+    const double steady_value = problem_.close_period(l);
     period_closed();
-    if (lanes_[l].progress.close_period(lanes_[l].schedule, record.dissipation())) {
+    if (lanes_[l].progress.close_period(lanes_[l].schedule, steady_value)) {
       finish(l, lanes_[l].progress.settled(), retire);
       return;
     }
-    loop_.next_period(l, scene_.wrap_angles);
+    problem_.next_period(l);
   }
 
-  double thermal_slip_rate(double g) const {
-    const double h = Loop::period / Integrator::steps_for(settings_, g);
-    return ensemble::thermal_slip_rate(scene_.slip_rate, scene_.thermal.temperature, g, h);
-  }
-
-  /// Without period_series only the averaged periods (and the two the steady test compares) are
-  /// needed: the history is cut back to them whenever it reaches twice that length, so a lane
-  /// holds at most 2 max(average_periods, 2) records however long its member runs.
-  void forget_old_periods(std::vector<PeriodRecord>& history) const {
-    if (scene_.period_series) return;
-    const std::size_t keep = std::size_t(std::max(scene_.average_periods, 2));
-    if (history.size() >= 2 * keep) history.erase(history.begin(), history.end() - std::ptrdiff_t(keep));
-  }
-
-  /// Retires lane l's member: its result goes to retire(), or, where it needs a shadow run
-  /// (ensemble/engine/shadow_run.hpp), waits for it; a shadow run's result completes its primary's.
   template <class Retire>
   void finish(std::size_t l, bool settled, Retire& retire) {
-    MemberResult result = summarize_lane(l, settled);
-    const Member& member = lanes_[l].member;
-    release_lane(l);
-    if (lanes_[l].shadow) {  // its primary waits for it
-      const auto at = held_.find(member.index);
-      MemberResult primary = std::move(at->second);
-      held_.erase(at);
-      take_shadow(primary, result, symmetry_limited_);
-      retire(std::move(primary));
-      return;
-    }
-    if (!shadows_on_ || !needs_shadow(result)) {
-      retire(std::move(result));
-      return;
-    }
-    Member shadow = member;
-    shadow.tolerance_scale = shadow_tolerance_scale;
-    shadow.start = std::make_shared<const std::vector<double>>(
-        result.averaging_start.empty() ? setup_.initial_state(member) : result.averaging_start);
-    shadows_.push_back(std::move(shadow));
-    held_.emplace(member.index, std::move(result));
-  }
-
-  /// The result of the member in lane l, from its records.
-  MemberResult summarize_lane(std::size_t l, bool settled) {
-    Lane& lane = lanes_[l];
-    RetiredLane retired;
-    retired.index = lane.member.index;
-    retired.status = loop_.status(l);
-    retired.settled = settled;
-    retired.periods = lane.progress.periods();
-    retired.steps_accepted = loop_.steps_accepted(l);
-    retired.steps_rejected = loop_.steps_rejected(l);
-    retired.theta.resize(loop_.dimension());
-    for (std::size_t k = 0; k < loop_.dimension(); ++k) retired.theta[k] = loop_.component(l, k);
-    retired.history = std::move(lane.history);
-    keep_end_states(retired, std::move(lane.end_states), scene_.average_periods);
-    retired.profiles.assign(lane.profiles.begin(), lane.profiles.end());
-    retired.links = profiles_.links();
-    return retired_member_result(std::move(retired), rules_);
-  }
-
-  void release_lane(std::size_t l) {
-    Lane& lane = lanes_[l];
-    lane.occupied = false;
-    lane.history.clear();
-    lane.end_states.clear();
-    lane.profiles.clear();
-    loop_.release(l);
+    lanes_[l].occupied = false;
     --occupied_;
+    problem_.finish(l, lanes_[l].progress, settled, retire);
   }
 
-  const Scene& scene_;
-  Setup setup_;
-  typename Loop::Settings settings_;
-  Loop loop_;
-  kernels::Integrals carried_;   ///< the quadratures the model carries
-  QuadratureChannels channels_;  ///< the channels they fill
-  decltype(quadrature_observers<Loop>(std::declval<const Scene&>(), std::declval<const Member&>(),
-                                      kernels::Integrals{})) observers_;
-  SlipObserver<Loop> slips_;
-  RowProfileObserver<Loop> profiles_;
-  PeriodSchedule period_schedule_;
-  PeriodSchedule shadow_schedule_;            ///< a shadow run's: the averaged periods, no steady test
-  bool shadows_on_;                           ///< members whose averaged periods slip get shadow runs
-  bool symmetry_limited_;                     ///< no physical perturbation of the scene exceeds rtol
-  std::deque<Member> shadows_;                ///< shadow runs waiting for a lane
-  std::map<std::size_t, MemberResult> held_;  ///< primaries waiting for their shadow runs
-  std::size_t end_capacity_;                  ///< period ends a lane keeps (end_state_capacity)
-  SummaryRules rules_;                        ///< how a retired lane becomes a result
+  Problem problem_;
   std::vector<Lane> lanes_;
   std::size_t occupied_ = 0;
   bool plan_exhausted_ = false;

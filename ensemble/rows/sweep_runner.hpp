@@ -12,6 +12,7 @@
 
 #include "ensemble/engine/compile_time_choice.hpp"
 #include "ensemble/engine/lane_scheduler.hpp"
+#include "ensemble/rows/row_problem.hpp"
 #include "ensemble/rows/row_setup.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "kernels/models/rows/coupled_rows.hpp"
@@ -41,7 +42,7 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, 
 
 #pragma omp parallel num_threads(threads)
   try {
-    LaneScheduler<Model, Integrator, Setup> scheduler(scene, variant, setup);
+    LaneScheduler<RowProblem<Model, Integrator, Setup>> scheduler(scene, variant, setup);
     const auto next_member = [&]() -> std::optional<Member> {
       if (stopped()) return std::nullopt;
       const std::size_t k =

@@ -38,8 +38,9 @@ struct SliderTimeline {
 };
 SliderTimeline slider_timeline(const SliderScene& scene);
 
-/// How a scan runs: on `threads` threads (0: all); `progress(done)` after each lane block with the
-/// members finished so far; once `stopped()` is true no further block starts (the running ones finish).
+/// How a scan runs: on `threads` threads (0: all); `progress(done)` after each member with the
+/// members finished so far; once `stopped()` is true no member starts and the running ones are
+/// abandoned within one step.
 struct SliderScanControl {
   int threads = 0;
   std::function<void(std::size_t)> progress;

@@ -85,8 +85,8 @@ def slider(scene, threads=None, progress=True, output=None, force=False):
 
     Dimensions: size ("7x7", with coordinates columns and rows), separation (m), replica; period
     (the per-period values period_*) and time (the series series_friction, series_order_x,
-    series_order_y, series_energy). Ctrl-C stops the scan before its next lane block, writes
-    nothing, and is raised again.
+    series_order_y, series_energy). Ctrl-C stops the scan within one step, writes nothing, and is
+    raised again.
     """
     text, is_path = _scene.resolve(scene)
     if output is True:

@@ -94,6 +94,10 @@ class SliderModel {
       }
   }
 
+  /// The integration loop's form (dimension, arena, arguments): the dimension follows from the grid.
+  ROTORSWEEP_HD SliderModel(std::size_t, LaneArena<V>& arena, const SliderGrid& grid)
+      : SliderModel(grid, arena) {}
+
   ROTORSWEEP_HD void set_lane(std::size_t lane, const Parameters& p) {
     substrate_[lane] = p.substrate;
     lane_set(mu_, lane, p.moment_ratio);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ensemble/engine/lane_scheduler.hpp"
+#include "ensemble/rows/row_problem.hpp"
 #include "kernels/models/single_rotor.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
@@ -43,8 +44,9 @@ std::vector<ensemble::MemberResult> run(const ensemble::Scene& scene,
                                         const std::vector<ensemble::Member>& members,
                                         const std::vector<double>& psi0) {
   using Model = kernels::SingleRotor<V>;
-  ensemble::LaneScheduler<Model, kernels::AdaptiveIntegrator<Model, kernels::Rodas4<Model>>, RotorSetup<V>>
-      scheduler(scene, members.front(), RotorSetup<V>{psi0});
+  using Problem =
+      ensemble::RowProblem<Model, kernels::AdaptiveIntegrator<Model, kernels::Rodas4<Model>>, RotorSetup<V>>;
+  ensemble::LaneScheduler<Problem> scheduler(scene, members.front(), RotorSetup<V>{psi0});
   std::vector<ensemble::MemberResult> results(members.size());
   std::size_t next = 0;
   scheduler.run(

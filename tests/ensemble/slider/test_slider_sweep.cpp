@@ -26,7 +26,9 @@ std::string small_scene(const std::string& numerics = "rtol = 1e-7\natol = 1e-7\
 }
 
 SliderResult scan(const std::string& text, int threads = 1) {
-  return run_slider_scan(rotorsweep::io::parse_slider_scene_text(text, "slider-test"), {threads});
+  SliderScanControl control;
+  control.threads = threads;
+  return run_slider_scan(rotorsweep::io::parse_slider_scene_text(text, "slider-test"), control);
 }
 
 }  // namespace
@@ -88,6 +90,39 @@ TEST_CASE("slider scan: a member that runs out of steps is flagged and its value
     CHECK(std::isnan(m.friction));
     CHECK(std::isnan(m.order_x));
     CHECK(std::isnan(m.period_balance.front()));
+  }
+}
+
+TEST_CASE("slider scan: a member that fails frees its lane for the next and leaves the others' bits alone",
+          "[ensemble][slider]") {
+  // 4 x 4 at rtol 1e-8: the closest separations run out of 1500 steps, the farther ones finish
+  const auto scene_with = [](const std::string& separations) {
+    return "[slider]\ncolumns = 4\nrows = 4\n[drive]\nend = 4.7\n[sweep]\nseparation = " + separations +
+           "\n[initial]\nreplicas = 3\n[observables]\nsamples_per_period = 30\n"
+           "[numerics]\nstepper = \"rodas5p\"\nrtol = 1e-8\natol = 1e-8\nmax_steps = 1500\n";
+  };
+  const auto mixed = scan(scene_with("[4e-3, 6e-3, 9e-3, 12e-3, 14e-3]"), 2);
+  const auto finishing = scan(scene_with("[12e-3, 14e-3]"), 1);
+  std::size_t failed = 0;
+  for (const auto& m : mixed.members) {
+    if (m.status == "ok") continue;
+    ++failed;
+    CHECK(m.status == "step_budget");
+    CHECK(std::isnan(m.friction));
+    // the samples after the failure hold its frozen state
+    CHECK(m.friction_series.back() == m.friction_series[m.friction_series.size() - 2]);
+    CHECK(m.energy_series.back() == m.energy_series[m.energy_series.size() - 2]);
+  }
+  CHECK(failed >= 3);
+  for (std::size_t k = 0; k < finishing.members.size(); ++k) {
+    const auto& alone = finishing.members[k];
+    const auto& among = mixed.members[mixed.members.size() - finishing.members.size() + k];
+    REQUIRE(alone.status == "ok");
+    CHECK(among.separation == alone.separation);
+    CHECK(among.friction == alone.friction);
+    CHECK(among.friction_series == alone.friction_series);
+    CHECK(among.period_balance == alone.period_balance);
+    CHECK(among.steps_accepted == alone.steps_accepted);
   }
 }
 

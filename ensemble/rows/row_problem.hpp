@@ -1,0 +1,262 @@
+// The row model as a problem of the lane scheduler (docs/architecture.md "Layers"): how a member of
+// a row scene enters a lane, what its steps and periods record, and its result (docs/model.md §3).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <deque>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "ensemble/engine/integration_loop.hpp"
+#include "ensemble/engine/lane_observers.hpp"
+#include "ensemble/engine/member_progress.hpp"
+#include "ensemble/engine/member_result.hpp"
+#include "ensemble/engine/shadow_run.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_summary.hpp"
+#include "ensemble/rows/observables.hpp"
+#include "ensemble/rows/row_profile_observer.hpp"
+#include "ensemble/rows/scene.hpp"
+#include "kernels/steppers/stepper_list.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// The step observers a loop's model can feed, switched on by what it carries: the alignment
+/// extremes where it integrates ρ̄, the dissipation's error estimate where it integrates R with
+/// error control (the slip counter is always there; at T > 0 the error of D is statistical and
+/// comes from the periods, see SummaryRules).
+template <class Loop>
+auto quadrature_observers(const Scene& scene, const Member& variant, kernels::Integrals carried) {
+  return std::tuple(AlignmentObserver<Loop>(carried.alignment, carried.alignment_index()),
+                    DissipationErrorObserver<Loop>(
+                        carried.drive && !Loop::stochastic, carried.drive_index(),
+                        kernels::stepper_swing_error_factors[scene.stepper] * variant.rtol, variant.atol));
+}
+
+/// The integrator settings of a variant: tolerances and step limits for the adaptive integrators,
+/// temperature and steps per period for the Langevin stepper.
+template <class Integrator>
+typename Integrator::Settings integrator_settings(const Scene& scene, const Member& variant) {
+  if constexpr (Integrator::stochastic)
+    return {scene.thermal.temperature, scene.thermal.steps_per_period, scene.thermal.step_fraction};
+  else
+    return {{variant.rtol, variant.atol},
+            {.h_max = scene.h_max, .max_steps = scene.max_steps, .controller = scene.controller}};
+}
+
+/// Members of one variant (one dimension and tolerances) of a row scene on the lanes of an
+/// IntegrationLoop<Model, Integrator>, for LaneScheduler. `Setup` gives the model's construction
+/// arguments after the dimension and the arena (model_arguments(), a tuple: the row models'
+/// quadratures) and turns a member into the model's parameters and its initial state:
+/// initial_state(member) and parameters(member, y0), and with a stochastic integrator its noise
+/// stream: noise_key(member). The model reports the quadratures it carries (integrals()). A member
+/// whose averaged periods slip (with shadow runs on) is held and its shadow run queued: the
+/// shadow's result completes it (ensemble/engine/shadow_run.hpp).
+template <kernels::LaneModel Model, class Integrator, class Setup>
+class RowProblem {
+ public:
+  using Loop = IntegrationLoop<Model, Integrator>;
+  using Member = ensemble::Member;
+  using Result = MemberResult;
+  static constexpr std::size_t width = Loop::width;
+
+  RowProblem(const Scene& scene, const Member& variant, Setup setup)
+      : scene_(scene),
+        setup_(std::move(setup)),
+        settings_(integrator_settings<Integrator>(scene, variant)),
+        loop_(
+            std::apply([&](const auto&... arguments) { return Loop(variant.rows, settings_, arguments...); },
+                       setup_.model_arguments())),
+        carried_(loop_.model().integrals()),
+        channels_(quadrature_channels(carried_)),
+        observers_(quadrature_observers<Loop>(scene, variant, carried_)),
+        slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
+        profiles_(variant.rows, scene.row_profiles),
+        period_schedule_(scene.period_schedule()),
+        shadow_schedule_{0, scene.average_periods, 0, 0.0},
+        shadows_on_(scene.runs_shadows() && !Loop::stochastic),
+        symmetry_limited_(scene.symmetry_limited(variant.rtol)),
+        end_capacity_(end_state_capacity(scene.average_periods)),
+        rules_(summary_rules(scene, Loop::stochastic, Loop::period, profiles_.enabled())),
+        lanes_(width) {}
+
+  /// Whether a retired member's lane takes the next member at once (else the whole block waits).
+  bool refill() const { return scene_.refill; }
+
+  /// A shadow run waiting for a lane, taken before the plan's next member.
+  std::optional<Member> take_queued() {
+    if (shadows_.empty()) return std::nullopt;
+    Member shadow = std::move(shadows_.front());
+    shadows_.pop_front();
+    return shadow;
+  }
+  bool has_queued() const { return !shadows_.empty(); }
+
+  /// Puts `member` into lane l (`queued`: a shadow run); returns its period schedule.
+  PeriodSchedule start(std::size_t l, const Member& member, bool queued) {
+    const std::vector<double> y0 = setup_.initial_state(member);
+    loop_.start(l, setup_.parameters(member, y0), y0);
+    if (member.tolerance_scale != 1.0) loop_.set_tolerance_scale(l, member.tolerance_scale);
+    if constexpr (Loop::stochastic) {
+      loop_.start_noise(l, setup_.noise_key(member), member.g);
+      const double h = Loop::period / Integrator::steps_for(settings_, member.g);
+      slips_.set_rate(l, thermal_slip_rate(scene_.slip_rate, scene_.thermal.temperature, member.g, h));
+    }
+    for_each_observer([&](auto& observer) { observer.start(loop_, l); });
+    profiles_.start(loop_, l);
+    Lane& lane = lanes_[l];
+    lane.member = member;
+    lane.history.clear();
+    lane.shadow = queued;
+    lane.end_states.clear();
+    lane.profiles.clear();
+    return queued ? shadow_schedule_ : period_schedule_;
+  }
+
+  /// One step attempt of every lane, with the observers.
+  void step() {
+    std::apply([&](auto&... observer) { loop_.step(observer..., slips_, profiles_); }, observers_);
+  }
+
+  bool failed(std::size_t l) const { return loop_.failed(l); }
+  bool any_period_ended() const { return loop_.any_period_ended(); }
+  bool period_ended(std::size_t l) const { return loop_.period_ended(l); }
+
+  /// Records the period lane l just closed; returns its dissipation, which the steady test compares.
+  double close_period(std::size_t l) {
+    PeriodRecord record;
+    record_quadratures(
+        channels_, carried_, record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period);
+    for_each_observer([&](auto& observer) { observer.end_period(l, record); });
+    if constexpr (Loop::stochastic)
+      record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
+
+    auto& ends = lanes_[l].end_states;
+    if (ends.size() == end_capacity_) ends.erase(ends.begin());
+    ends.emplace_back(loop_.dimension());
+    for (std::size_t k = 0; k < loop_.dimension(); ++k) ends.back()[k] = loop_.component(l, k);
+
+    if (profiles_.enabled()) {
+      auto& profiles = lanes_[l].profiles;
+      profiles.push_back(profiles_.take_period(l));
+      if (profiles.size() > std::size_t(scene_.average_periods)) profiles.pop_front();
+    }
+
+    auto& history = lanes_[l].history;
+    history.push_back(record);
+    forget_old_periods(history);
+    return record.dissipation();
+  }
+
+  /// Lane l goes on to its next period (wrapped with scene.wrap_angles).
+  void next_period(std::size_t l) { loop_.next_period(l, scene_.wrap_angles); }
+
+  /// Retires lane l's member, which closed `progress.periods()` periods (`settled`: it met its
+  /// schedule): its result goes to retire(), or, where it needs a shadow run, waits for it; a shadow
+  /// run's result completes its primary's.
+  template <class Retire>
+  void finish(std::size_t l, const MemberProgress& progress, bool settled, Retire& retire) {
+    MemberResult result = summarize_lane(l, progress, settled);
+    const Member& member = lanes_[l].member;
+    release_lane(l);
+    if (lanes_[l].shadow) {  // its primary waits for it
+      const auto at = held_.find(member.index);
+      MemberResult primary = std::move(at->second);
+      held_.erase(at);
+      take_shadow(primary, result, symmetry_limited_);
+      retire(std::move(primary));
+      return;
+    }
+    if (!shadows_on_ || !needs_shadow(result)) {
+      retire(std::move(result));
+      return;
+    }
+    Member shadow = member;
+    shadow.tolerance_scale = shadow_tolerance_scale;
+    shadow.start = std::make_shared<const std::vector<double>>(
+        result.averaging_start.empty() ? setup_.initial_state(member) : result.averaging_start);
+    shadows_.push_back(std::move(shadow));
+    held_.emplace(member.index, std::move(result));
+  }
+
+ private:
+  struct Lane {
+    Member member;
+    std::vector<PeriodRecord> history;  ///< every period with period_series, else the last ones
+    bool shadow = false;                ///< a shadow run (ensemble/engine/shadow_run.hpp)
+    std::vector<std::vector<double>>
+        end_states;  ///< θ at the last period ends (up to end_capacity_, oldest first)
+    std::deque<std::vector<double>> profiles;  ///< row profiles of the last average_periods periods
+  };
+
+  template <class F>
+  void for_each_observer(F&& f) {
+    std::apply([&](auto&... observer) { (f(observer), ...); }, observers_);
+    f(slips_);
+  }
+
+  /// Without period_series only the averaged periods (and the two the steady test compares) are
+  /// needed: the history is cut back to them whenever it reaches twice that length, so a lane
+  /// holds at most 2 max(average_periods, 2) records however long its member runs.
+  void forget_old_periods(std::vector<PeriodRecord>& history) const {
+    if (scene_.period_series) return;
+    const std::size_t keep = std::size_t(std::max(scene_.average_periods, 2));
+    if (history.size() >= 2 * keep) history.erase(history.begin(), history.end() - std::ptrdiff_t(keep));
+  }
+
+  /// The result of the member in lane l, from its records.
+  MemberResult summarize_lane(std::size_t l, const MemberProgress& progress, bool settled) {
+    Lane& lane = lanes_[l];
+    RetiredLane retired;
+    retired.index = lane.member.index;
+    retired.status = loop_.status(l);
+    retired.settled = settled;
+    retired.periods = progress.periods();
+    retired.steps_accepted = loop_.steps_accepted(l);
+    retired.steps_rejected = loop_.steps_rejected(l);
+    retired.theta.resize(loop_.dimension());
+    for (std::size_t k = 0; k < loop_.dimension(); ++k) retired.theta[k] = loop_.component(l, k);
+    retired.history = std::move(lane.history);
+    keep_end_states(retired, std::move(lane.end_states), scene_.average_periods);
+    retired.profiles.assign(std::make_move_iterator(lane.profiles.begin()),
+                            std::make_move_iterator(lane.profiles.end()));
+    retired.links = profiles_.links();
+    return retired_member_result(std::move(retired), rules_);
+  }
+
+  void release_lane(std::size_t l) {
+    Lane& lane = lanes_[l];
+    lane.history.clear();
+    lane.end_states.clear();
+    lane.profiles.clear();
+    loop_.release(l);
+  }
+
+  const Scene& scene_;
+  Setup setup_;
+  typename Loop::Settings settings_;
+  Loop loop_;
+  kernels::Integrals carried_;   ///< the quadratures the model carries
+  QuadratureChannels channels_;  ///< the channels they fill
+  decltype(quadrature_observers<Loop>(std::declval<const Scene&>(), std::declval<const Member&>(),
+                                      kernels::Integrals{})) observers_;
+  SlipObserver<Loop> slips_;
+  RowProfileObserver<Loop> profiles_;
+  PeriodSchedule period_schedule_;
+  PeriodSchedule shadow_schedule_;            ///< a shadow run's: the averaged periods, no steady test
+  bool shadows_on_;                           ///< members whose averaged periods slip get shadow runs
+  bool symmetry_limited_;                     ///< no physical perturbation of the scene exceeds rtol
+  std::deque<Member> shadows_;                ///< shadow runs waiting for a lane
+  std::map<std::size_t, MemberResult> held_;  ///< primaries waiting for their shadow runs
+  std::size_t end_capacity_;                  ///< period ends a lane keeps (end_state_capacity)
+  SummaryRules rules_;                        ///< how a retired lane becomes a result
+  std::vector<Lane> lanes_;
+};
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,242 @@
+// The slider as a problem of the lane scheduler (docs/architecture.md "Layers"): one member per lane,
+// stopped and sampled on the sample grid; friction and energy balance per period in SI (docs/model.md §9).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "ensemble/engine/integration_loop.hpp"
+#include "ensemble/engine/member_progress.hpp"
+#include "ensemble/slider/slider_scene.hpp"
+#include "ensemble/slider/slider_sweep.hpp"
+#include "kernels/lanes/angles.hpp"
+#include "kernels/lanes/lane.hpp"
+#include "kernels/models/slider/slider_model.hpp"
+#include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/lane_status.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// The times (scaled) at which every member stops and is sampled: a grid of `samples_per_period` per
+/// period through the start of sliding, from 0 to the end; every period boundary is on it.
+struct SliderSampleGrid {
+  std::vector<double> stops;
+  std::vector<long> index;  ///< samples since the start of sliding (negative during the rest)
+  std::size_t samples_per_period;
+  std::size_t periods;
+
+  SliderSampleGrid(const SliderScene& scene, const SliderUnits& units)
+      : samples_per_period(scene.samples_per_period) {
+    const double dt = kernels::two_pi / double(samples_per_period);
+    const double rest = scene.rest / units.time, end = scene.end / units.time;
+    const long first = -long(std::floor(rest / dt + 1e-9));
+    if (rest + double(first) * dt > 1e-12) {
+      stops.push_back(0.0);
+      index.push_back(first - 1);
+    }
+    for (long k = first; rest + double(k) * dt <= end * (1 + 1e-12); ++k) {
+      stops.push_back(rest + double(k) * dt);
+      index.push_back(k);
+    }
+    periods = std::size_t(std::max(0L, index.back()) / long(samples_per_period));
+  }
+  bool boundary(std::size_t stop) const {
+    return index[stop] >= 0 && index[stop] % long(samples_per_period) == 0 &&
+           std::size_t(index[stop] / long(samples_per_period)) <= periods;
+  }
+};
+
+/// Members (plan indices) of one slider size on the lanes of an IntegrationLoop over
+/// SliderModel<V, Inertial> with Stepper, for LaneScheduler: each member's stops are the sample
+/// grid's, where its lane is sampled (drive force, order parameters, energy; its quadratures at
+/// period boundaries); it retires after the last sample. Lanes sampled in the same step attempt
+/// share one evaluation of the model.
+template <class V, bool Inertial, class Stepper>
+class SliderProblem {
+ public:
+  using Model = kernels::SliderModel<V, Inertial>;
+  using Loop = IntegrationLoop<Model, kernels::AdaptiveIntegrator<Model, Stepper>>;
+  using Member = std::size_t;  ///< a plan index
+  using Result = SliderMember;
+  static constexpr std::size_t width = Loop::width;
+
+  SliderProblem(const SliderScene& scene, const SliderSampleGrid& grid, SliderSize size)
+      : scene_(scene),
+        units_(scene),
+        grid_(grid),
+        size_(size),
+        rotors_(kernels::SliderGrid{size.columns, size.rows}.rotors()),
+        loop_(Inertial ? 2 * rotors_ : rotors_, settings(scene),
+              kernels::SliderGrid{size.columns, size.rows}),
+        f_(loop_.dimension()),
+        q_(loop_.dimension()),
+        lanes_(width) {}
+
+  bool refill() const { return true; }
+  std::optional<Member> take_queued() { return std::nullopt; }
+  bool has_queued() const { return false; }
+
+  /// Puts plan member `plan_index` into lane l: its substrate table, its start; its schedule is one
+  /// "period" per sample.
+  PeriodSchedule start(std::size_t l, Member plan_index, bool) {
+    Lane& lane = lanes_[l];
+    lane.member = slider_plan_member(scene_, plan_index);
+    lane.table = std::make_shared<const kernels::SubstrateTable>(
+        substrate_table(scene_, size_, lane.member.separation));
+    const kernels::SliderParameters parameters = slider_parameters(scene_, *lane.table);
+    if (!primed_) {  // lanes never started compute along with this member's table
+      for (std::size_t other = 0; other < width; ++other) {
+        lanes_[other].table = lane.table;
+        loop_.set_parameters(other, parameters);
+      }
+      primed_ = true;
+    }
+    std::vector<double> y0(loop_.dimension(), 0.0);
+    const std::vector<double> theta = slider_start(scene_, lane.member.index);
+    std::copy(theta.begin(), theta.end(), y0.begin());
+    loop_.start(l, parameters, y0);
+    loop_.set_stop(l, grid_.stops.front());
+    SliderMember& m = lane.member;
+    const std::size_t samples = grid_.stops.size();
+    for (auto* series : {&m.friction_series, &m.order_x_series, &m.order_y_series, &m.energy_series})
+      series->assign(samples, 0.0);
+    if (scene_.angles) m.angles.assign(samples * rotors_, 0.0);
+    lane.sample = 0;
+    lane.impulse_at.clear();
+    lane.dissipation_at.clear();
+    lane.energy_at.clear();
+    return {0, int(samples), 0, 0.0};
+  }
+
+  void step() {
+    loop_.step();
+    evaluated_ = false;
+  }
+  bool failed(std::size_t l) const { return loop_.failed(l); }
+  bool any_period_ended() const { return loop_.any_period_ended(); }
+  bool period_ended(std::size_t l) const { return loop_.period_ended(l); }
+
+  /// Lane l reached its next sample: records it (and a period boundary's quadratures).
+  double close_period(std::size_t l) {
+    Lane& lane = lanes_[l];
+    const std::size_t k = lane.sample++;
+    record_sample(l, k);
+    if (grid_.boundary(k)) {
+      lane.impulse_at.push_back(loop_.quadrature(l, Model::impulse_index));
+      lane.dissipation_at.push_back(loop_.quadrature(l, Model::dissipation_index));
+      lane.energy_at.push_back(kernels::lane_get(energy_, l));
+    }
+    return 0.0;
+  }
+
+  void next_period(std::size_t l) { loop_.set_stop(l, grid_.stops[lanes_[l].sample]); }
+
+  /// Retires lane l's member: a failed member's remaining samples hold its frozen state (every
+  /// observable over periods is NaN); then its summaries, in SI.
+  template <class Retire>
+  void finish(std::size_t l, const MemberProgress&, bool, Retire& retire) {
+    Lane& lane = lanes_[l];
+    SliderMember& m = lane.member;
+    m.status = std::string(kernels::status_name(loop_.status(l)));
+    m.steps_accepted = loop_.steps_accepted(l);
+    m.steps_rejected = loop_.steps_rejected(l);
+    const bool ok = m.status == "ok";
+    for (std::size_t k = lane.sample; k < grid_.stops.size(); ++k) record_sample(l, k);
+    summarize(lane, ok);
+    loop_.release(l);
+    retire(std::move(m));
+  }
+
+ private:
+  struct Lane {
+    SliderMember member;
+    std::shared_ptr<const kernels::SubstrateTable> table;       ///< kept while the model may read it
+    std::size_t sample = 0;                                     ///< the next sample
+    std::vector<double> impulse_at, dissipation_at, energy_at;  ///< at each period boundary (scaled)
+  };
+
+  static typename Loop::Settings settings(const SliderScene& scene) {
+    kernels::StepLimits limits;
+    limits.h_max = kernels::two_pi / double(scene.samples_per_period);
+    limits.max_steps = scene.max_steps;
+    return {{scene.rtol, scene.atol}, limits};
+  }
+
+  /// The model at every lane's state, once per step attempt (the lanes sampled in it share it).
+  void evaluate() {
+    if (evaluated_) return;
+    const auto& s = loop_.state();
+    const Model& model = loop_.model();
+    model.evaluate(loop_.workspace(), s.y, s.t, f_.data(), q_.data());
+    model.order_parameters(s.y, along_x_, across_y_);
+    energy_ = model.energy(loop_.workspace(), s.y, s.t) + model.kinetic_energy(s.y);
+    evaluated_ = true;
+  }
+
+  void record_sample(std::size_t l, std::size_t k) {
+    evaluate();
+    SliderMember& m = lanes_[l].member;
+    m.friction_series[k] = kernels::lane_get(q_[Model::impulse_index], l) * units_.force;
+    m.order_x_series[k] = kernels::lane_get(along_x_, l);
+    m.order_y_series[k] = kernels::lane_get(across_y_, l);
+    m.energy_series[k] = kernels::lane_get(energy_, l) * units_.energy;
+    if (scene_.angles)
+      for (std::size_t r = 0; r < rotors_; ++r) m.angles[k * rotors_ + r] = loop_.component(l, r);
+  }
+
+  /// Friction, work, dissipation, stored energy and balance per period, the mean friction and
+  /// order parameters (NaN for a member that failed: its values would describe a frozen state).
+  void summarize(Lane& lane, bool ok) const {
+    SliderMember& m = lane.member;
+    const double nan = std::nan("");
+    const double speed = 1.0 / kernels::two_pi, period = kernels::two_pi;
+    for (std::size_t p = 0; p < grid_.periods; ++p) {
+      if (!ok) {
+        for (auto* values :
+             {&m.period_friction, &m.period_work, &m.period_dissipation, &m.period_stored, &m.period_balance})
+          values->push_back(nan);
+        continue;
+      }
+      const double impulse = lane.impulse_at[p + 1] - lane.impulse_at[p];
+      const double work = speed * impulse, dissipated = lane.dissipation_at[p + 1] - lane.dissipation_at[p];
+      const double stored = lane.energy_at[p + 1] - lane.energy_at[p];
+      m.period_friction.push_back(impulse / period * units_.force);
+      m.period_work.push_back(work * units_.energy);
+      m.period_dissipation.push_back(dissipated * units_.energy);
+      m.period_stored.push_back(stored * units_.energy);
+      m.period_balance.push_back((work - dissipated - stored) /
+                                 std::max({std::fabs(work), std::fabs(dissipated), 1e-300}));
+    }
+    m.friction = ok && grid_.periods > 0 ? (lane.impulse_at[grid_.periods] - lane.impulse_at[0]) /
+                                               (period * double(grid_.periods)) * units_.force
+                                         : nan;
+    double sum_x = 0.0, sum_y = 0.0;
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < grid_.stops.size(); ++k) {
+      if (grid_.index[k] <= 0) continue;
+      sum_x += m.order_x_series[k];
+      sum_y += m.order_y_series[k];
+      ++count;
+    }
+    m.order_x = ok && count ? sum_x / double(count) : nan;
+    m.order_y = ok && count ? sum_y / double(count) : nan;
+  }
+
+  const SliderScene& scene_;
+  SliderUnits units_;
+  const SliderSampleGrid& grid_;
+  SliderSize size_;
+  std::size_t rotors_;
+  Loop loop_;
+  kernels::lane_vector<V> f_, q_;  ///< the sample's evaluation: f and the quadratures' integrands
+  V along_x_ = V(0.0), across_y_ = V(0.0), energy_ = V(0.0);
+  bool evaluated_ = false;  ///< f_, q_, the order parameters and energy_ are the current state's
+  bool primed_ = false;     ///< every lane has parameters
+  std::vector<Lane> lanes_;
+};
+
+}  // namespace rotorsweep::ensemble
