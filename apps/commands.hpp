@@ -18,6 +18,9 @@ struct TableOptions {
   int replicas = 8;               ///< noise draws of each CP entry for its spread (1: none)
   std::uint64_t seed = 1;         ///< their seed
   std::string output;             ///< CSV path; empty: stdout only
+  /// "triangular": the paper's window, every period [τ, τ + 2π] with τ in [4π, 6π] averaged
+  /// (docs/model.md §3); "uniform": the plain mean of periods 3 and 4
+  std::string window = "triangular";
 };
 int run_table(const TableOptions& options);
 

@@ -77,6 +77,12 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
   table_cmd->add_option("--seed", table.seed, "Seed of those draws")->capture_default_str();
+  table_cmd
+      ->add_option("--window", table.window,
+                   "triangular: the paper's average over periods [tau, tau + 2 pi], tau in [4 pi, 6 pi]; "
+                   "uniform: the mean of periods 3 and 4")
+      ->check(CLI::IsMember({"triangular", "uniform"}))
+      ->capture_default_str();
   table_cmd->add_option("-o,--output", table.output, "Write the table as CSV to this file");
 
   // the scene, -o, --threads, -q and --force of a command that runs a scene file

@@ -20,7 +20,7 @@ def main():
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as scratch:
         path = pathlib.Path(scratch) / "table.csv"
-        footer = subprocess.run([args.rotorsweep, "table", "--stepper", args.stepper, "--rtol", args.rtol,
+        footer = subprocess.run([args.rotorsweep, "table", "--stepper", args.stepper, "--rtol", args.rtol, "--replicas", "1",
                                  "-o", str(path)], check=True, capture_output=True, text=True).stdout.splitlines()[-1]
         rows = list(csv.DictReader(path.open()))
     print("| A | IC | W | S | R | paper W | paper S | paper R | R/paper − 1 | steps/period |")

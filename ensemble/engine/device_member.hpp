@@ -81,7 +81,7 @@ struct DeviceMember {
 
       PeriodRecord record;
       record_quadratures(
-          s.channels, Q, record, [&](std::size_t p) { return state.quad[p]; }, Model::period);
+          s.channels, Q, record, [&](std::size_t p) { return state.quad[p]; }, Model::period, state.t);
       if (Q.alignment) alignment.end_period(0, record);
       if (swing_on) swing.end_period(0, s.error_rtol, s.atol, record);
       if (s.slips) slips.end_period(0, record);

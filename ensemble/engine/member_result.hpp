@@ -30,12 +30,22 @@ struct PeriodRecord {
   double slips() const { return (*this)[Channel::slips]; }
 };
 
-/// A channel that a period's quadrature gives: its integral, or its time mean.
+/// A channel that a period's quadrature gives: its integral, its time mean, or a moment about the
+/// period's start (the moment quadrature less t_k times its base's integral).
 struct QuadratureChannel {
   Channel channel;
   kernels::Quadrature quadrature;
-  bool mean;
+  Source source;
 };
+
+/// The quadrature whose first moment `moment` is.
+constexpr kernels::Quadrature moment_base(kernels::Quadrature moment) {
+  switch (moment) {
+    case kernels::Quadrature::drive_moment: return kernels::Quadrature::drive;
+    case kernels::Quadrature::work_moment: return kernels::Quadrature::work;
+    default: return kernels::Quadrature::stokes;
+  }
+}
 
 /// The quadrature channels of `observables` that a model carrying a set of quadratures fills.
 /// Plain data: computed on the host, it travels to a GPU thread by value.
@@ -51,21 +61,24 @@ constexpr QuadratureChannels quadrature_channels(kernels::Integrals carried) {
     for (std::size_t c = 0; c < observable.channel_count; ++c) {
       const ChannelDeclaration& channel = observable.channels[c];
       if (channel.source == Source::step_reducer || !carried.carries(channel.quadrature)) continue;
-      out.channels[out.count++] = {channel.channel, channel.quadrature,
-                                   channel.source == Source::quadrature_mean};
+      out.channels[out.count++] = {channel.channel, channel.quadrature, channel.source};
     }
   return out;
 }
 
-/// Writes `channels` of a period of length `period` from its quadratures' integrals (integral(p)
-/// for quadrature p of `carried`), on the host and on a GPU thread alike.
+/// Writes `channels` of a period [t_k, t_k + period] from its quadratures' integrals (integral(p)
+/// for quadrature p of `carried`), on the host and on a GPU thread alike; `period_end` is t_k + period.
 template <class Integral>
 ROTORSWEEP_HD void record_quadratures(const QuadratureChannels& channels, kernels::Integrals carried,
-                                      PeriodRecord& record, Integral&& integral, double period) {
+                                      PeriodRecord& record, Integral&& integral, double period,
+                                      double period_end) {
   for (std::size_t i = 0; i < channels.count; ++i) {
     const QuadratureChannel c = channels.channels[i];
     const double value = integral(carried.index(c.quadrature));
-    record[c.channel] = c.mean ? value / period : value;
+    if (c.source == Source::quadrature_moment)
+      record[c.channel] = value - (period_end - period) * integral(carried.index(moment_base(c.quadrature)));
+    else
+      record[c.channel] = c.source == Source::quadrature_mean ? value / period : value;
   }
 }
 

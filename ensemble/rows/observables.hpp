@@ -22,10 +22,13 @@ enum class Channel : std::size_t {
   alignment_min,
   alignment_max,
   energy_mean,
+  dissipation_moment,
+  work_moment,
+  stokes_moment,
   slips,
   dissipation_error,
 };
-inline constexpr std::size_t channel_count = 9;
+inline constexpr std::size_t channel_count = 12;
 static_assert(std::size_t(Channel::dissipation_error) + 1 == channel_count,
               "channel_count: Channel's last + 1");
 
@@ -33,7 +36,10 @@ static_assert(std::size_t(Channel::dissipation_error) + 1 == channel_count,
 enum class Source {
   quadrature,       ///< the quadrature state at the period's end (the integral over the period)
   quadrature_mean,  ///< that integral divided by the period: the time mean
-  step_reducer,     ///< a reducer watching every accepted step (ensemble/engine/step_reducers.hpp)
+  /// a moment quadrature ∫ t q̇ dt less t_k times its base's integral: ∫ (t − t_k) q̇ dt over the
+  /// period [t_k, t_k + 2π]
+  quadrature_moment,
+  step_reducer,  ///< a reducer watching every accepted step (ensemble/engine/step_reducers.hpp)
 };
 
 /// How a member's averaged periods reduce to one number of /members.
@@ -65,11 +71,11 @@ struct ObservableDeclaration {
   std::size_t channel_count;
 };
 
-enum class Observable : std::size_t { dissipation, estimators, alignment, energy, slips };
-inline constexpr std::size_t observable_count = 5;
+enum class Observable : std::size_t { dissipation, estimators, alignment, energy, moments, slips };
+inline constexpr std::size_t observable_count = 6;
 
 namespace declare {
-inline constexpr kernels::Integrals none{false, false, false, false, false};
+inline constexpr kernels::Integrals none{false, false, false, false, false, false};
 constexpr ChannelDeclaration channel(Channel c, std::string_view column, std::string_view description,
                                      Source source, kernels::Quadrature q, SummaryColumn first) {
   return {c, column, description, source, q, {first, {}}, 1};
@@ -130,7 +136,7 @@ constexpr std::string dissipation_error_summary_text() {
 inline constexpr std::array<ObservableDeclaration, observable_count> observables{{
     {"dissipation",
      true,
-     {true, false, false, false, false},
+     {true, false, false, false, false, false},
      {{declare::channel(
            Channel::dissipation, "dissipation", "R_k = A Σ∫ sin(θ_j - t) dt", Source::quadrature,
            kernels::Quadrature::drive,
@@ -144,7 +150,7 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
      2},
     {"estimators",
      false,
-     {false, true, true, false, false},
+     {false, true, true, false, false, false},
      {{declare::channel(Channel::work, "dissipation_work", "W_k = A Σ∫ sin(θ_j - t) θ̇_j dt",
                         Source::quadrature, kernels::Quadrature::work,
                         {Summary::mean, "dissipation_work", "D per period, work estimator W, mean"}),
@@ -154,7 +160,7 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
      2},
     {"alignment",
      true,
-     {false, false, false, true, false},
+     {false, false, false, true, false, false},
      {{declare::channel(Channel::alignment_mean, "alignment_mean", "period mean of ρ̄",
                         Source::quadrature_mean, kernels::Quadrature::alignment,
                         {Summary::mean, "alignment_mean", "time mean of ρ̄"}),
@@ -167,10 +173,24 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
      3},
     {"energy",
      false,
-     {false, false, false, false, true},
+     {false, false, false, false, true, false},
      {{declare::channel(Channel::energy_mean, "energy_mean", "period mean of H", Source::quadrature_mean,
                         kernels::Quadrature::energy, {Summary::mean, "energy_mean", "time mean of H"})}},
      1},
+    {"moments",
+     false,
+     {false, false, false, false, false, true},
+     {{declare::channel(Channel::dissipation_moment, "dissipation_moment",
+                        "M_k = ∫ (t - t_k) A Σ sin(θ_j - t) dt over the period [t_k, t_k + 2π]",
+                        Source::quadrature_moment, kernels::Quadrature::drive_moment,
+                        {Summary::mean, "dissipation_moment", "first moment M_k of R over its period, mean"}),
+       declare::channel(Channel::work_moment, "work_moment", "∫ (t - t_k) A Σ sin(θ_j - t) θ̇_j dt",
+                        Source::quadrature_moment, kernels::Quadrature::work_moment,
+                        {Summary::mean, "work_moment", "first moment of W over its period, mean"}),
+       declare::channel(Channel::stokes_moment, "stokes_moment", "∫ (t - t_k) g Σ θ̇_j² dt",
+                        Source::quadrature_moment, kernels::Quadrature::stokes_moment,
+                        {Summary::mean, "stokes_moment", "first moment of S over its period, mean"})}},
+     3},
     {"slips",
      true,
      declare::none,
@@ -204,6 +224,7 @@ static_assert(declaration(Observable::dissipation).key == "dissipation" &&
                   declaration(Observable::estimators).key == "estimators" &&
                   declaration(Observable::alignment).key == "alignment" &&
                   declaration(Observable::energy).key == "energy" &&
+                  declaration(Observable::moments).key == "moments" &&
                   declaration(Observable::slips).key == "slips" &&
                   std::size_t(Observable::slips) + 1 == observable_count,
               "observables: the declarations are in Observable order");
@@ -215,12 +236,12 @@ struct ObservableSet {
 
   constexpr bool operator[](Observable o) const { return enabled[std::size_t(o)]; }
   constexpr void set(Observable o, bool on) { enabled[std::size_t(o)] = on; }
-  /// The quadrature states the enabled observables need.
+  /// The quadrature states the enabled observables need (the moments take R, W and S along).
   constexpr kernels::Integrals quadratures() const {
     kernels::Integrals q = declare::none;
     for (std::size_t i = 0; i < observable_count; ++i)
       if (enabled[i]) q = q | observables[i].quadratures;
-    return q;
+    return q.completed();
   }
   /// Whether the regime rule has its inputs (alignment extremes and slip counts).
   constexpr bool classifies_regimes() const {

@@ -132,7 +132,8 @@ class RowProblem {
   double close_period(std::size_t l) {
     PeriodRecord record;
     record_quadratures(
-        channels_, carried_, record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period);
+        channels_, carried_, record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period,
+        kernels::lane_get(loop_.state().t, l));
     for_each_observer([&](auto& observer) { observer.end_period(l, record); });
     if constexpr (Loop::stochastic)
       record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();

@@ -1,11 +1,14 @@
 // `rotorsweep landscape chambers|curves|jump-friction`: complete HDF5 files with the documented
 // datasets and values, and exit code 2 for bad options.
+#include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <vector>
 
 #include "io/hdf5_file.hpp"
 #include "io/output_target.hpp"
@@ -184,5 +187,51 @@ TEST_CASE("table prints W and S that agree with R outside CP, beside the paper's
   }
   CHECK(outside_cp == 6);
   // each CP entry over noise draws, with its spread and its symmetry-limited count
-  CHECK_THAT(run.output, Catch::Contains("CP entries over 8 noise draws (seed 1") && Catch::Contains("8 of 8"));
+  CHECK_THAT(run.output,
+             Catch::Contains("CP entries over 8 noise draws (seed 1") && Catch::Contains("8 of 8"));
+}
+
+TEST_CASE(
+    "table: the paper's triangular window equals the uniform mean outside CP and separates the "
+    "estimators in CP",
+    "[apps][table]") {
+  const auto dir = scratch_directory("table-window");
+  const auto read = [&](const std::string& window) {
+    const auto csv = dir / (window + ".csv");
+    const auto run = run_cli("table --replicas 1 --window " + window + " -o '" + csv.string() + "'", dir);
+    INFO(run.output);
+    REQUIRE(run.exit_code == 0);
+    CHECK_THAT(run.output, Catch::Contains(window + " window"));
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::array<double, 4>> rows;  // A, W, S, R
+    while (std::getline(in, line)) {
+      double A = 0, W = 0, S = 0, R = 0;
+      char ic[8] = {};
+      REQUIRE(std::sscanf(line.c_str(), "%lf,%7[^,],%lf,%lf,%lf", &A, ic, &W, &S, &R) == 5);
+      rows.push_back({A, W, S, R});
+    }
+    return rows;
+  };
+  const auto triangular = read("triangular"), uniform = read("uniform");
+  REQUIRE(triangular.size() == 10);
+  REQUIRE(uniform.size() == 10);
+  for (std::size_t i = 0; i < triangular.size(); ++i) {
+    const auto& t = triangular[i];
+    const auto& u = uniform[i];
+    INFO("A = " << t[0] << ", entry " << i);
+    if (t[0] == 6 || t[0] == 8) {  // CP: no two periods alike
+      CHECK(std::fabs(t[3] / u[3] - 1) > 1e-6);
+      CHECK(std::fabs(u[1] / u[3] - 1) < 1e-5);  // whole periods: W and R agree
+    } else {
+      CHECK(std::fabs(t[3] / u[3] - 1) < 1e-9);  // a periodic state: the window does not matter
+    }
+  }
+  // under the paper's window the estimators differ in CP, as the paper's do
+  double largest = 0;
+  for (const auto& t : triangular)
+    if (t[0] == 6 || t[0] == 8) largest = std::max(largest, std::fabs(t[1] / t[3] - 1));
+  CHECK(largest > 1e-4);
+  CHECK(run_cli("table --window trapezoid", dir).exit_code == 2);
 }

@@ -87,6 +87,7 @@ class CoupledRows : public CarriedRowQuadratures {
     trigonometry(w, theta, t);
     torques(w, f);
     integrands(w, f, qdot);
+    row_moment_integrands(integrals_, t, qdot);
   }
 
   ROTORSWEEP_HD void linearize(Workspace& w, const V* theta, V t, V* f, V* qdot, Jacobian& J, V* df_dt,
@@ -112,6 +113,7 @@ class CoupledRows : public CarriedRowQuadratures {
     });
     J.keep_constant_solutions(strict_fm_ != V(0.0));
     integrand_gradients(w, f, J, df_dt, dq_dtheta, dq_dt);
+    row_moment_gradients(integrals_, rows_, t, qdot, dq_dtheta, dq_dt);
   }
 
   ROTORSWEEP_HD V energy(Workspace& w, const V* theta, V t) const {

@@ -79,7 +79,7 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
   ROTORSWEEP_HD NearestNeighbourRows(std::size_t rows, LaneArena<V>& arena, Integrals carried)
       : CarriedRowQuadratures(carried),
         rows_(rows),
-        reads_rows_(carried.work || carried.energy),
+        reads_rows_(integrals_.work || integrals_.energy),
         A_row_(arena.take(rows)),
         anisotropy_row_(arena.take(rows)),
         coupling_row_(arena.take(rows)) {
@@ -215,6 +215,7 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
     lane_sincos(t, w.sin_t, w.cos_t);
     pass_and_integrands<per_row>(
         w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); }, f, qdot, store);
+    row_moment_integrands(integrals_, t, qdot);
   }
 
   template <bool per_row>
@@ -227,6 +228,7 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
           lane_sincos_displaced(theta[j], delta[j], w.start_sin_row[j], w.start_cos_row[j], s, c);
         },
         f, qdot, reads_rows_);
+    row_moment_integrands(integrals_, t + tau, qdot);
   }
 
   template <bool per_row>
@@ -246,6 +248,7 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
     }
     J.keep_constant_solutions(strict_fm_ != V(0.0));
     integrand_gradients<per_row>(w, f, J, df_dt, dq_dtheta, dq_dt);
+    row_moment_gradients(integrals_, n, t, qdot, dq_dtheta, dq_dt);
     for (std::size_t j = 0; j < n; ++j) {  // the start of evaluate_displaced()
       w.start_sin_row[j] = w.sin_row[j];
       w.start_cos_row[j] = w.cos_row[j];

@@ -1,5 +1,6 @@
 // The quadratures the row models share (docs/model.md §3): which of them steer the step and how
-// their errors are weighed, the integrands of R, W, S, ρ̄, H and their gradients, for every row model.
+// their errors are weighed, the integrands of R, W, S, ρ̄, H, the moments t q̇ of R, W, S, and their
+// gradients, for every row model.
 #pragma once
 
 #include <cstddef>
@@ -33,7 +34,7 @@ class CarriedRowQuadratures {
  public:
   static constexpr std::size_t max_quadratures = Integrals::max_count;
 
-  ROTORSWEEP_HD explicit CarriedRowQuadratures(Integrals carried) : integrals_(carried) {}
+  ROTORSWEEP_HD explicit CarriedRowQuadratures(Integrals carried) : integrals_(carried.completed()) {}
   /// The quadratures carried, in Integrals order.
   ROTORSWEEP_HD Integrals integrals() const { return integrals_; }
   ROTORSWEEP_HD std::size_t quadrature_count() const { return integrals_.count(); }
@@ -74,6 +75,31 @@ ROTORSWEEP_HD void row_integrands(Integrals q, std::size_t n, const V& A, const 
   }
   if (q.alignment) qdot[q.alignment_index()] = alignment();
   if (q.energy) qdot[q.energy_index()] = energy();
+}
+
+/// The moments' integrands t q̇ of R, W and S at time t, from their integrands in `qdot`
+/// (row_integrands), where the set q carries the moments (with R, W and S).
+template <class V>
+ROTORSWEEP_HD void row_moment_integrands(Integrals q, const V& t, V* qdot) {
+  if (!q.moments) return;
+  const std::size_t m = q.moment_index();
+  qdot[m] = t * qdot[q.drive_index()];
+  qdot[m + 1] = t * qdot[q.work_index()];
+  qdot[m + 2] = t * qdot[q.stokes_index()];
+}
+
+/// Their gradients: ∂(t q̇)/∂θ = t ∂q̇/∂θ and ∂(t q̇)/∂t = q̇ + t ∂q̇/∂t, from those of R, W and S
+/// (row_integrand_gradients) and their integrands.
+template <class V>
+ROTORSWEEP_HD void row_moment_gradients(Integrals q, std::size_t n, const V& t, const V* qdot, V* dq_dtheta,
+                                        V* dq_dt) {
+  if (!q.moments) return;
+  const std::size_t bases[3] = {q.drive_index(), q.work_index(), q.stokes_index()};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::size_t base = bases[i], moment = q.moment_index() + i;
+    for (std::size_t k = 0; k < n; ++k) dq_dtheta[moment * n + k] = t * dq_dtheta[base * n + k];
+    dq_dt[moment] = qdot[base] + t * dq_dt[base];
+  }
 }
 
 /// The gradients of the integrands of the set q (dq_dtheta[q·N + k] = ∂qdot_q/∂θ_k, dq_dt[q] = ∂qdot_q/∂t)

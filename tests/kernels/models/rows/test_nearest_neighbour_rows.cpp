@@ -268,8 +268,8 @@ TEST_CASE("models carrying fewer integrals give the same torques, R, S and rho-b
   // without W and H an evaluation stores nothing in the workspace and takes the sums of R and ρ̄
   // in its one pass over the rows; with them it stores every row's trigonometry: the bits agree.
   // S alone (docs/architecture.md's stokes_power example) is carried without W.
-  constexpr Integrals drive_and_alignment{true, false, false, true, false};
-  constexpr Integrals drive_and_stokes{true, false, true, false, false};
+  constexpr Integrals drive_and_alignment{true, false, false, true, false, false};
+  constexpr Integrals drive_and_stokes{true, false, true, false, false, false};
   const double t = 2.3, tau = 4e-3;
   for (std::size_t n : {2u, 3u, 20u})
     for (bool disordered : {false, true}) {
