@@ -21,8 +21,10 @@ std::string format(const char* pattern, auto... values) {
 /// The integrator that runs the members: the stepper and its tolerances, or at T > 0 the Langevin stepper.
 std::string integrator(const ensemble::Scene& scene) {
   if (scene.thermal.on())
-    return format("Langevin (Euler–Maruyama) at T = %g, at least %d steps per period and h ≤ %g g",
-                  scene.thermal.temperature, scene.thermal.steps_per_period, scene.thermal.step_fraction);
+    return format(
+        "Langevin (Leimkuhler–Matthews) at T = %g, at least %d steps per period and h ≤ %g g / "
+        "max(κ, 11 T)",
+        scene.thermal.temperature, scene.thermal.steps_per_period, scene.thermal.step_fraction);
   std::string tolerances;
   for (double r : scene.rtol_values) tolerances += format("%s%g", tolerances.empty() ? "" : ",", r);
   return std::string(kernels::stepper_names[std::size_t(scene.stepper)]) + " rtol " + tolerances;

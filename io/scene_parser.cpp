@@ -248,8 +248,9 @@ Scene read_scene(const toml::table& root) {
                                                        "an integer from 16 to 10000000",
                                                        [](long long n) { return n >= 16 && n <= 10000000; }));
   scene.thermal.step_fraction = thermal.number("step_fraction", scene.thermal.step_fraction,
-                                               "a number from 1e-6 to 10 (largest step / g)",
-                                               [](double x) { return x >= 1e-6 && x <= 10; });
+                                               "a number from 1e-6 to 1.5 (largest step × κ / g; the "
+                                               "explicit step is unstable above 2)",
+                                               [](double x) { return x >= 1e-6 && x <= 1.5; });
   scene.thermal.seed =
       std::uint64_t(thermal.integer("seed", 1, "an integer >= 0", [](long long s) { return s >= 0; }));
 

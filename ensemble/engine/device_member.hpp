@@ -18,7 +18,7 @@
 namespace rotorsweep::ensemble {
 
 /// Runs members of Model (on the double lane) with Integrator (kernels::AdaptiveIntegrator, or
-/// kernels::LangevinEuler at T > 0). The arithmetic per step and per period is LaneScheduler's, in
+/// kernels::LeimkuhlerMatthews at T > 0). The arithmetic per step and per period is LaneScheduler's, in
 /// the same order, so a member's bits do not depend on the backend.
 template <class Model, class Integrator>
 struct DeviceMember {
@@ -52,9 +52,8 @@ struct DeviceMember {
     SlipCounter<double> slips(s.slip_rate);
     if constexpr (stochastic) {
       const double g = slots.g[k];
-      integrator.start_lane(0, slots.noise_key[k], g);
-      const double h = Model::period / Integrator::steps_for(parts.settings, g);
-      slips.set_rate(0, thermal_slip_rate(s.slip_rate, s.temperature, g, h));
+      integrator.start_lane(0, slots.noise_key[k], g, model.curvature_bound(0));
+      slips.set_rate(0, thermal_slip_rate(s.slip_rate, s.temperature, g, integrator.step_size(0)));
     }
     AlignmentExtrema<double> alignment;
     DissipationSwing<double> swing;

@@ -16,7 +16,7 @@
 namespace rotorsweep::ensemble {
 
 /// Advances lane_width<V> members of `Model` with `Integrator` (kernels::AdaptiveIntegrator or
-/// kernels::LangevinEuler). Each lane owns its time, step size, stopping time (the end of its
+/// kernels::LeimkuhlerMatthews). Each lane owns its time, step size, stopping time (the end of its
 /// current period) and status.
 template <kernels::LaneModel Model, class Integrator>
 class IntegrationLoop {
@@ -91,8 +91,13 @@ class IntegrationLoop {
     kernels::lane_set(state_.tolerance_scale, lane, scale);
   }
 
-  /// The noise stream (its key) and damping g of the member in `lane` (stochastic integrators).
-  void start_noise(std::size_t lane, std::uint64_t key, double g) { integrator_.start_lane(lane, key, g); }
+  /// The noise stream (its key) and damping g of the member in `lane` (stochastic integrators, after
+  /// start(): the step also follows the model's curvature bound in the lane).
+  void start_noise(std::size_t lane, std::uint64_t key, double g) {
+    integrator_.start_lane(lane, key, g, model_.curvature_bound(lane));
+  }
+  /// The fixed step of the member in `lane` (stochastic integrators, after start_noise()).
+  double noise_step(std::size_t lane) const { return integrator_.step_size(lane); }
 
   /// One step attempt of every running lane short of its period's end; `observers` see the state
   /// before (before_step) and the accepted lanes after (after_step). Returns the accepted lanes.

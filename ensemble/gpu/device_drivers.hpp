@@ -7,7 +7,7 @@
 #include "kernels/models/rows/coupled_rows.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
-#include "kernels/steppers/langevin_euler.hpp"
+#include "kernels/steppers/leimkuhler_matthews.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -32,7 +32,7 @@ decltype(auto) with_device_model(const Scene& scene, F&& f) {
 template <class F>
 decltype(auto) with_device_driver(const Scene& scene, F&& f) {
   return with_device_model(scene, [&]<class Model>() {
-    if (scene.thermal.on()) return f.template operator()<Model, kernels::LangevinEuler<Model>>();
+    if (scene.thermal.on()) return f.template operator()<Model, kernels::LeimkuhlerMatthews<Model>>();
     return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
       return f.template operator()<Model, DeviceAdaptiveIntegrator<id, Model>>();
     });

@@ -7,7 +7,7 @@ namespace rotorsweep::ensemble::gpu {
 SweepOutcome run_langevin(const Scene& scene, const VariantRange& range, int host_threads,
                           const SweepControl& control, const ResultSink& sink) {
   return with_device_model(scene, [&]<class Model>() {
-    return run_slots<Model, kernels::LangevinEuler<Model>>(scene, range, host_threads, control, sink);
+    return run_slots<Model, kernels::LeimkuhlerMatthews<Model>>(scene, range, host_threads, control, sink);
   });
 }
 

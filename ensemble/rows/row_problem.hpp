@@ -105,8 +105,8 @@ class RowProblem {
     if (member.tolerance_scale != 1.0) loop_.set_tolerance_scale(l, member.tolerance_scale);
     if constexpr (Loop::stochastic) {
       loop_.start_noise(l, setup_.noise_key(member), member.g);
-      const double h = Loop::period / Integrator::steps_for(settings_, member.g);
-      slips_.set_rate(l, thermal_slip_rate(scene_.slip_rate, scene_.thermal.temperature, member.g, h));
+      slips_.set_rate(
+          l, thermal_slip_rate(scene_.slip_rate, scene_.thermal.temperature, member.g, loop_.noise_step(l)));
     }
     for_each_observer([&](auto& observer) { observer.start(loop_, l); });
     profiles_.start(loop_, l);

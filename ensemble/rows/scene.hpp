@@ -37,7 +37,7 @@ struct Variant {
 struct Thermal {
   double temperature = 0.0;
   int steps_per_period = 2000;  ///< at least this many steps per period
-  double step_fraction = 0.25;  ///< and steps no longer than step_fraction · g
+  double step_fraction = 0.5;  ///< and steps no longer than step_fraction · g / κ (κ: curvature bound)
   std::uint64_t seed = 1;
   bool on() const { return temperature > 0; }
 };

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 #include "kernels/lanes/angles.hpp"
@@ -78,6 +79,15 @@ class CoupledRows : public CarriedRowQuadratures {
       b_[u] = V(p.b[u]);
       c_[u] = V(p.c[u]);
     }
+  }
+
+  /// A bound on the spectral radius of g ∂f/∂θ in `lane` (Gershgorin, over every θ and t): a row
+  /// has at most two partners u apart, so 4 |a| + A + 4 Σ_u (|b_u| + |c_u|).
+  ROTORSWEEP_HD double curvature_bound(std::size_t lane) const {
+    double couplings = 0.0;
+    for (std::size_t u = 0; u < range_; ++u)
+      couplings += std::fabs(lane_get(b_[u], 0)) + std::fabs(lane_get(c_[u], 0));
+    return 4.0 * std::fabs(lane_get(a_, 0)) + std::fabs(lane_get(A_, lane)) + 4.0 * couplings;
   }
 
   ROTORSWEEP_HD std::size_t dimension() const { return rows_; }

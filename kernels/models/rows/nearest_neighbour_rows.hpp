@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 #include "kernels/lanes/angles.hpp"
@@ -114,6 +115,21 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
       lane_set(coupling_row_[j], lane, factors[2]);
       disordered_ = disordered_ || factors[0] != 1.0 || factors[1] != 1.0 || factors[2] != 1.0;
     }
+  }
+
+  /// A bound on the spectral radius of g ∂f/∂θ in `lane` (Gershgorin, over every θ and t):
+  /// max_j 6 (1 + α_j) + 2 (1 + β_j) + 2 (1 + β_{j−1}) + A (1 + δ_j), 10 + A without disorder.
+  ROTORSWEEP_HD double curvature_bound(std::size_t lane) const {
+    double bound = 0.0;
+    for (std::size_t j = 0; j < rows_; ++j) {
+      const std::size_t jm = (j == 0) ? rows_ - 1 : j - 1;
+      const double row = 6.0 * std::fabs(lane_get(anisotropy_row_[j], lane)) +
+                         2.0 * std::fabs(lane_get(coupling_row_[j], lane)) +
+                         2.0 * std::fabs(lane_get(coupling_row_[jm], lane)) +
+                         std::fabs(lane_get(A_, lane) * lane_get(A_row_[j], lane));
+      bound = row > bound ? row : bound;
+    }
+    return bound;
   }
 
   ROTORSWEEP_HD std::size_t dimension() const { return rows_; }
