@@ -20,7 +20,7 @@ const std::map<std::string, std::set<std::string>> slider_keys{
     {"substrate", {"columns", "rows", "moment", "nodes_per_depth"}},
     {"drive", {"speed", "rest", "end"}},
     {"sweep", {"separation"}},
-    {"initial", {"kind", "noise", "replicas", "seed"}},
+    {"initial", {"kind", "noise", "replicas", "seed", "angles"}},
     {"observables", {"samples_per_period", "series", "angles"}},
     {"numerics", {"stepper", "rtol", "atol", "max_steps"}},
     {"output", {"path"}},
@@ -76,6 +76,33 @@ std::vector<ensemble::SliderSize> read_sizes(const Section& slider) {
   return sizes;
 }
 
+/// initial.angles with kind "given": rows × columns angles of the scene's single size, row-major
+/// from the row with the smallest y; one replica (every replica would start alike).
+void read_given_angles(const Section& initial, const toml::node* angles, SliderScene& scene) {
+  if (angles && scene.start != ensemble::SliderStart::given)
+    fail(initial.key("angles"), "is only used with initial.kind = \"given\"");
+  if (scene.start != ensemble::SliderStart::given) return;
+  if (scene.sizes.size() > 1)
+    fail(initial.key("angles"), "needs a single slider size (each size has its own number of rotors)");
+  const ensemble::SliderSize size = scene.sizes.front();
+  const std::string what = "a list of slider.rows × slider.columns = " + std::to_string(size.rotors()) +
+                           " angles (rad), row by row from the row with the smallest y, each row from the "
+                           "smallest x";
+  const toml::node& node =
+      angles ? *angles : initial.require("angles", what + " with initial.kind = \"given\"");
+  const auto* list = node.as_array();
+  if (!list || list->size() != size.rotors())
+    fail(initial.key("angles"),
+         "must be " + what + (list ? " (got " + std::to_string(list->size()) + ")" : std::string()));
+  for (const auto& a : *list)
+    scene.given_angles.push_back(Section::checked_number(a, initial.key("angles"),
+                                                         "a number from -1e4 to 1e4 (rad)",
+                                                         [](double x) { return std::fabs(x) <= 1e4; }));
+  if (scene.replicas != 1)
+    fail(initial.key("replicas"),
+         "must be 1 with initial.kind = \"given\" (every replica would start alike)");
+}
+
 SliderScene read_slider_scene(const toml::table& root) {
   check_sections(root, slider_keys);
   SliderScene scene;
@@ -114,16 +141,19 @@ SliderScene read_slider_scene(const toml::table& root) {
                                    " m (closer, the point dipoles are no model of magnets)");
 
   const Section initial = section(root, "initial");
-  const std::string kind =
-      initial.choice("kind", "alternating_rows", {"alternating_rows", "aligned", "random"});
+  const toml::node* angles = initial.find("angles");
+  const std::string kind = initial.choice("kind", angles ? "given" : "alternating_rows",
+                                          {"alternating_rows", "aligned", "random", "given"});
   scene.start = kind == "aligned"  ? ensemble::SliderStart::aligned
                 : kind == "random" ? ensemble::SliderStart::random
+                : kind == "given"  ? ensemble::SliderStart::given
                                    : ensemble::SliderStart::alternating_rows;
   scene.noise = initial.number("noise", scene.noise, "a number from 0 to 2π (full width, rad)",
                                [](double x) { return x >= 0 && x <= 6.283185307179586; });
   scene.replicas = count(initial, "replicas", scene.replicas, false);
   scene.seed =
       std::uint64_t(initial.integer("seed", 1, "an integer >= 0", [](long long s) { return s >= 0; }));
+  read_given_angles(initial, angles, scene);
 
   const Section observables = section(root, "observables");
   scene.samples_per_period = count(observables, "samples_per_period", scene.samples_per_period, false);

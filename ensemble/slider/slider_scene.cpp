@@ -72,6 +72,7 @@ kernels::SliderParameters slider_parameters(const SliderScene& scene, const kern
 }
 
 std::vector<double> slider_start(const SliderScene& scene, SliderMemberIndex member) {
+  if (scene.start == SliderStart::given) return scene.given_angles;
   // keyed by the replica alone, as the row sweeps' draws: a member keeps its start whatever the
   // other axes hold (sizes share the first draws, rotor by rotor)
   const kernels::RandomStream stream(scene.seed, member.replica);
@@ -86,6 +87,7 @@ std::vector<double> slider_start(const SliderScene& scene, SliderMemberIndex mem
         break;
       case SliderStart::aligned: theta[r] = scene.noise * (u - 0.5); break;
       case SliderStart::random: theta[r] = kernels::two_pi * u; break;
+      case SliderStart::given: break;
     }
   }
   return theta;

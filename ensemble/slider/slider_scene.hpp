@@ -14,8 +14,9 @@
 namespace rotorsweep::ensemble {
 
 /// How a member's angles start: rows (along x, fixed y) alternately near 0 and π, all near 0, or
-/// every angle uniform on [0, 2π); the first two with uniform noise of full width `noise`.
-enum class SliderStart { alternating_rows, aligned, random };
+/// every angle uniform on [0, 2π) (the first two with uniform noise of full width `noise`), or
+/// given angle by angle (SliderScene::given_angles).
+enum class SliderStart { alternating_rows, aligned, random, given };
 
 /// A slider's rotor grid.
 struct SliderSize {
@@ -53,6 +54,9 @@ struct SliderScene {
   double noise = 3.141592653589793 / 24.0;  ///< full width of the uniform noise, rad
   std::size_t replicas = 1;
   std::uint64_t seed = 1;
+  /// With SliderStart::given: angle of rotor (row r, column c) at [r · columns + c], r = 0 the row
+  /// with the smallest y, c = 0 the column with the smallest x (one size).
+  std::vector<double> given_angles;
 
   // [observables]
   std::size_t samples_per_period = 50;  ///< time series resolution (a period is a / v)

@@ -2,6 +2,7 @@
 // (ζ(3), a row of one or two rotors, 1/u² far away), the stated sums and the paper's 2-D lattice check.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "ensemble/rows/coupling_table.hpp"
@@ -72,6 +73,33 @@ TEST_CASE("the two-angle reduction folds even rows into the anisotropy", "[ensem
   CHECK(reduced.a == Approx(2.2));
   CHECK(reduced.b == Approx(2 * (1.0 + 0.25)));
   CHECK(reduced.c == Approx(2 * (0.1 + 0.3)));
+}
+
+TEST_CASE("far rows of an infinite row take the line limit 1/u^2, which the direct sums reach",
+          "[ensemble][couplings]") {
+  // the direct sum over k = -10^6 … 10^6 in long double, with the k^-3 tails, against the table
+  const auto direct = [](double u) {
+    long double same = 0, opposite = 0;
+    for (long k = 1000000; k >= -1000000; --k) {
+      const long double r2 = (long double)k * k + (long double)u * u;
+      const long double inverse_cube = 1.0L / (r2 * std::sqrt(r2)), axial = 1.5L * k * k / r2;
+      same += inverse_cube * (1 - axial);
+      opposite += inverse_cube * axial;
+    }
+    const long double tail = 1.0L / (2.0L * 1e12L);  // Σ_{k>K} k^-3 ≈ 1/(2K²), both sides below
+    return std::pair{double(same - tail), double(opposite + 3 * tail)};
+  };
+  const auto table = dipolar_table(12, 0);
+  for (const double u : {6.0, 7.0, 9.0, 12.0}) {
+    const auto [same, opposite] = direct(u);
+    INFO("u = " << u);
+    CHECK(table.b[std::size_t(u) - 1] == Approx(same).epsilon(1e-12));
+    CHECK(table.c[std::size_t(u) - 1] == Approx(opposite).epsilon(1e-12));
+    if (u >= 7) CHECK(table.b[std::size_t(u) - 1] == 1.0 / (u * u));
+  }
+  // and a long table is quick: 10^5 row distances
+  const auto long_table = dipolar_table(100000, 0);
+  CHECK(long_table.b.back() == 1.0 / 1e10);
 }
 
 TEST_CASE("a long point-dipole table reports its progress, row distance by row distance",

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -178,6 +179,37 @@ TEST_CASE("slider scan: one thread or two give the same bits", "[ensemble][slide
   }
 }
 
+TEST_CASE("slider scan: a given start, row by row from the smallest y, gives the drawn start's bits",
+          "[ensemble][slider]") {
+  // the angles the default start draws for replica 0, given back one by one: the same member
+  const std::string base =
+      "[slider]\ncolumns = 3\nrows = 2\n[substrate]\ncolumns = 11\nrows = 11\n[drive]\nrest = 0.5\n"
+      "end = 4.5\n[sweep]\nseparation = [7e-3, 9e-3]\n[observables]\nsamples_per_period = 20\n"
+      "[numerics]\nrtol = 1e-7\natol = 1e-7\n";
+  const auto drawn_scene = rotorsweep::io::parse_slider_scene_text(base + "[initial]\nseed = 5\n", "drawn");
+  const std::vector<double> start = slider_start(drawn_scene, {0, 0, 0});
+  REQUIRE(start.size() == 6);
+  CHECK(start[0] == Approx(0).margin(0.14));  // row 0 (smallest y) near 0, row 1 near π
+  CHECK(start[3] == Approx(3.14159).margin(0.14));
+  std::string list;
+  for (const double a : start) {
+    char number[40];
+    std::snprintf(number, sizeof number, "%.17g", a);
+    list += (list.empty() ? "" : ", ") + std::string(number);
+  }
+  const auto drawn = scan(base + "[initial]\nseed = 5\n");
+  const auto given = scan(base + "[initial]\nangles = [" + list + "]\n");
+  REQUIRE(given.members.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    CHECK(given.members[k].friction == drawn.members[k].friction);
+    CHECK(given.members[k].friction_series == drawn.members[k].friction_series);
+  }
+  // another start gives another run
+  const auto flipped =
+      scan(base + "[initial]\nkind = \"given\"\nangles = [3.1, 3.2, 3.0, 0.1, -0.05, 0.0]\n");
+  CHECK(flipped.members[0].friction_series != drawn.members[0].friction_series);
+}
+
 TEST_CASE("slider scenes: bad keys are named with what they must be", "[ensemble][slider][scene]") {
   using rotorsweep::io::parse_slider_scene_text;
   using rotorsweep::io::SceneError;
@@ -202,6 +234,21 @@ TEST_CASE("slider scenes: bad keys are named with what they must be", "[ensemble
   CHECK_THAT(
       message("[slider]\ncolumns = [3, 4]\n[sweep]\nseparation = [8e-3]\n[observables]\nangles = true\n"),
       Catch::Contains("observables.angles"));
+  const std::string sep = "[sweep]\nseparation = [8e-3]\n";
+  CHECK_THAT(
+      message(sep + "[slider]\ncolumns = 3\nrows = 2\n[initial]\nangles = [0, 1, 2, 3, 4]\n"),
+      Catch::Contains("initial.angles") && Catch::Contains("= 6 angles") && Catch::Contains("(got 5)"));
+  CHECK_THAT(message(sep + "[initial]\nkind = \"given\"\n"),
+             Catch::Contains("initial.angles") && Catch::Contains("49 angles"));
+  CHECK_THAT(
+      message(sep + "[slider]\ncolumns = 2\nrows = 1\n[initial]\nkind = \"random\"\nangles = [0, 1]\n"),
+      Catch::Contains("initial.angles") && Catch::Contains("kind = \"given\""));
+  CHECK_THAT(message(sep + "[slider]\ncolumns = 2\nrows = 1\n[initial]\nangles = [0, 1]\nreplicas = 2\n"),
+             Catch::Contains("initial.replicas"));
+  CHECK_THAT(message(sep + "[slider]\ncolumns = [2, 3]\nrows = 1\n[initial]\nangles = [0, 1]\n"),
+             Catch::Contains("single slider size"));
+  CHECK_THAT(message(sep + "[slider]\ncolumns = 2\nrows = 1\n[initial]\nangles = [0, 1e5]\n"),
+             Catch::Contains("from -1e4 to 1e4"));
   CHECK_THAT(message("[model]\nrows = 3\n"), Catch::Contains("the scene sections are"));
   CHECK_THAT(message(""), Catch::Contains("sweep.separation") && Catch::Contains("is missing"));
   CHECK(message("[sweep]\nseparation = [8e-3]\n") ==
