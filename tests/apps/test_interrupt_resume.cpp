@@ -111,6 +111,35 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
   check_same_datasets(dir / "whole.h5", dir / "out.h5");
 }
 
+TEST_CASE("an allocation that fails in a worker thread is one message, exit 1, and the run resumes",
+          "[apps][run][resume]") {
+  // N = 20 first, then N = 20000, whose lane block (tens of MB) the preloaded posix_memalign refuses
+  const auto dir = scratch_directory("worker-allocation");
+  const auto scene = dir / "two_sizes.toml";
+  write_text(scene,
+             "[model]\nrows = [20, 20000]\n[drive]\ng = [0.05]\n[sweep]\nA = [1.0]\n"
+             "[schedule]\nrelax_periods = 0\naverage_periods = 1\n");
+  const std::string base = "run '" + scene.string() + "' -q -o '" + (dir / "out.h5").string() + "'";
+  REQUIRE(
+      run_cli("run '" + scene.string() + "' -q -o '" + (dir / "whole.h5").string() + "'", dir).exit_code ==
+      0);
+  const auto failed = run_cli(base, dir,
+                              "export LD_PRELOAD='" ROTORSWEEP_FAILING_ALLOCATION
+                              "' ROTORSWEEP_TEST_ALLOCATION_LIMIT=8000000; ");
+  INFO(failed.output);
+  CHECK(failed.exit_code == 1);
+  CHECK_THAT(failed.output, Catch::Contains("out of memory") && Catch::Contains("--resume"));
+  CHECK_THAT(failed.output, !Catch::Contains("terminate") && !Catch::Contains("Aborted"));
+  const auto partial = dir / "out.h5.partial";
+  REQUIRE(fs::exists(partial));
+  CHECK_FALSE(fs::exists(dir / "out.h5"));
+  CHECK(rows_done(partial) == 1);  // the N = 20 member, written before the failure
+  const auto resumed = run_cli(base + " --resume", dir);
+  INFO(resumed.output);
+  REQUIRE(resumed.exit_code == 0);
+  check_same_datasets(dir / "whole.h5", dir / "out.h5");
+}
+
 TEST_CASE("a killed shard resumes and merges to the unsharded file", "[apps][run][resume][merge]") {
   const auto dir = scratch_directory("kill-shard");
   const auto scene = dir / "long.toml";
