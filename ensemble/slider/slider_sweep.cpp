@@ -24,65 +24,59 @@ namespace {
 
 using V = kernels::simd_lane;
 
-/// Runs members `indices` (all of one size) on lane schedulers, one per thread, that share a counter;
-/// each finished member goes to `finished` (one call at a time). Returns whether stopped() left any
-/// out; an exception in a worker (std::bad_alloc) stops the others and is rethrown here.
-template <bool Inertial, class Stepper>
-bool run_size(const SliderScene& scene, const SliderSampleGrid& grid, const std::vector<std::size_t>& indices,
-              const SliderScanControl& control, std::size_t& done,
-              const std::function<void(std::vector<SliderMember>&&)>& finished) {
+/// Runs the members of each size (`sizes`, plan indices) on lane schedulers, one per thread and
+/// size, with one counter per size: a thread whose size has no member left goes on to the next size
+/// while the others finish theirs. Each finished member goes to `finished` (one call at a time).
+/// Returns whether stopped() left any out; an exception in a worker (std::bad_alloc) stops the
+/// others and is rethrown here.
+template <bool Inertial>
+bool run_sizes(const SliderScene& scene, const SliderSampleGrid& grid,
+               const std::vector<std::vector<std::size_t>>& sizes, const SliderScanControl& control,
+               const std::function<void(std::vector<SliderMember>&&)>& finished) {
   const int threads = control.threads > 0 ? control.threads : omp_get_max_threads();
-  const SliderSize size = slider_plan_member(scene, indices.front()).size;
-  std::atomic<std::size_t> next{0};
-  std::size_t finished_here = 0;
+  std::vector<std::atomic<std::size_t>> next(sizes.size());
+  std::size_t done = 0, planned = 0;
+  for (const auto& indices : sizes) planned += indices.size();
   std::atomic<bool> failed{false}, stopped{false};
   std::exception_ptr failure;
   const auto stop = [&] {
     if (!stopped && control.stopped && control.stopped()) stopped = true;
     return stopped || failed;
   };
+  kernels::with_stepper<kernels::SliderModel<V, Inertial>>(scene.stepper, [&]<class Stepper>() {
 #pragma omp parallel num_threads(threads)
-  try {
-    LaneScheduler<SliderProblem<V, Inertial, Stepper>> scheduler(scene, grid, size);
-    scheduler.run(
-        [&]() -> std::optional<std::size_t> {
-          if (stop()) return std::nullopt;
-          const std::size_t k = next.fetch_add(1, std::memory_order_relaxed);
-          if (k >= indices.size()) return std::nullopt;
-          return indices[k];
-        },
-        [&](SliderMember&& member) {
-          std::vector<SliderMember> one;
-          one.push_back(std::move(member));
+    try {
+      for (std::size_t s = 0; s < sizes.size() && !stop(); ++s) {
+        const std::vector<std::size_t>& indices = sizes[s];
+        LaneScheduler<SliderProblem<V, Inertial, Stepper>> scheduler(
+            scene, grid, slider_plan_member(scene, indices.front()).size);
+        scheduler.run(
+            [&]() -> std::optional<std::size_t> {
+              if (stop()) return std::nullopt;
+              const std::size_t k = next[s].fetch_add(1, std::memory_order_relaxed);
+              if (k >= indices.size()) return std::nullopt;
+              return indices[k];
+            },
+            [&](SliderMember&& member) {
+              std::vector<SliderMember> one;
+              one.push_back(std::move(member));
 #pragma omp critical(slider_finished)
-          {
-            finished(std::move(one));
-            ++finished_here;
-            ++done;
-            if (control.progress) control.progress(done);
-          }
-        },
-        stop);
-  } catch (...) {
+              {
+                finished(std::move(one));
+                ++done;
+                if (control.progress) control.progress(done);
+              }
+            },
+            stop);
+      }
+    } catch (...) {
 #pragma omp critical(slider_failure)
-    if (!failure) failure = std::current_exception();
-    failed = true;
-  }
-  if (failure) std::rethrow_exception(failure);
-  return finished_here < indices.size();
-}
-
-/// Runs the members size by size; returns whether stopped() left any of them out.
-template <bool Inertial>
-bool run_sizes(const SliderScene& scene, const SliderSampleGrid& grid,
-               const std::vector<std::vector<std::size_t>>& sizes, const SliderScanControl& control,
-               const std::function<void(std::vector<SliderMember>&&)>& finished) {
-  return kernels::with_stepper<kernels::SliderModel<V, Inertial>>(scene.stepper, [&]<class Stepper>() {
-    std::size_t done = 0;
-    for (const auto& indices : sizes)
-      if (run_size<Inertial, Stepper>(scene, grid, indices, control, done, finished)) return true;
-    return false;
+      if (!failure) failure = std::current_exception();
+      failed = true;
+    }
   });
+  if (failure) std::rethrow_exception(failure);
+  return done < planned;
 }
 
 }  // namespace
