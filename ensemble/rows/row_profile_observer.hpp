@@ -27,8 +27,7 @@ class RowProfileObserver {
         enabled_(enabled && reports),
         storage_(kernels::counted_storage<V>(
             [&](kernels::LaneArena<V>& arena) { const Integral counted(enabled_ ? dimension : 0, arena); })),
-        arena_(storage_.data(), storage_.size()),
-        integral_(enabled_ ? dimension : 0, arena_) {}
+        integral_(over(storage_, enabled_ ? dimension : 0)) {}
 
   bool enabled() const { return enabled_; }
   std::size_t links() const { return integral_.links(); }
@@ -54,10 +53,15 @@ class RowProfileObserver {
   }
 
  private:
+  /// The integral's views over `storage` (sized by counted_storage above).
+  static Integral over(kernels::lane_vector<V>& storage, std::size_t rows) {
+    kernels::LaneArena<V> arena(storage.data(), storage.size());
+    return Integral(rows, arena);
+  }
+
   std::size_t n_;
   bool enabled_;
   kernels::lane_vector<V> storage_;
-  kernels::LaneArena<V> arena_;
   Integral integral_;
 };
 
