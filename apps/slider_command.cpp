@@ -19,7 +19,6 @@
 #include "io/output_target.hpp"
 #include "io/slider_result_file.hpp"
 #include "io/slider_scene_parser.hpp"
-#include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
 #include "run_support.hpp"
@@ -44,7 +43,7 @@ void print_slider_header(const SliderOptions& options, const ensemble::SliderSce
       *closest * 1e3, *farthest * 1e3, scene.replicas, sizes.c_str(), scene.substrate_columns,
       scene.substrate_rows, scene.overdamped ? "overdamped" : "inertial",
       kernels::stepper_names[scene.stepper].data(), scene.rtol, threads,
-      kernels::lane_width<kernels::simd_lane>);
+      ensemble::instruction_set().lanes);
 }
 
 namespace {

@@ -111,17 +111,19 @@ std::size_t kind_length() {
   return n;
 }
 
-/// Calls f(first, members, results) for consecutive blocks of whole points of the plan.
+/// Calls f(members, results) for consecutive blocks of whole points of the plan.
 template <class F>
 void for_each_block(const Hdf5Location& file, const ensemble::Scene& scene, const ensemble::MemberPlan& plan,
                     F&& f) {
-  const std::size_t replicas = std::size_t(scene.replicas);
-  const std::size_t step = std::max<std::size_t>(1, block_members / replicas) * replicas;
-  for (std::size_t first = 0; first < plan.size(); first += step) {
-    const std::size_t count = std::min(step, plan.size() - first);
+  for (std::size_t point = 0; point < plan.point_count();) {
+    const std::size_t first = plan.point_first(point);
+    std::size_t end = point + 1;
+    while (end < plan.point_count() && plan.point_first(end + 1) - first <= block_members) ++end;
+    const std::size_t count = plan.point_first(end) - first;
     std::vector<ensemble::Member> members;
     for (std::size_t i = first; i < first + count; ++i) members.push_back(plan[i]);
-    f(first, members, read_member_rows(file, scene, plan, first, count));
+    f(members, read_member_rows(file, scene, plan, first, count));
+    point = end;
   }
 }
 
@@ -130,8 +132,7 @@ void for_each_block(const Hdf5Location& file, const ensemble::Scene& scene, cons
 void write_curves_from_members(const Hdf5Location& file, const ensemble::Scene& scene,
                                const std::function<void(double bytes)>& reserve) {
   const ensemble::MemberPlan plan(scene);
-  const std::size_t replicas = std::size_t(scene.replicas);
-  const hsize_t points = plan.size() / replicas;
+  const hsize_t points = plan.point_count();
   // pass 1: the attractor labels of the whole sweep
   std::set<std::string> label_set;
   const auto members_group = file.open_group("members");
@@ -167,10 +168,10 @@ void write_curves_from_members(const Hdf5Location& file, const ensemble::Scene& 
                            "Wilson 95 % interval of fraction: upper end");
 
   // pass 2: points block by block
-  for_each_block(file, scene, plan, [&](std::size_t first, const auto& members, const auto& results) {
-    const auto curves = ensemble::aggregate_curves(members, results, scene.replicas);
+  for_each_block(file, scene, plan, [&](const auto& members, const auto& results) {
+    const auto curves = ensemble::aggregate_curves(members, results);
     std::vector<hsize_t> rows;
-    for (std::size_t p = 0; p < curves.size(); ++p) rows.push_back(first / replicas + p);
+    for (const auto& p : curves) rows.push_back(p.index);
     for (const auto& column : columns) {
       if (column.type == ColumnType::text) {
         std::vector<std::string> values;

@@ -4,8 +4,8 @@
 
 #include <cstdio>
 
+#include "ensemble/engine/instruction_set.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
-#include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::io {
@@ -30,24 +30,46 @@ std::string integrator(const ensemble::Scene& scene) {
   return std::string(kernels::stepper_names[std::size_t(scene.stepper)]) + " rtol " + tolerances;
 }
 
+/// The start axes of the plan: "n noise × m offset × k kinds × r replicas" where every kind uses noise
+/// and offset, otherwise per group of kinds, e.g. "FM, AFM: 2 noise × 1 offset × 8 replicas; random: 8
+/// replicas; exact: once" (MemberPlan).
+std::string start_axes(const ensemble::Scene& scene) {
+  std::string noisy, plain;
+  for (auto kind : scene.kinds) {
+    std::string& names = ensemble::kind_uses_noise(kind) ? noisy : plain;
+    names += (names.empty() ? "" : ", ") + std::string(ensemble::kind_name(kind));
+  }
+  const std::string noise_offset =
+      format("%zu noise × %zu offset", scene.noise_values.size(), scene.offset_values.size());
+  if (plain.empty())
+    return format("%s × %zu kinds × %d replicas", noise_offset.c_str(), scene.kinds.size(), scene.replicas);
+  std::string text =
+      noisy.empty() ? "" : noisy + ": " + noise_offset + format(" × %d replicas; ", scene.replicas);
+  for (auto kind : scene.kinds)
+    if (!ensemble::kind_uses_noise(kind)) {
+      const std::size_t replicas = scene.replicas_of(kind);
+      text += std::string(ensemble::kind_name(kind)) + ": " +
+              (replicas == 1 ? std::string("once") : format("%zu replicas", replicas)) + "; ";
+    }
+  return text.substr(0, text.size() - 2);
+}
+
 }  // namespace
 
 std::string run_description(const ensemble::Scene& scene, const std::string& name, std::size_t members,
                             int threads) {
-  const std::size_t lanes =
-      scene.lanes == ensemble::LaneKind::simd ? kernels::lane_width<kernels::simd_lane> : 1;
+  const std::size_t lanes = scene.lanes == ensemble::LaneKind::simd ? ensemble::instruction_set().lanes : 1;
   std::string rows;
   for (std::size_t n : scene.row_counts) {
     if (!rows.empty()) rows += ',';
     rows += std::to_string(n);
   }
   std::string text = format(
-      "rotorsweep run %s: %zu members (%zu N × %zu rtol × %zu A × %zu g × %zu noise × %zu offset × %zu kinds "
-      "× "
-      "%d replicas), N = %s, %s, %d threads × %zu lanes\n",
+      "rotorsweep run %s: %zu members (%zu N × %zu rtol × %zu A × %zu g × %s), N = %s, %s, "
+      "%d threads × %zu lanes\n",
       name.c_str(), members, scene.row_counts.size(), scene.rtol_values.size(), scene.A_values.size(),
-      scene.g_values.size(), scene.noise_values.size(), scene.offset_values.size(), scene.kinds.size(),
-      scene.replicas, rows.c_str(), integrator(scene).c_str(), threads, lanes);
+      scene.g_values.size(), start_axes(scene).c_str(), rows.c_str(), integrator(scene).c_str(), threads,
+      lanes);
   if (scene.device == ensemble::Device::gpu)
     text += format("device: %s, one member per GPU thread (%d host threads summarize)\n",
                    ensemble::gpu_info().name.c_str(), threads);

@@ -106,12 +106,15 @@ constexpr std::size_t max_members = 100000000;
   const auto sizes = scene.axis_sizes();
   std::size_t largest = 0;
   std::string product;
-  double count = 1;
   for (std::size_t i = 0; i < sizes.size(); ++i) {
     if (sizes[i] > sizes[largest]) largest = i;
     product += (i ? " × " : "") + std::string(axis_keys[i]) + " " + std::to_string(sizes[i]);
-    count *= double(sizes[i]);
   }
+  double count = 0;  // as Scene::member_count, in floating point
+  for (auto kind : scene.kinds)
+    count += double(scene.replicas_of(kind)) *
+             (ensemble::kind_uses_noise(kind) ? double(sizes[4]) * double(sizes[5]) : 1);
+  for (std::size_t i = 0; i < 4; ++i) count *= double(sizes[i]);
   char total[32];
   std::snprintf(total, sizeof total, "%.3g", count);
   fail(axis_keys[largest], "the plan has " + std::string(total) + " members (" + product + "); at most " +

@@ -1,4 +1,4 @@
-// Python bindings of the sweep: scene validation, the plan's axes, and SweepJob (run on a
+// Python bindings of the sweep: scene validation, the plan's axes and positions, and SweepJob (run on a
 // thread with the GIL released; the Python side polls it, draws progress, and cancels on Ctrl-C).
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -13,6 +13,7 @@
 #include "io/scene_parser.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/stepper_list.hpp"
+#include "numpy_vector.hpp"
 #include "sweep_job.hpp"
 
 namespace py = pybind11;
@@ -74,6 +75,24 @@ void bind_sweep(py::module_& m) {
       py::arg("scene"), py::arg("is_path") = false,
       "The member plan's axes of a scene (TOML text, or a path with is_path): a dict from axis name "
       "to its values, outermost first; raises ValueError naming a bad key.");
+  m.def(
+      "plan_positions",
+      [](const std::string& scene, bool is_path) {
+        const auto parsed = parse(scene, is_path);
+        const ensemble::MemberPlan plan(parsed);
+        const auto sizes = parsed.axis_sizes();
+        std::vector<std::int64_t> flat(plan.size());
+        for (std::size_t i = 0; i < plan.size(); ++i) {
+          const auto at = plan.axis_position(i);
+          std::size_t f = 0;
+          for (std::size_t a = 0; a < sizes.size(); ++a) f = f * sizes[a] + at[a];
+          flat[i] = std::int64_t(f);
+        }
+        return to_numpy(std::move(flat));
+      },
+      py::arg("scene"), py::arg("is_path") = false,
+      "Each member's place on the grid of plan_axes (C-order flat index): initial.noise and offset "
+      "do not multiply random and exact starts, which sit at their first values.");
   m.def(
       "scene_info",
       [](const std::string& scene, bool is_path) {

@@ -31,7 +31,7 @@ def main(h5_path, png_path, kind):
         A, noise = c["A"][:][keep], c["noise"][:][keep]
         data = {name: (c[f"fraction_{name}"][:][keep], c[f"fraction_{name}_low"][:][keep],
                        c[f"fraction_{name}_high"][:][keep]) for name, _ in CATEGORIES}
-        members = int(c["members"][0])
+        members = int(c["members"][:][keep][0])
     noises = np.unique(noise)
     fig, axes = plt.subplots(1, len(noises), figsize=(6.5 * len(noises), 4.5), squeeze=False)
     for ax, eta in zip(axes[0], noises):
@@ -49,7 +49,8 @@ def main(h5_path, png_path, kind):
         ax.set_xlabel("A")
         ax.set_ylabel("fraction of members")
         ax.set_ylim(0, 1)
-        ax.set_title(f"{kind or 'all'} starts, η = {eta:g}, {members} per A (Wilson 95 %)")
+        noise_text = f", η = {eta:g}" if kind in ("FM", "AFM", "") else ""  # random and exact starts have no η
+        ax.set_title(f"{kind or 'all'} starts{noise_text}, {members} per A (Wilson 95 %)")
         ax.legend(loc="center right")
     fig.tight_layout()
     fig.savefig(png_path, dpi=120)

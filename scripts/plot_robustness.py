@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Robustness to the initial condition: D/N against A for each initial noise η (mean over the
-replicas ± its standard error), one panel per initial kind, with the FM→CP and CP→AFM transitions
-(where the CP fraction crosses 1/2) marked per η: between grid points by linear interpolation, or
+replicas ± its standard error), one panel per initial kind (random and exact starts have no η: one
+curve), with the FM→CP and CP→AFM transitions (where the CP fraction crosses 1/2) marked per η: between grid points by linear interpolation, or
 with --bisect located by bisection in A, running the file's own scene (its replicas, schedule and
 numerics) at one A at a time until the bracket is narrower than --tolerance.
 Usage: plot_robustness.py RESULT.h5 OUT.png [--bisect] [--tolerance 1e-3]"""
@@ -28,8 +28,8 @@ def crossings(A, fraction):
     return out
 
 
-def cp_fraction(scene, A, kind, eta):
-    """The CP fraction of the scene's replicas at one A, one initial kind and one noise η."""
+def cp_fraction(scene, A, kind, eta, theta0):
+    """The CP fraction of the scene's replicas at one A, one initial kind, noise η and offset θ0."""
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "build" / "python"))
     import rotorsweep
 
@@ -37,18 +37,19 @@ def cp_fraction(scene, A, kind, eta):
     one["sweep"]["A"] = [float(A)]
     one["initial"]["kinds"] = [kind]
     one["initial"]["noise"] = [float(eta)]
+    one["initial"]["offset"] = [float(theta0)]
     one.pop("output", None)
     ds = rotorsweep.run(one, progress=False, quiet=True)
     regime = ds["regime"].values.astype(str)
     return float(np.mean(regime == "CP"))
 
 
-def bisect(scene, low, high, f_low, kind, eta, tolerance):
+def bisect(scene, low, high, f_low, kind, eta, theta0, tolerance):
     """The A in [low, high] where the CP fraction crosses 1/2 (f_low: its value at low), to tolerance;
     returns the bracket."""
     while high - low > tolerance:
         mid = 0.5 * (low + high)
-        f_mid = cp_fraction(scene, mid, kind, eta)
+        f_mid = cp_fraction(scene, mid, kind, eta, theta0)
         if (f_mid - 0.5) * (f_low - 0.5) > 0:
             low, f_low = mid, f_mid
         else:
@@ -62,7 +63,7 @@ def main(h5_path, png_path, bisection=False, tolerance=1e-3):
             sys.exit(f"error: {h5_path} is incomplete (the run did not finish)")
         scene = tomllib.loads(f.attrs["scene"])
         c = f["curves"]
-        A, noise, rows = c["A"][:], c["noise"][:], c["rows"][:]
+        A, noise, offset, rows = c["A"][:], c["noise"][:], c["offset"][:], c["rows"][:]
         ic = c["ic"].asstr()[:]
         d, sem = c["dissipation_mean"][:] / rows, c["dissipation_sem"][:] / rows
         cp = c["fraction_CP"][:] if "fraction_CP" in c else None
@@ -70,29 +71,34 @@ def main(h5_path, png_path, bisection=False, tolerance=1e-3):
     fig, axes = plt.subplots(1, len(kinds), figsize=(6.5 * len(kinds), 4.5), squeeze=False)
     lines = []
     for ax, kind in zip(axes[0], kinds):
-        for eta in np.unique(noise):
-            sel = (ic == kind) & (noise == eta)
+        uses_noise = kind in ("FM", "AFM")  # random and exact starts have no η or θ0 (one curve)
+        starts = sorted({(e, o) for e, o, k in zip(noise, offset, ic) if k == kind})
+        several_offsets = len({o for _, o in starts}) > 1
+        for eta, theta0 in starts:
+            sel = (ic == kind) & (noise == eta) & (offset == theta0)
             order = np.argsort(A[sel])
             a = A[sel][order]
+            name = (f"η = {eta:g}" + (f", θ0 = {theta0:g}" if several_offsets else "")) if uses_noise else ""
             line = ax.errorbar(a, d[sel][order], yerr=np.nan_to_num(sem[sel][order]), marker=".", ms=3, lw=1,
-                               capsize=2, label=f"η = {eta:g}")
+                               capsize=2, label=name or f"{kind} starts")
+            what = f"{kind} {name}".strip()
             if cp is not None:
                 fraction = cp[sel][order]
                 for x in crossings(a, fraction):
                     if bisection:
                         i = int(np.searchsorted(a, x)) - 1
-                        low, high = bisect(scene, a[i], a[i + 1], fraction[i], kind, eta, tolerance)
+                        low, high = bisect(scene, a[i], a[i + 1], fraction[i], kind, eta, theta0, tolerance)
                         x = 0.5 * (low + high)
-                        lines.append(f"{kind} η = {eta:g}: CP fraction crosses 1/2 at A = {x:.4f} "
+                        lines.append(f"{what}: CP fraction crosses 1/2 at A = {x:.4f} "
                                      f"(bisected to [{low:.4f}, {high:.4f}])")
                     else:
-                        lines.append(f"{kind} η = {eta:g}: CP fraction crosses 1/2 at A = {x:.3f} "
+                        lines.append(f"{what}: CP fraction crosses 1/2 at A = {x:.3f} "
                                      f"(between grid points {a[int(np.searchsorted(a, x)) - 1]:g} and "
                                      f"{a[int(np.searchsorted(a, x))]:g}; --bisect locates it)")
                     ax.axvline(x, color=line[0].get_color(), ls=":", lw=1)
         ax.set_xlabel("A")
         ax.set_ylabel("d = D/N per period")
-        ax.set_title(f"{kind} starts: friction against A for each noise η")
+        ax.set_title(f"{kind} starts: friction against A" + (" for each noise η" if uses_noise else ""))
         ax.legend()
     fig.tight_layout()
     fig.savefig(png_path, dpi=120)

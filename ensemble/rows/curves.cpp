@@ -7,12 +7,13 @@
 namespace rotorsweep::ensemble {
 
 std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
-                                         const std::vector<MemberResult>& results, int replicas) {
+                                         const std::vector<MemberResult>& results) {
   std::vector<CurvePoint> curves;
-  const std::size_t group = std::size_t(replicas);
-  for (std::size_t first = 0; first + group <= members.size(); first += group) {
+  for (std::size_t first = 0, group = 0; first < members.size(); first += group) {
     const Member& m = members[first];
+    for (group = 1; first + group < members.size() && members[first + group].point == m.point;) ++group;
     CurvePoint point;
+    point.index = m.point;
     point.rows = m.rows;
     point.rtol = m.rtol;
     point.A = m.A;

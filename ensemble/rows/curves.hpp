@@ -14,12 +14,13 @@
 namespace rotorsweep::ensemble {
 
 struct CurvePoint {
+  std::size_t index = 0;  ///< the point's position in the plan (row of /curves)
   std::size_t rows = 0;
   double rtol = 0;
   double A = 0, g = 0;
   InitialKind kind = InitialKind::afm;
   double noise = 0, offset = 0;
-  std::size_t members = 0;     ///< replicas at this point
+  std::size_t members = 0;     ///< replicas at this point (Scene::replicas_of its kind)
   std::size_t count = 0;       ///< of them, members that finished with status ok (the statistics use these)
   std::size_t unresolved = 0;  ///< of those, members whose D is not resolved (dissipation_resolved)
   double dissipation_mean = 0, dissipation_std = 0, dissipation_min = 0, dissipation_max = 0;
@@ -33,9 +34,8 @@ struct CurvePoint {
   std::map<std::string, std::size_t> attractor_count;  ///< members per attractor label (failed included)
 };
 
-/// One point per (variant, A, g, noise, offset, kind), in plan order; members of a point are
-/// consecutive (replicas).
+/// One point per run of consecutive members with the same Member::point (its replicas), in order.
 std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
-                                         const std::vector<MemberResult>& results, int replicas);
+                                         const std::vector<MemberResult>& results);
 
 }  // namespace rotorsweep::ensemble

@@ -15,6 +15,8 @@ struct Disorder {
   std::uint64_t seed = 1;                      ///< the realizations' own seed
   std::vector<double> A_rows, anisotropy_rows, coupling_rows;
 
+  /// Whether a realization depends on the replica (some σ > 0).
+  bool drawn() const { return A > 0 || anisotropy > 0 || coupling > 0; }
   bool any() const {
     return A > 0 || anisotropy > 0 || coupling > 0 || !A_rows.empty() || !anisotropy_rows.empty() ||
            !coupling_rows.empty();

@@ -12,6 +12,10 @@ namespace rotorsweep::ensemble {
 enum class InitialKind { fm, afm, random, exact };
 
 std::string_view kind_name(InitialKind kind);
+
+/// Whether a kind's start uses η and θ0 (initial.noise, initial.offset): FM and AFM do; random and
+/// exact starts do not, so those axes do not multiply their members (docs/model.md §2).
+constexpr bool kind_uses_noise(InitialKind kind) { return kind == InitialKind::fm || kind == InitialKind::afm; }
 std::optional<InitialKind> parse_kind(std::string_view name);
 
 struct InitialCondition {

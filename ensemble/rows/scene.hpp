@@ -37,7 +37,7 @@ struct Variant {
 struct Thermal {
   double temperature = 0.0;
   int steps_per_period = 2000;  ///< at least this many steps per period
-  double step_fraction = 0.5;  ///< and steps no longer than step_fraction · g / κ (κ: curvature bound)
+  double step_fraction = 0.5;   ///< and steps no longer than step_fraction · g / κ (κ: curvature bound)
   std::uint64_t seed = 1;
   bool on() const { return temperature > 0; }
 };
@@ -119,10 +119,23 @@ struct Scene {
     return {row_counts.size(),   rtol_values.size(),   A_values.size(), g_values.size(),
             noise_values.size(), offset_values.size(), kinds.size(),    std::size_t(replicas)};
   }
-  /// The number of members (the product of the axis sizes); SIZE_MAX where the product overflows.
+  /// The replicas of a kind: exact starts differ between replicas only through drawn disorder or
+  /// temperature (the replica's streams); without either they run once.
+  std::size_t replicas_of(InitialKind kind) const {
+    return kind != InitialKind::exact || disorder.drawn() || thermal.on() ? std::size_t(replicas) : 1;
+  }
+  /// The number of members: variants × A × g × (noise × offset × the replicas of each kind that uses
+  /// them + the replicas of each kind that does not); SIZE_MAX where that overflows.
   std::size_t member_count() const {
-    std::size_t count = 1;
-    for (std::size_t n : axis_sizes())
+    std::size_t starts = noise_values.size(), block = 0;
+    if (__builtin_mul_overflow(starts, offset_values.size(), &starts)) return SIZE_MAX;
+    for (InitialKind kind : kinds) {
+      std::size_t members = replicas_of(kind);
+      if (kind_uses_noise(kind) && __builtin_mul_overflow(members, starts, &members)) return SIZE_MAX;
+      if (__builtin_add_overflow(block, members, &block)) return SIZE_MAX;
+    }
+    std::size_t count = block;
+    for (std::size_t n : {row_counts.size(), rtol_values.size(), A_values.size(), g_values.size()})
       if (__builtin_mul_overflow(count, n, &count)) return SIZE_MAX;
     return count;
   }

@@ -12,6 +12,7 @@ import os
 import tempfile
 
 import h5py
+import numpy as np
 
 from . import _core, _dataset, _progress, _scene, _slider
 from .landscape import (A_minus, A_star, bifurcation_curve, chamber_map, critical_points, jump_events, jump_friction,
@@ -129,7 +130,8 @@ def open(path, allow_incomplete=False):  # noqa: A001 (rotorsweep.open, like xar
     """A result file as an xarray.Dataset.
 
     Dimensions: the plan's axes rows, rtol, A, g, noise, offset, ic, replica (an axis with one
-    value becomes a scalar coordinate, except A and replica), plus row (per-row angles), period
+    value becomes a scalar coordinate, except A and replica; random and exact starts occupy only the
+    first noise and offset, the other cells are NaN with plan_index -1), plus row (per-row angles), period
     (observables.period_series), sublattice and attractor_label (/curves/attractors). Variables: every /members column over
     the axes; every /curves column as curve_<name> over the axes but replica; per-period series
     as period_<channel>. Each carries description and units attributes; the file's attributes
@@ -145,9 +147,11 @@ def open(path, allow_incomplete=False):  # noqa: A001 (rotorsweep.open, like xar
 
 
 def members(dataset):
-    """The Dataset stacked into one `member` dimension in plan order (a MultiIndex over the axes)."""
+    """The Dataset stacked into one `member` dimension in plan order (a MultiIndex over the axes); the
+    grid's empty cells (noise and offset of random and exact starts) are left out."""
     dims = [axis for axis in _dataset.AXES if axis in dataset.dims]
-    return dataset.stack(member=dims).sortby("plan_index")
+    stacked = dataset.stack(member=dims)
+    return stacked.isel(member=np.flatnonzero(stacked["plan_index"].values >= 0)).sortby("plan_index")
 
 
 def scene_text(scene):

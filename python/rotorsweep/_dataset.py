@@ -77,9 +77,21 @@ def from_hdf5(h5file, allow_incomplete=False):
     shape = tuple(len(values) for values in axes.values())
     dims = tuple(axes)
     members = h5file["members"]
-    count = int(np.prod(shape))
+    # each member's cell on the full grid: noise and offset do not multiply random and exact starts,
+    # whose cells at other noise and offset values stay empty (README "Output file")
+    positions = _core.plan_positions(attrs["scene"])
+    count, cells = len(positions), int(np.prod(shape))
     if members["A"].shape[0] != count:
         raise ValueError(f"'{name}': /members holds {members['A'].shape[0]} members, its scene plans {count}")
+
+    def on_grid(values, at, grid_shape):
+        """values (one row per planned member or point) on the grid, empty cells filled."""
+        if len(at) == int(np.prod(grid_shape)):
+            return values.reshape(grid_shape + values.shape[1:])
+        fill = {"f": np.nan, "b": False, "O": ""}.get(values.dtype.kind, 0)
+        out = np.full((int(np.prod(grid_shape)),) + values.shape[1:], fill, dtype=values.dtype)
+        out[at] = values
+        return out.reshape(grid_shape + values.shape[1:])
 
     # rows not marked done (a run that stopped early) hold nothing: they are checked and shown as missing
     done = np.asarray(members["done"][()], dtype=bool) if "done" in members else np.ones(count, dtype=bool)
@@ -87,9 +99,9 @@ def from_hdf5(h5file, allow_incomplete=False):
     variables = {}
     axis_units = {}  # the plan axes' units, from their /members columns
 
-    def add(var_name, values, description, leading, trailing=(), units=None):
-        values = values.reshape(leading + values.shape[1:])
-        var_dims = dims[: len(leading)] + tuple(trailing)
+    def add(var_name, values, description, at, grid_shape, trailing=(), units=None):
+        values = on_grid(values, at, grid_shape)
+        var_dims = dims[: len(grid_shape)] + tuple(trailing)
         attrs = {"description": description}
         units = units if units is not None else _units(var_name, values)
         if units is not None:
@@ -104,15 +116,18 @@ def from_hdf5(h5file, allow_incomplete=False):
             axis_units[column] = units if units is not None else _units(column, values)
             grid = np.broadcast_to(
                 np.asarray(axes[column]).reshape([-1 if a == column else 1 for a in dims]), shape)
-            if not np.array_equal(values[done], grid.reshape(-1)[done]):
+            if not np.array_equal(values[done], grid.reshape(-1)[positions][done]):
                 raise ValueError(f"'{name}': /members/{column} does not follow the scene's plan")
             continue
-        add(column, values, description, shape, [_second_dimension(column)] if values.ndim == 2 else [], units)
+        add(column, values, description, positions, shape,
+            [_second_dimension(column)] if values.ndim == 2 else [], units)
     if "periods" in members:
         for channel, dataset in members["periods"].items():
             values, description, units = _read(dataset)
-            add("period_" + channel, values, description, shape, ["period"], units)
+            add("period_" + channel, values, description, positions, shape, ["period"], units)
 
+    # a curve point's cell: the cell of its replica 0 (replica is the innermost axis)
+    points = positions[positions % shape[-1] == 0] // shape[-1]
     if "curves" in h5file:
         curves = h5file["curves"]
         point_shape = shape[:-1]
@@ -120,7 +135,7 @@ def from_hdf5(h5file, allow_incomplete=False):
             if not hasattr(dataset, "dtype") or column in AXES:
                 continue
             values, description, units = _read(dataset)
-            add("curve_" + column, values, description, point_shape, (), units)
+            add("curve_" + column, values, description, points, point_shape, (), units)
         if "attractors" in curves:
             group = curves["attractors"]
             labels, _, _ = _read(group["labels"])
@@ -129,11 +144,15 @@ def from_hdf5(h5file, allow_incomplete=False):
                 if column == "labels":
                     continue
                 values, description, units = _read(dataset)
-                add("curve_attractor_" + column, values, description, point_shape, ["attractor_label"], units)
+                add("curve_attractor_" + column, values, description, points, point_shape, ["attractor_label"],
+                    units)
 
-    coords["plan_index"] = (dims, np.arange(count).reshape(shape))
+    plan_index = np.full(cells, -1, dtype=np.int64)
+    plan_index[positions] = np.arange(count)
+    coords["plan_index"] = (dims, plan_index.reshape(shape))
     dataset = xr.Dataset(variables, coords=coords, attrs=attrs)
-    dataset["plan_index"].attrs["description"] = "the member's index in the plan (row of /members)"
+    dataset["plan_index"].attrs["description"] = ("the member's index in the plan (row of /members); -1 where "
+                                                  "the plan has no member (a kind without that noise or offset)")
     for axis, units in axis_units.items():
         if units is not None:
             dataset[axis].attrs["units"] = units
@@ -142,7 +161,19 @@ def from_hdf5(h5file, allow_incomplete=False):
             dataset = dataset.assign_coords({index: np.arange(dataset.sizes[index])})
     if "sublattice" in dataset.dims:
         dataset = dataset.assign_coords(sublattice=["even", "odd"])
-    if not done.all():
-        dataset = dataset.where(dataset["done"])
+    if not done.all() or count != cells:  # members not run and cells without a member become NaN
+        present = np.zeros(cells, dtype=bool)
+        present[positions[done]] = True
+        present = xr.DataArray(present.reshape(shape), dims=dims)
+        planned_points = None
+        for var in list(dataset.data_vars):
+            if "replica" in dataset[var].dims:
+                dataset[var] = dataset[var].where(present)
+            elif count != cells:
+                if planned_points is None:
+                    planned_points = np.zeros(cells // shape[-1], dtype=bool)
+                    planned_points[points] = True
+                    planned_points = xr.DataArray(planned_points.reshape(shape[:-1]), dims=dims[:-1])
+                dataset[var] = dataset[var].where(planned_points)
     single = [axis for axis in AXES if dataset.sizes[axis] == 1 and axis not in ALWAYS_DIMENSIONS]
     return dataset.squeeze(single)

@@ -1,5 +1,6 @@
 // `rotorsweep run` end to end: the paper's table and regime labels read back from the HDF5
-// file, identical dataset bytes for 1 and 2 threads, exit code 2 for every bad scene and plan,
+// file, identical dataset bytes for 1 and 2 threads, the ragged plan (random starts once), exit
+// code 2 for every bad scene and plan,
 // and output files that never destroy the scene or a previous result (also on a full disk).
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -84,6 +85,31 @@ TEST_CASE("one and two threads write identical datasets", "[apps][run]") {
     INFO(path);
     CHECK(one.read_bytes(path) == two.read_bytes(path));
   }
+}
+
+TEST_CASE("noise and offset do not multiply random starts: they run once per replica", "[apps][run]") {
+  const auto dir = scratch_directory("run-ragged");
+  const std::string common =
+      "[model]\nrows = 6\n[drive]\ng = 0.01\n[sweep]\nA = [2, 11]\n"
+      "[schedule]\nrelax_periods = 1\naverage_periods = 1\n[initial]\nreplicas = 2\n";
+  const auto ragged =
+      write_text(dir / "ragged.toml", common + "kinds = [\"random\", \"AFM\"]\nnoise = [0.01, 0.3]\n");
+  const auto random = write_text(dir / "random.toml", common + "kinds = [\"random\"]\n");
+  const auto run = run_cli("run '" + ragged.string() + "' -o '" + (dir / "ragged.h5").string() + "'", dir);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("12 members (1 N × 1 rtol × 2 A × 1 g × AFM: 2 noise × 1 offset × 2 "
+                                         "replicas; random: 2 replicas)"));
+  REQUIRE(
+      run_cli("run '" + random.string() + "' -q -o '" + (dir / "random.h5").string() + "'", dir).exit_code ==
+      0);
+  const auto file = Hdf5Location::open_file((dir / "ragged.h5").string()).open_group("members");
+  const auto alone = Hdf5Location::open_file((dir / "random.h5").string()).open_group("members");
+  CHECK(file.read_doubles("dissipation").size() == 12);
+  // per A: random × 2, AFM η = 0.01 × 2, AFM η = 0.3 × 2; the random members are those of a random-only run
+  const auto D = file.read_doubles("dissipation"), D_random = alone.read_doubles("dissipation");
+  CHECK(std::vector<double>{D[0], D[1], D[6], D[7]} == D_random);
+  const auto curves = Hdf5Location::open_file((dir / "ragged.h5").string()).open_group("curves");
+  CHECK(curves.read_doubles("noise") == std::vector<double>{0.01, 0.01, 0.3, 0.01, 0.01, 0.3});
 }
 
 TEST_CASE("bad scenes exit with code 2 and name the key and leave no file", "[apps][run]") {

@@ -103,7 +103,7 @@ TEST_CASE("every option is read from its key", "[io][scene]") {
   CHECK(scene.lanes == rotorsweep::ensemble::LaneKind::scalar);
   CHECK(scene.h_max == 0.25);
   CHECK(scene.output_path == "x.h5");
-  CHECK(scene.member_count() == 2 * 2 * 3);
+  CHECK(scene.member_count() == 2 * (3 + 1));  // per A: FM × 3 replicas, exact once (nothing drawn)
 }
 
 TEST_CASE("a missing required key is named", "[io][scene]") {

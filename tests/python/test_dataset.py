@@ -64,6 +64,48 @@ def test_the_plan_is_a_stacked_coordinate_in_plan_order():
     assert int(ds.plan_index.sel(A=11.0, g=0.002, noise=0.05, replica=1)) == 12 + 6 + 3 + 1
 
 
+RAGGED = """
+[model]
+rows = 6
+[drive]
+g = 0.01
+[sweep]
+A = [2.0, 11.0]
+[initial]
+kinds = ["random", "FM", "exact"]
+noise = [0.01, 0.3]
+offset = [0.0, 1.0]
+angles = [0.0, 3.14159]
+replicas = 3
+[schedule]
+relax_periods = 1
+average_periods = 1
+"""
+
+
+def test_random_and_exact_starts_sit_once_on_the_noise_and_offset_grid(tmp_path):
+    ds = rotorsweep.run(RAGGED, progress=False, output=tmp_path / "ragged.h5")
+    # per A: random 3 + FM 3 + exact 1 at (η, θ0) = (0.01, 0), then FM 3 at each of three others
+    with h5py.File(tmp_path / "ragged.h5") as f:
+        assert f["members/A"].shape[0] == 2 * (3 + 3 + 1 + 3 * 3)
+        assert f["curves/A"].shape[0] == 2 * (3 + 3)
+        assert list(f["curves/members"][:6]) == [3, 3, 1, 3, 3, 3]
+    random = ds.dissipation.sel(ic="random")
+    assert np.isfinite(random.sel(noise=0.01, offset=0.0)).all()
+    assert np.isnan(random.sel(noise=0.3)).all() and np.isnan(random.sel(offset=1.0)).all()
+    exact = ds.dissipation.sel(ic="exact", noise=0.01, offset=0.0)
+    assert np.isfinite(exact.sel(replica=0)).all() and np.isnan(exact.sel(replica=[1, 2])).all()
+    assert np.isfinite(ds.dissipation.sel(ic="FM")).all()
+    # curves stay over all axes but replica, with their points' member counts
+    assert dict(ds.curve_members.sizes) == {"A": 2, "noise": 2, "offset": 2, "ic": 3}
+    assert ds.curve_members.sel(ic="exact", noise=0.01, offset=0.0).values.tolist() == [1, 1]
+    assert np.isnan(ds.curve_members.sel(ic="random", noise=0.3)).all()
+    # the stacked plan leaves the empty cells out and keeps plan order
+    stacked = rotorsweep.members(ds)
+    assert list(stacked.plan_index.values) == list(range(32))
+    assert rotorsweep.members(rotorsweep.open(tmp_path / "ragged.h5")).sizes["member"] == 32
+
+
 def test_open_reads_a_written_file_into_the_same_dataset(tmp_path):
     in_memory = rotorsweep.run(THREE_AXES, progress=False)
     rotorsweep.run(THREE_AXES, progress=False, output=tmp_path / "three.h5")

@@ -1,6 +1,6 @@
 """scripts/plot_robustness.py: the figure is written, and with --bisect each transition lies inside
 the grid bracket the crossing of 1/2 was found in, located to the tolerance, with the CP fraction on
-either side of the final bracket on either side of 1/2."""
+either side of the final bracket on either side of 1/2; random starts are one curve, without η."""
 
 import pathlib
 import re
@@ -46,6 +46,34 @@ def test_bisection_locates_the_transition_inside_its_grid_bracket(tmp_path, exec
     assert 4.5 <= low < x < high <= 5.0
     assert high - low <= 0.01
     scene = tomllib.loads(SCENE)
-    below = plot_robustness.cp_fraction(scene, low, "AFM", 0.01)
-    above = plot_robustness.cp_fraction(scene, high, "AFM", 0.01)
+    below = plot_robustness.cp_fraction(scene, low, "AFM", 0.01, 0.0)
+    above = plot_robustness.cp_fraction(scene, high, "AFM", 0.01, 0.0)
     assert (below - 0.5) * (above - 0.5) < 0
+
+
+RAGGED = """
+[model]
+rows = 6
+[drive]
+g = [0.01]
+[sweep]
+A = [2.0, 6.0, 11.0]
+[initial]
+kinds = ["random", "AFM"]
+noise = [0.01, 0.3]
+replicas = 2
+[schedule]
+relax_periods = 1
+average_periods = 1
+"""
+
+
+def test_random_starts_are_one_curve_without_a_noise_axis(tmp_path, executable):
+    (tmp_path / "ragged.toml").write_text(RAGGED)
+    result = run_cli(executable, tmp_path / "ragged.toml", tmp_path / "ragged.h5")
+    done = subprocess.run([sys.executable, str(SCRIPT), str(result), str(tmp_path / "ragged.png")],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    transitions = [line.split(":")[0] for line in done.stdout.splitlines() if "crosses" in line]
+    assert any(t.startswith("AFM η = 0.3") for t in transitions), done.stdout
+    assert {t for t in transitions if t.startswith("random")} == {"random"}, done.stdout

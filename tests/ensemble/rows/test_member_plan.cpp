@@ -1,5 +1,5 @@
-// Member plans (ensemble/member_plan): the Cartesian product in its documented order (noise and
-// offset axes included), and initial angles keyed by (seed, replica) only.
+// Member plans (ensemble/member_plan): the product in its documented order, noise and offset only for
+// the kinds that use them, exact starts without replicas unless random; draws keyed by (seed, replica).
 #include <catch2/catch.hpp>
 
 #include "ensemble/rows/member_plan.hpp"
@@ -84,4 +84,69 @@ TEST_CASE("noise and offset are axes of the plan, and a noise scan rescales one 
   for (std::size_t j = 0; j < small.size(); ++j) CHECK(large[j] == Approx(small[j] * 1000).epsilon(1e-12));
   const auto shifted = member_initial_angles(scene, members[7]);  // θ0 = 3
   for (std::size_t j = 0; j < small.size(); ++j) CHECK(shifted[j] == Approx(small[j] + 3.0).epsilon(1e-12));
+}
+
+TEST_CASE("noise and offset do not multiply random and exact starts", "[ensemble][plan]") {
+  Scene scene;
+  scene.row_counts = {4};
+  scene.A_values = {1, 2};
+  scene.g_values = {0.1};
+  scene.noise_values = {0.01, 0.3};
+  scene.offset_values = {0.0, 1.0, 2.0};
+  scene.kinds = {InitialKind::fm, InitialKind::random, InitialKind::afm, InitialKind::exact};
+  scene.exact_angles = {0.5};
+  scene.replicas = 2;
+  // per A: (FM 2 + random 2 + AFM 2 + exact 1) at the first (η, θ0), then 5 × (FM 2 + AFM 2)
+  const std::size_t block = 7 + 5 * 4;
+  REQUIRE(scene.member_count() == 2 * block);
+  const MemberPlan plan(scene);
+  REQUIRE(plan.size() == 2 * block);
+  REQUIRE(plan.point_count() == 2 * (4 + 5 * 2));
+  std::size_t random = 0, exact = 0, point = 0;
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    const Member m = plan[i];
+    CHECK(m.index == i);
+    CHECK(m.A == (i < block ? 1 : 2));
+    if (i > 0 && m.point != plan[i - 1].point) CHECK(m.point == ++point);
+    CHECK(plan.point_first(m.point) == i - std::size_t(m.replica));
+    const auto at = plan.axis_position(i);
+    CHECK(scene.noise_values[at[4]] == m.noise);
+    CHECK(scene.offset_values[at[5]] == m.offset);
+    CHECK(scene.kinds[at[6]] == m.kind);
+    CHECK(at[7] == std::size_t(m.replica));
+    if (!kind_uses_noise(m.kind)) {
+      CHECK(m.noise == 0.01);
+      CHECK(m.offset == 0.0);
+    }
+    random += m.kind == InitialKind::random;
+    exact += m.kind == InitialKind::exact;
+  }
+  CHECK(point + 1 == plan.point_count());
+  CHECK(plan.point_first(plan.point_count()) == plan.size());
+  CHECK(random == 2 * 2);
+  CHECK(exact == 2);
+  // the FM/AFM members of the full product keep their order: η = 0.3, θ0 = 2, AFM, replica 1 is last
+  const Member last = plan[block - 1];
+  CHECK(last.noise == 0.3);
+  CHECK(last.offset == 2.0);
+  CHECK(last.kind == InitialKind::afm);
+  CHECK(last.replica == 1);
+}
+
+TEST_CASE("exact starts take replicas where disorder or temperature draws from them", "[ensemble][plan]") {
+  Scene scene;
+  scene.A_values = {1};
+  scene.g_values = {0.1};
+  scene.kinds = {InitialKind::exact};
+  scene.exact_angles = {0.0};
+  scene.replicas = 5;
+  CHECK(scene.member_count() == 1);
+  scene.disorder.A_rows = {1e-3};  // given rows: the same array for every replica
+  CHECK(scene.member_count() == 1);
+  scene.disorder.A = 1e-6;
+  scene.disorder.A_rows.clear();
+  CHECK(scene.member_count() == 5);
+  scene.disorder.A = 0;
+  scene.thermal.temperature = 0.1;
+  CHECK(scene.member_count() == 5);
 }
