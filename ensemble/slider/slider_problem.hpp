@@ -86,7 +86,7 @@ class SliderProblem {
     Lane& lane = lanes_[l];
     lane.member = slider_plan_member(scene_, plan_index);
     lane.table = std::make_shared<const kernels::SubstrateTable>(
-        substrate_table(scene_, size_, lane.member.separation));
+        substrate_table<V>(scene_, size_, lane.member.separation));
     const kernels::SliderParameters parameters = slider_parameters(scene_, *lane.table);
     if (!primed_) {  // lanes never started compute along with this member's table
       for (std::size_t other = 0; other < width; ++other) {

@@ -33,14 +33,6 @@ double final_displacement(const SliderScene& scene) {
   return std::max(0.0, scene.end - scene.rest) * scene.speed / scene.spacing;
 }
 
-kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation) {
-  const double depth = separation / scene.spacing;
-  // half a lattice constant beyond both ends of the path, so that no step's stage leaves the table
-  return kernels::SubstrateTable(substrate_lattice(scene, size, separation), size.rows, -0.5,
-                                 double(size.columns - 1) + final_displacement(scene) + 0.5,
-                                 depth / scene.nodes_per_depth);
-}
-
 double paper_drive_amplitude(const SliderScene& scene, double separation) {
   return std::pow(scene.spacing / separation, 3) * scene.substrate_moment / scene.moment;
 }

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "kernels/models/slider/slider_model.hpp"
@@ -88,8 +89,16 @@ kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, SliderSize
 /// The slider's displacement at the end of the run, in units of a.
 double final_displacement(const SliderScene& scene);
 
-/// The table of the substrate field over the whole path of a slider of `size` at separation h (m).
-kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation);
+/// The table of the substrate field over the whole path of a slider of `size` at separation h (m), its
+/// direct sums computed lane_width<V> nodes at a time (the same table for every V).
+template <class V>
+kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation) {
+  const double depth = separation / scene.spacing;
+  // half a lattice constant beyond both ends of the path, so that no step's stage leaves the table
+  return kernels::SubstrateTable(substrate_lattice(scene, size, separation), size.rows, -0.5,
+                                 double(size.columns - 1) + final_displacement(scene) + 0.5,
+                                 depth / scene.nodes_per_depth, std::type_identity<V>{});
+}
 
 /// The row model's substrate strength A at separation h (docs/model.md §9 "Mapping onto the row model"):
 /// the paper's point-dipole estimate (a/h)³ m_sub/m ...

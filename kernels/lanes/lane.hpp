@@ -162,6 +162,18 @@ inline auto lane_ldexp(const xsimd::batch<double, Arch>& x, const xsimd::batch<d
 
 #endif  // !__CUDACC__
 
+/// Every lane of v, in one store.
+template <class V>
+ROTORSWEEP_HD inline std::array<double, lane_width<V>> lane_values(const V& v) {
+  if constexpr (lane_width<V> == 1) {
+    return {v};
+  } else {
+    alignas(V::arch_type::alignment()) std::array<double, lane_width<V>> values;
+    v.store_aligned(values.data());
+    return values;
+  }
+}
+
 /// A lane value whose lanes are taken from a per-lane function f(lane).
 template <class V, class F>
 ROTORSWEEP_HD inline V lane_from(F&& f) {

@@ -65,7 +65,6 @@ concept LaneModel = requires(const M& model, M& mutable_model, typename M::Works
   { model.quadrature_count() } -> std::same_as<std::size_t>;
   { model.error_controlled(k) } -> std::same_as<bool>;
   { M::Workspace::storage_size(k) } -> std::convertible_to<std::size_t>;
-  { M::storage_size(k) } -> std::convertible_to<std::size_t>;
   requires std::constructible_from < typename M::Workspace, std::size_t, LaneArena<typename M::lane_type>
   & > ;
   { model.dimension() } -> std::same_as<std::size_t>;

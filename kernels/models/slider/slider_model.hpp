@@ -54,7 +54,12 @@ class SliderModel {
 
   using Parameters = SliderParameters;
 
-  static constexpr std::size_t storage_size(std::size_t rotors) { return 2 * rotors * rotors; }
+  /// P and Q depend only on the offset between two rotors: tables over the (2 columns − 1) × (2 rows − 1)
+  /// offsets, the same in every lane (for 7 × 7 rotors 169 entries instead of 2401, so they stay in L1).
+  static constexpr std::size_t offsets(const SliderGrid& grid) {
+    return (2 * grid.columns - 1) * (2 * grid.rows - 1);
+  }
+  static constexpr std::size_t storage_size(const SliderGrid& grid) { return 2 * offsets(grid); }
 
   struct Workspace {
     static constexpr std::size_t storage_size(std::size_t dimension) {
@@ -80,17 +85,21 @@ class SliderModel {
   };
 
   ROTORSWEEP_HD SliderModel(const SliderGrid& grid, LaneArena<V>& arena)
-      : grid_(grid), n_(grid.rotors()), p_(arena.take(n_ * n_)), q_(arena.take(n_ * n_)) {
+      : grid_(grid),
+        n_(grid.rotors()),
+        width_(2 * grid.columns - 1),
+        p_(arena.take(offsets(grid))),
+        q_(arena.take(offsets(grid))) {
     if (arena.counting()) return;
-    for (std::size_t r = 0; r < n_; ++r)
-      for (std::size_t k = 0; k < n_; ++k) {
-        if (k == r) continue;
-        const double dx = double(column(k)) - double(column(r));
-        const double dy = double(row(k)) - double(row(r));
+    for (std::size_t j = 0; j < 2 * grid.rows - 1; ++j)
+      for (std::size_t i = 0; i < width_; ++i) {
+        const double dx = double(i) - double(grid.columns - 1);
+        const double dy = double(j) - double(grid.rows - 1);
         const double d2 = dx * dx + dy * dy;
+        if (d2 == 0.0) continue;
         const double inv_d3 = 1.0 / (d2 * std::sqrt(d2));
-        q_[r * n_ + k] = V(inv_d3);
-        p_[r * n_ + k] = V((1.0 - 3.0 * dx * dx / d2) * inv_d3);
+        q_[j * width_ + i] = V(inv_d3);
+        p_[j * width_ + i] = V((1.0 - 3.0 * dx * dx / d2) * inv_d3);
       }
   }
 
@@ -133,7 +142,8 @@ class SliderModel {
     for (std::size_t r = 0; r < n_; ++r) {
       // K = ∂τ/∂θ = −∂²E/∂θ²: off the diagonal −(P s_r s_q + Q c_r c_q)
       for (std::size_t k = r + 1; k < n_; ++k) {
-        const V value = lane_neg(p_[r * n_ + k] * w.sin[r] * w.sin[k] + q_[r * n_ + k] * w.cos[r] * w.cos[k]);
+        const std::size_t at = pair(r, k);
+        const V value = lane_neg(p_[at] * w.sin[r] * w.sin[k] + q_[at] * w.cos[r] * w.cos[k]);
         K.entry(r, k) = value;
         K.entry(k, r) = value;
       }
@@ -215,6 +225,10 @@ class SliderModel {
  private:
   ROTORSWEEP_HD std::size_t column(std::size_t r) const { return r % grid_.columns; }
   ROTORSWEEP_HD std::size_t row(std::size_t r) const { return r / grid_.columns; }
+  /// The position in the P and Q tables of rotor k's offset from rotor r.
+  ROTORSWEEP_HD std::size_t pair(std::size_t r, std::size_t k) const {
+    return (row(k) + grid_.rows - 1 - row(r)) * width_ + (column(k) + grid_.columns - 1 - column(r));
+  }
 
   /// f and the quadrature integrands from a prepared workspace.
   ROTORSWEEP_HD void rates(const Workspace& w, const V* y, V* f, V* qdot) const {
@@ -244,24 +258,23 @@ class SliderModel {
     for (std::size_t r = 0; r < n_; ++r) lane_sincos(y[r], w.sin[r], w.cos[r]);
     const V xi = displacement(t);
     for (std::size_t r = 0; r < n_; ++r) {
-      const V x = xi + V(double(column(r)));
-      for (std::size_t l = 0; l < lane_width<V>; ++l) {
-        const RowField b = substrate_[l].at(row(r), lane_get(x, l));
-        const double mu = lane_get(mu_, l);
-        lane_set(w.bx[r], l, mu * b.bx);
-        lane_set(w.bz[r], l, mu * b.bz);
-        lane_set(w.dbx[r], l, mu * b.dbx);
-        lane_set(w.dbz[r], l, mu * b.dbz);
-        if (curvatures)
-          lane_set(w.curvature[r], l, mu * (b.d2bx * lane_get(w.cos[r], l) - b.d2bz * lane_get(w.sin[r], l)));
-      }
+      const RowField<V> b = field_in_lanes(substrate_.data(), row(r), xi + V(double(column(r))));
+      w.bx[r] = mu_ * b.bx;
+      w.bz[r] = mu_ * b.bz;
+      w.dbx[r] = mu_ * b.dbx;
+      w.dbz[r] = mu_ * b.dbz;
+      if (curvatures) w.curvature[r] = mu_ * (b.d2bx * w.cos[r] - b.d2bz * w.sin[r]);
     }
     for (std::size_t r = 0; r < n_; ++r) {
+      // rotor k = j·columns + i in ascending order, its offset from r read along the table's rows
+      const V* p = p_ + pair(r, 0);
+      const V* q = q_ + pair(r, 0);
       V pc(0.0), qs(0.0);
-      for (std::size_t k = 0; k < n_; ++k) {
-        pc += p_[r * n_ + k] * w.cos[k];
-        qs += q_[r * n_ + k] * w.sin[k];
-      }
+      for (std::size_t j = 0, k = 0; j < grid_.rows; ++j, p += width_, q += width_)
+        for (std::size_t i = 0; i < grid_.columns; ++i, ++k) {
+          pc += p[i] * w.cos[k];
+          qs += q[i] * w.sin[k];
+        }
       w.p_cos[r] = pc;
       w.q_sin[r] = qs;
       w.torque[r] = w.sin[r] * pc - w.cos[r] * qs - (w.bx[r] * w.sin[r] + w.bz[r] * w.cos[r]);
@@ -270,7 +283,9 @@ class SliderModel {
 
   SliderGrid grid_;
   std::size_t n_;
-  V *p_, *q_;  ///< P and Q, n × n, zero diagonal, the same in every lane
+  std::size_t width_;  ///< 2 columns − 1: offsets along x in a table row
+  V *p_,
+      *q_;  ///< P and Q per offset (dy + rows − 1, dx + columns − 1), zero at (0, 0), the same in every lane
   std::array<SubstrateTableView, lane_width<V>> substrate_{};
   V mu_ = V(1.0), inertia_ = V(1.0), inv_inertia_ = V(1.0), damping_ = V(1.0), inv_damping_ = V(1.0);
   V speed_ = V(0.0), rest_ = V(0.0);

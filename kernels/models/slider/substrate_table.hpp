@@ -2,20 +2,25 @@
 // §9 "Substrate field"): built once per separation from the direct sum, read per rotor and stage.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include "kernels/lanes/host_device.hpp"
+#include "kernels/lanes/lane.hpp"
 #include "kernels/models/slider/substrate_field.hpp"
 
 namespace rotorsweep::kernels {
 
-/// B_x and B_z with their first two x-derivatives at a point of a slider row.
+/// B_x and B_z with their first two x-derivatives at a point of a slider row (per lane).
+template <class V = double>
 struct RowField {
-  double bx, bz;      ///< field
-  double dbx, dbz;    ///< ∂/∂x
-  double d2bx, d2bz;  ///< ∂²/∂x²
+  V bx, bz;      ///< field
+  V dbx, dbz;    ///< ∂/∂x
+  V d2bx, d2bz;  ///< ∂²/∂x²
 };
 
 /// A read-only view of a table: for each row and each interval [x_begin + i·dx, x_begin + (i+1)·dx],
@@ -28,50 +33,80 @@ struct SubstrateTableView {
   double x_begin = 0.0;
   double inv_dx = 1.0;
 
-  ROTORSWEEP_HD RowField at(std::size_t row, double x) const {
+  /// The coefficients of the interval holding x in `row`, and x's local coordinate s there.
+  ROTORSWEEP_HD const double* interval(std::size_t row, double x, double& s) const {
     const double u = (x - x_begin) * inv_dx;
     double cell = std::floor(u);
     cell = cell < 0.0 ? 0.0 : (cell > double(intervals - 1) ? double(intervals - 1) : cell);
-    const double s = u - cell;
-    const double* c = coefficients + (row * intervals + std::size_t(cell)) * 12;
-    RowField f;
-    horner(c, s, f.bx, f.dbx, f.d2bx);
-    horner(c + 6, s, f.bz, f.dbz, f.d2bz);
-    f.dbx *= inv_dx;
-    f.dbz *= inv_dx;
-    f.d2bx *= inv_dx * inv_dx;
-    f.d2bz *= inv_dx * inv_dx;
-    return f;
-  }
-
- private:
-  ROTORSWEEP_HD static void horner(const double* c, double s, double& p, double& dp, double& d2p) {
-    p = c[5];
-    dp = 0.0;
-    d2p = 0.0;
-    for (int i = 4; i >= 0; --i) {
-      d2p = d2p * s + 2.0 * dp;
-      dp = dp * s + p;
-      p = p * s + c[i];
-    }
+    s = u - cell;
+    return coefficients + (row * intervals + std::size_t(cell)) * 12;
   }
 };
 
+/// The field in `row` at x, lane l read from tables[l] at its own x: the coefficients gathered into
+/// lanes once, the quintics evaluated in lanes (every lane holds the bits of a scalar evaluation).
+template <class V>
+ROTORSWEEP_HD RowField<V> field_in_lanes(const SubstrateTableView* tables, std::size_t row, const V& x) {
+  constexpr std::size_t width = lane_width<V>;
+  const auto xs = lane_values(x);
+  std::array<const double*, width> c;
+  std::array<double, width> s, inv_dx;
+  for (std::size_t l = 0; l < width; ++l) {
+    c[l] = tables[l].interval(row, xs[l], s[l]);
+    inv_dx[l] = tables[l].inv_dx;
+  }
+  const V local = lane_from<V>([&](std::size_t l) { return s[l]; });
+  const V scale = lane_from<V>([&](std::size_t l) { return inv_dx[l]; });
+  // Horner's rule for p, p' and p'' of the quintic whose coefficients start at `first`
+  const auto horner = [&](std::size_t first, V& p, V& dp, V& d2p) {
+    p = lane_from<V>([&](std::size_t l) { return c[l][first + 5]; });
+    dp = V(0.0);
+    d2p = V(0.0);
+    for (std::size_t i = 5; i-- > 0;) {
+      d2p = d2p * local + V(2.0) * dp;
+      dp = dp * local + p;
+      p = p * local + lane_from<V>([&](std::size_t l) { return c[l][first + i]; });
+    }
+  };
+  RowField<V> f;
+  horner(0, f.bx, f.dbx, f.d2bx);
+  horner(6, f.bz, f.dbz, f.d2bz);
+  f.dbx *= scale;
+  f.dbz *= scale;
+  f.d2bx *= scale * scale;
+  f.d2bz *= scale * scale;
+  return f;
+}
+
 /// The table of one separation: rows at y = 0, 1, …, rows − 1 (the slider's rows, in units of a), x
 /// over [x_begin, x_end] in intervals of at most `dx`. Each interval's quintic matches the direct sum's
-/// value, slope and curvature at both ends, so the field is C² and its error falls as dx⁶.
+/// value, slope and curvature at both ends, so the field is C² and its error falls as dx⁶. The direct
+/// sums run at lane_width<V> nodes at once (V of the last argument; every V gives the same table).
 class SubstrateTable {
  public:
-  SubstrateTable(const SubstrateLattice& lattice, std::size_t rows, double x_begin, double x_end, double dx)
+  template <class V = double>
+  SubstrateTable(const SubstrateLattice& lattice, std::size_t rows, double x_begin, double x_end, double dx,
+                 std::type_identity<V> = {})
       : intervals_(std::size_t(std::ceil((x_end - x_begin) / dx - 1e-9))), rows_(rows), x_begin_(x_begin) {
     if (intervals_ == 0) intervals_ = 1;
     const double step = (x_end - x_begin) / double(intervals_);
     inv_dx_ = 1.0 / step;
     coefficients_.resize(rows * intervals_ * 12);
-    std::vector<SubstrateFieldAt> nodes(intervals_ + 1);
+    std::vector<SubstrateFieldAt<>> nodes(intervals_ + 1);
+    constexpr std::size_t width = lane_width<V>;
     for (std::size_t row = 0; row < rows; ++row) {
-      for (std::size_t i = 0; i <= intervals_; ++i)
-        nodes[i] = substrate_field(lattice, x_begin + double(i) * step, double(row));
+      for (std::size_t first = 0; first <= intervals_; first += width) {
+        const auto node = [&](std::size_t l) { return std::min(first + l, intervals_); };
+        const auto field = substrate_field(
+            lattice, lane_from<V>([&](std::size_t l) { return x_begin + double(node(l)) * step; }),
+            double(row));
+        const auto jet = [](const FieldJet<V>& f) {
+          return std::array{lane_values(f.value), lane_values(f.slope), lane_values(f.curvature)};
+        };
+        const auto x = jet(field.x), z = jet(field.z);
+        for (std::size_t l = 0; l < width && first + l <= intervals_; ++l)
+          nodes[first + l] = {{x[0][l], x[1][l], x[2][l]}, {z[0][l], z[1][l], z[2][l]}};
+      }
       for (std::size_t i = 0; i < intervals_; ++i) {
         double* c = coefficients_.data() + (row * intervals_ + i) * 12;
         fit(nodes[i].x, nodes[i + 1].x, step, c);
@@ -84,7 +119,7 @@ class SubstrateTable {
 
  private:
   /// The quintic in s ∈ [0, 1] with the given value, slope and curvature (in x) at both ends.
-  static void fit(const FieldJet& left, const FieldJet& right, double dx, double* c) {
+  static void fit(const FieldJet<>& left, const FieldJet<>& right, double dx, double* c) {
     const double f0 = left.value, d0 = left.slope * dx, e0 = left.curvature * dx * dx;
     const double f1 = right.value, d1 = right.slope * dx, e1 = right.curvature * dx * dx;
     c[0] = f0;

@@ -40,7 +40,7 @@ struct Substrate {
 
 template <class Model>
 Model make_model(SliderGrid grid, const typename Model::Parameters& p) {
-  auto arena = scratch<typename Model::lane_type>(Model::storage_size(grid.rotors()));
+  auto arena = scratch<typename Model::lane_type>(Model::storage_size(grid));
   Model m(grid, arena);
   for (std::size_t l = 0; l < lane_width<typename Model::lane_type>; ++l) m.set_lane(l, p);
   return m;
@@ -339,7 +339,7 @@ TEST_CASE("slider: SIMD lanes equal scalar ones bit for bit", "[kernels][slider]
   std::vector<Substrate> substrates;
   for (std::size_t l = 0; l < W; ++l) substrates.emplace_back(grid, 0.35 + 0.05 * double(l));
   using Simd = SliderModel<simd_lane, true>;
-  auto arena = scratch<simd_lane>(Simd::storage_size(grid.rotors()));
+  auto arena = scratch<simd_lane>(Simd::storage_size(grid));
   Simd vm(grid, arena);
   for (std::size_t l = 0; l < W; ++l) vm.set_lane(l, parameters<Simd>(substrates[l], 0.3));
   using Integrator = AdaptiveIntegrator<Simd, Rodas4<Simd>>;
