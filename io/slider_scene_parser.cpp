@@ -16,8 +16,10 @@ namespace {
 using ensemble::SliderScene;
 
 const std::map<std::string, std::set<std::string>> slider_keys{
-    {"slider", {"columns", "rows", "spacing", "moment", "inertia", "damping", "dynamics"}},
-    {"substrate", {"columns", "rows", "moment", "nodes_per_depth"}},
+    {"slider",
+     {"columns", "rows", "spacing", "moment", "inertia", "damping", "dynamics", "tilt", "shift_x",
+      "shift_y"}},
+    {"substrate", {"columns", "rows", "moment", "nodes_per_depth", "angle"}},
     {"drive", {"speed", "rest", "end"}},
     {"sweep", {"separation"}},
     {"initial", {"kind", "noise", "replicas", "seed", "angles"}},
@@ -27,6 +29,7 @@ const std::map<std::string, std::set<std::string>> slider_keys{
 };
 
 bool positive(double x) { return x > 0; }
+bool within_pi(double x) { return std::fabs(x) <= 3.141592653589793; }
 
 bool up_to_100(long long v) { return v >= 1 && v <= 100; }
 bool up_to_100000(long long v) { return v >= 1 && v <= 100000; }
@@ -113,6 +116,13 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.inertia = slider.number("inertia", scene.inertia, "a number > 0 (kg m²)", positive);
   scene.damping = slider.number("damping", scene.damping, "a number > 0 (kg m²/s)", positive);
   scene.overdamped = slider.choice("dynamics", "inertial", {"inertial", "overdamped"}) == "overdamped";
+  scene.tilt =
+      slider.number("tilt", scene.tilt, "a number from -π to π (rad; the grid turned about z)", within_pi);
+  const auto shift = [&](std::string_view k) {
+    return slider.number(k, 0.0, "a number from -1 to 1 (m)", [](double x) { return std::fabs(x) <= 1.0; });
+  };
+  scene.shift_x = shift("shift_x");
+  scene.shift_y = shift("shift_y");
 
   const Section substrate = section(root, "substrate");
   scene.substrate_columns = count(substrate, "columns", scene.substrate_columns, false);
@@ -122,6 +132,9 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.nodes_per_depth = substrate.number("nodes_per_depth", scene.nodes_per_depth,
                                            "a number from 2 to 1000 (table nodes per separation h)",
                                            [](double x) { return x >= 2 && x <= 1000; });
+  scene.substrate_angle =
+      substrate.number("angle", scene.substrate_angle,
+                       "a number from -π to π (rad; the moments (cos φ, 0, −sin φ))", within_pi);
 
   const Section drive = section(root, "drive");
   scene.speed = drive.number("speed", scene.speed, "a number > 0 (m/s)", positive);

@@ -70,8 +70,8 @@ class SliderProblem {
         grid_(grid),
         size_(size),
         rotors_(kernels::SliderGrid{size.columns, size.rows}.rotors()),
-        loop_(Inertial ? 2 * rotors_ : rotors_, settings(scene),
-              kernels::SliderGrid{size.columns, size.rows}),
+        loop_(Inertial ? 2 * rotors_ : rotors_, settings(scene), kernels::SliderGrid{size.columns, size.rows},
+              slider_placement(scene)),
         f_(loop_.dimension()),
         q_(loop_.dimension()),
         lanes_(width) {}

@@ -25,8 +25,16 @@ kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, SliderSize
   const auto centre_offset = [](std::size_t slider, std::size_t substrate) {
     return 0.5 * double(slider - 1) - 0.5 * double(substrate - 1);
   };
-  return {scene.substrate_columns, scene.substrate_rows, centre_offset(size.columns, scene.substrate_columns),
-          centre_offset(size.rows, scene.substrate_rows), separation / scene.spacing};
+  return {scene.substrate_columns,
+          scene.substrate_rows,
+          centre_offset(size.columns, scene.substrate_columns),
+          centre_offset(size.rows, scene.substrate_rows),
+          separation / scene.spacing,
+          scene.substrate_angle};
+}
+
+kernels::SliderPlacement slider_placement(const SliderScene& scene) {
+  return {scene.tilt, scene.shift_x / scene.spacing, scene.shift_y / scene.spacing};
 }
 
 double final_displacement(const SliderScene& scene) {
@@ -39,13 +47,19 @@ double paper_drive_amplitude(const SliderScene& scene, double separation) {
 
 double field_drive_amplitude(const SliderScene& scene, SliderSize size, double separation) {
   const auto lattice = substrate_lattice(scene, size, separation);
-  const double row = double(size.rows / 2), column = double(size.columns / 2);
+  const auto placement = slider_placement(scene);
+  const std::size_t i = size.columns / 2, j = size.rows / 2;  // the centre rotor's path
+  const double row = placement.path_y(i, j), column = placement.start_x(i, j);
   constexpr int points = 64;
   std::complex<double> bx(0.0), bz(0.0);  // Σ B e^{iφ}: the harmonic's amplitude whatever its phase
   for (int k = 0; k < points; ++k) {
     const double phase = kernels::two_pi * double(k) / points;
     const auto field = kernels::substrate_field(lattice, column + double(k) / points, row);
-    bx += field.x.value * std::polar(1.0, phase);
+    // B_∥ along the rotors' in-plane axis (B_x unless the slider is turned)
+    const double along = placement.turned() ? std::cos(placement.tilt) * field.x.value +
+                                                  std::sin(placement.tilt) * field.y.value
+                                            : field.x.value;
+    bx += along * std::polar(1.0, phase);
     bz += field.z.value * std::polar(1.0, phase);
   }
   return scene.substrate_moment / scene.moment * (std::abs(bx) + std::abs(bz)) / points;

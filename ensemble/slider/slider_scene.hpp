@@ -2,6 +2,7 @@
 // units, and their scaled form (length a, energy μ0 m²/(4π a³), time a/(2π v)) that the kernel integrates.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -35,11 +36,14 @@ struct SliderScene {
   double inertia = 7.48e-10;              ///< I, kg m²
   double damping = 2.5e-6;                ///< γ, kg m²/s
   bool overdamped = false;                ///< γ θ̇ = τ instead of I θ̈ = τ − γ θ̇
+  double tilt = 0.0;                      ///< rad: the grid turned about z (kernels::SliderPlacement)
+  double shift_x = 0.0, shift_y = 0.0;    ///< m: the grid shifted before it is turned
 
   // [substrate]
   std::size_t substrate_columns = 35;
   std::size_t substrate_rows = 35;
   double substrate_moment = 5.03e-2;  ///< m_sub, A m²
+  double substrate_angle = 0.0;       ///< φ, rad: moments (cos φ, 0, −sin φ)
   double nodes_per_depth = 16.0;      ///< table nodes per separation h along x (error ∝ (h / nodes)⁶)
 
   // [drive]
@@ -89,15 +93,26 @@ kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, SliderSize
 /// The slider's displacement at the end of the run, in units of a.
 double final_displacement(const SliderScene& scene);
 
+/// The scene's placement of the rotors over the substrate, in units of a.
+kernels::SliderPlacement slider_placement(const SliderScene& scene);
+
 /// The table of the substrate field over the whole path of a slider of `size` at separation h (m), its
 /// direct sums computed lane_width<V> nodes at a time (the same table for every V).
 template <class V>
 kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation) {
   const double depth = separation / scene.spacing;
+  const kernels::SliderPlacement placement = slider_placement(scene);
+  const kernels::SliderGrid grid{size.columns, size.rows};
+  double first = placement.start_x(0, 0), last = first;
+  for (std::size_t j = 0; j < size.rows; ++j)
+    for (std::size_t i = 0; i < size.columns; ++i) {
+      first = std::min(first, placement.start_x(i, j));
+      last = std::max(last, placement.start_x(i, j));
+    }
   // half a lattice constant beyond both ends of the path, so that no step's stage leaves the table
-  return kernels::SubstrateTable(substrate_lattice(scene, size, separation), size.rows, -0.5,
-                                 double(size.columns - 1) + final_displacement(scene) + 0.5,
-                                 depth / scene.nodes_per_depth, std::type_identity<V>{});
+  return kernels::SubstrateTable(substrate_lattice(scene, size, separation), placement.track_y(grid),
+                                 first - 0.5, last + final_displacement(scene) + 0.5,
+                                 depth / scene.nodes_per_depth, placement.tilt, std::type_identity<V>{});
 }
 
 /// The row model's substrate strength A at separation h (docs/model.md §9 "Mapping onto the row model"):

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/host_device.hpp"
@@ -23,6 +24,35 @@ struct SliderGrid {
   std::size_t columns = 7;  ///< along the sliding direction x
   std::size_t rows = 7;     ///< across it, y
   std::size_t rotors() const { return columns * rows; }
+};
+
+/// Where the rotors sit over the substrate (units of a): rotor (i, j) at R(tilt)·(i + shift_x, j + shift_y)
+/// + (ξ, 0), the grid shifted and then turned about z by `tilt` (its rows and the rotors' axes
+/// together; the rotors turn in the plane of z and (cos tilt, sin tilt, 0)), sliding along x. The
+/// substrate's field is read along tracks: the rows' y, or each rotor's own y when turned.
+struct SliderPlacement {
+  double tilt = 0.0, shift_x = 0.0, shift_y = 0.0;
+
+  ROTORSWEEP_HD bool turned() const { return tilt != 0.0; }
+  /// Rotor (i, j)'s x at ξ = 0 and the y of its path.
+  ROTORSWEEP_HD double start_x(std::size_t i, std::size_t j) const {
+    if (!turned()) return double(i) + shift_x;
+    return std::cos(tilt) * (double(i) + shift_x) - std::sin(tilt) * (double(j) + shift_y);
+  }
+  ROTORSWEEP_HD double path_y(std::size_t i, std::size_t j) const {
+    if (!turned()) return double(j) + shift_y;
+    return std::sin(tilt) * (double(i) + shift_x) + std::cos(tilt) * (double(j) + shift_y);
+  }
+  /// The tracks of a grid: row j's y, or with a turned grid rotor r = j·columns + i's.
+  std::vector<double> track_y(const SliderGrid& grid) const {
+    std::vector<double> y;
+    for (std::size_t j = 0; j < grid.rows; ++j)
+      if (!turned())
+        y.push_back(path_y(0, j));
+      else
+        for (std::size_t i = 0; i < grid.columns; ++i) y.push_back(path_y(i, j));
+    return y;
+  }
 };
 
 /// One lane's parameters, scaled (the same for every lane type and both dynamics).
@@ -59,7 +89,9 @@ class SliderModel {
   static constexpr std::size_t offsets(const SliderGrid& grid) {
     return (2 * grid.columns - 1) * (2 * grid.rows - 1);
   }
-  static constexpr std::size_t storage_size(const SliderGrid& grid) { return 2 * offsets(grid); }
+  static constexpr std::size_t storage_size(const SliderGrid& grid) {
+    return 2 * offsets(grid) + grid.rotors();
+  }
 
   struct Workspace {
     static constexpr std::size_t storage_size(std::size_t dimension) {
@@ -84,13 +116,16 @@ class SliderModel {
     V* curvature;      // μ (∂²B_x/∂x² c_r − ∂²B_z/∂x² s_r)
   };
 
-  ROTORSWEEP_HD SliderModel(const SliderGrid& grid, LaneArena<V>& arena)
+  ROTORSWEEP_HD SliderModel(const SliderGrid& grid, const SliderPlacement& placement, LaneArena<V>& arena)
       : grid_(grid),
         n_(grid.rotors()),
+        turned_(placement.turned()),
         width_(2 * grid.columns - 1),
         p_(arena.take(offsets(grid))),
-        q_(arena.take(offsets(grid))) {
+        q_(arena.take(offsets(grid))),
+        start_x_(arena.take(n_)) {
     if (arena.counting()) return;
+    for (std::size_t r = 0; r < n_; ++r) start_x_[r] = V(placement.start_x(column(r), row(r)));
     for (std::size_t j = 0; j < 2 * grid.rows - 1; ++j)
       for (std::size_t i = 0; i < width_; ++i) {
         const double dx = double(i) - double(grid.columns - 1);
@@ -104,8 +139,9 @@ class SliderModel {
   }
 
   /// The integration loop's form (dimension, arena, arguments): the dimension follows from the grid.
-  ROTORSWEEP_HD SliderModel(std::size_t, LaneArena<V>& arena, const SliderGrid& grid)
-      : SliderModel(grid, arena) {}
+  ROTORSWEEP_HD SliderModel(std::size_t, LaneArena<V>& arena, const SliderGrid& grid,
+                            const SliderPlacement& placement)
+      : SliderModel(grid, placement, arena) {}
 
   ROTORSWEEP_HD void set_lane(std::size_t lane, const Parameters& p) {
     substrate_[lane] = p.substrate;
@@ -258,7 +294,7 @@ class SliderModel {
     for (std::size_t r = 0; r < n_; ++r) lane_sincos(y[r], w.sin[r], w.cos[r]);
     const V xi = displacement(t);
     for (std::size_t r = 0; r < n_; ++r) {
-      const RowField<V> b = field_in_lanes(substrate_.data(), row(r), xi + V(double(column(r))));
+      const TrackField<V> b = field_in_lanes(substrate_.data(), turned_ ? r : row(r), xi + start_x_[r]);
       w.bx[r] = mu_ * b.bx;
       w.bz[r] = mu_ * b.bz;
       w.dbx[r] = mu_ * b.dbx;
@@ -283,9 +319,11 @@ class SliderModel {
 
   SliderGrid grid_;
   std::size_t n_;
+  bool turned_;        ///< a track per rotor (SliderPlacement::turned), else one per row
   std::size_t width_;  ///< 2 columns − 1: offsets along x in a table row
-  V *p_,
-      *q_;  ///< P and Q per offset (dy + rows − 1, dx + columns − 1), zero at (0, 0), the same in every lane
+  /// P and Q per offset (dy + rows − 1, dx + columns − 1), zero at (0, 0), the same in every lane
+  V *p_, *q_;
+  V* start_x_;  ///< each rotor's x at ξ = 0 (SliderPlacement::start_x), the same in every lane
   std::array<SubstrateTableView, lane_width<V>> substrate_{};
   V mu_ = V(1.0), inertia_ = V(1.0), inv_inertia_ = V(1.0), damping_ = V(1.0), inv_damping_ = V(1.0);
   V speed_ = V(0.0), rest_ = V(0.0);

@@ -1,5 +1,5 @@
-// The substrate field along each slider row as piecewise quintic Hermite polynomials in x (docs/model.md
-// §9 "Substrate field"): built once per separation from the direct sum, read per rotor and stage.
+// The substrate field along each slider row (or each rotor's path) as piecewise quintic Hermite polynomials
+// in x (docs/model.md §9 "Substrate field"): built once per separation from the direct sum, read per rotor.
 #pragma once
 
 #include <algorithm>
@@ -15,44 +15,45 @@
 
 namespace rotorsweep::kernels {
 
-/// B_x and B_z with their first two x-derivatives at a point of a slider row (per lane).
+/// B_∥ (B_x unless the slider is turned) and B_z with their first two x-derivatives at a point of a
+/// track (per lane).
 template <class V = double>
-struct RowField {
+struct TrackField {
   V bx, bz;      ///< field
   V dbx, dbz;    ///< ∂/∂x
   V d2bx, d2bz;  ///< ∂²/∂x²
 };
 
-/// A read-only view of a table: for each row and each interval [x_begin + i·dx, x_begin + (i+1)·dx],
-/// six polynomial coefficients in the local coordinate s ∈ [0, 1] for B_x, then six for B_z. Outside
+/// A read-only view of a table: for each track and each interval [x_begin + i·dx, x_begin + (i+1)·dx],
+/// six polynomial coefficients in the local coordinate s ∈ [0, 1] for B_∥, then six for B_z. Outside
 /// [x_begin, x_end] the end intervals' polynomials extrapolate (the builder covers the whole path).
 struct SubstrateTableView {
   const double* coefficients = nullptr;
-  std::size_t rows = 0;
+  std::size_t tracks = 0;
   std::size_t intervals = 0;
   double x_begin = 0.0;
   double inv_dx = 1.0;
 
-  /// The coefficients of the interval holding x in `row`, and x's local coordinate s there.
-  ROTORSWEEP_HD const double* interval(std::size_t row, double x, double& s) const {
+  /// The coefficients of the interval holding x on `track`, and x's local coordinate s there.
+  ROTORSWEEP_HD const double* interval(std::size_t track, double x, double& s) const {
     const double u = (x - x_begin) * inv_dx;
     double cell = std::floor(u);
     cell = cell < 0.0 ? 0.0 : (cell > double(intervals - 1) ? double(intervals - 1) : cell);
     s = u - cell;
-    return coefficients + (row * intervals + std::size_t(cell)) * 12;
+    return coefficients + (track * intervals + std::size_t(cell)) * 12;
   }
 };
 
-/// The field in `row` at x, lane l read from tables[l] at its own x: the coefficients gathered into
+/// The field on `track` at x, lane l read from tables[l] at its own x: the coefficients gathered into
 /// lanes once, the quintics evaluated in lanes (every lane holds the bits of a scalar evaluation).
 template <class V>
-ROTORSWEEP_HD RowField<V> field_in_lanes(const SubstrateTableView* tables, std::size_t row, const V& x) {
+ROTORSWEEP_HD TrackField<V> field_in_lanes(const SubstrateTableView* tables, std::size_t track, const V& x) {
   constexpr std::size_t width = lane_width<V>;
   const auto xs = lane_values(x);
   std::array<const double*, width> c;
   std::array<double, width> s, inv_dx;
   for (std::size_t l = 0; l < width; ++l) {
-    c[l] = tables[l].interval(row, xs[l], s[l]);
+    c[l] = tables[l].interval(track, xs[l], s[l]);
     inv_dx[l] = tables[l].inv_dx;
   }
   const V local = lane_from<V>([&](std::size_t l) { return s[l]; });
@@ -68,7 +69,7 @@ ROTORSWEEP_HD RowField<V> field_in_lanes(const SubstrateTableView* tables, std::
       p = p * local + lane_from<V>([&](std::size_t l) { return c[l][first + i]; });
     }
   };
-  RowField<V> f;
+  TrackField<V> f;
   horner(0, f.bx, f.dbx, f.d2bx);
   horner(6, f.bz, f.dbz, f.d2bz);
   f.dbx *= scale;
@@ -78,44 +79,54 @@ ROTORSWEEP_HD RowField<V> field_in_lanes(const SubstrateTableView* tables, std::
   return f;
 }
 
-/// The table of one separation: rows at y = 0, 1, …, rows − 1 (the slider's rows, in units of a), x
-/// over [x_begin, x_end] in intervals of at most `dx`. Each interval's quintic matches the direct sum's
-/// value, slope and curvature at both ends, so the field is C² and its error falls as dx⁶. The direct
-/// sums run at lane_width<V> nodes at once (V of the last argument; every V gives the same table).
+/// The table of one separation: tracks at y = track_y[t] (units of a; a slider's rows, or each rotor's
+/// path when the slider is turned), x over [x_begin, x_end] in intervals of at most `dx`. It holds B_∥,
+/// the field along the rotors' in-plane axis (cos τ, sin τ, 0) for a slider turned by τ = tilt (B_x at
+/// τ = 0), and B_z. Each interval's quintic matches the direct sum's value, slope and curvature at both
+/// ends, so the field is C² and its error falls as dx⁶. The direct sums run at lane_width<V> nodes at
+/// once (V of the last argument; every V gives the same table).
 class SubstrateTable {
  public:
   template <class V = double>
-  SubstrateTable(const SubstrateLattice& lattice, std::size_t rows, double x_begin, double x_end, double dx,
-                 std::type_identity<V> = {})
-      : intervals_(std::size_t(std::ceil((x_end - x_begin) / dx - 1e-9))), rows_(rows), x_begin_(x_begin) {
+  SubstrateTable(const SubstrateLattice& lattice, const std::vector<double>& track_y, double x_begin,
+                 double x_end, double dx, double tilt = 0.0, std::type_identity<V> = {})
+      : intervals_(std::size_t(std::ceil((x_end - x_begin) / dx - 1e-9))),
+        tracks_(track_y.size()),
+        x_begin_(x_begin) {
     if (intervals_ == 0) intervals_ = 1;
     const double step = (x_end - x_begin) / double(intervals_);
     inv_dx_ = 1.0 / step;
-    coefficients_.resize(rows * intervals_ * 12);
+    coefficients_.resize(tracks_ * intervals_ * 12);
     std::vector<SubstrateFieldAt<>> nodes(intervals_ + 1);
     constexpr std::size_t width = lane_width<V>;
-    for (std::size_t row = 0; row < rows; ++row) {
+    const V c(std::cos(tilt)), s(std::sin(tilt));
+    const auto along_axis = [&](const FieldJet<V>& x, const FieldJet<V>& y) {
+      if (tilt == 0.0) return x;
+      return FieldJet<V>{c * x.value + s * y.value, c * x.slope + s * y.slope,
+                         c * x.curvature + s * y.curvature};
+    };
+    for (std::size_t track = 0; track < tracks_; ++track) {
       for (std::size_t first = 0; first <= intervals_; first += width) {
         const auto node = [&](std::size_t l) { return std::min(first + l, intervals_); };
         const auto field = substrate_field(
             lattice, lane_from<V>([&](std::size_t l) { return x_begin + double(node(l)) * step; }),
-            double(row));
+            track_y[track]);
         const auto jet = [](const FieldJet<V>& f) {
           return std::array{lane_values(f.value), lane_values(f.slope), lane_values(f.curvature)};
         };
-        const auto x = jet(field.x), z = jet(field.z);
+        const auto x = jet(along_axis(field.x, field.y)), z = jet(field.z);
         for (std::size_t l = 0; l < width && first + l <= intervals_; ++l)
-          nodes[first + l] = {{x[0][l], x[1][l], x[2][l]}, {z[0][l], z[1][l], z[2][l]}};
+          nodes[first + l] = {{x[0][l], x[1][l], x[2][l]}, {}, {z[0][l], z[1][l], z[2][l]}};
       }
       for (std::size_t i = 0; i < intervals_; ++i) {
-        double* c = coefficients_.data() + (row * intervals_ + i) * 12;
-        fit(nodes[i].x, nodes[i + 1].x, step, c);
-        fit(nodes[i].z, nodes[i + 1].z, step, c + 6);
+        double* coefficients = coefficients_.data() + (track * intervals_ + i) * 12;
+        fit(nodes[i].x, nodes[i + 1].x, step, coefficients);
+        fit(nodes[i].z, nodes[i + 1].z, step, coefficients + 6);
       }
     }
   }
 
-  SubstrateTableView view() const { return {coefficients_.data(), rows_, intervals_, x_begin_, inv_dx_}; }
+  SubstrateTableView view() const { return {coefficients_.data(), tracks_, intervals_, x_begin_, inv_dx_}; }
 
  private:
   /// The quintic in s ∈ [0, 1] with the given value, slope and curvature (in x) at both ends.
@@ -132,7 +143,7 @@ class SubstrateTable {
 
   std::vector<double> coefficients_;
   std::size_t intervals_;
-  std::size_t rows_;
+  std::size_t tracks_;
   double x_begin_;
   double inv_dx_ = 1.0;
 };

@@ -210,6 +210,40 @@ TEST_CASE("slider scan: a given start, row by row from the smallest y, gives the
   CHECK(flipped.members[0].friction_series != drawn.members[0].friction_series);
 }
 
+TEST_CASE("slider scan: a shifted, turned slider over turned moments balances its energy, and φ = π flips B",
+          "[ensemble][slider]") {
+  const std::string base =
+      "[substrate]\ncolumns = 11\nrows = 11\n[drive]\nrest = 0.5\nend = 4.5\n[sweep]\nseparation = [7e-3, "
+      "9e-3]\n[observables]\nsamples_per_period = 20\n[numerics]\nrtol = 1e-7\natol = 1e-7\n";
+  const std::string start = "[initial]\nkind = \"given\"\nangles = [0.1, -0.05, 0.02, 3.1, 3.2, 3.15]\n";
+  const std::string flipped_start =
+      "[initial]\nkind = \"given\"\nangles = [3.2415926535897931, 3.0915926535897931, 3.1615926535897931, "
+      "6.2415926535897931, 6.3415926535897931, 6.2915926535897931]\n";
+  const std::string grid = "[slider]\ncolumns = 3\nrows = 2\n";
+  const auto plain = scan(grid + start + base);
+  const std::string placed = "[slider]\ncolumns = 3\nrows = 2\ntilt = 0.3\nshift_x = 4e-3\nshift_y = -3e-3\n";
+  for (const std::string& variant : {grid + "tilt = 0.3\n", grid + "shift_x = 4e-3\nshift_y = -3e-3\n",
+                                     placed + "[substrate]\nangle = 0.4\n"}) {
+    INFO(variant);
+    const std::string text =
+        variant.find("[substrate]") != std::string::npos
+            ? variant + "columns = 11\nrows = 11\n" + start + base.substr(base.find("[drive]"))
+            : variant + start + base;
+    const auto moved = scan(text);
+    for (std::size_t k = 0; k < 2; ++k) {
+      CHECK(moved.members[k].status == "ok");
+      for (const double balance : moved.members[k].period_balance) CHECK(std::fabs(balance) < 1e-5);
+      CHECK(moved.members[k].friction != Approx(plain.members[k].friction).epsilon(1e-6));
+    }
+  }
+  // moments turned by π reverse the substrate's field: every angle + π gives the same run
+  const auto reversed = scan(placed + "[substrate]\ncolumns = 11\nrows = 11\nangle = 3.141592653589793\n" +
+                             flipped_start + base.substr(base.find("[drive]")));
+  const auto forward = scan(placed + start + base);
+  for (std::size_t k = 0; k < 2; ++k)
+    CHECK(reversed.members[k].friction == Approx(forward.members[k].friction).epsilon(1e-6));
+}
+
 TEST_CASE("slider scenes: bad keys are named with what they must be", "[ensemble][slider][scene]") {
   using rotorsweep::io::parse_slider_scene_text;
   using rotorsweep::io::SceneError;
@@ -249,6 +283,11 @@ TEST_CASE("slider scenes: bad keys are named with what they must be", "[ensemble
              Catch::Contains("single slider size"));
   CHECK_THAT(message(sep + "[slider]\ncolumns = 2\nrows = 1\n[initial]\nangles = [0, 1e5]\n"),
              Catch::Contains("from -1e4 to 1e4"));
+  CHECK_THAT(message(sep + "[slider]\ntilt = 4\n"),
+             Catch::Contains("slider.tilt") && Catch::Contains("-π to π"));
+  CHECK_THAT(message(sep + "[slider]\nshift_y = -2\n"),
+             Catch::Contains("slider.shift_y") && Catch::Contains("from -1 to 1 (m)"));
+  CHECK_THAT(message(sep + "[substrate]\nangle = \"up\"\n"), Catch::Contains("substrate.angle"));
   CHECK_THAT(message("[model]\nrows = 3\n"), Catch::Contains("the scene sections are"));
   CHECK_THAT(message(""), Catch::Contains("sweep.separation") && Catch::Contains("is missing"));
   CHECK(message("[sweep]\nseparation = [8e-3]\n") ==

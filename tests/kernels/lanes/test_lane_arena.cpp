@@ -55,7 +55,8 @@ void check_leaves() {
   }
   for (const SliderGrid grid : {SliderGrid{3, 2}, SliderGrid{7, 7}}) {
     using Slider = SliderModel<V, true>;
-    check_takes<V>(Slider::storage_size(grid), [&](LaneArena<V>& a) { const Slider m(grid, a); });
+    check_takes<V>(Slider::storage_size(grid),
+                   [&](LaneArena<V>& a) { const Slider m(grid, SliderPlacement{}, a); });
     check_takes<V>(Slider::Workspace::storage_size(2 * grid.rotors()),
                    [&](LaneArena<V>& a) { const typename Slider::Workspace w(2 * grid.rotors(), a); });
   }

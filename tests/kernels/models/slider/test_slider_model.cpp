@@ -1,7 +1,8 @@
 // The slider model (kernels/models/slider/slider_model.hpp, docs/model.md §9): torques and the drive's force
-// against differences of the energy, the linearization against differences of f, a 2 × 1 slider against a
-// direct dense-sum reference, energy conservation and the energy balance, the overdamped limit, SIMD =
-// scalar.
+// against differences of the energy (also for a shifted, turned slider over turned substrate moments), the
+// linearization against differences of f, a 2 × 1 slider against a direct dense-sum reference, energy
+// conservation and the energy balance, the overdamped limit, SIMD = scalar.
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -32,16 +33,34 @@ constexpr double speed = 1.0 / two_pi;
 struct Substrate {
   SubstrateLattice lattice;
   SubstrateTable table;
-  Substrate(SliderGrid grid, double eta, std::size_t size = 35)
-      : lattice{size, size, 0.5 * double(grid.columns - 1) - 0.5 * double(size - 1),
-                0.5 * double(grid.rows - 1) - 0.5 * double(size - 1), eta},
-        table(lattice, grid.rows, -0.5, double(grid.columns) + 5.5, eta / 32.0) {}
+  Substrate(SliderGrid grid, double eta, std::size_t size = 35, const SliderPlacement& placement = {},
+            double angle = 0.0)
+      : lattice{size,
+                size,
+                0.5 * double(grid.columns - 1) - 0.5 * double(size - 1),
+                0.5 * double(grid.rows - 1) - 0.5 * double(size - 1),
+                eta,
+                angle},
+        table(lattice, placement.track_y(grid), start_x_range(grid, placement)[0] - 0.5,
+              start_x_range(grid, placement)[1] + 5.5, eta / 32.0, placement.tilt) {}
+
+  /// The smallest and largest x of the rotors at ξ = 0.
+  static std::array<double, 2> start_x_range(SliderGrid grid, const SliderPlacement& placement) {
+    std::array<double, 2> range{placement.start_x(0, 0), placement.start_x(0, 0)};
+    for (std::size_t j = 0; j < grid.rows; ++j)
+      for (std::size_t i = 0; i < grid.columns; ++i) {
+        range[0] = std::min(range[0], placement.start_x(i, j));
+        range[1] = std::max(range[1], placement.start_x(i, j));
+      }
+    return range;
+  }
 };
 
 template <class Model>
-Model make_model(SliderGrid grid, const typename Model::Parameters& p) {
+Model make_model(SliderGrid grid, const typename Model::Parameters& p,
+                 const SliderPlacement& placement = {}) {
   auto arena = scratch<typename Model::lane_type>(Model::storage_size(grid));
-  Model m(grid, arena);
+  Model m(grid, placement, arena);
   for (std::size_t l = 0; l < lane_width<typename Model::lane_type>; ++l) m.set_lane(l, p);
   return m;
 }
@@ -71,9 +90,10 @@ double energy_of(const Model& m, const std::vector<double>& y, double t) {
 }
 
 /// The energy of a slider by plain dipole sums of 3-vectors: every slider pair and every slider–substrate
-/// pair, (m1·m2 − 3 (m1·r̂)(m2·r̂))/r³ in units of μ0 m²/(4π a³), the substrate moments μ x̂.
+/// pair, (m1·m2 − 3 (m1·r̂)(m2·r̂))/r³ in units of μ0 m²/(4π a³); rotor (i, j) at R(τ)(i + s_x, j + s_y)
+/// + (ξ, 0) with moment (cos θ cos τ, cos θ sin τ, −sin θ), the substrate moments μ (cos φ, 0, −sin φ).
 double dense_sum_energy(SliderGrid grid, const SubstrateLattice& lattice, const std::vector<double>& theta,
-                        double xi) {
+                        double xi, const SliderPlacement& placement = {}) {
   using Vec = std::array<double, 3>;
   const auto pair = [](const Vec& m1, const Vec& m2, const Vec& r) {
     const double d = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
@@ -82,10 +102,17 @@ double dense_sum_energy(SliderGrid grid, const SubstrateLattice& lattice, const 
     return (m1[0] * m2[0] + m1[1] * m2[1] + m1[2] * m2[2] - 3.0 * m1r * m2r) / (d * d * d);
   };
   const std::size_t n = grid.rotors();
+  const double c = std::cos(placement.tilt), s = std::sin(placement.tilt);
   const auto position = [&](std::size_t r) {
-    return Vec{double(r % grid.columns) + xi, double(r / grid.columns), 0.0};
+    const double x = double(r % grid.columns) + placement.shift_x,
+                 y = double(r / grid.columns) + placement.shift_y;
+    return Vec{c * x - s * y + xi, s * x + c * y, 0.0};
   };
-  const auto moment = [&](std::size_t r) { return Vec{std::cos(theta[r]), 0.0, -std::sin(theta[r])}; };
+  const auto moment = [&](std::size_t r) {
+    return Vec{std::cos(theta[r]) * c, std::cos(theta[r]) * s, -std::sin(theta[r])};
+  };
+  const Vec substrate_moment{moment_ratio * std::cos(lattice.angle), 0.0,
+                             -moment_ratio * std::sin(lattice.angle)};
   double e = 0.0;
   for (std::size_t r = 0; r < n; ++r) {
     for (std::size_t q = r + 1; q < n; ++q) {
@@ -96,7 +123,7 @@ double dense_sum_energy(SliderGrid grid, const SubstrateLattice& lattice, const 
       for (std::size_t l = 0; l < lattice.rows; ++l) {
         const Vec a = position(r);
         const Vec b{lattice.x_offset + double(k), lattice.y_offset + double(l), -lattice.depth};
-        e += pair(moment(r), {moment_ratio, 0.0, 0.0}, {b[0] - a[0], b[1] - a[1], b[2] - a[2]});
+        e += pair(moment(r), substrate_moment, {b[0] - a[0], b[1] - a[1], b[2] - a[2]});
       }
   }
   return e;
@@ -135,6 +162,41 @@ TEST_CASE("slider: torques and the drive's force are minus the energy's gradient
   // F = ∂E/∂ξ and ξ = v (t − t_rest)
   const double force = (energy_of(m, theta, t + e) - energy_of(m, theta, t - e)) / (2 * e * speed);
   CHECK(q[Overdamped::impulse_index] == Catch::Detail::Approx(force).epsilon(1e-7).margin(1e-8));
+}
+
+TEST_CASE("slider: shifted, turned, over turned substrate moments: energy and gradient",
+          "[kernels][slider]") {
+  const SliderGrid grid{4, 3};
+  const SliderPlacement placement{0.4, 0.3, -0.2};  // tilt (rad), shift_x, shift_y (a)
+  const Substrate s(grid, 0.45, 35, placement, 0.7);
+  const auto m = make_model<Overdamped>(grid, parameters<Overdamped>(s, 1.0), placement);
+  const auto theta = random_state(grid.rotors(), 11, 0.0);
+  for (const double t : {0.5, 4.0, 13.0}) {
+    const double xi = speed * std::max(0.0, t - 1.0);
+    CHECK(energy_of(m, theta, t) ==
+          Catch::Detail::Approx(dense_sum_energy(grid, s.lattice, theta, xi, placement)).epsilon(1e-8));
+  }
+  // the default placement and substrate are not this one
+  const Substrate plain(grid, 0.45);
+  const auto untouched = make_model<Overdamped>(grid, parameters<Overdamped>(plain, 1.0));
+  CHECK(std::fabs(energy_of(untouched, theta, 4.0) - energy_of(m, theta, 4.0)) > 1e-3);
+  const double t = 7.3, e = 1e-5;
+  auto w = rotorsweep::testing::workspace(m);
+  std::vector<double> f(grid.rotors()), q(2);
+  m.evaluate(w, theta.data(), t, f.data(), q.data());
+  for (std::size_t r = 0; r < grid.rotors(); ++r) {
+    auto plus = theta, minus = theta;
+    plus[r] += e;
+    minus[r] -= e;
+    const double torque = -(dense_sum_energy(grid, s.lattice, plus, speed * (t - 1.0), placement) -
+                            dense_sum_energy(grid, s.lattice, minus, speed * (t - 1.0), placement)) /
+                          (2 * e);
+    CHECK(f[r] * damping == Catch::Detail::Approx(torque).epsilon(1e-6).margin(1e-8));
+  }
+  const double force = (dense_sum_energy(grid, s.lattice, theta, speed * (t + e - 1.0), placement) -
+                        dense_sum_energy(grid, s.lattice, theta, speed * (t - e - 1.0), placement)) /
+                       (2 * e * speed);
+  CHECK(q[Overdamped::impulse_index] == Catch::Detail::Approx(force).epsilon(1e-6).margin(1e-8));
 }
 
 TEST_CASE("slider: Jacobian, df/dt and integrand gradients match central differences", "[kernels][slider]") {
@@ -340,7 +402,7 @@ TEST_CASE("slider: SIMD lanes equal scalar ones bit for bit", "[kernels][slider]
   for (std::size_t l = 0; l < W; ++l) substrates.emplace_back(grid, 0.35 + 0.05 * double(l));
   using Simd = SliderModel<simd_lane, true>;
   auto arena = scratch<simd_lane>(Simd::storage_size(grid));
-  Simd vm(grid, arena);
+  Simd vm(grid, SliderPlacement{}, arena);
   for (std::size_t l = 0; l < W; ++l) vm.set_lane(l, parameters<Simd>(substrates[l], 0.3));
   using Integrator = AdaptiveIntegrator<Simd, Rodas4<Simd>>;
   auto vi = rotorsweep::testing::integrator<Integrator>(vm, Tolerances{1e-7, 1e-7});
