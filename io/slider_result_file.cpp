@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include "ensemble/engine/replica_statistics.hpp"
@@ -147,6 +149,42 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
       c.push_back(vector_column("series/angles", samples,
                                 "θ of rotor j·columns + i (column i along x, row j), rad, unwrapped",
                                 &SliderMember::angles, hsize_t(scene.sizes.front().rotors())));
+    if (scene.energies) {
+      c.push_back(vector_column("series/substrate_energy", samples, "the substrate's energy −Σ m·B, J",
+                                &SliderMember::substrate_energy_series));
+      c.push_back(
+          vector_column("series/pair_energy", samples,
+                        "the slider's internal energy: its dipole pairs, J (energy − the two: kinetic)",
+                        &SliderMember::pair_energy_series));
+    }
+    if (scene.field) {
+      c.push_back(
+          vector_column("series/field_axis", samples,
+                        "mean substrate field at the rotors' sites along their in-plane axis (x unless "
+                        "slider.tilt), T",
+                        &SliderMember::field_axis_series));
+      c.push_back(vector_column("series/field_z", samples,
+                                "mean substrate field at the rotors' sites along z, T",
+                                &SliderMember::field_z_series));
+    }
+    if (scene.sublattices)
+      for (const auto& [parity, axis, z, torque] :
+           {std::tuple{"even", &SliderMember::moment_axis_even_series, &SliderMember::moment_z_even_series,
+                       &SliderMember::torque_even_series},
+            {"odd", &SliderMember::moment_axis_odd_series, &SliderMember::moment_z_odd_series,
+             &SliderMember::torque_odd_series}}) {
+        const std::string rows =
+            std::string(parity) + " rows (j = " + (parity[0] == 'e' ? "0, 2" : "1, 3") + ", …)";
+        c.push_back(vector_column("series/moment_axis_" + std::string(parity), samples,
+                                  "mean unit moment of the " + rows + ": its in-plane part cos θ", axis));
+        c.push_back(vector_column("series/moment_z_" + std::string(parity), samples,
+                                  "mean unit moment of the " + rows + ": its z part −sin θ", z));
+        c.push_back(vector_column("series/torque_" + std::string(parity), samples,
+                                  "mean substrate torque on a rotor of the " + rows + ", N m", torque));
+      }
+    if (scene.torques)
+      c.push_back(vector_column("series/torques", samples, "substrate torque on rotor j·columns + i, N m",
+                                &SliderMember::torques, hsize_t(scene.sizes.front().rotors())));
   }
   // SI units of the dimensional columns; the others are "1"
   const std::map<std::string, std::string> units{{"members/separation", "m"},
@@ -157,7 +195,14 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
                                                  {"members/period_stored", "J"},
                                                  {"series/friction", "N"},
                                                  {"series/energy", "J"},
-                                                 {"series/angles", "rad"}};
+                                                 {"series/angles", "rad"},
+                                                 {"series/substrate_energy", "J"},
+                                                 {"series/pair_energy", "J"},
+                                                 {"series/field_axis", "T"},
+                                                 {"series/field_z", "T"},
+                                                 {"series/torque_even", "N m"},
+                                                 {"series/torque_odd", "N m"},
+                                                 {"series/torques", "N m"}};
   for (auto& column : c)
     if (const auto at = units.find(column.name); at != units.end()) column.units = at->second;
   return c;

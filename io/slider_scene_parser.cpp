@@ -23,7 +23,8 @@ const std::map<std::string, std::set<std::string>> slider_keys{
     {"drive", {"speed", "rest", "end"}},
     {"sweep", {"separation"}},
     {"initial", {"kind", "noise", "replicas", "seed", "angles"}},
-    {"observables", {"samples_per_period", "series", "angles"}},
+    {"observables",
+     {"samples_per_period", "series", "angles", "energies", "field", "sublattices", "torques"}},
     {"numerics", {"stepper", "rtol", "atol", "max_steps"}},
     {"output", {"path"}},
 };
@@ -172,8 +173,20 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.samples_per_period = count(observables, "samples_per_period", scene.samples_per_period, false);
   scene.series = observables.boolean("series", scene.series);
   scene.angles = observables.boolean("angles", scene.angles);
-  if (scene.angles && scene.sizes.size() > 1)
-    fail(observables.key("angles"), "needs a single slider size (each size has its own number of rotors)");
+  scene.energies = observables.boolean("energies", scene.energies);
+  scene.field = observables.boolean("field", scene.field);
+  scene.sublattices = observables.boolean("sublattices", scene.sublattices);
+  scene.torques = observables.boolean("torques", scene.torques);
+  for (const auto& [key, asked] : {std::pair{"angles", scene.angles},
+                                   {"energies", scene.energies},
+                                   {"field", scene.field},
+                                   {"sublattices", scene.sublattices},
+                                   {"torques", scene.torques}})
+    if (asked && !scene.series)
+      fail(observables.key(key), "is a time series: it needs observables.series = true");
+  for (const auto& [key, asked] : {std::pair{"angles", scene.angles}, {"torques", scene.torques}})
+    if (asked && scene.sizes.size() > 1)
+      fail(observables.key(key), "needs a single slider size (each size has its own number of rotors)");
 
   const Section numerics = section(root, "numerics");
   scene.stepper = read_stepper(numerics);

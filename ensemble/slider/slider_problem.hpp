@@ -3,10 +3,12 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "ensemble/engine/integration_loop.hpp"
@@ -105,6 +107,9 @@ class SliderProblem {
     for (auto* series : {&m.friction_series, &m.order_x_series, &m.order_y_series, &m.energy_series})
       series->assign(samples, 0.0);
     if (scene_.angles) m.angles.assign(samples * rotors_, 0.0);
+    for (const auto& [asked, series] : rotor_series(m))
+      if (asked) series->assign(samples, 0.0);
+    if (scene_.torques) m.torques.assign(samples * rotors_, 0.0);
     lane.sample = 0;
     lane.impulse_at.clear();
     lane.dissipation_at.clear();
@@ -186,6 +191,65 @@ class SliderProblem {
     m.energy_series[k] = kernels::lane_get(energy_, l) * units_.energy;
     if (scene_.angles)
       for (std::size_t r = 0; r < rotors_; ++r) m.angles[k * rotors_ + r] = loop_.component(l, r);
+    if (scene_.rotor_observables()) record_rotors(l, k);
+  }
+
+  /// The series of sums over the rotors with whether the scene asks for each (SliderScene::energies,
+  /// field, sublattices), in record_rotors' order.
+  std::array<std::pair<bool, std::vector<double>*>, 10> rotor_series(SliderMember& m) const {
+    const bool e = scene_.energies, f = scene_.field, s = scene_.sublattices;
+    return {{{e, &m.substrate_energy_series},
+             {e, &m.pair_energy_series},
+             {f, &m.field_axis_series},
+             {f, &m.field_z_series},
+             {s, &m.moment_axis_even_series},
+             {s, &m.moment_z_even_series},
+             {s, &m.torque_even_series},
+             {s, &m.moment_axis_odd_series},
+             {s, &m.moment_z_odd_series},
+             {s, &m.torque_odd_series}}};
+  }
+
+  /// Sample k of lane l's rotor observables, from the workspace of the sample's evaluation (scaled:
+  /// μB in the workspace, energies and torques in E0).
+  void record_rotors(std::size_t l, std::size_t k) {
+    const auto& w = loop_.workspace();
+    SliderMember& m = lanes_[l].member;
+    double substrate = 0.0, pairs = 0.0, field_axis = 0.0, field_z = 0.0;
+    std::array<double, 2> moment_axis{}, moment_z{}, torque{}, count{};  // even rows, odd rows
+    for (std::size_t r = 0; r < rotors_; ++r) {
+      const double c = kernels::lane_get(w.cos[r], l), s = kernels::lane_get(w.sin[r], l);
+      const double bx = kernels::lane_get(w.bx[r], l), bz = kernels::lane_get(w.bz[r], l);
+      const double tau = -(bx * s + bz * c);  // the substrate's part of τ_r (docs/model.md §9)
+      substrate -= bx * c - bz * s;
+      pairs += 0.5 * (c * kernels::lane_get(w.p_cos[r], l) + s * kernels::lane_get(w.q_sin[r], l));
+      field_axis += bx;
+      field_z += bz;
+      const std::size_t parity = (r / size_.columns) % 2;
+      moment_axis[parity] += c;
+      moment_z[parity] -= s;
+      torque[parity] += tau;
+      count[parity] += 1.0;
+      if (scene_.torques) m.torques[k * rotors_ + r] = tau * units_.energy;
+    }
+    // μB in units of μ0 m_sub/(4π a³) times m_sub/m: B = μB · μ0 m/(4π a³), in T
+    const double tesla = 1e-7 * scene_.moment / std::pow(scene_.spacing, 3), n = double(rotors_);
+    const auto mean = [&](double sum, std::size_t parity) {
+      return count[parity] ? sum / count[parity] : 0.0;
+    };
+    const std::array<double, 10> values{substrate * units_.energy,
+                                        pairs * units_.energy,
+                                        field_axis / n * tesla,
+                                        field_z / n * tesla,
+                                        mean(moment_axis[0], 0),
+                                        mean(moment_z[0], 0),
+                                        mean(torque[0], 0) * units_.energy,
+                                        mean(moment_axis[1], 1),
+                                        mean(moment_z[1], 1),
+                                        mean(torque[1], 1) * units_.energy};
+    const auto series = rotor_series(m);
+    for (std::size_t v = 0; v < series.size(); ++v)
+      if (series[v].first) (*series[v].second)[k] = values[v];
   }
 
   /// Friction, work, dissipation, stored energy and balance per period, the mean friction and

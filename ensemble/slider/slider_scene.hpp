@@ -67,6 +67,12 @@ struct SliderScene {
   std::size_t samples_per_period = 50;  ///< time series resolution (a period is a / v)
   bool series = true;                   ///< store the time series (friction, order parameters, energy)
   bool angles = false;                  ///< store every rotor's angle at every sample
+  bool energies = false;                ///< the substrate and pair energies apart, per sample
+  bool field = false;                   ///< the mean substrate field over the rotors' sites, per sample
+  bool sublattices = false;             ///< even and odd rows' mean moment and substrate torque, per sample
+  bool torques = false;                 ///< every rotor's substrate torque at every sample
+  /// Whether samples need the substrate's field and torques rotor by rotor.
+  bool rotor_observables() const { return energies || field || sublattices || torques; }
 
   // [numerics]
   kernels::StepperId stepper = kernels::default_stepper();

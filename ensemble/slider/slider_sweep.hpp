@@ -23,6 +23,14 @@ struct SliderMember {
   double order_x = 0.0, order_y = 0.0;  ///< mean over the samples while sliding
   std::vector<double> friction_series, order_x_series, order_y_series, energy_series;  ///< per sample
   std::vector<double> angles;  ///< samples × rotors, when asked for
+  /// Per sample, when asked for (SliderScene::energies, field, sublattices): the substrate energy
+  /// −Σ m·B and the pairs' energy (J); the mean B_∥ and B_z at the rotors' sites (T); the mean unit
+  /// moment (its in-plane and z parts) and substrate torque (N m) of the even rows j = 0, 2, … and of
+  /// the odd rows.
+  std::vector<double> substrate_energy_series, pair_energy_series, field_axis_series, field_z_series;
+  std::vector<double> moment_axis_even_series, moment_z_even_series, torque_even_series;
+  std::vector<double> moment_axis_odd_series, moment_z_odd_series, torque_odd_series;
+  std::vector<double> torques;  ///< samples × rotors: each rotor's substrate torque (N m), when asked for
   double steps_accepted = 0.0, steps_rejected = 0.0;
   std::string status = "ok";
 };

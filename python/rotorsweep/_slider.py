@@ -51,7 +51,8 @@ def from_hdf5(h5file):
     for name, dataset in series.items():
         if name == "time":
             continue
-        variables[f"series_{name}"] = xr.Variable(("member", "time"), dataset[:], _attrs(name, dataset))
+        dims = ("member", "time", "rotor")[: dataset.ndim]  # angles and torques: one per rotor
+        variables[f"series_{name}"] = xr.Variable(dims, dataset[:], _attrs(name, dataset))
     coords = {"member": index, "time": ("time", series["time"][:], {"units": "s"})}
     dataset = xr.Dataset(variables, coords=coords, attrs=attrs).unstack("member")
     sizes = list(dict.fromkeys(size))  # the scene's order

@@ -94,3 +94,58 @@ def test_sigint_stops_a_slider_scan_and_writes_nothing(tmp_path):
     assert process.returncode == 130
     assert out.strip() == "interrupted"
     assert list(tmp_path.iterdir()) == []
+
+
+MU0_4PI = 1e-7
+
+
+def dipole_field(m, r):
+    """B (T) at displacements r (…, 3) from a moment m (A m²): μ0/4π [3 r̂ (m·r̂) − m] / r³."""
+    d = np.linalg.norm(r, axis=-1, keepdims=True)
+    rhat = r / d
+    return MU0_4PI * (3 * rhat * (rhat @ m)[..., None] - m) / d**3
+
+
+def test_substrate_field_torques_energies_and_sublattices_equal_plain_dipole_sums(tmp_path):
+    """At the first sample (the slider at rest, the given start) every rotor observable against vector
+    sums of dipole fields written here from the definitions, and the energies against the total."""
+    a, h, m, m_sub, columns, rows, substrate = 16e-3, 8e-3, 4.57e-2, 5.03e-2, 3, 2, 9
+    angles = [0.1, -0.2, 0.4, 3.0, 2.9, 3.3]
+    scene = {"slider": {"columns": columns, "rows": rows}, "substrate": {"columns": substrate, "rows": substrate},
+             "drive": {"rest": 0.5, "end": 2.5}, "sweep": {"separation": [h]},
+             "initial": {"kind": "given", "angles": angles},
+             "observables": {"samples_per_period": 10, "angles": True, "energies": True, "field": True,
+                             "sublattices": True, "torques": True}}
+    ds = rotorsweep.slider(scene, progress=False, output=tmp_path / "observed.h5")
+    with h5py.File(tmp_path / "observed.h5") as f:
+        s = {name: f["series"][name][0, 0] for name in f["series"] if name != "time"}
+    theta = np.asarray(angles)
+    i, j = np.arange(columns * rows) % columns, np.arange(columns * rows) // columns
+    sites = np.stack([i * a, j * a, np.zeros_like(i, dtype=float)], axis=-1)
+    offset = lambda n, big: 0.5 * (n - 1) - 0.5 * (big - 1)  # noqa: E731 (substrate centred under the slider)
+    k, l = np.meshgrid(np.arange(substrate), np.arange(substrate), indexing="ij")
+    magnets = np.stack([(offset(columns, substrate) + k.ravel()) * a, (offset(rows, substrate) + l.ravel()) * a,
+                        np.full(k.size, -h)], axis=-1)
+    B = np.array([dipole_field(np.array([m_sub, 0, 0]), site - magnets).sum(axis=0) for site in sites])
+    moments = m * np.stack([np.cos(theta), np.zeros_like(theta), -np.sin(theta)], axis=-1)
+    torque = m * (-np.sin(theta) * B[:, 0] - np.cos(theta) * B[:, 2])  # ∂(m·B)/∂θ
+    np.testing.assert_allclose(s["torques"], torque, rtol=1e-6)
+    np.testing.assert_allclose([s["field_axis"], s["field_z"]], [B[:, 0].mean(), B[:, 2].mean()], rtol=1e-6,
+                               atol=1e-12)  # B_z averages to 0 over a centred slider
+    np.testing.assert_allclose(s["substrate_energy"], -np.sum(moments * B), rtol=1e-6)
+    pairs = 0.0
+    for p in range(len(theta)):
+        for q in range(p + 1, len(theta)):
+            pairs -= moments[p] @ dipole_field(moments[q], sites[p] - sites[q])
+    np.testing.assert_allclose(s["pair_energy"], pairs, rtol=1e-9)
+    np.testing.assert_allclose(s["energy"], s["substrate_energy"] + s["pair_energy"], rtol=1e-12)  # at rest
+    even, odd = j % 2 == 0, j % 2 == 1
+    np.testing.assert_allclose([s["moment_axis_even"], s["moment_z_even"], s["torque_even"]],
+                               [np.cos(theta[even]).mean(), -np.sin(theta[even]).mean(), torque[even].mean()],
+                               rtol=1e-6)
+    np.testing.assert_allclose([s["moment_axis_odd"], s["moment_z_odd"], s["torque_odd"]],
+                               [np.cos(theta[odd]).mean(), -np.sin(theta[odd]).mean(), torque[odd].mean()],
+                               rtol=1e-6)
+    # the Dataset carries them as series over time, per rotor where they are
+    assert ds["series_torques"].dims[-2:] == ("time", "rotor") and ds["series_angles"].dims[-1] == "rotor"
+    assert ds["series_field_axis"].attrs["units"] == "T" and ds["series_torques"].attrs["units"] == "N m"

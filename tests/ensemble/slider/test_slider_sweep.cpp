@@ -288,6 +288,11 @@ TEST_CASE("slider scenes: bad keys are named with what they must be", "[ensemble
   CHECK_THAT(message(sep + "[slider]\nshift_y = -2\n"),
              Catch::Contains("slider.shift_y") && Catch::Contains("from -1 to 1 (m)"));
   CHECK_THAT(message(sep + "[substrate]\nangle = \"up\"\n"), Catch::Contains("substrate.angle"));
+  CHECK_THAT(message(sep + "[observables]\nseries = false\nfield = true\n"),
+             Catch::Contains("observables.field") && Catch::Contains("observables.series = true"));
+  CHECK_THAT(message(sep + "[slider]\ncolumns = [2, 3]\nrows = 2\n[observables]\ntorques = true\n"),
+             Catch::Contains("observables.torques") && Catch::Contains("single slider size"));
+  CHECK_THAT(message(sep + "[observables]\nenergies = 1\n"), Catch::Contains("observables.energies"));
   CHECK_THAT(message("[model]\nrows = 3\n"), Catch::Contains("the scene sections are"));
   CHECK_THAT(message(""), Catch::Contains("sweep.separation") && Catch::Contains("is missing"));
   CHECK(message("[sweep]\nseparation = [8e-3]\n") ==
