@@ -136,6 +136,14 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
       vector_column("members/period_balance", periods,
                     "(work − dissipation − stored) / max(|work|, dissipation): the energy balance's residual",
                     &SliderMember::period_balance));
+  if (scene.forces) {
+    c.push_back(vector_column("members/period_force_y", periods,
+                              "mean force on the slider along y per period (trapezoidal over the samples), N",
+                              &SliderMember::period_force_y));
+    c.push_back(vector_column("members/period_force_z", periods,
+                              "mean force on the slider along z per period (trapezoidal over the samples), N",
+                              &SliderMember::period_force_z));
+  }
   if (scene.series) {
     c.push_back(vector_column("series/friction", samples, "drive force F = ∂E/∂x_s, N",
                               &SliderMember::friction_series));
@@ -182,6 +190,17 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
         c.push_back(vector_column("series/torque_" + std::string(parity), samples,
                                   "mean substrate torque on a rotor of the " + rows + ", N m", torque));
       }
+    if (scene.forces) {
+      c.push_back(
+          vector_column("series/force_x", samples,
+                        "the substrate's force on the slider along x, N (−friction: the drive holds it)",
+                        &SliderMember::force_x_series));
+      c.push_back(vector_column("series/force_y", samples, "the substrate's force on the slider along y, N",
+                                &SliderMember::force_y_series));
+      c.push_back(vector_column("series/force_z", samples,
+                                "the substrate's force on the slider along z (up, away from it), N",
+                                &SliderMember::force_z_series));
+    }
     if (scene.torques)
       c.push_back(vector_column("series/torques", samples, "substrate torque on rotor j·columns + i, N m",
                                 &SliderMember::torques, hsize_t(scene.sizes.front().rotors())));
@@ -202,7 +221,12 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
                                                  {"series/field_z", "T"},
                                                  {"series/torque_even", "N m"},
                                                  {"series/torque_odd", "N m"},
-                                                 {"series/torques", "N m"}};
+                                                 {"series/torques", "N m"},
+                                                 {"series/force_x", "N"},
+                                                 {"series/force_y", "N"},
+                                                 {"series/force_z", "N"},
+                                                 {"members/period_force_y", "N"},
+                                                 {"members/period_force_z", "N"}};
   for (auto& column : c)
     if (const auto at = units.find(column.name); at != units.end()) column.units = at->second;
   return c;

@@ -24,7 +24,7 @@ const std::map<std::string, std::set<std::string>> slider_keys{
     {"sweep", {"separation"}},
     {"initial", {"kind", "noise", "replicas", "seed", "angles"}},
     {"observables",
-     {"samples_per_period", "series", "angles", "energies", "field", "sublattices", "torques"}},
+     {"samples_per_period", "series", "angles", "energies", "field", "sublattices", "torques", "forces"}},
     {"numerics", {"stepper", "rtol", "atol", "max_steps"}},
     {"output", {"path"}},
 };
@@ -177,11 +177,13 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.field = observables.boolean("field", scene.field);
   scene.sublattices = observables.boolean("sublattices", scene.sublattices);
   scene.torques = observables.boolean("torques", scene.torques);
+  scene.forces = observables.boolean("forces", scene.forces);
   for (const auto& [key, asked] : {std::pair{"angles", scene.angles},
                                    {"energies", scene.energies},
                                    {"field", scene.field},
                                    {"sublattices", scene.sublattices},
-                                   {"torques", scene.torques}})
+                                   {"torques", scene.torques},
+                                   {"forces", scene.forces}})
     if (asked && !scene.series)
       fail(observables.key(key), "is a time series: it needs observables.series = true");
   for (const auto& [key, asked] : {std::pair{"angles", scene.angles}, {"torques", scene.torques}})

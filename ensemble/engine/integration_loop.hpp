@@ -60,6 +60,8 @@ class IntegrationLoop {
 
   std::size_t dimension() const { return model_.dimension(); }
   const Model& model() const { return model_; }
+  /// The model, for what a lane needs beyond its Parameters (the slider's gradient tables).
+  Model& model() { return model_; }
   const kernels::LaneState<V>& state() const { return state_; }
   /// Scratch for observers that evaluate the model (row profiles).
   typename Model::Workspace& workspace() { return work_; }

@@ -90,10 +90,15 @@ class SliderProblem {
     lane.table = std::make_shared<const kernels::SubstrateTable>(
         substrate_table<V>(scene_, size_, lane.member.separation));
     const kernels::SliderParameters parameters = slider_parameters(scene_, *lane.table);
-    if (!primed_) {  // lanes never started compute along with this member's table
+    if (scene_.forces) build_gradient_tables(l);
+    if (!primed_) {  // lanes never started compute along with this member's tables
       for (std::size_t other = 0; other < width; ++other) {
         lanes_[other].table = lane.table;
         loop_.set_parameters(other, parameters);
+        if (scene_.forces) {
+          lanes_[other].gradient = lane.gradient;
+          set_gradient_tables(other);
+        }
       }
       primed_ = true;
     }
@@ -110,6 +115,9 @@ class SliderProblem {
     for (const auto& [asked, series] : rotor_series(m))
       if (asked) series->assign(samples, 0.0);
     if (scene_.torques) m.torques.assign(samples * rotors_, 0.0);
+    if (scene_.forces)
+      for (auto* series : {&m.force_x_series, &m.force_y_series, &m.force_z_series})
+        series->assign(samples, 0.0);
     lane.sample = 0;
     lane.impulse_at.clear();
     lane.dissipation_at.clear();
@@ -159,7 +167,9 @@ class SliderProblem {
  private:
   struct Lane {
     SliderMember member;
-    std::shared_ptr<const kernels::SubstrateTable> table;       ///< kept while the model may read it
+    std::shared_ptr<const kernels::SubstrateTable> table;  ///< kept while the model may read it
+    /// With SliderScene::forces: the tables at shifted tracks (SliderModel::GradientTable order)
+    std::array<std::shared_ptr<const kernels::SubstrateTable>, 4> gradient;
     std::size_t sample = 0;                                     ///< the next sample
     std::vector<double> impulse_at, dissipation_at, energy_at;  ///< at each period boundary (scaled)
   };
@@ -171,11 +181,28 @@ class SliderProblem {
     return {{scene.rtol, scene.atol}, limits};
   }
 
+  /// Lane l's member's four tables at shifted tracks, for the forces' y- and z-derivatives.
+  void build_gradient_tables(std::size_t l) {
+    Lane& lane = lanes_[l];
+    const double d = Model::gradient_step, h = lane.member.separation;
+    const std::array<std::pair<double, double>, 4> shifts{{{d, 0.0}, {-d, 0.0}, {0.0, d}, {0.0, -d}}};
+    for (std::size_t g = 0; g < 4; ++g)
+      lane.gradient[g] = std::make_shared<const kernels::SubstrateTable>(
+          substrate_table<V>(scene_, size_, h, shifts[g].first, shifts[g].second));
+    set_gradient_tables(l);
+  }
+  void set_gradient_tables(std::size_t l) {
+    std::array<kernels::SubstrateTableView, 4> views;
+    for (std::size_t g = 0; g < 4; ++g) views[g] = lanes_[l].gradient[g]->view();
+    loop_.model().set_gradient_tables(l, views);
+  }
+
   /// The model at every lane's state, once per step attempt (the lanes sampled in it share it).
   void evaluate() {
     if (evaluated_) return;
     const auto& s = loop_.state();
     const Model& model = loop_.model();
+    if (scene_.forces) model.forces(loop_.workspace(), s.y, s.t, force_x_, force_y_, force_z_);
     model.evaluate(loop_.workspace(), s.y, s.t, f_.data(), q_.data());
     model.order_parameters(s.y, along_x_, across_y_);
     energy_ = model.energy(loop_.workspace(), s.y, s.t) + model.kinetic_energy(s.y);
@@ -192,6 +219,11 @@ class SliderProblem {
     if (scene_.angles)
       for (std::size_t r = 0; r < rotors_; ++r) m.angles[k * rotors_ + r] = loop_.component(l, r);
     if (scene_.rotor_observables()) record_rotors(l, k);
+    if (scene_.forces) {
+      m.force_x_series[k] = kernels::lane_get(force_x_, l) * units_.force;
+      m.force_y_series[k] = kernels::lane_get(force_y_, l) * units_.force;
+      m.force_z_series[k] = kernels::lane_get(force_z_, l) * units_.force;
+    }
   }
 
   /// The series of sums over the rotors with whether the scene asks for each (SliderScene::energies,
@@ -288,6 +320,26 @@ class SliderProblem {
     }
     m.order_x = ok && count ? sum_x / double(count) : nan;
     m.order_y = ok && count ? sum_y / double(count) : nan;
+    if (scene_.forces) {
+      m.period_force_y = period_means(m.force_y_series, ok);
+      m.period_force_z = period_means(m.force_z_series, ok);
+    }
+  }
+
+  /// Per period of sliding, the trapezoidal mean of a series over the period's samples (NaN when the
+  /// member failed).
+  std::vector<double> period_means(const std::vector<double>& series, bool ok) const {
+    const auto start =
+        std::size_t(std::find(grid_.index.begin(), grid_.index.end(), 0L) - grid_.index.begin());
+    const std::size_t per = grid_.samples_per_period;
+    std::vector<double> means;
+    for (std::size_t p = 0; p < grid_.periods; ++p) {
+      const std::size_t first = start + p * per;
+      double sum = 0.5 * (series[first] + series[first + per]);
+      for (std::size_t k = first + 1; k < first + per; ++k) sum += series[k];
+      means.push_back(ok ? sum / double(per) : std::nan(""));
+    }
+    return means;
   }
 
   const SliderScene& scene_;
@@ -298,6 +350,7 @@ class SliderProblem {
   Loop loop_;
   kernels::lane_vector<V> f_, q_;  ///< the sample's evaluation: f and the quadratures' integrands
   V along_x_ = V(0.0), across_y_ = V(0.0), energy_ = V(0.0);
+  V force_x_ = V(0.0), force_y_ = V(0.0), force_z_ = V(0.0);  ///< with SliderScene::forces
   bool evaluated_ = false;  ///< f_, q_, the order parameters and energy_ are the current state's
   bool primed_ = false;     ///< every lane has parameters
   std::vector<Lane> lanes_;

@@ -71,6 +71,7 @@ struct SliderScene {
   bool field = false;                   ///< the mean substrate field over the rotors' sites, per sample
   bool sublattices = false;             ///< even and odd rows' mean moment and substrate torque, per sample
   bool torques = false;                 ///< every rotor's substrate torque at every sample
+  bool forces = false;                  ///< the substrate's force on the slider, F_x, F_y, F_z, per sample
   /// Whether samples need the substrate's field and torques rotor by rotor.
   bool rotor_observables() const { return energies || field || sublattices || torques; }
 
@@ -103,9 +104,11 @@ double final_displacement(const SliderScene& scene);
 kernels::SliderPlacement slider_placement(const SliderScene& scene);
 
 /// The table of the substrate field over the whole path of a slider of `size` at separation h (m), its
-/// direct sums computed lane_width<V> nodes at a time (the same table for every V).
+/// direct sums computed lane_width<V> nodes at a time (the same table for every V); with dy, ddepth
+/// (units of a) its tracks moved along y and the substrate farther by ddepth (SliderModel::forces).
 template <class V>
-kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation) {
+kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation,
+                                        double dy = 0.0, double ddepth = 0.0) {
   const double depth = separation / scene.spacing;
   const kernels::SliderPlacement placement = slider_placement(scene);
   const kernels::SliderGrid grid{size.columns, size.rows};
@@ -115,9 +118,12 @@ kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize siz
       first = std::min(first, placement.start_x(i, j));
       last = std::max(last, placement.start_x(i, j));
     }
+  auto lattice = substrate_lattice(scene, size, separation);
+  lattice.depth += ddepth;
+  auto tracks = placement.track_y(grid);
+  for (double& y : tracks) y += dy;
   // half a lattice constant beyond both ends of the path, so that no step's stage leaves the table
-  return kernels::SubstrateTable(substrate_lattice(scene, size, separation), placement.track_y(grid),
-                                 first - 0.5, last + final_displacement(scene) + 0.5,
+  return kernels::SubstrateTable(lattice, tracks, first - 0.5, last + final_displacement(scene) + 0.5,
                                  depth / scene.nodes_per_depth, placement.tilt, std::type_identity<V>{});
 }
 

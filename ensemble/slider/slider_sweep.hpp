@@ -31,6 +31,9 @@ struct SliderMember {
   std::vector<double> moment_axis_even_series, moment_z_even_series, torque_even_series;
   std::vector<double> moment_axis_odd_series, moment_z_odd_series, torque_odd_series;
   std::vector<double> torques;  ///< samples × rotors: each rotor's substrate torque (N m), when asked for
+  /// The substrate's force on the slider per sample (N; SliderScene::forces; F_x = −friction), and the
+  /// per-period means of F_y and F_z (trapezoidal over the period's samples).
+  std::vector<double> force_x_series, force_y_series, force_z_series, period_force_y, period_force_z;
   double steps_accepted = 0.0, steps_rejected = 0.0;
   std::string status = "ok";
 };

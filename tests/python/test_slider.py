@@ -149,3 +149,34 @@ def test_substrate_field_torques_energies_and_sublattices_equal_plain_dipole_sum
     # the Dataset carries them as series over time, per rotor where they are
     assert ds["series_torques"].dims[-2:] == ("time", "rotor") and ds["series_angles"].dims[-1] == "rotor"
     assert ds["series_field_axis"].attrs["units"] == "T" and ds["series_torques"].attrs["units"] == "N m"
+
+
+def test_the_force_on_the_slider_equals_the_gradient_of_plain_dipole_sums(tmp_path):
+    """F = Σ_r ∇(m_r·B)(p_r) at the first sample, by central differences of vector sums of dipole fields
+    written here; F_x is minus the drive's force, bit for bit."""
+    a, h, m, m_sub, columns, rows, substrate = 16e-3, 8e-3, 4.57e-2, 5.03e-2, 3, 2, 9
+    angles = [0.1, -0.2, 0.4, 3.0, 2.9, 3.3]
+    scene = {"slider": {"columns": columns, "rows": rows, "shift_y": 2e-3}, "substrate": {"columns": substrate,
+             "rows": substrate}, "drive": {"rest": 0.5, "end": 2.5}, "sweep": {"separation": [h]},
+             "initial": {"kind": "given", "angles": angles},
+             "observables": {"samples_per_period": 10, "forces": True}}
+    ds = rotorsweep.slider(scene, progress=False)
+    theta = np.asarray(angles)
+    i, j = np.arange(columns * rows) % columns, np.arange(columns * rows) // columns
+    sites = np.stack([i * a, j * a + 2e-3, np.zeros_like(i, dtype=float)], axis=-1)
+    offset = lambda n, big: 0.5 * (n - 1) - 0.5 * (big - 1)  # noqa: E731
+    k, l = np.meshgrid(np.arange(substrate), np.arange(substrate), indexing="ij")
+    magnets = np.stack([(offset(columns, substrate) + k.ravel()) * a, (offset(rows, substrate) + l.ravel()) * a,
+                        np.full(k.size, -h)], axis=-1)
+    moments = m * np.stack([np.cos(theta), np.zeros_like(theta), -np.sin(theta)], axis=-1)
+
+    def energy(shift):
+        return -sum(moment @ dipole_field(np.array([m_sub, 0, 0]), site + shift - magnets).sum(axis=0)
+                    for moment, site in zip(moments, sites))
+
+    e = 1e-7
+    force = [-(energy(e * unit) - energy(-e * unit)) / (2 * e) for unit in np.eye(3)]
+    first = {name: float(ds[f"series_{name}"].values.ravel()[0]) for name in ("force_x", "force_y", "force_z")}
+    np.testing.assert_allclose([first["force_x"], first["force_y"], first["force_z"]], force, rtol=1e-6)
+    np.testing.assert_array_equal(ds["series_force_x"].values, -ds["series_friction"].values)
+    assert ds["period_force_y"].sizes["period"] == 1 and ds["series_force_z"].attrs["units"] == "N"

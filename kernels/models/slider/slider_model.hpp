@@ -219,6 +219,36 @@ class SliderModel {
     }
   }
 
+  /// The shift δ (units of a) of the four tables that give the field's y- and z-derivatives to forces():
+  /// tracks at y + δ and y − δ, and the substrate δ farther and δ nearer (a central difference: its
+  /// error (δ/h)² ~ 1e-9, its rounding 1e-16/δ ~ 1e-11).
+  static constexpr double gradient_step = 1e-5;
+  enum GradientTable : std::size_t { y_plus, y_minus, z_plus, z_minus };
+
+  /// Lane `lane`'s four tables of the field at shifted tracks (GradientTable order), for forces().
+  ROTORSWEEP_HD void set_gradient_tables(std::size_t lane, const std::array<SubstrateTableView, 4>& tables) {
+    for (std::size_t g = 0; g < 4; ++g) gradient_[g][lane] = tables[g];
+  }
+
+  /// The substrate's force on the slider, F = Σ_r ∇(m_r·B)(p_r) in units of E0/a: F_x from the table's
+  /// x-derivatives (−F, the drive's force), F_y and F_z by central differences of the gradient tables.
+  ROTORSWEEP_HD void forces(Workspace& w, const V* y, V t, V& fx, V& fy, V& fz) const {
+    prepare(w, y, t, false);
+    const V xi = displacement(t), scale = mu_ * V(0.5 / gradient_step);
+    fx = V(0.0);
+    fy = V(0.0);
+    fz = V(0.0);
+    for (std::size_t r = 0; r < n_; ++r) {
+      fx += w.dbx[r] * w.cos[r] - w.dbz[r] * w.sin[r];
+      const std::size_t track = turned_ ? r : row(r);
+      const V x = xi + start_x_[r];
+      const auto at = [&](GradientTable g) { return field_in_lanes(gradient_[g].data(), track, x); };
+      const TrackField<V> yp = at(y_plus), ym = at(y_minus), zp = at(z_plus), zm = at(z_minus);
+      fy += scale * ((yp.bx - ym.bx) * w.cos[r] - (yp.bz - ym.bz) * w.sin[r]);
+      fz += scale * ((zp.bx - zm.bx) * w.cos[r] - (zp.bz - zm.bz) * w.sin[r]);
+    }
+  }
+
   /// E, the magnetic energy (pairs and substrate), in units of μ0 m²/(4π a³).
   ROTORSWEEP_HD V energy(Workspace& w, const V* y, V t) const {
     prepare(w, y, t, false);
@@ -325,6 +355,7 @@ class SliderModel {
   V *p_, *q_;
   V* start_x_;  ///< each rotor's x at ξ = 0 (SliderPlacement::start_x), the same in every lane
   std::array<SubstrateTableView, lane_width<V>> substrate_{};
+  std::array<std::array<SubstrateTableView, lane_width<V>>, 4> gradient_{};  ///< for forces() only
   V mu_ = V(1.0), inertia_ = V(1.0), inv_inertia_ = V(1.0), damping_ = V(1.0), inv_damping_ = V(1.0);
   V speed_ = V(0.0), rest_ = V(0.0);
 };
