@@ -65,6 +65,10 @@ TEST_CASE("slider refuses bad scenes with exit code 2 and writes nothing", "[app
   };
   expect_refusal("slider", small_slider + "[numerics]\nrtol = 0.5\n", "numerics.rtol");
   expect_refusal("slider", "[slider]\nspeed = 1.0\n[sweep]\nseparation = [8e-3]\n", "slider.speed");
+  expect_refusal("slider", "[sweep]\nseparation = [8e-3]\n[substrate]\nangle = 4\n", "substrate.angle");
+  expect_refusal("slider", "[slider]\ntilt = -3.5\n[sweep]\nseparation = [8e-3]\n", "slider.tilt");
+  expect_refusal("slider", "[sweep]\nseparation = [8e-3]\n[observables]\nseries = false\nforces = true\n",
+                 "observables.forces");
   expect_refusal("slider", "[model]\nrows = 20\n", "unknown; the scene sections are");
   expect_refusal("run", small_slider, "run them with `rotorsweep slider FILE`");
 }
