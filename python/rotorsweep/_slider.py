@@ -1,6 +1,7 @@
 """A slider result file (README "The experiment's slider") as an xarray.Dataset: members over the
-dimensions size, separation and replica, their per-period values over period and their time
-series over time (docs/model.md §9)."""
+dimensions size, separation and replica, their per-period values over period, their time
+series over time, and /curve's replica statistics and mappings of A as curve_<name> over size and
+separation (docs/model.md §9)."""
 
 import numpy as np
 import pandas as pd
@@ -25,6 +26,17 @@ def _attrs(name, dataset, text=False):
 
 def _text(values):
     return np.array([v.decode() if isinstance(v, bytes) else str(v) for v in values])
+
+
+def _curve(group):
+    """/curve (one row per size and separation) as curve_<name> variables over size and separation."""
+    size = np.array([f"{c}x{r}" for c, r in zip(group["columns"][:], group["rows"][:])])
+    index = pd.MultiIndex.from_arrays([size, group["separation"][:]], names=["size", "separation"])
+    variables = {f"curve_{name}": xr.Variable(("point",), dataset[:], _attrs(name, dataset))
+                 for name, dataset in group.items() if name not in ("separation", "columns", "rows")}
+    # every (size, separation) is a row, so nothing is filled; integer columns stay integers
+    fill = {name: (-1 if v.dtype.kind in "iu" else np.nan) for name, v in variables.items()}
+    return xr.Dataset(variables, coords={"point": index}).unstack("point", fill_value=fill)
 
 
 def from_hdf5(h5file):
@@ -55,6 +67,8 @@ def from_hdf5(h5file):
         variables[f"series_{name}"] = xr.Variable(dims, dataset[:], _attrs(name, dataset))
     coords = {"member": index, "time": ("time", series["time"][:], {"units": "s"})}
     dataset = xr.Dataset(variables, coords=coords, attrs=attrs).unstack("member")
+    if "curve" in h5file:
+        dataset = dataset.merge(_curve(h5file["curve"]))
     sizes = list(dict.fromkeys(size))  # the scene's order
     dataset = dataset.reindex(size=sizes)
     dataset = dataset.assign_coords(columns=("size", [int(s.split("x")[0]) for s in sizes]),

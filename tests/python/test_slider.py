@@ -180,3 +180,16 @@ def test_the_force_on_the_slider_equals_the_gradient_of_plain_dipole_sums(tmp_pa
     np.testing.assert_allclose([first["force_x"], first["force_y"], first["force_z"]], force, rtol=1e-6)
     np.testing.assert_array_equal(ds["series_force_x"].values, -ds["series_friction"].values)
     assert ds["period_force_y"].sizes["period"] == 1 and ds["series_force_z"].attrs["units"] == "N"
+
+
+def test_the_curve_with_both_mappings_of_A_is_in_the_dataset(tmp_path):
+    ds = rotorsweep.slider(SMALL, threads=1, progress=False, output=tmp_path / "small.h5")
+    with h5py.File(tmp_path / "small.h5") as f:
+        curve = f["curve"]
+        for k in range(len(curve["separation"])):
+            size, h = f"{curve['columns'][k]}x{curve['rows'][k]}", curve["separation"][k]
+            point = ds.sel(size=size, separation=h)
+            assert float(point["curve_A_paper"]) == curve["A_paper"][k]
+            assert float(point["curve_friction"]) == curve["friction"][k]
+    np.testing.assert_allclose(ds["curve_friction"], ds["friction"].mean("replica"), rtol=1e-12)
+    assert ds["curve_A_field"].dims == ("size", "separation") and ds["curve_friction"].attrs["units"] == "N"
