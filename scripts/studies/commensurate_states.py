@@ -9,10 +9,8 @@ from its attractor label and its final angles. Prints the numbers of docs/studie
 5 to 6 minutes on 2 cores; --quick: a few patterns and rings, seconds).
 Usage: commensurate_states.py [--quick] [--out docs/figures/commensurate_states.png] [--python build/python]
                               [--threads 2]"""
-import argparse
 import itertools
 from collections import Counter
-import pathlib
 import sys
 from dataclasses import dataclass
 
@@ -22,7 +20,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
+import study_command_line
+
 
 G = 0.0011                     # the paper's damping × speed
 SCHEDULE = {"relax_periods": 4, "average_periods": 4}
@@ -551,15 +550,7 @@ def plot_repeating(axis, members, grid):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--quick", action="store_true", help="a few patterns and rings (the test suite's run)")
-    parser.add_argument("--out", type=pathlib.Path, default=ROOT / "docs" / "figures" / "commensurate_states.png")
-    parser.add_argument("--python", type=pathlib.Path, default=ROOT / "build" / "python",
-                        help="directory of the rotorsweep Python module")
-    parser.add_argument("--threads", type=int, default=2)
-    args = parser.parse_args()
-    sys.path.insert(0, str(args.python))
-    import rotorsweep
+    args, rotorsweep = study_command_line.parse(__doc__, "commensurate_states.png", "a few patterns and rings (the test suite's run)")
 
     grid = QUICK if args.quick else FULL
     reduction = run_reduction(rotorsweep, sorted(set(grid["A"]) | set(grid["random_A"]) | set(REDUCTION_A)),

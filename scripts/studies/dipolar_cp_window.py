@@ -9,7 +9,6 @@ the slider's own g, turned into separations h with both mappings of A the slider
 the slider's own window from its order parameter across y. Prints the tables of docs/studies.md and draws the figure
 (about 40 s on 2 cores; --quick: coarser grids, about 20 s).
 Usage: dipolar_cp_window.py [--quick] [--out docs/figures/dipolar_cp_window.png] [--python build/python] [--threads 2]"""
-import argparse
 import itertools
 import pathlib
 import sys
@@ -22,6 +21,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+
+import study_command_line
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SLIDER_SCENE = ROOT / "examples" / "experiment_7x7.toml"
@@ -305,15 +306,7 @@ def plot_windows(axis, predicted, window, kind):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--quick", action="store_true", help="coarser grids (the test suite's run)")
-    parser.add_argument("--out", type=pathlib.Path, default=ROOT / "docs" / "figures" / "dipolar_cp_window.png")
-    parser.add_argument("--python", type=pathlib.Path, default=ROOT / "build" / "python",
-                        help="directory of the rotorsweep Python module")
-    parser.add_argument("--threads", type=int, default=2)
-    args = parser.parse_args()
-    sys.path.insert(0, str(args.python))
-    import rotorsweep
+    args, rotorsweep = study_command_line.parse(__doc__, "dipolar_cp_window.png", "coarser grids (the test suite's run)")
 
     grid = QUICK if args.quick else FULL
     curve = run_slider(rotorsweep, grid["separations"], args.threads)

@@ -9,8 +9,6 @@ point it starts at (its own energy's Hessian) and by how its dissipated energy s
 docs/studies.md and draws the figure (about 3 minutes on 2 cores; --quick: coarser grids, about 30 s).
 Usage: smooth_alternation.py [--quick] [--out docs/figures/smooth_alternation.png] [--python build/python]
                              [--threads 2]"""
-import argparse
-import pathlib
 import sys
 
 import matplotlib
@@ -18,9 +16,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+
+import study_command_line
 from scipy.integrate import solve_ivp
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 CP_SIDE = [6.0, 8.0, 8.5]                       # A_− < A < A_* = 8.778: J(A) > 0
 WINDOW = [9.0, 9.25, 9.5, 9.75]                 # A_* < A < 10: the strict-FM minimum still turns into a saddle
@@ -354,15 +353,7 @@ def figure(deterministic, thermal, J, rows, config, out):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="coarser grids (about 30 s)")
-    parser.add_argument("--out", type=pathlib.Path, default=ROOT / "docs" / "figures" / "smooth_alternation.png")
-    parser.add_argument("--python", type=pathlib.Path, default=ROOT / "build" / "python",
-                        help="directory of the rotorsweep module")
-    parser.add_argument("--threads", type=int, default=2)
-    args = parser.parse_args()
-    sys.path.insert(0, str(args.python))
-    import rotorsweep
+    args, rotorsweep = study_command_line.parse(__doc__, "smooth_alternation.png", "coarser grids (about 30 s)")
 
     config = QUICK if args.quick else FULL
     deterministic = deterministic_sweeps(rotorsweep, config, args.threads)

@@ -1,8 +1,11 @@
 """Fixtures of the Python module's tests: the command line beside the module (ctest sets
-ROTORSWEEP_EXECUTABLE and PYTHONPATH), and small scenes that run in well under a second."""
+ROTORSWEEP_EXECUTABLE and PYTHONPATH), small scenes that run in well under a second, and the studies'
+quick runs."""
 
 import os
+import pathlib
 import subprocess
+import sys
 
 import h5py
 import numpy as np
@@ -71,3 +74,16 @@ def identical(a, b):
     if a.dtype.kind == "f":
         return a.tobytes() == b.tobytes()
     return bool(np.all(a == b))
+
+
+def run_study_quick(script, tmp_path):
+    """A study's --quick run (scripts/studies/) with this module, its figure checked for size; its stdout."""
+    import rotorsweep
+
+    figure = tmp_path / "figure.png"
+    module = pathlib.Path(rotorsweep.__file__).resolve().parents[1]
+    done = subprocess.run([sys.executable, str(script), "--quick", "--out", str(figure), "--python", str(module)],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert 10_000 < figure.stat().st_size < 200_000
+    return done.stdout

@@ -5,15 +5,14 @@ interval is the one /curves/attractors writes."""
 
 import pathlib
 import re
-import subprocess
 import sys
 
 import numpy as np
+from conftest import run_study_quick
 import rotorsweep
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "studies" / "commensurate_states.py"
-MODULE = pathlib.Path(rotorsweep.__file__).resolve().parents[1]
 sys.path.insert(0, str(SCRIPT.parent))
 import commensurate_states as study  # noqa: E402
 
@@ -21,19 +20,15 @@ CELL = re.compile(r"([0-9.]+) \[([0-9.]+),([0-9.]+)\]")
 
 
 def test_quick_run_draws_the_figure_and_prints_tables_that_parse(tmp_path):
-    figure = tmp_path / "figure.png"
-    done = subprocess.run([sys.executable, str(SCRIPT), "--quick", "--out", str(figure), "--python", str(MODULE)],
-                          capture_output=True, text=True, timeout=120)
-    assert done.returncode == 0, done.stderr
-    assert 10_000 < figure.stat().st_size < 200_000
+    stdout = run_study_quick(SCRIPT, tmp_path)
 
     survival = {(line[:8].strip(), line[18:35].strip()): line[35:].split()[0]
-                for line in done.stdout.splitlines() if re.match(r"^(FM|AFM|walls|blocks|twisted) +\d+ ", line)}
+                for line in stdout.splitlines() if re.match(r"^(FM|AFM|walls|blocks|twisted) +\d+ ", line)}
     for start in ("exact clean", "near clean", "exact disordered"):
-        assert survival[("AFM", start)] == "1-4", done.stdout  # AFM kept up to A = 4, lost to CP at 6
-        assert survival[("twisted", start)] == "none", done.stdout  # no twisted state is a stationary pattern
+        assert survival[("AFM", start)] == "1-4", stdout  # AFM kept up to A = 4, lost to CP at 6
+        assert survival[("twisted", start)] == "none", stdout  # no twisted state is a stationary pattern
 
-    basins = [line for line in done.stdout.splitlines() if re.match(r"^(clean|disordered) +\d+ +[0-9.]+ ", line)]
+    basins = [line for line in stdout.splitlines() if re.match(r"^(clean|disordered) +\d+ +[0-9.]+ ", line)]
     assert len(basins) >= 2 * len(study.QUICK["rows"])  # both rings, every N, at least one A
     for line in basins:
         cells = [tuple(float(x) for x in cell) for cell in CELL.findall(line)]
@@ -42,7 +37,7 @@ def test_quick_run_draws_the_figure_and_prints_tables_that_parse(tmp_path):
         assert sum(fraction for fraction, _, _ in cells) <= 1 + 1e-9, line
 
     # exact AFM starts (A = 1 … 11) keep AFM, or end in the CP or FM two-sublattice state: nothing else
-    outcomes = dict(line.split(": ", 1) for line in done.stdout.splitlines() if " exact clean: " in line)
+    outcomes = dict(line.split(": ", 1) for line in stdout.splitlines() if " exact clean: " in line)
     counts = dict(pair.split("=") for pair in outcomes["AFM exact clean"].split())
     assert set(counts) == {"kept", "CP_2SL", "FM_2SL"}, outcomes["AFM exact clean"]
 

@@ -5,15 +5,14 @@ edge near 10.1 mm; the paper's mapping of A is h ∝ A^(−1/3) exactly."""
 
 import pathlib
 import re
-import subprocess
 import sys
 
 import numpy as np
+from conftest import run_study_quick
 import rotorsweep
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "studies" / "dipolar_cp_window.py"
-MODULE = pathlib.Path(rotorsweep.__file__).resolve().parents[1]
 sys.path.insert(0, str(SCRIPT.parent))
 import dipolar_cp_window as study  # noqa: E402
 
@@ -22,12 +21,7 @@ WINDOW = r"([0-9.]+)-([0-9.]+)"
 
 
 def run_quick(tmp_path):
-    figure = tmp_path / "figure.png"
-    done = subprocess.run([sys.executable, str(SCRIPT), "--quick", "--out", str(figure), "--python", str(MODULE)],
-                          capture_output=True, text=True, timeout=120)
-    assert done.returncode == 0, done.stderr
-    assert 10_000 < figure.stat().st_size < 200_000
-    return done.stdout
+    return run_study_quick(SCRIPT, tmp_path)
 
 
 def test_quick_run_prints_windows_that_parse_and_order_as_found(tmp_path):

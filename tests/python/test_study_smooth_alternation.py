@@ -5,24 +5,16 @@ keeps a finite energy at A = 8 and loses it with g at A = 9."""
 
 import pathlib
 import re
-import subprocess
-import sys
 
-import rotorsweep
+from conftest import run_study_quick
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "studies" / "smooth_alternation.py"
-MODULE = pathlib.Path(rotorsweep.__file__).resolve().parents[1]
 NUMBER = r"[-+]?[0-9.]+(?:e[-+]?[0-9]+)?"
 
 
 def run_quick(tmp_path):
-    figure = tmp_path / "figure.png"
-    done = subprocess.run([sys.executable, str(SCRIPT), "--quick", "--out", str(figure), "--python", str(MODULE)],
-                          capture_output=True, text=True, timeout=120)
-    assert done.returncode == 0, done.stderr
-    assert 10_000 < figure.stat().st_size < 200_000
-    return done.stdout
+    return run_study_quick(SCRIPT, tmp_path)
 
 
 def table(out, title):
