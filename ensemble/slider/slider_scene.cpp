@@ -54,7 +54,8 @@ double field_drive_amplitude(const SliderScene& scene, SliderSize size, double s
   std::complex<double> bx(0.0), bz(0.0);  // Σ B e^{iφ}: the harmonic's amplitude whatever its phase
   for (int k = 0; k < points; ++k) {
     const double phase = kernels::two_pi * double(k) / points;
-    const auto field = kernels::substrate_field(lattice, column + double(k) / points, row);
+    const auto field =
+        kernels::substrate_field(lattice, column + double(k) / points, row, placement.turned());
     // B_∥ along the rotors' in-plane axis (B_x unless the slider is turned)
     const double along = placement.turned() ? std::cos(placement.tilt) * field.x.value +
                                                   std::sin(placement.tilt) * field.y.value

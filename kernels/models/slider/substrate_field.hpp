@@ -38,9 +38,11 @@ struct SubstrateFieldAt {
 /// m̂ = cos φ x̂ − sin φ ẑ: the x̂ moments give B_x = Σ (2X² − Y² − Z²)/r⁵, B_y = Σ 3XY/r⁵,
 /// B_z = Σ 3XZ/r⁵, the ẑ moments (only summed where φ ≠ 0) B_x = Σ 3XZ/r⁵, B_y = Σ 3YZ/r⁵,
 /// B_z = Σ (2Z² − X² − Y²)/r⁵; their x-derivatives in closed form. At lane_width<V> points x at once
-/// (IEEE-exact operations only, so every lane holds the bits of the scalar sum).
+/// (IEEE-exact operations only, so every lane holds the bits of the scalar sum). B_y (needed by a turned
+/// slider only) is summed where `with_y`, and 0 otherwise.
 template <class V = double>
-ROTORSWEEP_HD inline SubstrateFieldAt<V> substrate_field(const SubstrateLattice& lattice, V x, double y) {
+ROTORSWEEP_HD inline SubstrateFieldAt<V> substrate_field(const SubstrateLattice& lattice, V x, double y,
+                                                         bool with_y = true) {
   SubstrateFieldAt<V> along_x, along_z;  // the fields of x̂ and of ẑ moments
   const double Z = lattice.depth;
   const bool turned = lattice.angle != 0.0;
@@ -61,17 +63,21 @@ ROTORSWEEP_HD inline SubstrateFieldAt<V> substrate_field(const SubstrateLattice&
       along_x.z.value += V(3.0 * Z) * X * q;
       along_x.z.slope += V(3.0 * Z) * (q + X * dq);
       along_x.z.curvature += V(3.0 * Z) * (V(2.0) * dq + X * d2q);
-      along_x.y.value += V(3.0 * Y) * X * q;
-      along_x.y.slope += V(3.0 * Y) * (q + X * dq);
-      along_x.y.curvature += V(3.0 * Y) * (V(2.0) * dq + X * d2q);
+      if (with_y) {
+        along_x.y.value += V(3.0 * Y) * X * q;
+        along_x.y.slope += V(3.0 * Y) * (q + X * dq);
+        along_x.y.curvature += V(3.0 * Y) * (V(2.0) * dq + X * d2q);
+      }
       if (turned) {
         const V z_numerator = V(2.0 * Z * Z - Y * Y) - X * X;
         along_z.z.value += z_numerator * q;
         along_z.z.slope += V(-2.0) * X * q + z_numerator * dq;
         along_z.z.curvature += V(-2.0) * q + V(-4.0) * X * dq + z_numerator * d2q;
-        along_z.y.value += V(3.0 * Y * Z) * q;
-        along_z.y.slope += V(3.0 * Y * Z) * dq;
-        along_z.y.curvature += V(3.0 * Y * Z) * d2q;
+        if (with_y) {
+          along_z.y.value += V(3.0 * Y * Z) * q;
+          along_z.y.slope += V(3.0 * Y * Z) * dq;
+          along_z.y.curvature += V(3.0 * Y * Z) * d2q;
+        }
       }
     }
   }

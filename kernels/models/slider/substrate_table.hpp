@@ -110,7 +110,7 @@ class SubstrateTable {
         const auto node = [&](std::size_t l) { return std::min(first + l, intervals_); };
         const auto field = substrate_field(
             lattice, lane_from<V>([&](std::size_t l) { return x_begin + double(node(l)) * step; }),
-            track_y[track]);
+            track_y[track], tilt != 0.0);
         const auto jet = [](const FieldJet<V>& f) {
           return std::array{lane_values(f.value), lane_values(f.slope), lane_values(f.curvature)};
         };
