@@ -6,6 +6,8 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <tuple>
+#include <vector>
 
 #include "commands.hpp"
 #include "io/hdf5_file.hpp"
@@ -50,6 +52,14 @@ void print_slider(const io::Hdf5Location& file) {
   const auto members = file.open_group("members");
   const auto separation = members.read_doubles("separation");
   std::printf("%-12s %zu\n", "members", separation.size());
+  // the speed and damping axes (files before them have neither column)
+  for (const auto& [column, label, scale] :
+       {std::tuple{"speed", "v (mm/s)", 1e3}, std::tuple{"damping", "damping", 1.0}})
+    if (members.has(column)) {
+      std::vector<double> values = members.read_doubles(column);
+      for (double& v : values) v *= scale;
+      print_range(label, values);
+    }
   std::vector<double> millimetres;
   for (double h : separation) millimetres.push_back(h * 1e3);
   print_range("h (mm)", millimetres);

@@ -35,15 +35,29 @@ void print_slider_header(const SliderOptions& options, const ensemble::SliderSce
     std::fprintf(stderr, "shard %zu/%zu: members %zu, %zu, %zu, ... of the plan's %zu\n", shard->index,
                  shard->count, shard->index - 1, shard->index - 1 + shard->count,
                  shard->index - 1 + 2 * shard->count, shard->plan_members);
+  // the speed and damping axes where they have more than one value
+  std::string axes;
+  char text[160];
+  if (scene.speeds.size() > 1) {
+    const auto [slowest, fastest] = std::minmax_element(scene.speeds.begin(), scene.speeds.end());
+    std::snprintf(text, sizeof text, " × %zu speeds v = %g … %g mm/s", scene.speeds.size(), *slowest * 1e3,
+                  *fastest * 1e3);
+    axes += text;
+  }
+  if (scene.dampings.size() > 1) {
+    const auto [least, most] = std::minmax_element(scene.dampings.begin(), scene.dampings.end());
+    std::snprintf(text, sizeof text, " × %zu dampings γ = %g … %g kg m²/s", scene.dampings.size(), *least,
+                  *most);
+    axes += text;
+  }
   std::fprintf(
       stderr,
-      "rotorsweep slider %s: %zu members (%zu sizes × %zu separations h = %g … %g mm × %zu replicas), rotors "
-      "%s over %zu × %zu, %s, %s rtol %g, %d threads × %zu lanes\n",
-      options.scene.c_str(), scene.member_count(), scene.sizes.size(), scene.separations.size(),
+      "rotorsweep slider %s: %zu members (%zu sizes%s × %zu separations h = %g … %g mm × %zu replicas), "
+      "rotors %s over %zu × %zu, %s, %s rtol %g, %d threads × %zu lanes\n",
+      options.scene.c_str(), scene.member_count(), scene.sizes.size(), axes.c_str(), scene.separations.size(),
       *closest * 1e3, *farthest * 1e3, scene.replicas, sizes.c_str(), scene.substrate_columns,
       scene.substrate_rows, scene.overdamped ? "overdamped" : "inertial",
-      kernels::stepper_names[scene.stepper].data(), scene.rtol, threads,
-      ensemble::instruction_set().lanes);
+      kernels::stepper_names[scene.stepper].data(), scene.rtol, threads, ensemble::instruction_set().lanes);
 }
 
 namespace {

@@ -1,5 +1,6 @@
 // Writes a slider scan as its members finish: /members (one row per member), /series (members × samples),
-// /curve (per separation: replica mean and spread of the friction and order parameters) at the end.
+// /curve (per size, speed, damping and separation: replica mean and spread of the friction and order
+// parameters) at the end.
 #include "io/slider_result_file.hpp"
 
 #include <algorithm>
@@ -38,44 +39,54 @@ std::size_t status_length() {
   return length;
 }
 
-/// Per (size, separation): the replicas' mean and spread of the friction, the order parameters, and the
-/// row model's A at that separation, from the members' rows of a complete file.
+/// Per (size, speed, damping, separation): the replicas' mean and spread of the friction, the order
+/// parameters, the scaled damping g and the row model's A at that separation, from the members' rows of
+/// a complete file.
 void write_curve(const Hdf5Location& file, const ensemble::SliderScene& scene) {
   const auto members = file.open_group("members");
   const auto friction_of = members.read_doubles("friction"), order_x_of = members.read_doubles("order_x"),
              order_y_of = members.read_doubles("order_y");
   const auto status = members.read_strings("status");
-  std::vector<double> separation, friction, spread, sem, order_x, order_y, paper_A, field_A;
+  std::vector<double> speed, damping, scaled_damping, separation, friction, spread, sem, order_x, order_y,
+      paper_A, field_A;
   std::vector<std::int64_t> columns, rows, valid;
-  for (std::size_t z = 0; z < scene.sizes.size(); ++z)
-    for (std::size_t s = 0; s < scene.separations.size(); ++s) {
-      const auto size = scene.sizes[z];
-      const double h = scene.separations[s];
-      const std::size_t first = (z * scene.separations.size() + s) * scene.replicas;
-      const auto ok = [&](std::size_t r) { return status[first + r] == "ok"; };
-      const auto f = ensemble::replica_statistics(
-          scene.replicas, [&](std::size_t r) { return friction_of[first + r]; }, ok);
-      const auto x = ensemble::replica_statistics(
-          scene.replicas, [&](std::size_t r) { return order_x_of[first + r]; }, ok);
-      const auto y = ensemble::replica_statistics(
-          scene.replicas, [&](std::size_t r) { return order_y_of[first + r]; }, ok);
-      const double n = double(f.count);
-      separation.push_back(h);
-      columns.push_back(std::int64_t(size.columns));
-      rows.push_back(std::int64_t(size.rows));
-      friction.push_back(f.mean);
-      spread.push_back(f.count > 1 ? f.std * std::sqrt(n / (n - 1)) : std::nan(""));
-      sem.push_back(f.sem);
-      order_x.push_back(x.mean);
-      order_y.push_back(y.mean);
-      valid.push_back(std::int64_t(f.count));
-      paper_A.push_back(ensemble::paper_drive_amplitude(scene, h));
-      field_A.push_back(ensemble::field_drive_amplitude(scene, size, h));
-    }
+  for (std::size_t point = 0; point < scene.member_count() / scene.replicas; ++point) {
+    const std::size_t first = point * scene.replicas;
+    const ensemble::SliderMember m = ensemble::slider_plan_member(scene, first);
+    const ensemble::SliderSize size = m.size;
+    const double h = m.separation;
+    const ensemble::SliderUnits units(ensemble::slider_variant(scene, m.index.speed, m.index.damping));
+    speed.push_back(m.speed);
+    damping.push_back(m.damping);
+    scaled_damping.push_back(m.damping / (units.energy * units.time));
+    const auto ok = [&](std::size_t r) { return status[first + r] == "ok"; };
+    const auto f = ensemble::replica_statistics(
+        scene.replicas, [&](std::size_t r) { return friction_of[first + r]; }, ok);
+    const auto x = ensemble::replica_statistics(
+        scene.replicas, [&](std::size_t r) { return order_x_of[first + r]; }, ok);
+    const auto y = ensemble::replica_statistics(
+        scene.replicas, [&](std::size_t r) { return order_y_of[first + r]; }, ok);
+    const double n = double(f.count);
+    separation.push_back(h);
+    columns.push_back(std::int64_t(size.columns));
+    rows.push_back(std::int64_t(size.rows));
+    friction.push_back(f.mean);
+    spread.push_back(f.count > 1 ? f.std * std::sqrt(n / (n - 1)) : std::nan(""));
+    sem.push_back(f.sem);
+    order_x.push_back(x.mean);
+    order_y.push_back(y.mean);
+    valid.push_back(std::int64_t(f.count));
+    paper_A.push_back(ensemble::paper_drive_amplitude(scene, h));
+    field_A.push_back(ensemble::field_drive_amplitude(scene, size, h));
+  }
   const auto curve = file.create_group("curve");
   curve.write("separation", separation, {}, "layer separation h, m");
   curve.write("columns", columns, "the slider's rotors along x");
   curve.write("rows", rows, "the slider's rotors along y");
+  curve.write("speed", speed, {}, "sliding speed v, m/s");
+  curve.write("damping", damping, {}, "the rotors' Stokes damping γ, kg m²/s");
+  curve.write("g", scaled_damping, {},
+              "γ in the scene's units, γ / (E0 T0) with T0 = a/(2π v): the row model's damping g");
   curve.write("friction", friction, {}, "mean drive force over the replicas, N (NaN: no replica finished)");
   curve.write("friction_std", spread, {},
               "sample standard deviation over the replicas (÷ (n − 1)), N (NaN below 2 replicas)");
@@ -89,6 +100,8 @@ void write_curve(const Hdf5Location& file, const ensemble::SliderScene& scene) {
   curve.write("A_field", field_A, {},
               "row model's A from the substrate field's first harmonic (docs/model.md §9)");
   curve.set_units("separation", "m");
+  curve.set_units("speed", "m/s");
+  curve.set_units("damping", "kg m²/s");
   for (const char* force : {"friction", "friction_std", "friction_sem"}) curve.set_units(force, "N");
 }
 
@@ -96,7 +109,7 @@ void write_curve(const Hdf5Location& file, const ensemble::SliderScene& scene) {
 
 std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
                                          const ensemble::SliderTimeline& timeline) {
-  const hsize_t periods = timeline.periods, samples = timeline.sample_times.size();
+  const hsize_t periods = timeline.periods, samples = timeline.samples;
   std::vector<Column> c;
   c.push_back(Column::real_valued("members/separation", "layer separation h, m",
                                   [](const SliderMember& m) { return m.separation; }));
@@ -104,7 +117,12 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
                                      [](const SliderMember& m) { return std::int64_t(m.size.columns); }));
   c.push_back(Column::integer_valued("members/rows", "the slider's rotors along y",
                                      [](const SliderMember& m) { return std::int64_t(m.size.rows); }));
-  c.push_back(Column::integer_valued("members/replica", "replica index at this size and separation",
+  c.push_back(Column::real_valued("members/speed", "sliding speed v, m/s",
+                                  [](const SliderMember& m) { return m.speed; }));
+  c.push_back(Column::real_valued("members/damping", "the rotors' Stokes damping γ, kg m²/s",
+                                  [](const SliderMember& m) { return m.damping; }));
+  c.push_back(Column::integer_valued("members/replica",
+                                     "replica index at this size, speed, damping and separation",
                                      [](const SliderMember& m) { return std::int64_t(m.index.replica); }));
   c.push_back(Column::real_valued(
       "members/friction",
@@ -207,6 +225,8 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
   }
   // SI units of the dimensional columns; the others are "1"
   const std::map<std::string, std::string> units{{"members/separation", "m"},
+                                                 {"members/speed", "m/s"},
+                                                 {"members/damping", "kg m²/s"},
                                                  {"members/friction", "N"},
                                                  {"members/period_friction", "N"},
                                                  {"members/period_work", "J"},
@@ -257,21 +277,32 @@ SliderResultFile::SliderResultFile(Hdf5Location file, const ensemble::SliderScen
 
 void SliderResultFile::create(const Provenance& provenance) const {
   const ensemble::SliderUnits units(scene_);
+  const bool one_speed = scene_.speeds.size() == 1, one_damping = scene_.dampings.size() == 1;
   file_.set_attribute("kind", std::string("slider"));
   create_table(scene_.text, provenance);
-  file_.set_attribute("period", timeline_.period);
+  // the speed's and the damping's own values where the scene has one of each (else /curve has them)
+  if (one_speed) file_.set_attribute("period", timeline_.period.front());
   file_.set_attribute("spacing", scene_.spacing);
-  file_.set_attribute("g", scene_.damping / (units.energy * units.time));
+  if (one_speed && one_damping) file_.set_attribute("g", scene_.damping / (units.energy * units.time));
   file_.set_attribute("periods", std::int64_t(timeline_.periods));
   file_.set_attribute("energy_unit", units.energy);
-  file_.set_attribute("time_unit", units.time);
+  if (one_speed) file_.set_attribute("time_unit", units.time);
   file_.set_attribute("wall_seconds", 0.0);
   file_.set_attribute("threads", std::int64_t(0));
   create_table_columns(file_, columns_, rows_);
   if (scene_.series) {
     const auto series = file_.open_group("series");
-    series.write("time", timeline_.sample_times, {},
-                 "s since the start of the rest; sliding starts at drive.rest");
+    if (one_speed) {
+      series.write("time", timeline_.sample_times.front(), {},
+                   "s since the start of the rest; sliding starts at drive.rest");
+    } else {
+      std::vector<double> times;
+      for (const auto& t : timeline_.sample_times) times.insert(times.end(), t.begin(), t.end());
+      series.write("time", times, {hsize_t(scene_.speeds.size()), hsize_t(timeline_.samples)},
+                   "per speed (/curve speed order: drive.speed's): s since the start of the rest, sliding "
+                   "from drive.rest; columns aligned at the start of sliding, NaN before a speed's first "
+                   "sample");
+    }
     series.set_units("time", "s");
   }
 }
@@ -347,7 +378,7 @@ void SliderResultFile::keep_partial(std::size_t members_done, double wall_second
 
 void SliderResultFile::finish(double wall_seconds, int threads) const {
   if (!shard_) {
-    reserve(double(scene_.sizes.size() * scene_.separations.size()) * 13 * 8, "/curve");
+    reserve(double(scene_.member_count() / scene_.replicas) * 16 * 8, "/curve");
     write_curve(file_, scene_);
   }
   set_members_done(rows_);

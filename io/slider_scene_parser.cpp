@@ -20,7 +20,7 @@ const std::map<std::string, std::set<std::string>> slider_keys{
      {"columns", "rows", "spacing", "moment", "inertia", "damping", "dynamics", "tilt", "shift_x",
       "shift_y"}},
     {"substrate", {"columns", "rows", "moment", "nodes_per_depth", "angle"}},
-    {"drive", {"speed", "rest", "end"}},
+    {"drive", {"speed", "rest", "end", "periods"}},
     {"sweep", {"separation"}},
     {"initial", {"kind", "noise", "replicas", "seed", "angles"}},
     {"observables",
@@ -107,6 +107,36 @@ void read_given_angles(const Section& initial, const toml::node* angles, SliderS
          "must be 1 with initial.kind = \"given\" (every replica would start alike)");
 }
 
+/// drive.end (s, one speed) or drive.periods (whole substrate periods slid after the rest, at every
+/// speed); several speeds need drive.periods.
+void read_run_length(const Section& drive, SliderScene& scene) {
+  const bool several = scene.speeds.size() > 1;
+  if (drive.find("periods")) {
+    if (drive.find("end")) fail(drive.key("periods"), "and drive.end both give the run's length: give one");
+    scene.periods = std::size_t(drive.integer("periods", 1,
+                                              "an integer from 1 to 10000 (substrate periods slid after "
+                                              "drive.rest, at every speed)",
+                                              [](long long p) { return p >= 1 && p <= 10000; }));
+    scene.end = scene.rest + double(scene.periods) * scene.spacing / scene.speed;
+    return;
+  }
+  if (several && drive.find("end"))
+    fail(drive.key("end"),
+         "gives each of several drive.speed values a different number of substrate periods: give "
+         "drive.periods (whole periods slid after drive.rest, at every speed) instead");
+  if (several)
+    fail(drive.key("periods"),
+         "is needed with several drive.speed values: an integer from 1 to 10000 (whole substrate periods "
+         "slid after drive.rest, at every speed)");
+  scene.end = drive.number("end", scene.end, "a number > 0 (s)", positive);
+  const double period = scene.spacing / scene.speed;
+  if (scene.end - scene.rest < period * (1 - 1e-9))
+    fail(drive.key("end"), "must leave at least one substrate period a/v = " + std::to_string(period) +
+                               " s of sliding after drive.rest (the friction is a mean over whole periods)");
+  if (scene.end - scene.rest > 1e4 * scene.spacing / scene.speed)
+    fail(drive.key("end"), "gives more than 10000 substrate periods of sliding");
+}
+
 SliderScene read_slider_scene(const toml::table& root) {
   check_sections(root, slider_keys);
   SliderScene scene;
@@ -115,7 +145,8 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.spacing = slider.number("spacing", scene.spacing, "a number > 0 (lattice constant a, m)", positive);
   scene.moment = slider.number("moment", scene.moment, "a number > 0 (A m²)", positive);
   scene.inertia = slider.number("inertia", scene.inertia, "a number > 0 (kg m²)", positive);
-  scene.damping = slider.number("damping", scene.damping, "a number > 0 (kg m²/s)", positive);
+  scene.dampings = grid(slider, "damping", "> 0 (kg m²/s)", positive, scene.dampings);
+  scene.damping = scene.dampings.front();
   scene.overdamped = slider.choice("dynamics", "inertial", {"inertial", "overdamped"}) == "overdamped";
   scene.tilt =
       slider.number("tilt", scene.tilt, "a number from -π to π (rad; the grid turned about z)", within_pi);
@@ -138,15 +169,10 @@ SliderScene read_slider_scene(const toml::table& root) {
                        "a number from -π to π (rad; the moments (cos φ, 0, −sin φ))", within_pi);
 
   const Section drive = section(root, "drive");
-  scene.speed = drive.number("speed", scene.speed, "a number > 0 (m/s)", positive);
+  scene.speeds = grid(drive, "speed", "> 0 (m/s)", positive, scene.speeds);
+  scene.speed = scene.speeds.front();
   scene.rest = drive.number("rest", scene.rest, "a number >= 0 (s)", [](double x) { return x >= 0; });
-  scene.end = drive.number("end", scene.end, "a number > 0 (s)", positive);
-  const double period = scene.spacing / scene.speed;
-  if (scene.end - scene.rest < period * (1 - 1e-9))
-    fail(drive.key("end"), "must leave at least one substrate period a/v = " + std::to_string(period) +
-                               " s of sliding after drive.rest (the friction is a mean over whole periods)");
-  if (scene.end - scene.rest > 1e4 * scene.spacing / scene.speed)
-    fail(drive.key("end"), "gives more than 10000 substrate periods of sliding");
+  read_run_length(drive, scene);
 
   scene.separations = grid(section(root, "sweep"), "separation", "> 0 (layer separation h, m)", positive);
   for (const double h : scene.separations)
@@ -191,7 +217,7 @@ SliderScene read_slider_scene(const toml::table& root) {
       fail(observables.key(key), "needs a single slider size (each size has its own number of rotors)");
 
   const Section numerics = section(root, "numerics");
-  scene.stepper = read_stepper(numerics);
+  scene.stepper = read_stepper(numerics, ensemble::default_slider_stepper_name);
   scene.rtol = numerics.number("rtol", scene.rtol, rtol_range, valid_rtol);
   scene.atol = numerics.number("atol", scene.atol, atol_range, valid_atol);
   scene.max_steps = read_max_steps(numerics);

@@ -97,10 +97,9 @@ void check_sections(const toml::table& root,
   }
 }
 
-kernels::StepperId read_stepper(const Section& numerics) {
+kernels::StepperId read_stepper(const Section& numerics, std::string_view fallback) {
   const std::set<std::string> names(kernels::stepper_names.begin(), kernels::stepper_names.end());
-  return *kernels::parse_stepper(
-      numerics.choice("stepper", std::string(kernels::default_stepper_name), names));
+  return *kernels::parse_stepper(numerics.choice("stepper", std::string(fallback), names));
 }
 
 double read_max_steps(const Section& numerics) {

@@ -139,8 +139,9 @@ inline Section section(const toml::table& root, const std::string& name) {
 std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
                          bool (*valid)(double), const std::vector<double>& fallback = {});
 
-/// numerics.stepper: a name from the stepper list (default rodas4).
-kernels::StepperId read_stepper(const Section& numerics);
+/// numerics.stepper: a name from the stepper list (`fallback` where the scene names none).
+kernels::StepperId read_stepper(const Section& numerics,
+                                std::string_view fallback = kernels::default_stepper_name);
 /// The tolerances every scene allows, with the words its messages use.
 inline constexpr const char* rtol_range = "a number from 1e-14 to 1e-2";
 inline constexpr const char* atol_range = "a number from 1e-16 to 1e-2";

@@ -4,8 +4,11 @@
 separations (the closest, the friction peak, the farthest). With --rows, the friction the row model
 predicts for the slider size whose columns equal its model.row_length (a `rotorsweep run` result), its
 A mapped to h both ways of docs/model.md §9: the paper's (a/h)³ m_sub/m and the substrate
-field's first harmonic.
-Usage: plot_slider.py RESULT.h5 OUT.png [--rows ROWS.h5]"""
+field's first harmonic. With --velocity, a scan over drive.speed (examples/friction_velocity.toml): the
+friction against the sliding speed on log axes, one curve per separation (all, or --separations in mm)
+and damping, with its slope d log F / d log v at the slowest speeds (1: viscous, 0: speed-independent),
+and the order parameter across y against the speed.
+Usage: plot_slider.py RESULT.h5 OUT.png [--rows ROWS.h5 | --velocity [--separations MM,MM,...]]"""
 import argparse
 import re
 import sys
@@ -41,11 +44,77 @@ def row_model_curves(rows_path, h, A_paper, A_field, force_per_row_unit, slider_
     return curves
 
 
+def read_curve(f, h5_path):
+    """/curve of a complete slider result, or exit with what is wrong."""
+    if f.attrs.get("kind", b"") not in ("slider", b"slider"):
+        sys.exit(f"error: {h5_path} is not a slider result (rotorsweep slider writes those)")
+    if not f.attrs.get("complete", False) or "curve" not in f:
+        sys.exit(f"error: {h5_path} is incomplete (the scan did not finish, or it is a shard: merge it first)")
+    return f["curve"]
+
+
+def order_axis(ax, xlabel, ylabel, title, fontsize):
+    """Labels an axis of order parameters, from −1 (AFM) to +1 (FM)."""
+    ax.axhline(0, color="gray", lw=0.5)
+    ax.set_ylim(-1.05, 1.05)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(f"{title} (+1 FM, −1 AFM)")
+    ax.legend(fontsize=fontsize)
+
+
+def velocity_plot(h5_path, png_path, separations_mm=None):
+    """Friction and order across y against the sliding speed, per separation and damping."""
+    with h5py.File(h5_path, "r") as f:
+        c = read_curve(f, h5_path)
+        if "speed" not in c or len(np.unique(c["speed"][:])) < 2:
+            sys.exit(f"error: {h5_path} has one sliding speed; --velocity needs a scan over drive.speed "
+                     "(examples/friction_velocity.toml)")
+        curve = {name: c[name][:] for name in ("speed", "damping", "separation", "columns", "rows", "friction",
+                                                "friction_std", "order_y")}
+    h_mm = curve["separation"] * 1e3
+    chosen = sorted(set(np.round(h_mm, 6)))
+    if separations_mm:
+        missing = [h for h in separations_mm if not np.isclose(h_mm, h).any()]
+        if missing:
+            sys.exit(f"error: --separations {missing} mm are not in {h5_path} (it has {chosen} mm)")
+        chosen = separations_mm
+    sizes = sorted(set(zip(curve["columns"], curve["rows"])), key=lambda size: size[0] * size[1])
+    dampings = sorted(set(curve["damping"]))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.6))
+    styles = ["o-", "s--", "^:", "d-."]
+    for (columns, rows), h, (d, damping) in [(s, h, d) for s in sizes for h in chosen
+                                              for d in enumerate(dampings)]:
+        sel = ((curve["columns"] == columns) & (curve["rows"] == rows) & np.isclose(h_mm, h)
+               & (curve["damping"] == damping))
+        order = np.argsort(curve["speed"][sel])
+        v = curve["speed"][sel][order] * 1e3
+        friction, spread = curve["friction"][sel][order], curve["friction_std"][sel][order]
+        slope = np.log(friction[1] / friction[0]) / np.log(v[1] / v[0])
+        label = f"h = {h:g} mm" + (f", {columns} × {rows}" if len(sizes) > 1 else "")
+        label += f", γ = {damping:g} kg m²/s" if len(dampings) > 1 else ""
+        line, = left.loglog(v, friction, styles[d % len(styles)], ms=3,
+                            label=f"{label} (slope {slope:.2f} at the slowest speeds)")
+        if np.isfinite(spread).any():
+            left.fill_between(v, friction - spread, friction + spread, color=line.get_color(), alpha=0.25)
+        right.semilogx(v, curve["order_y"][sel][order], styles[d % len(styles)], ms=3, color=line.get_color(),
+                       label=label)
+    left.set_xlabel("sliding speed v (mm/s)")
+    left.set_ylabel("mean friction force (N)")
+    left.set_title("friction against speed (slope 1: viscous; 0: speed-independent)")
+    left.legend(fontsize=7)
+    order_axis(right, "sliding speed v (mm/s)", "mean cos(θ_i − θ_j), y-neighbours", "order across y", 7)
+    fig.tight_layout()
+    fig.savefig(png_path, dpi=120)
+    print(f"wrote {png_path}")
+
+
 def main(h5_path, png_path, rows_path=None):
     with h5py.File(h5_path, "r") as f:
-        if f.attrs.get("kind", b"") not in ("slider", b"slider"):
-            sys.exit(f"error: {h5_path} is not a slider result (rotorsweep slider writes those)")
-        c = f["curve"]
+        c = read_curve(f, h5_path)
+        for axis in ("speed", "damping"):
+            if axis in c and len(np.unique(c[axis][:])) > 1:
+                sys.exit(f"error: {h5_path} scans {axis}s: draw it with --velocity (friction against speed)")
         curve = {name: c[name][:] for name in ("separation", "columns", "rows", "friction", "friction_std",
                                                 "order_x", "order_y", "A_paper", "A_field")}
         curve["separation"] = curve["separation"] * 1e3
@@ -85,13 +154,7 @@ def main(h5_path, png_path, rows_path=None):
     ax.set_ylabel("mean friction force (N)")
     ax.set_title("friction against separation")
     ax.legend(fontsize=8)
-    ax = axes[1]
-    ax.axhline(0, color="gray", lw=0.5)
-    ax.set_ylim(-1.05, 1.05)
-    ax.set_xlabel("layer separation h (mm)")
-    ax.set_ylabel("mean cos(θ_i − θ_j)")
-    ax.set_title("order parameters (+1 FM, −1 AFM)")
-    ax.legend(fontsize=8)
+    order_axis(axes[1], "layer separation h (mm)", "mean cos(θ_i − θ_j)", "order parameters", 8)
     ax = axes[2]
     if series is None:
         ax.text(0.5, 0.5, "no time series stored\n(observables.series = false)", ha="center", va="center")
@@ -119,5 +182,21 @@ if __name__ == "__main__":
     parser.add_argument("result")
     parser.add_argument("png")
     parser.add_argument("--rows", help="a row-model result of the same slider (rotorsweep run)")
+    parser.add_argument("--velocity", action="store_true",
+                        help="friction against sliding speed (a scan over drive.speed)")
+    parser.add_argument("--separations", help="with --velocity: the separations to draw, mm, comma-separated")
     args = parser.parse_args()
-    main(args.result, args.png, args.rows)
+    if args.separations and not args.velocity:
+        parser.error("--separations goes with --velocity")
+    if args.velocity:
+        if args.rows:
+            parser.error("--rows goes with the separation plot, not --velocity")
+        chosen = None
+        if args.separations:
+            try:
+                chosen = [float(h) for h in args.separations.split(",")]
+            except ValueError:
+                parser.error(f"--separations must be numbers in mm, comma-separated (got {args.separations!r})")
+        velocity_plot(args.result, args.png, chosen)
+    else:
+        main(args.result, args.png, args.rows)

@@ -23,16 +23,18 @@
 
 namespace rotorsweep::ensemble {
 
-/// The times (scaled) at which every member stops and is sampled: a grid of `samples_per_period` per
-/// period through the start of sliding, from 0 to the end; every period boundary is on it.
+/// The times (scaled) at which the members of one speed stop and are sampled: a grid of
+/// `samples_per_period` per period through the start of sliding, from 0 to the end; every period
+/// boundary is on it.
 struct SliderSampleGrid {
   std::vector<double> stops;
   std::vector<long> index;  ///< samples since the start of sliding (negative during the rest)
   std::size_t samples_per_period;
   std::size_t periods;
 
-  SliderSampleGrid(const SliderScene& scene, const SliderUnits& units)
-      : samples_per_period(scene.samples_per_period) {
+  /// The grid of a scene whose speed and end are set (slider_variant).
+  explicit SliderSampleGrid(const SliderScene& scene) : samples_per_period(scene.samples_per_period) {
+    const SliderUnits units(scene);
     const double dt = kernels::two_pi / double(samples_per_period);
     const double rest = scene.rest / units.time, end = scene.end / units.time;
     const long first = -long(std::floor(rest / dt + 1e-9));
@@ -53,10 +55,10 @@ struct SliderSampleGrid {
 };
 
 /// Members (plan indices) of one slider size on the lanes of an IntegrationLoop over
-/// SliderModel<V, Inertial> with Stepper, for LaneScheduler: each member's stops are the sample
-/// grid's, where its lane is sampled (drive force, order parameters, energy; its quadratures at
-/// period boundaries); it retires after the last sample. Lanes sampled in the same step attempt
-/// share one evaluation of the model.
+/// SliderModel<V, Inertial> with Stepper, for LaneScheduler: each member's stops are its speed's
+/// sample grid's (`grids`, one per speed), where its lane is sampled (drive force, order parameters, energy;
+/// its quadratures at period boundaries); it retires after the last sample. Lanes sampled in the same step
+/// attempt share one evaluation of the model.
 template <class V, bool Inertial, class Stepper>
 class SliderProblem {
  public:
@@ -66,10 +68,10 @@ class SliderProblem {
   using Result = SliderMember;
   static constexpr std::size_t width = Loop::width;
 
-  SliderProblem(const SliderScene& scene, const SliderSampleGrid& grid, SliderSize size)
+  SliderProblem(const SliderScene& scene, const std::vector<SliderSampleGrid>& grids, SliderSize size)
       : scene_(scene),
         units_(scene),
-        grid_(grid),
+        grids_(grids),
         size_(size),
         rotors_(kernels::SliderGrid{size.columns, size.rows}.rotors()),
         loop_(Inertial ? 2 * rotors_ : rotors_, settings(scene), kernels::SliderGrid{size.columns, size.rows},
@@ -82,14 +84,16 @@ class SliderProblem {
   std::optional<Member> take_queued() { return std::nullopt; }
   bool has_queued() const { return false; }
 
-  /// Puts plan member `plan_index` into lane l: its substrate table, its start; its schedule is one
-  /// "period" per sample.
+  /// Puts plan member `plan_index` into lane l: its substrate table, its speed's grid and damping, its
+  /// start; its schedule is one "period" per sample.
   PeriodSchedule start(std::size_t l, Member plan_index, bool) {
     Lane& lane = lanes_[l];
     lane.member = slider_plan_member(scene_, plan_index);
+    const SliderScene variant = slider_variant(scene_, lane.member.index.speed, lane.member.index.damping);
+    lane.grid = &grids_[lane.member.index.speed];
     lane.table = std::make_shared<const kernels::SubstrateTable>(
-        substrate_table<V>(scene_, size_, lane.member.separation));
-    const kernels::SliderParameters parameters = slider_parameters(scene_, *lane.table);
+        substrate_table<V>(variant, size_, lane.member.separation));
+    const kernels::SliderParameters parameters = slider_parameters(variant, *lane.table);
     if (scene_.forces) build_gradient_tables(l);
     if (!primed_) {  // lanes never started compute along with this member's tables
       for (std::size_t other = 0; other < width; ++other) {
@@ -106,9 +110,9 @@ class SliderProblem {
     const std::vector<double> theta = slider_start(scene_, lane.member.index);
     std::copy(theta.begin(), theta.end(), y0.begin());
     loop_.start(l, parameters, y0);
-    loop_.set_stop(l, grid_.stops.front());
+    loop_.set_stop(l, lane.grid->stops.front());
     SliderMember& m = lane.member;
-    const std::size_t samples = grid_.stops.size();
+    const std::size_t samples = lane.grid->stops.size();
     for (auto* series : {&m.friction_series, &m.order_x_series, &m.order_y_series, &m.energy_series})
       series->assign(samples, 0.0);
     if (scene_.angles) m.angles.assign(samples * rotors_, 0.0);
@@ -138,7 +142,7 @@ class SliderProblem {
     Lane& lane = lanes_[l];
     const std::size_t k = lane.sample++;
     record_sample(l, k);
-    if (grid_.boundary(k)) {
+    if (lane.grid->boundary(k)) {
       lane.impulse_at.push_back(loop_.quadrature(l, Model::impulse_index));
       lane.dissipation_at.push_back(loop_.quadrature(l, Model::dissipation_index));
       lane.energy_at.push_back(kernels::lane_get(energy_, l));
@@ -146,7 +150,7 @@ class SliderProblem {
     return 0.0;
   }
 
-  void next_period(std::size_t l) { loop_.set_stop(l, grid_.stops[lanes_[l].sample]); }
+  void next_period(std::size_t l) { loop_.set_stop(l, lanes_[l].grid->stops[lanes_[l].sample]); }
 
   /// Retires lane l's member: a failed member's remaining samples hold its frozen state (every
   /// observable over periods is NaN); then its summaries, in SI.
@@ -158,7 +162,7 @@ class SliderProblem {
     m.steps_accepted = loop_.steps_accepted(l);
     m.steps_rejected = loop_.steps_rejected(l);
     const bool ok = m.status == "ok";
-    for (std::size_t k = lane.sample; k < grid_.stops.size(); ++k) record_sample(l, k);
+    for (std::size_t k = lane.sample; k < lane.grid->stops.size(); ++k) record_sample(l, k);
     summarize(lane, ok);
     loop_.release(l);
     retire(std::move(m));
@@ -167,6 +171,7 @@ class SliderProblem {
  private:
   struct Lane {
     SliderMember member;
+    const SliderSampleGrid* grid = nullptr;                ///< its speed's
     std::shared_ptr<const kernels::SubstrateTable> table;  ///< kept while the model may read it
     /// With SliderScene::forces: the tables at shifted tracks (SliderModel::GradientTable order)
     std::array<std::shared_ptr<const kernels::SubstrateTable>, 4> gradient;
@@ -288,9 +293,10 @@ class SliderProblem {
   /// order parameters (NaN for a member that failed: its values would describe a frozen state).
   void summarize(Lane& lane, bool ok) const {
     SliderMember& m = lane.member;
+    const SliderSampleGrid& grid = *lane.grid;
     const double nan = std::nan("");
     const double speed = 1.0 / kernels::two_pi, period = kernels::two_pi;
-    for (std::size_t p = 0; p < grid_.periods; ++p) {
+    for (std::size_t p = 0; p < grid.periods; ++p) {
       if (!ok) {
         for (auto* values :
              {&m.period_friction, &m.period_work, &m.period_dissipation, &m.period_stored, &m.period_balance})
@@ -307,13 +313,13 @@ class SliderProblem {
       m.period_balance.push_back((work - dissipated - stored) /
                                  std::max({std::fabs(work), std::fabs(dissipated), 1e-300}));
     }
-    m.friction = ok && grid_.periods > 0 ? (lane.impulse_at[grid_.periods] - lane.impulse_at[0]) /
-                                               (period * double(grid_.periods)) * units_.force
-                                         : nan;
+    m.friction = ok && grid.periods > 0 ? (lane.impulse_at[grid.periods] - lane.impulse_at[0]) /
+                                              (period * double(grid.periods)) * units_.force
+                                        : nan;
     double sum_x = 0.0, sum_y = 0.0;
     std::size_t count = 0;
-    for (std::size_t k = 0; k < grid_.stops.size(); ++k) {
-      if (grid_.index[k] <= 0) continue;
+    for (std::size_t k = 0; k < grid.stops.size(); ++k) {
+      if (grid.index[k] <= 0) continue;
       sum_x += m.order_x_series[k];
       sum_y += m.order_y_series[k];
       ++count;
@@ -321,19 +327,19 @@ class SliderProblem {
     m.order_x = ok && count ? sum_x / double(count) : nan;
     m.order_y = ok && count ? sum_y / double(count) : nan;
     if (scene_.forces) {
-      m.period_force_y = period_means(m.force_y_series, ok);
-      m.period_force_z = period_means(m.force_z_series, ok);
+      m.period_force_y = period_means(grid, m.force_y_series, ok);
+      m.period_force_z = period_means(grid, m.force_z_series, ok);
     }
   }
 
   /// Per period of sliding, the trapezoidal mean of a series over the period's samples (NaN when the
   /// member failed).
-  std::vector<double> period_means(const std::vector<double>& series, bool ok) const {
-    const auto start =
-        std::size_t(std::find(grid_.index.begin(), grid_.index.end(), 0L) - grid_.index.begin());
-    const std::size_t per = grid_.samples_per_period;
+  static std::vector<double> period_means(const SliderSampleGrid& grid, const std::vector<double>& series,
+                                          bool ok) {
+    const auto start = std::size_t(std::find(grid.index.begin(), grid.index.end(), 0L) - grid.index.begin());
+    const std::size_t per = grid.samples_per_period;
     std::vector<double> means;
-    for (std::size_t p = 0; p < grid_.periods; ++p) {
+    for (std::size_t p = 0; p < grid.periods; ++p) {
       const std::size_t first = start + p * per;
       double sum = 0.5 * (series[first] + series[first + per]);
       for (std::size_t k = first + 1; k < first + per; ++k) sum += series[k];
@@ -344,7 +350,7 @@ class SliderProblem {
 
   const SliderScene& scene_;
   SliderUnits units_;
-  const SliderSampleGrid& grid_;
+  const std::vector<SliderSampleGrid>& grids_;
   SliderSize size_;
   std::size_t rotors_;
   Loop loop_;

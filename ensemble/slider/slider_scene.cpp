@@ -21,6 +21,14 @@ SliderUnits::SliderUnits(const SliderScene& scene)
       force(energy / scene.spacing),
       power(energy / time) {}
 
+SliderScene slider_variant(const SliderScene& scene, std::size_t speed, std::size_t damping) {
+  SliderScene variant = scene;
+  variant.speed = scene.speeds[speed];
+  variant.damping = scene.dampings[damping];
+  if (scene.periods > 0) variant.end = scene.rest + double(scene.periods) * scene.spacing / variant.speed;
+  return variant;
+}
+
 kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, SliderSize size, double separation) {
   const auto centre_offset = [](std::size_t slider, std::size_t substrate) {
     return 0.5 * double(slider - 1) - 0.5 * double(substrate - 1);

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -14,6 +15,12 @@
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
+
+/// The slider's stepper and tolerance where a scene names none: on the experiment's scan rodas5p at
+/// rtol 5e-7 has the friction within 2.5e-7 and the energy balance per period within 6e-7 in 2.2 s,
+/// where the row model's default rodas4p2 at rtol 1e-6 leaves the balance at 1e-4 (docs/performance.md
+/// "The slider").
+inline constexpr std::string_view default_slider_stepper_name = "rodas5p";
 
 /// How a member's angles start: rows (along x, fixed y) alternately near 0 and π, all near 0, or
 /// every angle uniform on [0, 2π) (the first two with uniform noise of full width `noise`), or
@@ -34,10 +41,12 @@ struct SliderScene {
   double spacing = 16e-3;                 ///< a, m (slider and substrate)
   double moment = 4.57e-2;                ///< m, A m²
   double inertia = 7.48e-10;              ///< I, kg m²
-  double damping = 2.5e-6;                ///< γ, kg m²/s
-  bool overdamped = false;                ///< γ θ̇ = τ instead of I θ̈ = τ − γ θ̇
-  double tilt = 0.0;                      ///< rad: the grid turned about z (kernels::SliderPlacement)
-  double shift_x = 0.0, shift_y = 0.0;    ///< m: the grid shifted before it is turned
+  std::vector<double> dampings{2.5e-6};   ///< γ, kg m²/s (a sweep axis)
+  /// γ of the members being run (slider_variant picks it from dampings)
+  double damping = 2.5e-6;
+  bool overdamped = false;              ///< γ θ̇ = τ instead of I θ̈ = τ − γ θ̇
+  double tilt = 0.0;                    ///< rad: the grid turned about z (kernels::SliderPlacement)
+  double shift_x = 0.0, shift_y = 0.0;  ///< m: the grid shifted before it is turned
 
   // [substrate]
   std::size_t substrate_columns = 35;
@@ -47,9 +56,15 @@ struct SliderScene {
   double nodes_per_depth = 16.0;      ///< table nodes per separation h along x (error ∝ (h / nodes)⁶)
 
   // [drive]
-  double speed = 8e-3;  ///< v, m/s
-  double rest = 0.5;    ///< s at rest before sliding
-  double end = 10.5;    ///< s, end of the run
+  std::vector<double> speeds{8e-3};  ///< v, m/s (a sweep axis)
+  double rest = 0.5;                 ///< s at rest before sliding, at every speed
+  /// Whole substrate periods slid after the rest at every speed (drive.periods); 0: the run ends at
+  /// `end` s instead (one speed only).
+  std::size_t periods = 0;
+  /// v and the end of the run (s) of the members being run: slider_variant picks v from speeds and
+  /// sets end = rest + periods a/v where periods is given.
+  double speed = 8e-3;
+  double end = 10.5;
 
   // [sweep]
   std::vector<double> separations{8e-3};  ///< h, m
@@ -76,16 +91,21 @@ struct SliderScene {
   bool rotor_observables() const { return energies || field || sublattices || torques; }
 
   // [numerics]
-  kernels::StepperId stepper = kernels::default_stepper();
-  double rtol = 1e-6;
-  double atol = 1e-6;
+  kernels::StepperId stepper = *kernels::parse_stepper(default_slider_stepper_name);
+  double rtol = 5e-7;
+  double atol = 5e-7;
   double max_steps = 1e8;
 
   std::string output_path = "results/slider.h5";
   std::string text;  ///< the scene file as read
 
-  std::size_t member_count() const { return sizes.size() * separations.size() * replicas; }
+  std::size_t member_count() const {
+    return sizes.size() * speeds.size() * dampings.size() * separations.size() * replicas;
+  }
 };
+
+/// The scene as its members of speeds[speed] and dampings[damping] run it: speed, damping and end set.
+SliderScene slider_variant(const SliderScene& scene, std::size_t speed, std::size_t damping);
 
 /// The scene's units: energy E0 = μ0 m²/(4π a³) in J, time T0 = a/(2π v) in s, so that one substrate
 /// period a/v is 2π; forces in E0/a, power in E0/T0.
@@ -137,9 +157,9 @@ double field_drive_amplitude(const SliderScene& scene, SliderSize size, double s
 /// One lane's scaled parameters over `table`.
 kernels::SliderParameters slider_parameters(const SliderScene& scene, const kernels::SubstrateTable& table);
 
-/// Where a member sits in the scene's plan: size-major, then separation, then replica.
+/// Where a member sits in the scene's plan: size-major, then speed, damping, separation, replica.
 struct SliderMemberIndex {
-  std::size_t size = 0, separation = 0, replica = 0;
+  std::size_t size = 0, speed = 0, damping = 0, separation = 0, replica = 0;
 };
 
 /// The angles a member starts from: seed and (size, separation, replica) pick its stream, so a

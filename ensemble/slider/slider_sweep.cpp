@@ -1,6 +1,6 @@
-// The slider scan: members of each size on lane schedulers over OpenMP threads (SliderProblem: sampled
-// on the sample grid, friction and dissipation from the quadratures at period boundaries, SI; docs/model.md
-// §9).
+// The slider scan: the members of each size on lane schedulers over OpenMP threads (SliderProblem:
+// sampled on their speed's sample grid, friction and dissipation from the quadratures at period
+// boundaries, SI; docs/model.md §9).
 #include "ensemble/slider/slider_sweep.hpp"
 
 #include <omp.h>
@@ -24,13 +24,28 @@ namespace {
 
 using V = kernels::simd_lane;
 
+/// Puts NaN before the member's own samples so that its series fill the timeline's `samples` columns
+/// (a speed whose rest has fewer samples than the fastest one's).
+void align_series(SliderMember& m, std::size_t samples) {
+  const std::size_t missing = samples - m.friction_series.size(), rotors = m.size.rotors();
+  if (missing == 0) return;
+  for (auto* series : {&m.friction_series, &m.order_x_series, &m.order_y_series, &m.energy_series,
+                       &m.substrate_energy_series, &m.pair_energy_series, &m.field_axis_series,
+                       &m.field_z_series, &m.moment_axis_even_series, &m.moment_z_even_series,
+                       &m.torque_even_series, &m.moment_axis_odd_series, &m.moment_z_odd_series,
+                       &m.torque_odd_series, &m.force_x_series, &m.force_y_series, &m.force_z_series})
+    if (!series->empty()) series->insert(series->begin(), missing, std::nan(""));
+  for (auto* per_rotor : {&m.angles, &m.torques})
+    if (!per_rotor->empty()) per_rotor->insert(per_rotor->begin(), missing * rotors, std::nan(""));
+}
+
 /// Runs the members of each size (`sizes`, plan indices) on lane schedulers, one per thread and
 /// size, with one counter per size: a thread whose size has no member left goes on to the next size
-/// while the others finish theirs. Each finished member goes to `finished` (one call at a time).
-/// Returns whether stopped() left any out; an exception in a worker (std::bad_alloc) stops the
-/// others and is rethrown here.
+/// while the others finish theirs. `grids`: each speed's sample grid. Each finished member goes to
+/// `finished` (one call at a time) with its series on `samples` columns. Returns whether stopped()
+/// left any out; an exception in a worker (std::bad_alloc) stops the others and is rethrown here.
 template <bool Inertial>
-bool run_sizes(const SliderScene& scene, const SliderSampleGrid& grid,
+bool run_sizes(const SliderScene& scene, const std::vector<SliderSampleGrid>& grids, std::size_t samples,
                const std::vector<std::vector<std::size_t>>& sizes, const SliderScanControl& control,
                const std::function<void(std::vector<SliderMember>&&)>& finished) {
   const int threads = control.threads > 0 ? control.threads : omp_get_max_threads();
@@ -49,7 +64,7 @@ bool run_sizes(const SliderScene& scene, const SliderSampleGrid& grid,
       for (std::size_t s = 0; s < sizes.size() && !stop(); ++s) {
         const std::vector<std::size_t>& indices = sizes[s];
         LaneScheduler<SliderProblem<V, Inertial, Stepper>> scheduler(
-            scene, grid, slider_plan_member(scene, indices.front()).size);
+            scene, grids, slider_plan_member(scene, indices.front()).size);
         scheduler.run(
             [&]() -> std::optional<std::size_t> {
               if (stop()) return std::nullopt;
@@ -58,6 +73,7 @@ bool run_sizes(const SliderScene& scene, const SliderSampleGrid& grid,
               return indices[k];
             },
             [&](SliderMember&& member) {
+              align_series(member, samples);
               std::vector<SliderMember> one;
               one.push_back(std::move(member));
 #pragma omp critical(slider_finished)
@@ -82,30 +98,49 @@ bool run_sizes(const SliderScene& scene, const SliderSampleGrid& grid,
 }  // namespace
 
 SliderMember slider_plan_member(const SliderScene& scene, std::size_t plan_index) {
-  const std::size_t replicas = scene.replicas, separations = scene.separations.size();
   SliderMember m;
   m.plan_index = plan_index;
-  m.index = {plan_index / (separations * replicas), plan_index / replicas % separations,
-             plan_index % replicas};
+  std::size_t rest = plan_index;
+  const auto take = [&](std::size_t count) {
+    const std::size_t at = rest % count;
+    rest /= count;
+    return at;
+  };
+  m.index.replica = take(scene.replicas);
+  m.index.separation = take(scene.separations.size());
+  m.index.damping = take(scene.dampings.size());
+  m.index.speed = take(scene.speeds.size());
+  m.index.size = rest;
   m.size = scene.sizes[m.index.size];
+  m.speed = scene.speeds[m.index.speed];
+  m.damping = scene.dampings[m.index.damping];
   m.separation = scene.separations[m.index.separation];
   return m;
 }
 
 SliderTimeline slider_timeline(const SliderScene& scene) {
-  const SliderUnits units(scene);
-  const SliderSampleGrid schedule(scene, units);
   SliderTimeline timeline;
-  timeline.period = scene.spacing / scene.speed;
-  timeline.periods = schedule.periods;
-  for (const double t : schedule.stops) timeline.sample_times.push_back(t * units.time);
+  std::vector<std::vector<double>> times;
+  for (std::size_t v = 0; v < scene.speeds.size(); ++v) {
+    const SliderScene variant = slider_variant(scene, v, 0);
+    const SliderUnits units(variant);
+    const SliderSampleGrid grid(variant);
+    timeline.periods = grid.periods;
+    timeline.period.push_back(variant.spacing / variant.speed);
+    times.emplace_back();
+    for (const double t : grid.stops) times.back().push_back(t * units.time);
+    timeline.samples = std::max(timeline.samples, grid.stops.size());
+  }
+  for (auto& t : times) t.insert(t.begin(), timeline.samples - t.size(), std::nan(""));
+  timeline.sample_times = std::move(times);
   return timeline;
 }
 
 bool run_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                         const SliderScanControl& control,
                         const std::function<void(std::vector<SliderMember>&&)>& finished) {
-  const SliderSampleGrid grid(scene, SliderUnits(scene));
+  std::vector<SliderSampleGrid> grids;
+  for (std::size_t v = 0; v < scene.speeds.size(); ++v) grids.emplace_back(slider_variant(scene, v, 0));
   // the members of each size in turn (a lane scheduler's loop has one grid of rotors)
   std::vector<std::vector<std::size_t>> sizes;
   std::size_t last_size = 0;
@@ -116,8 +151,9 @@ bool run_slider_members(const SliderScene& scene, const std::vector<std::size_t>
     last_size = size;
   }
   if (sizes.empty()) return false;
-  return scene.overdamped ? run_sizes<false>(scene, grid, sizes, control, finished)
-                          : run_sizes<true>(scene, grid, sizes, control, finished);
+  const std::size_t samples = slider_timeline(scene).samples;
+  return scene.overdamped ? run_sizes<false>(scene, grids, samples, sizes, control, finished)
+                          : run_sizes<true>(scene, grids, samples, sizes, control, finished);
 }
 
 SliderResult run_slider_scan(const SliderScene& scene, const SliderScanControl& control) {

@@ -13,15 +13,18 @@ namespace rotorsweep::ensemble {
 
 /// One member's results, SI units.
 struct SliderMember {
-  std::size_t plan_index = 0;  ///< its row in the plan: size-major, then separation, then replica
-  SliderMemberIndex index;     ///< its place in the plan (size, separation, replica)
+  std::size_t plan_index = 0;  ///< its row in the plan (SliderMemberIndex's order)
+  SliderMemberIndex index;     ///< its place in the plan (size, speed, damping, separation, replica)
   SliderSize size;
+  double speed = 0.0;       ///< v, m/s
+  double damping = 0.0;     ///< γ, kg m²/s
   double separation = 0.0;  ///< h, m
   double friction = 0.0;    ///< mean drive force over the whole periods of sliding, N
   std::vector<double> period_friction, period_work, period_dissipation, period_stored;  ///< N, J, J, J
   std::vector<double> period_balance;   ///< (work − dissipation − stored) / max(|work|, dissipation)
   double order_x = 0.0, order_y = 0.0;  ///< mean over the samples while sliding
-  std::vector<double> friction_series, order_x_series, order_y_series, energy_series;  ///< per sample
+  /// Per sample of the scan's timeline (SliderTimeline: NaN before the first sample of the member's speed)
+  std::vector<double> friction_series, order_x_series, order_y_series, energy_series;
   std::vector<double> angles;  ///< samples × rotors, when asked for
   /// Per sample, when asked for (SliderScene::energies, field, sublattices): the substrate energy
   /// −Σ m·B and the pairs' energy (J); the mean B_∥ and B_z at the rotors' sites (T); the mean unit
@@ -38,14 +41,17 @@ struct SliderMember {
   std::string status = "ok";
 };
 
-/// Member `plan_index` of the scene's plan before it runs: its place, size and separation.
+/// Member `plan_index` of the scene's plan before it runs: its place, size, speed, damping and separation.
 SliderMember slider_plan_member(const SliderScene& scene, std::size_t plan_index);
 
-/// When every member is sampled: the sample grid and the whole periods of sliding it holds.
+/// When the members are sampled: each speed's sample grid, with `samples_per_period` samples per
+/// substrate period through the start of sliding, on one axis of `samples` columns aligned at the
+/// start of sliding (a slower speed samples its rest fewer times: its first columns are NaN).
 struct SliderTimeline {
-  std::vector<double> sample_times;  ///< s (0 = start of the rest)
-  std::size_t periods = 0;           ///< whole substrate periods of sliding
-  double period = 0.0;               ///< a / v, s
+  std::size_t samples = 0;                        ///< columns of every series
+  std::vector<std::vector<double>> sample_times;  ///< per speed: s since the start of the rest, or NaN
+  std::size_t periods = 0;                        ///< whole substrate periods of sliding (every speed)
+  std::vector<double> period;                     ///< per speed: a / v, s
 };
 SliderTimeline slider_timeline(const SliderScene& scene);
 

@@ -1,7 +1,8 @@
 """A slider result file (README "The experiment's slider") as an xarray.Dataset: members over the
-dimensions size, separation and replica, their per-period values over period, their time
-series over time, and /curve's replica statistics and mappings of A as curve_<name> over size and
-separation (docs/model.md §9)."""
+dimensions size, speed, damping, separation and replica (speed and damping only where the scan has
+several; else scalar coordinates), their per-period values over period, their time series over time
+(over sample, with time per speed, where the scan has several speeds), and /curve's replica statistics
+and mappings of A as curve_<name> over the same axes (docs/model.md §9)."""
 
 import numpy as np
 import pandas as pd
@@ -13,6 +14,10 @@ from ._dataset import _attributes
 #: "units" attribute ("1": dimensionless)
 _UNITS = {"separation": "m", "friction": "N", "period_friction": "N", "period_work": "J",
           "period_dissipation": "J", "period_stored": "J", "energy": "J", "time": "s"}
+
+#: the plan's axes after size, in plan order, and their units (files before the speed and damping axes
+#: have neither column)
+_AXES = {"speed": "m/s", "damping": "kg m²/s", "separation": "m"}
 
 
 def _attrs(name, dataset, text=False):
@@ -28,12 +33,18 @@ def _text(values):
     return np.array([v.decode() if isinstance(v, bytes) else str(v) for v in values])
 
 
-def _curve(group):
-    """/curve (one row per size and separation) as curve_<name> variables over size and separation."""
+def _index(group, extra=()):
+    """The MultiIndex of a table's rows over size, the axes the table has, and `extra` columns."""
     size = np.array([f"{c}x{r}" for c, r in zip(group["columns"][:], group["rows"][:])])
-    index = pd.MultiIndex.from_arrays([size, group["separation"][:]], names=["size", "separation"])
+    names = [name for name in _AXES if name in group] + list(extra)
+    return pd.MultiIndex.from_arrays([size] + [group[name][:] for name in names], names=["size"] + names)
+
+
+def _curve(group):
+    """/curve (one row per size, speed, damping and separation) as curve_<name> variables over them."""
+    index = _index(group)
     variables = {f"curve_{name}": xr.Variable(("point",), dataset[:], _attrs(name, dataset))
-                 for name, dataset in group.items() if name not in ("separation", "columns", "rows")}
+                 for name, dataset in group.items() if name not in set(index.names) | {"columns", "rows"}}
     # every (size, separation) is a row, so nothing is filled; integer columns stay integers
     fill = {name: (-1 if v.dtype.kind in "iu" else np.nan) for name, v in variables.items()}
     return xr.Dataset(variables, coords={"point": index}).unstack("point", fill_value=fill)
@@ -45,13 +56,10 @@ def from_hdf5(h5file):
     if not attrs.get("complete", False):
         raise ValueError(f"'{h5file.filename}' is not a complete result (attribute complete = FALSE)")
     members = h5file["members"]
-    columns, rows = members["columns"][:], members["rows"][:]
-    size = np.array([f"{c}x{r}" for c, r in zip(columns, rows)])
-    index = pd.MultiIndex.from_arrays([size, members["separation"][:], members["replica"][:]],
-                                      names=["size", "separation", "replica"])
+    index = _index(members, ("replica",))
     variables = {}
     for name, dataset in members.items():
-        if name in ("separation", "replica", "columns", "rows", "done", "plan_index"):
+        if name in set(index.names) | {"columns", "rows", "done", "plan_index"}:
             continue
         values = dataset[:]
         text = values.dtype.kind in "OS"
@@ -59,19 +67,35 @@ def from_hdf5(h5file):
             values = _text(values)
         dims = ("member",) if values.ndim == 1 else ("member", "period")
         variables[name] = xr.Variable(dims, values, _attrs(name, dataset, text))
-    series = h5file["series"]
-    for name, dataset in series.items():
-        if name == "time":
-            continue
-        dims = ("member", "time", "rotor")[: dataset.ndim]  # angles and torques: one per rotor
-        variables[f"series_{name}"] = xr.Variable(dims, dataset[:], _attrs(name, dataset))
-    coords = {"member": index, "time": ("time", series["time"][:], {"units": "s"})}
+    coords = {"member": index}
+    times = None
+    if "series" in h5file:
+        series = h5file["series"]
+        times = series["time"][:]
+        # one speed: a time axis; several: a sample axis, with each speed's times (NaN before its first sample)
+        sample = "time" if times.ndim == 1 else "sample"
+        for name, dataset in series.items():
+            if name == "time":
+                continue
+            dims = ("member", sample, "rotor")[: dataset.ndim]  # angles and torques: one per rotor
+            variables[f"series_{name}"] = xr.Variable(dims, dataset[:], _attrs(name, dataset))
+        if times.ndim == 1:
+            coords["time"] = ("time", times, {"units": "s"})
     dataset = xr.Dataset(variables, coords=coords, attrs=attrs).unstack("member")
     if "curve" in h5file:
         dataset = dataset.merge(_curve(h5file["curve"]))
-    sizes = list(dict.fromkeys(size))  # the scene's order
+    sizes = list(dict.fromkeys(index.get_level_values("size")))  # the scene's order
     dataset = dataset.reindex(size=sizes)
     dataset = dataset.assign_coords(columns=("size", [int(s.split("x")[0]) for s in sizes]),
                                     rows=("size", [int(s.split("x")[1]) for s in sizes]))
-    dataset["separation"].attrs["units"] = "m"
-    return dataset.transpose("size", "separation", "replica", ...)
+    if times is not None and times.ndim == 2:  # rows in drive.speed's order
+        dataset = dataset.reindex(speed=list(dict.fromkeys(index.get_level_values("speed"))))
+        dataset = dataset.assign_coords(time=(("speed", "sample"), times, {"units": "s"}))
+    for name, units in _AXES.items():
+        if name in dataset.coords:
+            dataset[name].attrs["units"] = units
+    # an axis of one value (one speed, one damping) is a scalar coordinate
+    single = [name for name in ("speed", "damping") if name in dataset.dims and dataset.sizes[name] == 1]
+    dataset = dataset.squeeze(single)
+    axes = [name for name in ("size", "speed", "damping", "separation", "replica") if name in dataset.dims]
+    return dataset.transpose(*axes, ...)

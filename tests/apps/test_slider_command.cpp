@@ -44,7 +44,7 @@ TEST_CASE("slider writes a complete result file that info summarises", "[apps][s
   const auto info = run_cli("info '" + out.string() + "'", dir);
   CHECK(info.exit_code == 0);
   CHECK_THAT(info.output, Catch::Contains("kind         slider") && Catch::Contains("status       ok 3") &&
-                              Catch::Contains("peak at h = "));
+                              Catch::Contains("peak at h = ") && Catch::Contains("v (mm/s)     8\n"));
   CHECK(info.output.find("# scene") == std::string::npos);
   const auto with_scene = run_cli("info '" + out.string() + "' --scene", dir);
   CHECK(with_scene.exit_code == 0);
@@ -64,6 +64,12 @@ TEST_CASE("slider refuses bad scenes with exit code 2 and writes nothing", "[app
     CHECK_FALSE(std::filesystem::exists(out));
   };
   expect_refusal("slider", small_slider + "[numerics]\nrtol = 0.5\n", "numerics.rtol");
+  const std::string one_h = "[sweep]\nseparation = [8e-3]\n";
+  expect_refusal("slider", one_h + "[drive]\nspeed = [4e-3, 8e-3]\n", "drive.periods");
+  expect_refusal("slider", one_h + "[drive]\nspeed = [4e-3, 8e-3]\nend = 30.0\n", "drive.end");
+  expect_refusal("slider", one_h + "[drive]\nspeed = [4e-3, 0.0]\nperiods = 2\n", "drive.speed");
+  expect_refusal("slider", one_h + "[drive]\nperiods = 0\n", "drive.periods");
+  expect_refusal("slider", one_h + "[slider]\ndamping = [2.5e-6, -1.0]\n", "slider.damping");
   expect_refusal("slider", "[slider]\nspeed = 1.0\n[sweep]\nseparation = [8e-3]\n", "slider.speed");
   expect_refusal("slider", "[sweep]\nseparation = [8e-3]\n[substrate]\nangle = 4\n", "substrate.angle");
   expect_refusal("slider", "[slider]\ntilt = -3.5\n[sweep]\nseparation = [8e-3]\n", "slider.tilt");

@@ -66,3 +66,39 @@ def test_plot_slider_refuses_a_row_model_file(tmp_path, executable):
                           capture_output=True, text=True)
     assert done.returncode != 0
     assert "is not a slider result" in done.stderr
+
+
+VELOCITY = """
+[slider]
+columns = 3
+rows = 2
+[substrate]
+columns = 9
+rows = 9
+[drive]
+rest = 0.2
+periods = 2
+speed = { from = 2e-3, to = 32e-3, count = 5, spacing = "log" }
+[sweep]
+separation = [6e-3, 10e-3]
+[observables]
+series = false
+"""
+
+
+def test_plot_slider_velocity_draws_friction_against_speed(tmp_path, executable):
+    (tmp_path / "velocity.toml").write_text(VELOCITY)
+    result = tmp_path / "velocity.h5"
+    completed = subprocess.run([executable, "slider", str(tmp_path / "velocity.toml"), "-o", str(result), "-q"],
+                               capture_output=True, text=True)
+    assert completed.returncode == 0, completed.stderr
+    png = tmp_path / "velocity.png"
+    done = subprocess.run([sys.executable, str(SCRIPT), str(result), str(png), "--velocity", "--separations", "10"],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert png.stat().st_size > 10000
+    refused = subprocess.run([sys.executable, str(SCRIPT), str(result), str(png)], capture_output=True, text=True)
+    assert refused.returncode != 0 and "--velocity" in refused.stderr
+    wrong = subprocess.run([sys.executable, str(SCRIPT), str(result), str(png), "--velocity", "--separations", "7"],
+                           capture_output=True, text=True)
+    assert wrong.returncode != 0 and "not in" in wrong.stderr

@@ -193,3 +193,44 @@ def test_the_curve_with_both_mappings_of_A_is_in_the_dataset(tmp_path):
             assert float(point["curve_friction"]) == curve["friction"][k]
     np.testing.assert_allclose(ds["curve_friction"], ds["friction"].mean("replica"), rtol=1e-12)
     assert ds["curve_A_field"].dims == ("size", "separation") and ds["curve_friction"].attrs["units"] == "N"
+
+
+def test_speed_and_damping_axes_are_dimensions_with_each_speeds_times(tmp_path):
+    scene = dict(SMALL, slider={"columns": 3, "rows": 2, "damping": [2.5e-6, 5e-6]},
+                 drive={"rest": 0.5, "periods": 2, "speed": [16e-3, 4e-3]}, initial={"replicas": 1},
+                 observables={"samples_per_period": 20, "forces": True})
+    out = tmp_path / "axes.h5"
+    ds = rotorsweep.slider(scene, threads=2, progress=False, output=out)
+    assert dict(ds.sizes) == {"size": 1, "speed": 2, "damping": 2, "separation": 3, "replica": 1, "period": 2,
+                              "sample": 51}
+    assert ds["speed"].attrs["units"] == "m/s" and ds["damping"].attrs["units"] == "kg m²/s"
+    # times per speed, in drive.speed's order: 16 mm/s samples 0.5 s of rest 10 times, 4 mm/s 3 times
+    assert list(ds["speed"].values) == [16e-3, 4e-3] and ds["time"].dims == ("speed", "sample")
+    fast, slow = ds["time"].sel(speed=16e-3).values, ds["time"].sel(speed=4e-3).values
+    assert fast[0] == 0.0 and fast[-1] == pytest.approx(2.5)
+    assert np.isnan(slow[:7]).all() and slow[7] == 0.0 and slow[-1] == pytest.approx(8.5)
+    series = ds["series_force_x"].sel(speed=4e-3, damping=5e-6, separation=7e-3, replica=0, size="3x2")
+    assert np.isnan(series.values[:7]).all() and np.isfinite(series.values[7:]).all()
+    with h5py.File(out) as f:
+        members = f["members"]
+        for k in range(members["friction"].shape[0]):
+            at = dict(size="3x2", speed=members["speed"][k], damping=members["damping"][k],
+                      separation=members["separation"][k], replica=0)
+            assert ds["friction"].sel(at).item() == members["friction"][k]
+            assert np.array_equal(ds["series_friction"].sel(at).values, f["series"]["friction"][k], equal_nan=True)
+        assert "period" not in f.attrs and "g" not in f.attrs  # per speed and damping: in /curve
+        curve = f["curve"]
+        for k in range(len(curve["speed"])):
+            point = ds.sel(size="3x2", speed=curve["speed"][k], damping=curve["damping"][k],
+                           separation=curve["separation"][k])
+            assert float(point["curve_friction"]) == curve["friction"][k]
+            assert float(point["curve_g"]) == curve["g"][k]
+    # g = γ/(E0 T0) grows with the damping and the speed (T0 = a/(2π v))
+    g = ds["curve_g"].sel(size="3x2", separation=7e-3)
+    assert float(g.sel(speed=16e-3, damping=5e-6)) == pytest.approx(8 * float(g.sel(speed=4e-3, damping=2.5e-6)))
+
+
+def test_one_speed_and_damping_are_scalar_coordinates(tmp_path):
+    ds = rotorsweep.slider(dict(SMALL, slider={"columns": 3, "rows": 2}), threads=1, progress=False)
+    assert "speed" not in ds.dims and float(ds["speed"]) == 8e-3 and float(ds["damping"]) == 2.5e-6
+    assert ds["time"].dims == ("time",)

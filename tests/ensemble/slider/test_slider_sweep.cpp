@@ -48,9 +48,12 @@ TEST_CASE("slider scan: samples, periods, energy balance and friction", "[ensemb
   const auto result = scan(small_scene());
   REQUIRE(result.members.size() == 4);
   CHECK(result.timeline.periods == 2);
-  CHECK(result.timeline.period == Approx(2.0));
-  CHECK(result.timeline.sample_times.front() == 0.0);
-  CHECK(result.timeline.sample_times.back() == Approx(4.5));
+  REQUIRE(result.timeline.sample_times.size() == 1);
+  CHECK(result.timeline.period.front() == Approx(2.0));
+  const auto& times = result.timeline.sample_times.front();
+  CHECK(times.size() == result.timeline.samples);
+  CHECK(times.front() == 0.0);
+  CHECK(times.back() == Approx(4.5));
   for (const auto& m : result.members) {
     CHECK(m.status == "ok");
     REQUIRE(m.period_friction.size() == 2);
@@ -60,7 +63,7 @@ TEST_CASE("slider scan: samples, periods, energy balance and friction", "[ensemb
       CHECK(m.period_work[p] == Approx(m.period_friction[p] * 16e-3).epsilon(1e-9));  // W = F̄ a
       CHECK(m.period_dissipation[p] > 0.0);
     }
-    CHECK(m.friction_series.size() == result.timeline.sample_times.size());
+    CHECK(m.friction_series.size() == result.timeline.samples);
   }
   // replicas start from different angles
   CHECK(result.members[0].friction_series.back() != result.members[1].friction_series.back());
@@ -143,6 +146,64 @@ TEST_CASE("slider scan: sizes are a sweep axis", "[ensemble][slider]") {
   CHECK(both.members[0].friction_series.size() == both.members[2].friction_series.size());
 }
 
+TEST_CASE("slider scan: speed and damping are sweep axes; each member has the bits of its own scan",
+          "[ensemble][slider]") {
+  const auto scene_with = [](const std::string& speeds, const std::string& dampings) {
+    return "[slider]\ncolumns = 3\nrows = 2\ndamping = " + dampings +
+           "\n[substrate]\ncolumns = 11\nrows = 11\n[drive]\nrest = 0.5\nperiods = 2\nspeed = " + speeds +
+           "\n[sweep]\nseparation = [7e-3, 9e-3]\n[observables]\nsamples_per_period = 20\n"
+           "[numerics]\nrtol = 1e-7\natol = 1e-7\n";
+  };
+  const auto both = scan(scene_with("[4e-3, 16e-3]", "[2.5e-6, 1e-5]"), 2);
+  REQUIRE(both.members.size() == 8);
+  // plan order: speed, then damping, then separation
+  CHECK(both.members[5].index.speed == 1);
+  CHECK(both.members[5].index.damping == 0);
+  CHECK(both.members[5].index.separation == 1);
+  CHECK(both.members[5].speed == 16e-3);
+  CHECK(both.members[5].damping == 2.5e-6);
+  // both speeds slide two periods (41 samples); the 0.5 s of rest take 10 samples at 16 mm/s (a period
+  // of 1 s) but 3 at 4 mm/s (a period of 4 s: t = 0, 0.1, 0.3 s), so the slower speed's first 7 are NaN
+  const auto& timeline = both.timeline;
+  CHECK(timeline.periods == 2);
+  REQUIRE(timeline.period.size() == 2);
+  CHECK(timeline.period[0] == Approx(4.0));
+  CHECK(timeline.period[1] == Approx(1.0));
+  CHECK(timeline.samples == 10 + 41);
+  CHECK(std::isnan(timeline.sample_times[0][6]));
+  CHECK(timeline.sample_times[0][7] == 0.0);
+  CHECK(timeline.sample_times[0][8] == Approx(0.1));
+  CHECK(timeline.sample_times[0].back() == Approx(8.5));
+  CHECK(timeline.sample_times[1][0] == 0.0);
+  CHECK(timeline.sample_times[1].back() == Approx(2.5));
+  for (std::size_t v = 0; v < 2; ++v)
+    for (std::size_t d = 0; d < 2; ++d) {
+      const char* speed[] = {"4e-3", "16e-3"};
+      const char* damping[] = {"2.5e-6", "1e-5"};
+      INFO("speed " << speed[v] << ", damping " << damping[d]);
+      const auto alone = scan(scene_with(speed[v], damping[d]));
+      for (std::size_t h = 0; h < 2; ++h) {
+        const auto& m = both.members[(v * 2 + d) * 2 + h];
+        const auto& own = alone.members[h];
+        CHECK(m.status == "ok");
+        CHECK(m.friction == own.friction);
+        CHECK(m.period_balance == own.period_balance);
+        for (const double balance : m.period_balance) CHECK(std::fabs(balance) < 1e-5);
+        // its own samples at the end, NaN before them
+        const std::size_t pad = timeline.samples - own.friction_series.size();
+        REQUIRE(m.friction_series.size() == timeline.samples);
+        CHECK(std::equal(own.friction_series.begin(), own.friction_series.end(),
+                         m.friction_series.begin() + long(pad)));
+        CHECK(std::all_of(m.friction_series.begin(), m.friction_series.begin() + long(pad),
+                          [](double x) { return std::isnan(x); }));
+        CHECK(alone.timeline.sample_times.front().size() == own.friction_series.size());
+      }
+    }
+  // the physics moves with both axes
+  CHECK(both.members[0].friction != both.members[4].friction);
+  CHECK(both.members[0].friction != both.members[2].friction);
+}
+
 TEST_CASE("slider scan: a member's result does not depend on the other separations or replicas",
           "[ensemble][slider]") {
   // (separation, replica) → friction and series, from scenes with other plans around them
@@ -187,7 +248,7 @@ TEST_CASE("slider scan: a given start, row by row from the smallest y, gives the
       "end = 4.5\n[sweep]\nseparation = [7e-3, 9e-3]\n[observables]\nsamples_per_period = 20\n"
       "[numerics]\nrtol = 1e-7\natol = 1e-7\n";
   const auto drawn_scene = rotorsweep::io::parse_slider_scene_text(base + "[initial]\nseed = 5\n", "drawn");
-  const std::vector<double> start = slider_start(drawn_scene, {0, 0, 0});
+  const std::vector<double> start = slider_start(drawn_scene, SliderMemberIndex{});
   REQUIRE(start.size() == 6);
   CHECK(start[0] == Approx(0).margin(0.14));  // row 0 (smallest y) near 0, row 1 near π
   CHECK(start[3] == Approx(3.14159).margin(0.14));
@@ -293,6 +354,19 @@ TEST_CASE("slider scenes: bad keys are named with what they must be", "[ensemble
   CHECK_THAT(message(sep + "[slider]\ncolumns = [2, 3]\nrows = 2\n[observables]\ntorques = true\n"),
              Catch::Contains("observables.torques") && Catch::Contains("single slider size"));
   CHECK_THAT(message(sep + "[observables]\nenergies = 1\n"), Catch::Contains("observables.energies"));
+  CHECK_THAT(message(sep + "[drive]\nspeed = [4e-3, 8e-3]\n"),
+             Catch::Contains("drive.periods") && Catch::Contains("is needed with several drive.speed"));
+  CHECK_THAT(message(sep + "[drive]\nspeed = [4e-3, 8e-3]\nend = 20.0\n"),
+             Catch::Contains("drive.end") && Catch::Contains("give drive.periods"));
+  CHECK_THAT(message(sep + "[drive]\nperiods = 3\nend = 20.0\n"),
+             Catch::Contains("drive.periods") && Catch::Contains("give one"));
+  CHECK_THAT(message(sep + "[drive]\nperiods = 0\n"),
+             Catch::Contains("drive.periods") && Catch::Contains("from 1 to 10000"));
+  CHECK_THAT(message(sep + "[drive]\nperiods = 2.5\n"), Catch::Contains("drive.periods"));
+  CHECK_THAT(message(sep + "[drive]\nperiods = 2\nspeed = [4e-3, -1e-3]\n"),
+             Catch::Contains("drive.speed") && Catch::Contains("> 0 (m/s)"));
+  CHECK_THAT(message(sep + "[slider]\ndamping = { from = 0.0, to = 1e-5, count = 3 }\n"),
+             Catch::Contains("slider.damping") && Catch::Contains("> 0 (kg m²/s)"));
   CHECK_THAT(message("[model]\nrows = 3\n"), Catch::Contains("the scene sections are"));
   CHECK_THAT(message(""), Catch::Contains("sweep.separation") && Catch::Contains("is missing"));
   CHECK(message("[sweep]\nseparation = [8e-3]\n") ==
@@ -300,6 +374,16 @@ TEST_CASE("slider scenes: bad keys are named with what they must be", "[ensemble
   CHECK(message("[sweep]\nseparation = 8e-3\n") == "no error");  // one number: a list of one
   CHECK(rotorsweep::io::parse_slider_scene_text("[sweep]\nseparation = 8e-3\n", "one").separations ==
         std::vector<double>{8e-3});
+  const auto swept = rotorsweep::io::parse_slider_scene_text(
+      sep +
+          "[drive]\nperiods = 4\nspeed = { from = 1e-3, to = 16e-3, count = 5, spacing = \"log\" }\n"
+          "[slider]\ndamping = [2.5e-6, 5e-6]\n",
+      "swept");
+  CHECK(swept.speeds.size() == 5);
+  CHECK(swept.speeds[1] == Approx(2e-3));
+  CHECK(swept.member_count() == 10);
+  CHECK(slider_variant(swept, 1, 1).end == Approx(0.5 + 4 * 16e-3 / 2e-3));
+  CHECK(slider_variant(swept, 1, 1).damping == 5e-6);
 }
 
 TEST_CASE("slider scan: the experiment's 7 x 7 slider matches the reference code's published examples",
@@ -313,8 +397,9 @@ TEST_CASE("slider scan: the experiment's 7 x 7 slider matches the reference code
     const auto& m = result.members[k];
     double force = 0, order = 0;
     std::size_t samples = 0;
-    for (std::size_t i = 0; i < result.timeline.sample_times.size(); ++i) {
-      if (result.timeline.sample_times[i] <= 2.5) continue;
+    const auto& times = result.timeline.sample_times.front();
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      if (times[i] <= 2.5) continue;
       force += m.friction_series[i];
       order += m.order_y_series[i];
       ++samples;
