@@ -199,8 +199,8 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
                        &SliderMember::torque_even_series},
             {"odd", &SliderMember::moment_axis_odd_series, &SliderMember::moment_z_odd_series,
              &SliderMember::torque_odd_series}}) {
-        const std::string rows =
-            std::string(parity) + " rows (j = " + (parity[0] == 'e' ? "0, 2" : "1, 3") + ", …)";
+        const std::string rows = std::string(parity) + " rows (j = " + (parity[0] == 'e' ? "0, 2" : "1, 3") +
+                                 ", …" + (parity[0] == 'o' ? "; NaN for a slider of one row)" : ")");
         c.push_back(vector_column("series/moment_axis_" + std::string(parity), samples,
                                   "mean unit moment of the " + rows + ": its in-plane part cos θ", axis));
         c.push_back(vector_column("series/moment_z_" + std::string(parity), samples,

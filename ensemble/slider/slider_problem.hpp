@@ -272,7 +272,7 @@ class SliderProblem {
     // μB in units of μ0 m_sub/(4π a³) times m_sub/m: B = μB · μ0 m/(4π a³), in T
     const double tesla = 1e-7 * scene_.moment / std::pow(scene_.spacing, 3), n = double(rotors_);
     const auto mean = [&](double sum, std::size_t parity) {
-      return count[parity] ? sum / count[parity] : 0.0;
+      return count[parity] ? sum / count[parity] : std::nan("");  // a one-row slider has no odd rows
     };
     const std::array<double, 10> values{substrate * units_.energy,
                                         pairs * units_.energy,

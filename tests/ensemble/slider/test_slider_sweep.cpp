@@ -232,6 +232,18 @@ TEST_CASE("slider scan: a member's result does not depend on the other separatio
   CHECK(find(more, 9e-3, 1).friction != find(more, 9e-3, 0).friction);  // replicas do differ
 }
 
+TEST_CASE("slider scan: a slider of one row has no odd rows, and their means are NaN", "[ensemble][slider]") {
+  const auto result = scan(
+      "[slider]\ncolumns = 3\nrows = 1\n[substrate]\ncolumns = 9\nrows = 9\n[drive]\nrest = 0.5\nend = 2.5\n"
+      "[sweep]\nseparation = [8e-3]\n[observables]\nsublattices = true\n");
+  const auto& m = result.members.front();
+  REQUIRE(m.status == "ok");
+  for (const auto* odd : {&m.moment_axis_odd_series, &m.moment_z_odd_series, &m.torque_odd_series})
+    CHECK(std::all_of(odd->begin(), odd->end(), [](double x) { return std::isnan(x); }));
+  CHECK(std::all_of(m.torque_even_series.begin(), m.torque_even_series.end(),
+                    [](double x) { return std::isfinite(x); }));
+}
+
 TEST_CASE("slider scan: one thread or two give the same bits", "[ensemble][slider]") {
   const auto one = scan(small_scene(), 1), two = scan(small_scene(), 2);
   for (std::size_t k = 0; k < one.members.size(); ++k) {
