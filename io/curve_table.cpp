@@ -94,6 +94,7 @@ std::vector<CurveColumn> curve_columns(const ensemble::Scene& scene) {
                 [](auto& p) { return double(p.symmetry_limited); }));
   if (scene.classifies_regimes())
     for (auto regime : ensemble::all_regimes) {
+      if (regime == ensemble::Regime::sa && !scene.slip_kinds) continue;
       const std::string name(ensemble::regime_name(regime));
       add_fraction(c, name, "that finished in regime " + name,
                    [regime](const CurvePoint& p) { return p.regime_count[std::size_t(regime)]; });

@@ -86,8 +86,22 @@ void add_outcome(std::vector<MemberColumn>& columns, const ensemble::Scene& scen
   });
   if (scene.classifies_regimes())
     columns.push_back(MemberColumn::text_valued(
-        "regime", longest({"FM", "AFM", "CP", "unsettled"}), "FM, AFM, CP or unsettled (README: regime rule)",
+        "regime", longest({"FM", "AFM", "CP", "SA", "unsettled"}),
+        scene.slip_kinds ? "FM, AFM, CP, SA (smooth alternation) or unsettled (README: regime rule)"
+                         : "FM, AFM, CP or unsettled (README: regime rule)",
         [](auto&, auto& r) { return std::string(ensemble::regime_name(r.regime)); }));
+  if (scene.slip_kinds) {
+    columns.push_back(MemberColumn::real_valued("slip_jumps",
+                                                "slips per averaged period whose energy at g/10 keeps more "
+                                                "than a quarter of it (jumps; NaN: no rerun, "
+                                                "the member did not slip every period)",
+                                                [](auto&, auto& r) { return r.slip_jumps; }));
+    columns.push_back(MemberColumn::real_valued("slip_smooth",
+                                                "slips per averaged period whose energy at g/10 falls below "
+                                                "a quarter of it (smooth slips; slips whose "
+                                                "period's count differs at g/10 are neither)",
+                                                [](auto&, auto& r) { return r.slip_smooth; }));
+  }
   columns.push_back(
       MemberColumn::text_valued("status", longest({"ok", "non_finite", "step_underflow", "step_budget"}),
                                 "ok, non_finite, step_underflow or step_budget",

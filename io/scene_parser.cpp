@@ -35,7 +35,7 @@ const std::map<std::string, std::set<std::string>> allowed_keys{
     {"schedule", {"relax_periods", "average_periods", "steady_tol", "max_periods", "refill"}},
     {"observables",
      [] {
-       std::set<std::string> keys{"period_series", "row_profiles", "slip_rate"};
+       std::set<std::string> keys{"period_series", "row_profiles", "slip_rate", "slip_kinds"};
        for (const auto& observable : ensemble::observables) keys.insert(std::string(observable.key));
        return keys;
      }()},
@@ -286,6 +286,13 @@ Scene read_scene(const toml::table& root) {
   scene.row_profiles = observables.boolean("row_profiles", scene.couplings.open);
   scene.slip_rate = observables.number("slip_rate", scene.slip_rate, "a number > 0 (rows' angular velocity)",
                                        [](double x) { return x > 0; });
+  scene.slip_kinds = observables.boolean("slip_kinds", scene.slip_kinds);
+  if (scene.slip_kinds && !scene.classifies_regimes())
+    fail(observables.key("slip_kinds"),
+         "needs observables.slips and observables.alignment = true (it refines the regime rule)");
+  if (scene.slip_kinds && scene.thermal.on())
+    fail(observables.key("slip_kinds"),
+         "must be false when thermal.temperature > 0 (with noise a slip's energy does not scale with g)");
   if (scene.steady_tol > 0 && !scene.has(ensemble::Observable::dissipation))
     fail(schedule.key("steady_tol"),
          "needs observables.dissipation = true (it compares D of successive periods)");
@@ -319,6 +326,9 @@ Scene read_scene(const toml::table& root) {
   scene.shadow_runs = numerics.choice("global_error", "shadow", {"shadow", "local"}) == "shadow";
   scene.device = numerics.choice("device", "cpu", {"cpu", "gpu"}) == "gpu" ? ensemble::Device::gpu
                                                                            : ensemble::Device::cpu;
+  if (scene.slip_kinds && scene.device == ensemble::Device::gpu)
+    fail(numerics.key("device"),
+         "must be \"cpu\" with observables.slip_kinds (its reruns at g/10 run on the CPU backend)");
 
   const Section output = section(root, "output");
   scene.output_path = output.text("path", scene.output_path);

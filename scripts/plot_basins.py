@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Basin fractions against A: per curve point the fraction of members in each regime (FM, AFM,
-CP, unsettled) and failed, stacked, with Wilson 95 % intervals as error bars on each fraction;
+CP, SA where observables.slip_kinds is on, unsettled) and failed, stacked, with Wilson 95 % intervals as error bars on each fraction;
 one panel per initial noise value (docs/model.md §3, "Basin fractions").
 Usage: plot_basins.py RESULT.h5 OUT.png [--kind random]"""
 import argparse
@@ -13,8 +13,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-CATEGORIES = [("AFM", "tab:blue"), ("CP", "tab:orange"), ("FM", "tab:red"), ("unsettled", "tab:gray"),
-              ("failed", "black")]
+CATEGORIES = [("AFM", "tab:blue"), ("CP", "tab:orange"), ("SA", "gold"), ("FM", "tab:red"),
+              ("unsettled", "tab:gray"), ("failed", "black")]
 
 
 def main(h5_path, png_path, kind):
@@ -30,7 +30,8 @@ def main(h5_path, png_path, kind):
             sys.exit(f"error: no curve points with initial kind {kind!r} (kinds: {sorted(set(ic))})")
         A, noise = c["A"][:][keep], c["noise"][:][keep]
         data = {name: (c[f"fraction_{name}"][:][keep], c[f"fraction_{name}_low"][:][keep],
-                       c[f"fraction_{name}_high"][:][keep]) for name, _ in CATEGORIES}
+                       c[f"fraction_{name}_high"][:][keep]) for name, _ in CATEGORIES
+                if f"fraction_{name}" in c}  # SA: only with observables.slip_kinds
         members = int(c["members"][:][keep][0])
     noises = np.unique(noise)
     fig, axes = plt.subplots(1, len(noises), figsize=(6.5 * len(noises), 4.5), squeeze=False)
@@ -40,6 +41,8 @@ def main(h5_path, png_path, kind):
         a = A[sel][order]
         bottom = np.zeros(len(a))
         for name, colour in CATEGORIES:
+            if name not in data:
+                continue
             frac, low, high = (x[sel][order] for x in data[name])
             if not frac.any():
                 continue

@@ -17,7 +17,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "build" / "python"))
 import rotorsweep  # noqa: E402
 
-REGIME_COLOURS = {"AFM": "tab:blue", "CP": "tab:orange", "FM": "tab:red", "unsettled": "tab:gray"}
+REGIME_COLOURS = {"AFM": "tab:blue", "CP": "tab:orange", "SA": "gold", "FM": "tab:red", "unsettled": "tab:gray"}
 #: one per (g, initial kind) curve, apart from the regimes' colours and J(A)'s green
 CURVE_COLOURS = ["tab:purple", "tab:brown", "tab:olive", "tab:cyan", "tab:pink", "k"]
 

@@ -49,7 +49,8 @@ struct DeviceMember {
     state.t_stop = Model::period;
     state.tolerance_scale = slots.tolerance_scale[k];
     model.set_lane(0, slot_parameters<Model>(s, slots, k));
-    SlipCounter<double> slips(s.slip_rate);
+    SlipCounter<double> slips(s.slip_rate, s.slip_energies);
+    slips.set_damping(0, slots.g[k]);
     if constexpr (stochastic) {
       const double g = slots.g[k];
       integrator.start_lane(0, slots.noise_key[k], g, model.curvature_bound(0));

@@ -40,17 +40,20 @@ class AlignmentObserver {
   std::size_t index_;
 };
 
-/// Slip events (channel slips); switched off, it costs one branch per step.
+/// Slip events (channel slips; with `energies` each slip's energy, channels slip_energies); switched
+/// off, it costs one branch per step.
 template <class Loop>
 class SlipObserver {
  public:
   using V = typename Loop::V;
-  SlipObserver(std::size_t dimension, double slip_rate, bool enabled)
-      : slips_(slip_rate), theta_before_(enabled ? dimension : 0), enabled_(enabled) {}
+  SlipObserver(std::size_t dimension, double slip_rate, bool enabled, bool energies)
+      : slips_(slip_rate, energies), theta_before_(enabled ? dimension : 0), enabled_(enabled) {}
 
   void start(Loop&, std::size_t lane) { slips_.start_lane(lane); }
   /// The lane's own threshold (at T > 0 it is raised above the noise, see LaneScheduler).
   void set_rate(std::size_t lane, double slip_rate) { slips_.set_rate(lane, slip_rate); }
+  /// The lane's member's g, which turns its slips' speeds into energies.
+  void set_damping(std::size_t lane, double g) { slips_.set_damping(lane, g); }
   void before_step(Loop& loop) {
     if (!enabled_) return;
     for (std::size_t j = 0; j < theta_before_.size(); ++j) theta_before_[j] = loop.state().y[j];

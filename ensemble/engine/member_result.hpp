@@ -28,6 +28,9 @@ struct PeriodRecord {
   double alignment_min() const { return (*this)[Channel::alignment_min]; }
   double alignment_max() const { return (*this)[Channel::alignment_max]; }
   double slips() const { return (*this)[Channel::slips]; }
+  /// The energy of the period's slip k (k < max_slip_energies; NaN past its slips).
+  ROTORSWEEP_HD double& slip_energy(std::size_t k) { return values[std::size_t(Channel::slip_energies) + k]; }
+  double slip_energy(std::size_t k) const { return values[std::size_t(Channel::slip_energies) + k]; }
 };
 
 /// A channel that a period's quadrature gives: its integral, its time mean, or a moment about the
@@ -82,19 +85,22 @@ ROTORSWEEP_HD void record_quadratures(const QuadratureChannels& channels, kernel
   }
 }
 
-enum class Regime { fm, afm, cp, unsettled };
+/// The regimes of docs/model.md §3; SA (smooth alternation: slips every period, none a jump) only
+/// with observables.slip_kinds.
+enum class Regime { fm, afm, cp, unsettled, sa };
 
 constexpr std::string_view regime_name(Regime regime) {
   switch (regime) {
     case Regime::fm: return "FM";
     case Regime::afm: return "AFM";
     case Regime::cp: return "CP";
+    case Regime::sa: return "SA";
     case Regime::unsettled: break;
   }
   return "unsettled";
 }
 
-inline constexpr Regime all_regimes[] = {Regime::fm, Regime::afm, Regime::cp, Regime::unsettled};
+inline constexpr Regime all_regimes[] = {Regime::fm, Regime::afm, Regime::cp, Regime::unsettled, Regime::sa};
 
 struct MemberResult {
   std::size_t index = 0;
@@ -118,6 +124,12 @@ struct MemberResult {
   bool symmetry_limited = false;
   std::vector<double>
       averaging_start;  ///< θ where the averaged periods began (empty: θ(0)), a shadow's start
+  /// With observables.slip_kinds: each averaged period's slips' energies, in order (NaN past the
+  /// recorded max_slip_energies), and from the rerun at g/10 the jumps and smooth slips per period
+  /// (NaN without a rerun: ensemble/engine/slip_kinds.hpp).
+  std::vector<std::vector<double>> slip_energies;
+  double slip_jumps = std::numeric_limits<double>::quiet_NaN();
+  double slip_smooth = std::numeric_limits<double>::quiet_NaN();
 
   double& summary(Summary s, Channel c) { return summaries[std::size_t(c)][std::size_t(s)]; }
   double summary(Summary s, Channel c) const { return summaries[std::size_t(c)][std::size_t(s)]; }

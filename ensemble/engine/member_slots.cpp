@@ -20,6 +20,7 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   s.periods = scene.period_schedule();
   s.wrap_angles = scene.wrap_angles;
   s.slips = scene.has(Observable::slips);
+  s.slip_energies = scene.slip_kinds;
   s.slip_rate = scene.slip_rate;
   s.rtol = variant.rtol;
   s.atol = variant.atol;

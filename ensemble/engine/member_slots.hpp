@@ -22,7 +22,8 @@ struct SlotSchedule {
   std::size_t rows = 0;
   PeriodSchedule periods{};
   bool wrap_angles = false;
-  bool slips = false;  ///< the slip counter is on
+  bool slips = false;          ///< the slip counter is on
+  bool slip_energies = false;  ///< it records each slip's energy (observables.slip_kinds)
   double slip_rate = 0;
   double rtol = 0, atol = 0, h_max = 0, max_steps = 0;
   double error_rtol = 0;  ///< rtol × the stepper's swing_error_factor (channel dissipation_error)

@@ -43,37 +43,70 @@ struct AlignmentExtrema {
 /// Slip events: an accepted step is fast when some row turns faster than `slip_rate`
 /// (max_j |Δθ_j| / Δt, in units of the drive's angular velocity); a slip is a run of fast
 /// steps, counted in the period where it begins. The rate may differ per lane (set_rate).
+/// With `energies` (observables.slip_kinds) each slip's energy, g Σ_j Δθ_j²/Δt summed over its fast
+/// steps (the Stokes dissipation of steps at constant speed), goes to the period's slip_energy
+/// channels in order (docs/model.md §3 "Jumps and smooth slips"); a slip that runs over the
+/// period's end keeps only its part before it.
 template <class V>
 struct SlipCounter {
-  ROTORSWEEP_HD explicit SlipCounter(double slip_rate) : rate(slip_rate) {}
+  ROTORSWEEP_HD explicit SlipCounter(double slip_rate, bool energies = false)
+      : rate(slip_rate), energies(energies) {
+    for (auto& e : energy) e = V(0.0);
+  }
 
   V rate;
-  V count = V(0.0);  ///< slips begun in the current period
-  V fast = V(0.0);   ///< 1 while the lane is inside a slip
+  V count = V(0.0);    ///< slips begun in the current period
+  V fast = V(0.0);     ///< 1 while the lane is inside a slip
+  V damping = V(0.0);  ///< g of each lane's member (set_damping), for the slips' energies
+  bool energies;
+  V energy[max_slip_energies];  ///< the energy of the period's slips so far
 
   ROTORSWEEP_HD void start_lane(std::size_t lane) {
     kernels::lane_set(count, lane, 0.0);
     kernels::lane_set(fast, lane, 0.0);
+    for (auto& e : energy) kernels::lane_set(e, lane, 0.0);
   }
   ROTORSWEEP_HD void set_rate(std::size_t lane, double slip_rate) {
     kernels::lane_set(rate, lane, slip_rate);
   }
+  ROTORSWEEP_HD void set_damping(std::size_t lane, double g) { kernels::lane_set(damping, lane, g); }
 
   ROTORSWEEP_HD void accumulate(kernels::lane_mask<V> accepted, std::size_t rows, const V* theta_before,
                                 const V* theta_after, V dt) {
-    V largest(0.0);
-    for (std::size_t j = 0; j < rows; ++j)
-      largest = kernels::lane_max(largest, kernels::lane_abs(theta_after[j] - theta_before[j]));
+    V largest(0.0), squares(0.0);
+    for (std::size_t j = 0; j < rows; ++j) {
+      const V turn = theta_after[j] - theta_before[j];
+      largest = kernels::lane_max(largest, kernels::lane_abs(turn));
+      squares += turn * turn;
+    }
     const V safe_dt = kernels::lane_select(accepted, dt, V(1.0));
     const auto is_fast = largest > rate * safe_dt;
     const auto begins = accepted & is_fast & (fast == V(0.0));
     count += kernels::lane_select(begins, V(1.0), V(0.0));
     fast = kernels::lane_select(accepted, kernels::lane_select(is_fast, V(1.0), V(0.0)), fast);
+    if (!energies) return;
+    const auto in_slip = accepted & is_fast;
+    if (!kernels::lane_any(in_slip)) return;
+    for (std::size_t lane = 0; lane < kernels::lane_width<V>; ++lane) {
+      const double slips = kernels::lane_get(count, lane);
+      if (!kernels::mask_get(in_slip, lane) || slips < 1 || slips > double(max_slip_energies)) continue;
+      V& e = energy[std::size_t(slips) - 1];
+      kernels::lane_set(e, lane,
+                        kernels::lane_get(e, lane) + kernels::lane_get(damping, lane) *
+                                                         kernels::lane_get(squares, lane) /
+                                                         kernels::lane_get(safe_dt, lane));
+    }
   }
 
   ROTORSWEEP_HD void end_period(std::size_t lane, PeriodRecord& record) {
-    record[Channel::slips] = kernels::lane_get(count, lane);
+    const double slips = kernels::lane_get(count, lane);
+    record[Channel::slips] = slips;
     kernels::lane_set(count, lane, 0.0);
+    if (!energies) return;
+    for (std::size_t k = 0; k < max_slip_energies; ++k) {
+      record.slip_energy(k) = double(k) < slips ? kernels::lane_get(energy[k], lane) : NAN;
+      kernels::lane_set(energy[k], lane, 0.0);
+    }
   }
 };
 

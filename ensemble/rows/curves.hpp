@@ -29,7 +29,7 @@ struct CurvePoint {
   double dissipation_bias = 0;
   std::size_t symmetry_limited = 0;  ///< members of count whose D the integration error decides
   /// Members of the point in each regime (all_regimes order; finished members only) and failed.
-  std::array<std::size_t, 4> regime_count{};
+  std::array<std::size_t, std::size(all_regimes)> regime_count{};
   std::size_t failed = 0;
   std::map<std::string, std::size_t> attractor_count;  ///< members per attractor label (failed included)
 };

@@ -11,6 +11,10 @@
 
 namespace rotorsweep::ensemble {
 
+/// A rerun completes its primary member's result: a shadow run at tighter tolerances
+/// (ensemble/engine/shadow_run.hpp) or the slower rerun at g/10 (ensemble/engine/slip_kinds.hpp).
+enum class Rerun { none, shadow, slower };
+
 struct Member {
   std::size_t index = 0;   ///< position in the plan and in the output
   std::size_t stream = 0;  ///< keys the random streams: the replica index, so a member keeps its draw
@@ -30,6 +34,7 @@ struct Member {
   double tolerance_scale = 1.0;
   /// θ(0) given rather than drawn: a shadow run starts where its primary's averaged periods began
   std::shared_ptr<const std::vector<double>> start;
+  Rerun rerun = Rerun::none;  ///< a plan member, or a rerun of member `index`
 };
 
 /// The plan of a scene without holding it: member i is computed from i. A (variant, A, g) block is

@@ -74,6 +74,7 @@ SummaryRules summary_rules(const Scene& scene, bool stochastic, double period, b
   rules.period_series = scene.period_series;
   rules.statistical_error = stochastic;
   rules.row_profiles = row_profiles;
+  rules.slip_energies = scene.slip_kinds;
   rules.period = period;
   return rules;
 }
@@ -94,6 +95,16 @@ void average_profiles(const RetiredLane& lane, double period, MemberResult& resu
   const double count = double(lane.profiles.size());
   for (double& d : result.row_dissipation) d /= count;
   for (double& rho : result.link_alignment) rho /= count * period;
+}
+
+/// Each averaged period's slip energies, in order (ensemble/engine/slip_kinds.hpp).
+void keep_slip_energies(const std::vector<PeriodRecord>& history, int average_periods, MemberResult& result) {
+  const std::size_t count = std::min(history.size(), std::size_t(average_periods));
+  for (auto p = history.end() - std::ptrdiff_t(count); p != history.end(); ++p) {
+    std::vector<double>& energies = result.slip_energies.emplace_back(std::size_t(p->slips()));
+    for (std::size_t k = 0; k < energies.size(); ++k)
+      energies[k] = k < max_slip_energies ? p->slip_energy(k) : std::numeric_limits<double>::quiet_NaN();
+  }
 }
 
 }  // namespace
@@ -122,6 +133,7 @@ MemberResult retired_member_result(RetiredLane&& lane, const SummaryRules& rules
         n > 1 ? result.dissipation_std() / std::sqrt(n - 1) : std::numeric_limits<double>::infinity();
   }
   if (rules.row_profiles) average_profiles(lane, rules.period, result);
+  if (rules.slip_energies && ok) keep_slip_energies(lane.history, rules.average_periods, result);
   if (rules.period_series) result.periods = std::move(lane.history);
   result.averaging_start = std::move(lane.averaging_start);
   return result;

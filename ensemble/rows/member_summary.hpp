@@ -45,8 +45,9 @@ struct SummaryRules {
   /// The integrator is stochastic: the error of D is the standard error of the mean over the
   /// averaged periods, not the integration's.
   bool statistical_error = false;
-  bool row_profiles = false;  ///< average RetiredLane::profiles into the result
-  double period = 0;          ///< the drive period (the links' time means)
+  bool row_profiles = false;   ///< average RetiredLane::profiles into the result
+  bool slip_energies = false;  ///< keep each averaged period's slip energies (observables.slip_kinds)
+  double period = 0;           ///< the drive period (the links' time means)
 };
 
 /// The rules of a scene's members run by an integrator that is `stochastic` or not, over a drive

@@ -27,10 +27,14 @@ enum class Channel : std::size_t {
   stokes_moment,
   slips,
   dissipation_error,
+  /// the first of max_slip_energies channels: the energy of each slip begun in the period, in order
+  /// (observables.slip_kinds; NaN past the period's slips)
+  slip_energies,
 };
-inline constexpr std::size_t channel_count = 12;
-static_assert(std::size_t(Channel::dissipation_error) + 1 == channel_count,
-              "channel_count: Channel's last + 1");
+inline constexpr std::size_t max_slip_energies = 8;
+inline constexpr std::size_t channel_count = 12 + max_slip_energies;
+static_assert(std::size_t(Channel::slip_energies) + max_slip_energies == channel_count,
+              "channel_count: Channel's last + max_slip_energies");
 
 /// Where a channel's value for a period comes from.
 enum class Source {
@@ -203,8 +207,9 @@ inline constexpr std::array<ObservableDeclaration, observable_count> observables
 constexpr const ObservableDeclaration& declaration(Observable o) { return observables[std::size_t(o)]; }
 
 namespace declare {
-/// Whether the declarations and the enums agree: every Channel declared exactly once (so
-/// channel_count is right), and a channel read from a quadrature names one its observable carries.
+/// Whether the declarations and the enums agree: every Channel before slip_energies declared exactly
+/// once (so channel_count is right), the slip energies (which only the slower rerun reads, not a
+/// column) not at all, and a channel read from a quadrature names one its observable carries.
 constexpr bool consistent() {
   std::array<int, channel_count> seen{};
   for (const auto& o : observables)
@@ -214,8 +219,8 @@ constexpr bool consistent() {
       ++seen[std::size_t(ch.channel)];
       if (ch.source != Source::step_reducer && !o.quadratures.carries(ch.quadrature)) return false;
     }
-  for (int n : seen)
-    if (n != 1) return false;
+  for (std::size_t c = 0; c < channel_count; ++c)
+    if (seen[c] != (c < std::size_t(Channel::slip_energies) ? 1 : 0)) return false;
   return true;
 }
 static_assert(consistent(),

@@ -18,6 +18,7 @@
 #include "ensemble/engine/member_progress.hpp"
 #include "ensemble/engine/member_result.hpp"
 #include "ensemble/engine/shadow_run.hpp"
+#include "ensemble/engine/slip_kinds.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_summary.hpp"
 #include "ensemble/rows/observables.hpp"
@@ -56,8 +57,9 @@ typename Integrator::Settings integrator_settings(const Scene& scene, const Memb
 /// quadratures) and turns a member into the model's parameters and its initial state:
 /// initial_state(member) and parameters(member, y0), and with a stochastic integrator its noise
 /// stream: noise_key(member). The model reports the quadratures it carries (integrals()). A member
-/// whose averaged periods slip (with shadow runs on) is held and its shadow run queued: the
-/// shadow's result completes it (ensemble/engine/shadow_run.hpp).
+/// whose averaged periods slip (with shadow runs on) is held and its shadow run queued, and one that
+/// slips in every averaged period (with observables.slip_kinds) its slower rerun: the reruns' results
+/// complete it (ensemble/engine/shadow_run.hpp, slip_kinds.hpp).
 template <kernels::LaneModel Model, class Integrator, class Setup>
 class RowProblem {
  public:
@@ -76,11 +78,12 @@ class RowProblem {
         carried_(loop_.model().integrals()),
         channels_(quadrature_channels(carried_)),
         observers_(quadrature_observers<Loop>(scene, variant, carried_)),
-        slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips)),
+        slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips), scene.slip_kinds),
         profiles_(variant.rows, scene.row_profiles),
         period_schedule_(scene.period_schedule()),
         shadow_schedule_{0, scene.average_periods, 0, 0.0},
         shadows_on_(scene.runs_shadows() && !Loop::stochastic),
+        slower_on_(scene.slip_kinds && !Loop::stochastic),
         symmetry_limited_(scene.symmetry_limited(variant.rtol)),
         end_capacity_(end_state_capacity(scene.average_periods)),
         rules_(summary_rules(scene, Loop::stochastic, Loop::period, profiles_.enabled())),
@@ -89,17 +92,17 @@ class RowProblem {
   /// Whether a retired member's lane takes the next member at once (else the whole block waits).
   bool refill() const { return scene_.refill; }
 
-  /// A shadow run waiting for a lane, taken before the plan's next member.
+  /// A rerun waiting for a lane, taken before the plan's next member.
   std::optional<Member> take_queued() {
-    if (shadows_.empty()) return std::nullopt;
-    Member shadow = std::move(shadows_.front());
-    shadows_.pop_front();
-    return shadow;
+    if (reruns_.empty()) return std::nullopt;
+    Member rerun = std::move(reruns_.front());
+    reruns_.pop_front();
+    return rerun;
   }
-  bool has_queued() const { return !shadows_.empty(); }
+  bool has_queued() const { return !reruns_.empty(); }
 
-  /// Puts `member` into lane l (`queued`: a shadow run); returns its period schedule.
-  PeriodSchedule start(std::size_t l, const Member& member, bool queued) {
+  /// Puts `member` into lane l (a plan member or a queued rerun); returns its period schedule.
+  PeriodSchedule start(std::size_t l, const Member& member, bool) {
     const std::vector<double> y0 = setup_.initial_state(member);
     loop_.start(l, setup_.parameters(member, y0), y0);
     if (member.tolerance_scale != 1.0) loop_.set_tolerance_scale(l, member.tolerance_scale);
@@ -109,14 +112,14 @@ class RowProblem {
           l, thermal_slip_rate(scene_.slip_rate, scene_.thermal.temperature, member.g, loop_.noise_step(l)));
     }
     for_each_observer([&](auto& observer) { observer.start(loop_, l); });
+    slips_.set_damping(l, member.g);
     profiles_.start(loop_, l);
     Lane& lane = lanes_[l];
     lane.member = member;
     lane.history.clear();
-    lane.shadow = queued;
     lane.end_states.clear();
     lane.profiles.clear();
-    return queued ? shadow_schedule_ : period_schedule_;
+    return member.rerun == Rerun::shadow ? shadow_schedule_ : period_schedule_;
   }
 
   /// One step attempt of every lane, with the observers.
@@ -159,38 +162,54 @@ class RowProblem {
   void next_period(std::size_t l) { loop_.next_period(l, scene_.wrap_angles); }
 
   /// Retires lane l's member, which closed `progress.periods()` periods (`settled`: it met its
-  /// schedule): its result goes to retire(), or, where it needs a shadow run, waits for it; a shadow
-  /// run's result completes its primary's.
+  /// schedule): its result goes to retire(), or, where it needs reruns, waits for them; a rerun's
+  /// result completes its primary's, which retires with its last rerun.
   template <class Retire>
   void finish(std::size_t l, const MemberProgress& progress, bool settled, Retire& retire) {
     MemberResult result = summarize_lane(l, progress, settled);
     const Member& member = lanes_[l].member;
     release_lane(l);
-    if (lanes_[l].shadow) {  // its primary waits for it
+    if (member.rerun != Rerun::none) {  // its primary waits for it
       const auto at = held_.find(member.index);
-      MemberResult primary = std::move(at->second);
+      Held& held = at->second;
+      if (member.rerun == Rerun::shadow)
+        take_shadow(held.primary, result, symmetry_limited_);
+      else
+        take_slower_rerun(held.primary, result);
+      if (--held.pending > 0) return;
+      MemberResult primary = std::move(held.primary);
       held_.erase(at);
-      take_shadow(primary, result, symmetry_limited_);
       retire(std::move(primary));
       return;
     }
-    if (!shadows_on_ || !needs_shadow(result)) {
+    int pending = 0;
+    if (shadows_on_ && needs_shadow(result)) {
+      Member shadow = member;
+      shadow.rerun = Rerun::shadow;
+      shadow.tolerance_scale = shadow_tolerance_scale;
+      shadow.start = std::make_shared<const std::vector<double>>(
+          result.averaging_start.empty() ? setup_.initial_state(member) : result.averaging_start);
+      reruns_.push_back(std::move(shadow));
+      ++pending;
+    }
+    if (slower_on_ && needs_slower_rerun(result)) {
+      Member slower = member;  // the same start, disorder and schedule
+      slower.rerun = Rerun::slower;
+      slower.g *= slower_damping_scale;
+      reruns_.push_back(std::move(slower));
+      ++pending;
+    }
+    if (pending == 0) {
       retire(std::move(result));
       return;
     }
-    Member shadow = member;
-    shadow.tolerance_scale = shadow_tolerance_scale;
-    shadow.start = std::make_shared<const std::vector<double>>(
-        result.averaging_start.empty() ? setup_.initial_state(member) : result.averaging_start);
-    shadows_.push_back(std::move(shadow));
-    held_.emplace(member.index, std::move(result));
+    held_.emplace(member.index, Held{std::move(result), pending});
   }
 
  private:
   struct Lane {
     Member member;
     std::vector<PeriodRecord> history;  ///< every period with period_series, else the last ones
-    bool shadow = false;                ///< a shadow run (ensemble/engine/shadow_run.hpp)
     std::vector<std::vector<double>>
         end_states;  ///< θ at the last period ends (up to end_capacity_, oldest first)
     std::deque<std::vector<double>> profiles;  ///< row profiles of the last average_periods periods
@@ -250,13 +269,19 @@ class RowProblem {
   SlipObserver<Loop> slips_;
   RowProfileObserver<Loop> profiles_;
   PeriodSchedule period_schedule_;
-  PeriodSchedule shadow_schedule_;            ///< a shadow run's: the averaged periods, no steady test
-  bool shadows_on_;                           ///< members whose averaged periods slip get shadow runs
-  bool symmetry_limited_;                     ///< no physical perturbation of the scene exceeds rtol
-  std::deque<Member> shadows_;                ///< shadow runs waiting for a lane
-  std::map<std::size_t, MemberResult> held_;  ///< primaries waiting for their shadow runs
-  std::size_t end_capacity_;                  ///< period ends a lane keeps (end_state_capacity)
-  SummaryRules rules_;                        ///< how a retired lane becomes a result
+  PeriodSchedule shadow_schedule_;  ///< a shadow run's: the averaged periods, no steady test
+  bool shadows_on_;                 ///< members whose averaged periods slip get shadow runs
+  bool slower_on_;             ///< members that slip in every averaged period get slower reruns (slip_kinds)
+  bool symmetry_limited_;      ///< no physical perturbation of the scene exceeds rtol
+  std::deque<Member> reruns_;  ///< reruns waiting for a lane
+  /// A primary waiting for its reruns (`pending` of them still running).
+  struct Held {
+    MemberResult primary;
+    int pending = 0;
+  };
+  std::map<std::size_t, Held> held_;
+  std::size_t end_capacity_;  ///< period ends a lane keeps (end_state_capacity)
+  SummaryRules rules_;        ///< how a retired lane becomes a result
   std::vector<Lane> lanes_;
 };
 

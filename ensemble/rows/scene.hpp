@@ -71,6 +71,9 @@ struct Scene {
   bool period_series = false;
   bool row_profiles = false;  ///< R_j per row and the alignment per link (default: on for open rows)
   double slip_rate = 10.0;    ///< a step with max_j |Δθ_j|/Δt above this is part of a slip
+  /// observables.slip_kinds: a member that slips in every averaged period runs again at g/10, and each
+  /// slip is a jump or a smooth slip by how its energy scales (ensemble/engine/slip_kinds.hpp)
+  bool slip_kinds = false;
 
   std::size_t stepper = kernels::default_stepper();  ///< position in kernels::steppers
   double h_max = 0.5;

@@ -74,6 +74,7 @@ class ShadowedRange {
     std::vector<Member> members;
     for (const auto& [index, primary] : held_) {
       Member m = plan_[index];
+      m.rerun = Rerun::shadow;
       m.tolerance_scale = shadow_tolerance_scale;
       if (!primary.averaging_start.empty())
         m.start = std::make_shared<const std::vector<double>>(primary.averaging_start);

@@ -295,3 +295,17 @@ TEST_CASE("the GPU takes every row scene up to its row limit, which the refusal 
   CHECK_THAT(error_of("[model]\nrows = " + std::to_string(coupled_limit + 2) + "\n" + dipolar + rest),
              Catch::Contains("'model.rows'") && Catch::Contains("coupling table"));
 }
+
+TEST_CASE("slip_kinds needs the regime rule, no temperature and the CPU, each refusal naming its key",
+          "[io][scene]") {
+  const std::string on = "[observables]\nslip_kinds = true\n";
+  CHECK(parse_scene_text(minimal + on, "test.toml").slip_kinds);
+  CHECK_FALSE(parse_scene_text(minimal, "test.toml").slip_kinds);
+  CHECK_THAT(error_of(minimal + on + "slips = false\n"),
+             Catch::Contains("'observables.slip_kinds'") && Catch::Contains("observables.slips"));
+  CHECK_THAT(error_of(minimal + on + "[thermal]\ntemperature = 0.01\n"),
+             Catch::Contains("'observables.slip_kinds'") && Catch::Contains("thermal.temperature"));
+  CHECK_THAT(error_of(minimal + on + "[numerics]\ndevice = \"gpu\"\n"),
+             Catch::Contains("'numerics.device'") && Catch::Contains("slip_kinds"));
+  CHECK_THAT(error_of(minimal + "[observables]\nslip_kinds = 1\n"), Catch::Contains("'observables.slip_kinds'"));
+}

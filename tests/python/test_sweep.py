@@ -162,3 +162,18 @@ def test_a_thermal_runs_header_names_the_langevin_stepper(capsys):
     rotorsweep.run(scene, progress=False)
     first = capsys.readouterr().err.splitlines()[0]
     assert "Langevin" in first and "T = 0.5" in first and "rtol 1e" not in first
+
+
+def test_slip_kinds_gives_the_window_its_label_and_counts():
+    """N = 2 at g = 1e-5 with σ_A = 1e-6: A = 8 jumps (CP), A = 9 slips smoothly (SA); the curves count SA."""
+    table = {"model": {"rows": 2}, "drive": {"g": [1e-5]}, "sweep": {"A": [8.0, 9.0]},
+             "initial": {"kinds": ["AFM"], "noise": 0.0, "replicas": 2}, "disorder": {"A": 1e-6},
+             "observables": {"slip_kinds": True}, "numerics": {"rtol": 1e-12, "atol": 1e-15}}
+    ds = rotorsweep.run(table, threads=2, progress=False, quiet=True)
+    assert list(ds["regime"].sel(A=8.0).values.ravel()) == ["CP", "CP"]
+    assert list(ds["regime"].sel(A=9.0).values.ravel()) == ["SA", "SA"]
+    assert (ds["slip_jumps"].sel(A=8.0) == 4).all() and (ds["slip_smooth"].sel(A=9.0) == 4).all()
+    assert float(ds["curve_fraction_SA"].sel(A=9.0).squeeze()) == 1.0
+    plain = rotorsweep.run(dict(table, observables={}), threads=2, progress=False, quiet=True)
+    assert "slip_jumps" not in plain and "curve_fraction_SA" not in plain
+    assert list(plain["regime"].sel(A=9.0).values.ravel()) == ["CP", "CP"]
