@@ -1,7 +1,10 @@
 // The kernels compiled for a GPU: the row model, both stepper families and the adaptive
-// integrator instantiated on the double lane inside a __global__ function (nvcc, no GPU needed).
+// integrator instantiated on the double lane inside a __global__ function, and the team stage solve on
+// a warp team (nvcc, no GPU needed).
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
+#include "kernels/lanes/team.hpp"
+#include "kernels/linear/team_cyclic_tridiagonal.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -32,3 +35,24 @@ template __global__ void advance_members<stepper_at<0>::type::type<Model>>(doubl
 template __global__ void advance_members<stepper_at<2>::type::type<Model>>(double*, std::size_t, std::size_t,
                                                                            const double*, const double*,
                                                                            double*);
+
+/// The stage solve on a warp team: each team of `team_size` threads factors and solves one member's
+/// ring (kernels/linear/team_cyclic_tridiagonal.hpp) over its part of `storage`.
+__global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_t rows, unsigned team_size,
+                               double* rhs, int* definite) {
+  const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
+  const WarpTeam crew(team_size);
+  LaneArena<double> arena(storage + team * per_team, per_team);
+  TeamCyclicTridiagonal<const WarpTeam> J(rows, team_size, arena);
+  crew.sync();
+  crew.each([&](std::size_t rank) {
+    const TeamRows mine = team_rows(rows, team_size, rank);
+    for (std::size_t i = mine.begin; i < mine.end; ++i) {
+      J.diag(i) = -2.0 + 0.01 * double(i % 7);
+      J.off(i) = 0.3;
+    }
+  });
+  J.factor(crew, 3.0);
+  J.solve(crew, rhs + team * rows);
+  if (crew.rank() == 0) definite[team] = J.positive_definite() ? 1 : 0;
+}
