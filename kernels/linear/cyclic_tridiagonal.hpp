@@ -7,6 +7,7 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/lanes/lane_arena.hpp"
+#include "kernels/linear/tridiagonal_chain.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -75,10 +76,12 @@ class CyclicTridiagonal {
     const std::size_t m = n_ - 1, p = m / 2;
     // chain A (rows 0 .. p-1) couples to border m at row 0 and to border p at row p-1; chain B
     // (rows p+1 .. m-1) to border p at row p+1 and to border m at row m-1
-    factor_chain(shift, 0, p);
-    factor_chain(shift, p + 1, m);
-    spike_chain(0, p, m_side_of_a(), p_side_of_a(), spike_m_, spike_p_);
-    spike_chain(p + 1, m, p_side_of_b(), m_side_of_b(), spike_p_, spike_m_);
+    factor_tridiagonal_chain(shift, diag_, off_, 0, p, inv_pivot_, upper_, lower_);
+    factor_tridiagonal_chain(shift, diag_, off_, p + 1, m, inv_pivot_, upper_, lower_);
+    tridiagonal_chain_spikes(0, p, inv_pivot_, upper_, lower_, m_side_of_a(), p_side_of_a(), spike_m_,
+                             spike_p_);
+    tridiagonal_chain_spikes(p + 1, m, inv_pivot_, upper_, lower_, p_side_of_b(), m_side_of_b(), spike_p_,
+                             spike_m_);
 
     // Schur complement of the borders: S = M_BB - M_BI M_II⁻¹ M_IB, factorised as LDLᵀ
     V s_pp = shift - diag_[p], s_mm = shift - diag_[m], s_pm = border_coupling();
@@ -151,65 +154,11 @@ class CyclicTridiagonal {
     return c;
   }
 
-  /// LU of the plain tridiagonal chain rows [first, end): pivots d_i = shift - diag_i -
-  /// off_{i-1}² / d_{i-1}, upper_i = -off_i / d_i, lower_i = off_{i-1} / d_i.
-  ROTORSWEEP_HD void factor_chain(V shift, std::size_t first, std::size_t end) {
-    if (first >= end) return;
-    V inv = V(1.0) / (shift - diag_[first]);
-    inv_pivot_[first] = inv;
-    for (std::size_t i = first + 1; i < end; ++i) {
-      const V coupling_squared = off_[i - 1] * off_[i - 1];
-      inv = V(1.0) / ((shift - diag_[i]) - coupling_squared * inv);
-      inv_pivot_[i] = inv;
-      lower_[i] = off_[i - 1] * inv;
-    }
-    for (std::size_t i = first; i + 1 < end; ++i) upper_[i] = lane_neg(off_[i]) * inv_pivot_[i];
-  }
-
-  /// The chain's spikes: T⁻¹ (c_first e_first) into `from_first` and T⁻¹ (c_last e_last) into
-  /// `from_last`, over rows [first, end).
-  ROTORSWEEP_HD void spike_chain(std::size_t first, std::size_t end, V c_first, V c_last, V* from_first,
-                                 V* from_last) const {
-    if (first >= end) return;
-    const std::size_t last = end - 1;
-    V a = c_first * inv_pivot_[first];
-    from_first[first] = a;
-    for (std::size_t i = first + 1; i < end; ++i) {
-      a = lower_[i] * a;
-      from_first[i] = a;
-    }
-    V b = c_last * inv_pivot_[last];
-    from_last[last] = b;
-    for (std::size_t i = last; i-- > first;) {
-      a = from_first[i] - upper_[i] * a;
-      b = V(0.0) - upper_[i] * b;
-      from_first[i] = a;
-      from_last[i] = b;
-    }
-  }
-
-  /// z = T⁻¹ r over the chain rows [first, end), in place: one multiply and one add per row on
-  /// each substitution's dependency chain, whose running value stays in a register (a store to r
-  /// may alias the factors, so a value read back from r would wait on the store).
-  ROTORSWEEP_HD void solve_chain(V* r, std::size_t first, std::size_t end) const {
-    if (first >= end) return;
-    V z = r[first] * inv_pivot_[first];
-    r[first] = z;
-    for (std::size_t i = first + 1; i < end; ++i) {
-      z = r[i] * inv_pivot_[i] + lower_[i] * z;
-      r[i] = z;
-    }
-    for (std::size_t i = end - 1; i-- > first;) {
-      z = r[i] - upper_[i] * z;
-      r[i] = z;
-    }
-  }
-
   /// Both chains at once, their recurrences interleaved: chain A, rows 0 .. p-1, is as long as
   /// chain B, rows p+1 .. m-1, or one row longer.
   ROTORSWEEP_HD void solve_chains(V* r, std::size_t p, std::size_t m) const {
     const std::size_t length = m - p - 1;  // chain B's
-    if (length == 0) return solve_chain(r, 0, p);
+    if (length == 0) return solve_tridiagonal_chain(0, p, inv_pivot_, upper_, lower_, r);
     const std::size_t b = p + 1;  // chain B's offset
     V za = r[0] * inv_pivot_[0], zb = r[b] * inv_pivot_[b];
     r[0] = za;

@@ -8,6 +8,7 @@
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/linear/cyclic_tridiagonal.hpp"
+#include "kernels/linear/tridiagonal_chain.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -124,30 +125,10 @@ class TeamCyclicTridiagonal {
       return;
     }
     const std::size_t first = b.begin, last = b.border - 1;
-    double inv = 1.0 / (shift - diag_[first]);
-    inv_pivot_[first] = inv;
-    for (std::size_t i = first + 1; i <= last; ++i) {
-      inv = 1.0 / ((shift - diag_[i]) - off_[i - 1] * off_[i - 1] * inv);
-      inv_pivot_[i] = inv;
-      lower_[i] = off_[i - 1] * inv;
-    }
-    for (std::size_t i = first; i < last; ++i) upper_[i] = -off_[i] * inv_pivot_[i];
-    // spikes: T⁻¹ (c_left e_first) and T⁻¹ (c_own e_last), forward then back
+    factor_tridiagonal_chain(shift, diag_, off_, first, b.border, inv_pivot_, upper_, lower_);
     const double c_left = left_coupling(b), c_own = own_coupling(b);
-    double a = c_left * inv_pivot_[first];
-    spike_left_[first] = a;
-    for (std::size_t i = first + 1; i <= last; ++i) {
-      a = lower_[i] * a;
-      spike_left_[i] = a;
-    }
-    double o = c_own * inv_pivot_[last];
-    spike_own_[last] = o;
-    for (std::size_t i = last; i-- > first;) {
-      a = spike_left_[i] - upper_[i] * a;
-      o = -upper_[i] * o;
-      spike_left_[i] = a;
-      spike_own_[i] = o;
-    }
+    tridiagonal_chain_spikes(first, b.border, inv_pivot_, upper_, lower_, c_left, c_own, spike_left_,
+                             spike_own_);
     left_diag_[r] = c_left * spike_left_[first];
     own_diag_[r] = c_own * spike_own_[last];
     across_[r] = -c_left * spike_own_[first];
@@ -193,16 +174,7 @@ class TeamCyclicTridiagonal {
       return;
     }
     const std::size_t first = b.begin, last = b.border - 1;
-    double z = r[first] * inv_pivot_[first];
-    r[first] = z;
-    for (std::size_t i = first + 1; i <= last; ++i) {
-      z = r[i] * inv_pivot_[i] + lower_[i] * z;
-      r[i] = z;
-    }
-    for (std::size_t i = last; i-- > first;) {
-      z = r[i] - upper_[i] * z;
-      r[i] = z;
-    }
+    solve_tridiagonal_chain(first, b.border, inv_pivot_, upper_, lower_, r);
     left_rhs_[k] = left_coupling(b) * r[first];
     own_rhs_[k] = own_coupling(b) * r[last];
   }
