@@ -60,6 +60,17 @@ class HostTeam {
     return values_[0];
   }
 
+  /// max over ranks of value(rank).
+  template <class Value>
+  double max(Value&& value) const {
+    double m = value(0);
+    for (std::size_t rank = 1; rank < size_; ++rank) {
+      const double v = value(rank);
+      m = v > m ? v : m;
+    }
+    return m;
+  }
+
   /// Whether every rank's test(rank) holds.
   template <class Test>
   bool all(Test&& test) const {
@@ -104,6 +115,15 @@ class WarpTeam {
   __device__ double sum(Value&& value) const {
     double v = value(std::size_t(rank_));
     for (unsigned offset = size_ / 2; offset >= 1; offset /= 2) v += __shfl_xor_sync(mask_, v, offset, size_);
+    return v;
+  }
+  template <class Value>
+  __device__ double max(Value&& value) const {
+    double v = value(std::size_t(rank_));
+    for (unsigned offset = size_ / 2; offset >= 1; offset /= 2) {
+      const double other = __shfl_xor_sync(mask_, v, offset, size_);
+      v = other > v ? other : v;
+    }
     return v;
   }
   template <class Test>

@@ -62,6 +62,9 @@ class TeamCyclicTridiagonal {
   ROTORSWEEP_HD std::size_t size() const { return n_; }
   ROTORSWEEP_HD double& diag(std::size_t i) { return diag_[i]; }
   ROTORSWEEP_HD double& off(std::size_t k) { return off_[k]; }
+  /// J's diagonal and links as arrays, for the ranks to fill their rows.
+  ROTORSWEEP_HD double* diagonal() { return diag_; }
+  ROTORSWEEP_HD double* links() { return off_; }
 
   ROTORSWEEP_HD bool positive_definite() const { return shared_[positive_definite_slot] != 0.0; }
   ROTORSWEEP_HD void keep_constant_solutions(bool keep) { keep_constant_ = keep; }

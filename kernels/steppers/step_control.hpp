@@ -46,20 +46,27 @@ ROTORSWEEP_HD V scaled_error(StateScale kind, const Tolerances& tol, const V& ab
 /// on the work-precision ladder (docs/numerics.md "Holding R apart").
 inline constexpr double remainder_tightening = 8.0;
 
-/// The larger of sqrt(mean((e_i / s_i)²)) over the state components (s by the model's scale())
-/// and the other quadratures that steer the step (error_controlled(p); s by quadrature_scale()), and
-/// remainder_tightening · |e / s| of the capped-relative ones (root-sum-square if several); see
-/// StateScale. A non-finite error in any term gives a non-finite norm.
+/// Σ (e_k / s_k)² over the state components [begin, end): error_norm's state part (a team's rank
+/// sums its rows').
 template <class Model, class V>
-ROTORSWEEP_HD V error_norm(const Model& model, const Tolerances& tol, const V* y, const V* y_new,
-                           const V* y_error, const V* q, const V* q_new, const V* q_error) {
-  const std::size_t n = model.dimension();
+ROTORSWEEP_HD V state_error_squares(const Model& model, const Tolerances& tol, const V* y, const V* y_new,
+                                    const V* y_error, std::size_t begin, std::size_t end) {
   const V absolute_scale_inv(1.0 / (tol.atol + tol.rtol));
   V sum(0.0);
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t k = begin; k < end; ++k) {
     const V r = scaled_error(model.scale(k), tol, absolute_scale_inv, y_error[k], y[k], y_new[k]);
     sum += r * r;
   }
+  return sum;
+}
+
+/// error_norm from the state's Σ (e_k / s_k)² over every component (state_error_squares) and the
+/// quadratures.
+template <class Model, class V>
+ROTORSWEEP_HD V quadrature_error_norm(const Model& model, const Tolerances& tol, V sum, const V* q,
+                                      const V* q_new, const V* q_error) {
+  const std::size_t n = model.dimension();
+  const V absolute_scale_inv(1.0 / (tol.atol + tol.rtol));
   std::size_t terms = n;
   V held_apart(0.0);
   const std::size_t quadratures = model.quadrature_count();
@@ -78,6 +85,18 @@ ROTORSWEEP_HD V error_norm(const Model& model, const Tolerances& tol, const V* y
   const V apart = V(remainder_tightening) * lane_sqrt(held_apart);
   const V both = rms + apart;  // non-finite when either part is
   return lane_select(lane_isfinite(both), lane_max(rms, apart), both);
+}
+
+/// The larger of sqrt(mean((e_i / s_i)²)) over the state components (s by the model's scale())
+/// and the other quadratures that steer the step (error_controlled(p); s by quadrature_scale()), and
+/// remainder_tightening · |e / s| of the capped-relative ones (root-sum-square if several); see
+/// StateScale. A non-finite error in any term gives a non-finite norm.
+template <class Model, class V>
+ROTORSWEEP_HD V error_norm(const Model& model, const Tolerances& tol, const V* y, const V* y_new,
+                           const V* y_error, const V* q, const V* q_new, const V* q_error) {
+  return quadrature_error_norm(model, tol,
+                               state_error_squares(model, tol, y, y_new, y_error, 0, model.dimension()), q,
+                               q_new, q_error);
 }
 
 /// The smallest previous error the PI controller remembers (so one very accurate step does not

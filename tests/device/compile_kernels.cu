@@ -8,6 +8,8 @@
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
+#include "kernels/steppers/team_integrator.hpp"
+#include "kernels/steppers/team_rosenbrock.hpp"
 
 using namespace rotorsweep::kernels;
 
@@ -55,4 +57,21 @@ __global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_
   J.factor(crew, 3.0);
   J.solve(crew, rhs + team * rows);
   if (crew.rank() == 0) definite[team] = J.positive_definite() ? 1 : 0;
+}
+
+/// A member of the nearest-neighbour rows integrated by a warp team over one period (team_integrator.hpp).
+__global__ void advance_on_teams(double* storage, std::size_t per_team, std::size_t rows, unsigned team_size,
+                                 const double* A, double* theta, double* drive) {
+  using Stepper = TeamRosenbrock<const WarpTeam, rodas4p2_tableau>;
+  const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
+  const WarpTeam crew(team_size);
+  LaneArena<double> arena(storage + team * per_team, per_team);
+  const Model model(rows, arena, Integrals{true, false, false, true, false, false}, {A[team], 0.0011, false});
+  TeamIntegrator<const WarpTeam, Stepper> integrator(model, team_size, {1e-6, 1e-9}, {}, 1e-3, arena);
+  crew.sync();
+  TeamMemberState state;
+  state.y = theta + team * rows;
+  state.t_stop = two_pi;
+  integrator.advance(crew, model, state);
+  if (crew.rank() == 0) drive[team] = state.quad[0];
 }

@@ -177,6 +177,60 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
   /// The N links of the ring.
   ROTORSWEEP_HD std::size_t links() const { return rows_; }
 
+  /// Sums over the rows that one pass collects, each in row order: the drive's lags (weighted by
+  /// the rows' shares of A) and the links' cosines.
+  struct RowSums {
+    V lag = V(0.0);
+    V cos_link = V(0.0);
+  };
+
+  // A team's evaluation (docs/architecture.md "Teams"): each rank passes over its rows [begin, end),
+  // the team adds the ranks' sums, and the integrands and the Jacobian follow.
+
+  /// f_j for rows [begin, end) at (θ, t), their trigonometry into the workspace (rows begin − 1 and
+  /// end are read, not written), and their sums of lags and of the cosines of links begin … end − 1.
+  /// One rank over every row gives evaluate()'s f and sums, bit for bit.
+  ROTORSWEEP_HD RowSums evaluate_range(Workspace& w, const V* theta, V t, V* f, std::size_t begin,
+                                       std::size_t end) const {
+    return disordered_ ? range_pass<true>(w, theta, t, f, begin, end)
+                       : range_pass<false>(w, theta, t, f, begin, end);
+  }
+  /// The drive's integrand R and the alignment's ρ̄ from the team's sums.
+  ROTORSWEEP_HD V drive_integrand(const RowSums& sums) const { return A_ * sums.lag; }
+  ROTORSWEEP_HD V alignment_integrand(const RowSums& sums) const {
+    return alignment_from_link_sum(sums.cos_link);
+  }
+  /// J's diagonal, the links after rows [begin, end) and ∂f/∂t there, once every rank's
+  /// evaluate_range at the point is done (row begin reads link begin − 1).
+  ROTORSWEEP_HD void jacobian_range(const Workspace& w, V* diag, V* off, V* df_dt, std::size_t begin,
+                                    std::size_t end) const {
+    for (std::size_t j = begin; j < end; ++j) {
+      const JacobianRow row = disordered_ ? jacobian_row<true>(w, j) : jacobian_row<false>(w, j);
+      diag[j] = row.diag;
+      off[j] = row.off;
+      df_dt[j] = row.df_dt;
+    }
+  }
+  /// ∂R/∂θ_k and ∂ρ̄/∂θ_k for rows [begin, end) (as jacobian_range, after every rank's pass; no
+  /// alignment where it is null); returns the rows' sum of (1 + δ_k) cos(θ_k − t), whose sum over the
+  /// team gives ∂R/∂t = −drive_integrand({that sum}).
+  ROTORSWEEP_HD V integrand_gradient_range(const Workspace& w, V* drive, V* alignment, std::size_t begin,
+                                           std::size_t end) const {
+    V sum(0.0);
+    for (std::size_t k = begin; k < end; ++k) {
+      const V lag = disordered_ ? scaled<true>(A_row_, k, w.cos_lag[k]) : w.cos_lag[k];
+      drive[k] = A_ * lag;
+      sum += lag;
+      if (alignment) {
+        const std::size_t km = (k == 0) ? rows_ - 1 : k - 1;
+        alignment[k] = V(0.5 / double(rows_)) * (w.sin_link[km] - w.sin_link[k]);
+      }
+    }
+    return sum;
+  }
+  /// Whether lane `lane`'s member is symmetry protected (its stage solves keep all-equal rows equal).
+  ROTORSWEEP_HD bool strict_fm(std::size_t lane) const { return lane_get(strict_fm_, lane) != 0.0; }
+
   /// The row profile at (θ, t): drive[j] = A (1 + δ_j) sin(θ_j - t), row j's share of the drive
   /// integrand R, and link[j] = cos²((θ_j - θ_{j+1})/2), whose mean over the links is ρ̄.
   ROTORSWEEP_HD void row_profile(Workspace& w, const V* theta, V t, V* drive, V* link) const {
@@ -253,14 +307,10 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
     evaluate_rows<per_row>(w, theta, t, f, qdot, true);
     const std::size_t n = rows_;
     for (std::size_t j = 0; j < n; ++j) {
-      const std::size_t jm = (j == 0) ? n - 1 : j - 1;
-      const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
-      const V coupled = scaled<per_row>(coupling_row_, j, w.cos_link[j]);
-      const V lag = scaled<per_row>(A_row_, j, w.cos_lag[j]);
-      J.diag(j) = inv_g_ * (V(-6.0) * scaled<per_row>(anisotropy_row_, j, cos_2theta) + coupled +
-                            scaled<per_row>(coupling_row_, jm, w.cos_link[jm]) + A_ * lag);
-      J.off(j) = lane_neg(inv_g_) * coupled;
-      df_dt[j] = lane_neg(inv_g_) * A_ * lag;
+      const JacobianRow row = jacobian_row<per_row>(w, j);
+      J.diag(j) = row.diag;
+      J.off(j) = row.off;
+      df_dt[j] = row.df_dt;
     }
     J.keep_constant_solutions(strict_fm_ != V(0.0));
     integrand_gradients<per_row>(w, f, J, df_dt, dq_dtheta, dq_dt);
@@ -273,6 +323,51 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
     w.start_cos_t = w.cos_t;
   }
 
+  /// Row j's diagonal entry of J, the entry of link j, and ∂f_j/∂t, from the stored trigonometry.
+  struct JacobianRow {
+    V diag, off, df_dt;
+  };
+  template <bool per_row>
+  ROTORSWEEP_HD JacobianRow jacobian_row(const Workspace& w, std::size_t j) const {
+    const std::size_t jm = (j == 0) ? rows_ - 1 : j - 1;
+    const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
+    const V coupled = scaled<per_row>(coupling_row_, j, w.cos_link[j]);
+    const V lag = scaled<per_row>(A_row_, j, w.cos_lag[j]);
+    return {inv_g_ * (V(-6.0) * scaled<per_row>(anisotropy_row_, j, cos_2theta) + coupled +
+                      scaled<per_row>(coupling_row_, jm, w.cos_link[jm]) + A_ * lag),
+            lane_neg(inv_g_) * coupled, lane_neg(inv_g_) * A_ * lag};
+  }
+
+  /// evaluate_range's pass: rows [begin, end) in row order, their neighbours read but not stored.
+  template <bool per_row>
+  ROTORSWEEP_HD RowSums range_pass(Workspace& w, const V* theta, V t, V* f, std::size_t begin,
+                                   std::size_t end) const {
+    const std::size_t n = rows_;
+    V sin_t(0.0), cos_t(0.0);
+    lane_sincos(t, sin_t, cos_t);
+    const auto row = [&]<bool store>(std::size_t j) {
+      V s(0.0), c(0.0);
+      lane_sincos(theta[j], s, c);
+      return row_values<per_row, store>(w, j, s, c, sin_t, cos_t);
+    };
+    const std::size_t before = (begin + n - 1) % n;
+    const Row previous = row.template operator()<false>(before);
+    Row current = row.template operator()<true>(begin);
+    V link_before = link_values<per_row, false, false>(w, before, previous, current).sin;
+    RowSums sums;
+    for (std::size_t j = begin; j < end; ++j) {
+      sums.lag += current.lag;
+      const std::size_t j1 = (j + 1) % n;
+      const Row next = j + 1 < end ? row.template operator()<true>(j1) : row.template operator()<false>(j1);
+      const Link after = link_values<per_row, true, true>(w, j, current, next);
+      sums.cos_link += after.cos;
+      f[j] = torque<per_row>(j, current, after.sin, link_before, inv_g_, A_);
+      link_before = after.sin;
+      current = next;
+    }
+    return sums;
+  }
+
   /// The whole trigonometry in the workspace, for the energy and the row profile; the torques
   /// go to the scratch w.product.
   template <bool per_row>
@@ -282,12 +377,54 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
         w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); }, w.product);
   }
 
-  /// Sums over the rows that one pass collects, each in row order: the drive's lags (weighted by
-  /// the rows' shares of A) and the links' cosines.
-  struct RowSums {
-    V lag = V(0.0);
-    V cos_link = V(0.0);
+  /// A row's sincos and its lag sin(θ_j − t), weighted by the row's share of A.
+  struct Row {
+    V sin, cos, lag;
   };
+  /// A link's sine, weighted by the coupling, and its cosine where computed.
+  struct Link {
+    V sin, cos;
+  };
+
+  /// Row j from its sincos (s, c) and the drive's (sin_t, cos_t); with `store`, its trigonometry goes to
+  /// the workspace.
+  template <bool per_row, bool store>
+  ROTORSWEEP_HD Row row_values(Workspace& w, std::size_t j, V s, V c, V sin_t, V cos_t) const {
+    Row r{s, c, V(0.0)};
+    const V sin_lag = r.sin * cos_t - r.cos * sin_t;
+    r.lag = scaled<per_row>(A_row_, j, sin_lag);
+    if constexpr (store) {
+      w.sin_row[j] = r.sin;
+      w.cos_row[j] = r.cos;
+      w.sin_lag[j] = sin_lag;
+      w.cos_lag[j] = r.cos * cos_t + r.sin * sin_t;
+      if constexpr (per_row) w.weighted_lag[j] = r.lag;
+    }
+    return r;
+  }
+
+  /// Link j between rows j and j + 1 (a and b); with `cosines` its cosine, with `store` both to the
+  /// workspace.
+  template <bool per_row, bool store, bool cosines>
+  ROTORSWEEP_HD Link link_values(Workspace& w, std::size_t j, const Row& a, const Row& b) const {
+    Link l{a.sin * b.cos - a.cos * b.sin, V(0.0)};
+    if constexpr (cosines) l.cos = a.cos * b.cos + a.sin * b.sin;
+    if constexpr (store) {
+      w.sin_link[j] = l.sin;
+      w.cos_link[j] = l.cos;
+    }
+    l.sin = scaled<per_row>(coupling_row_, j, l.sin);
+    return l;
+  }
+
+  /// The torque f_j of row r between its (weighted) link sines after and before it.
+  template <bool per_row>
+  ROTORSWEEP_HD V torque(std::size_t j, const Row& r, const V& link_after, const V& link_before,
+                         const V& inv_g, const V& A) const {
+    const V sin_2theta = V(2.0) * r.sin * r.cos;
+    return inv_g *
+           (V(-3.0) * scaled<per_row>(anisotropy_row_, j, sin_2theta) + link_after - link_before + A * r.lag);
+  }
 
   /// One pass over the rows from w.sin_t, w.cos_t and each row's sincos, which row_sincos(j, s, c)
   /// returns in s, c: each row's lag, its link to the row before, and the torque f_j as soon as
@@ -298,63 +435,33 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
   /// integrands W, H read them); with `cosines`, the links' cosines are computed (and summed).
   template <bool per_row, bool store, bool cosines, class RowSincos>
   ROTORSWEEP_HD RowSums rows_pass(Workspace& w, RowSincos&& row_sincos, V* f) const {
-    struct Row {
-      V sin, cos, lag;  // lag: sin(θ_j − t), weighted by the row's share of A
-    };
-    struct Link {
-      V sin, cos;  // sin weighted by the coupling; cos only where stored or summed
-    };
     const std::size_t n = rows_;
     const V sin_t = w.sin_t, cos_t = w.cos_t;
     const V inv_g = inv_g_, A = A_;  // f could alias the members: keep them in registers
     const auto row = [&](std::size_t j) {
-      Row r{V(0.0), V(0.0), V(0.0)};
-      row_sincos(j, r.sin, r.cos);
-      const V sin_lag = r.sin * cos_t - r.cos * sin_t;
-      r.lag = scaled<per_row>(A_row_, j, sin_lag);
-      if constexpr (store) {
-        w.sin_row[j] = r.sin;
-        w.cos_row[j] = r.cos;
-        w.sin_lag[j] = sin_lag;
-        w.cos_lag[j] = r.cos * cos_t + r.sin * sin_t;
-        if constexpr (per_row) w.weighted_lag[j] = r.lag;
-      }
-      return r;
-    };
-    const auto link = [&](std::size_t j, const Row& a, const Row& b) {  // rows j and j + 1
-      Link l{a.sin * b.cos - a.cos * b.sin, V(0.0)};
-      if constexpr (cosines) l.cos = a.cos * b.cos + a.sin * b.sin;
-      if constexpr (store) {
-        w.sin_link[j] = l.sin;
-        w.cos_link[j] = l.cos;
-      }
-      l.sin = scaled<per_row>(coupling_row_, j, l.sin);
-      return l;
-    };
-    const auto torque = [&](std::size_t j, const Row& r, const V& link_after, const V& link_before) {
-      const V sin_2theta = V(2.0) * r.sin * r.cos;
-      f[j] = inv_g * (V(-3.0) * scaled<per_row>(anisotropy_row_, j, sin_2theta) + link_after - link_before +
-                      A * r.lag);
+      V s(0.0), c(0.0);
+      row_sincos(j, s, c);
+      return row_values<per_row, store>(w, j, s, c, sin_t, cos_t);
     };
 
     RowSums sums;
     const Row last = row(n - 1), first = row(0);
-    const Link closing = link(n - 1, last, first);
+    const Link closing = link_values<per_row, store, cosines>(w, n - 1, last, first);
     sums.lag += first.lag;
     Row previous = first;
     V link_before = closing.sin;
     const auto next = [&](std::size_t j, const Row& current) {  // row j, after row j - 1
       sums.lag += current.lag;
-      const Link after = link(j - 1, previous, current);
+      const Link after = link_values<per_row, store, cosines>(w, j - 1, previous, current);
       if constexpr (cosines) sums.cos_link += after.cos;
-      torque(j - 1, previous, after.sin, link_before);
+      f[j - 1] = torque<per_row>(j - 1, previous, after.sin, link_before, inv_g, A);
       link_before = after.sin;
       previous = current;
     };
     for (std::size_t j = 1; j + 1 < n; ++j) next(j, row(j));
     next(n - 1, last);
     if constexpr (cosines) sums.cos_link += closing.cos;
-    torque(n - 1, last, closing.sin, link_before);
+    f[n - 1] = torque<per_row>(n - 1, last, closing.sin, link_before, inv_g, A);
     return sums;
   }
 
