@@ -79,6 +79,11 @@ struct SlipCounter {
       largest = kernels::lane_max(largest, kernels::lane_abs(turn));
       squares += turn * turn;
     }
+    accumulate_turns(accepted, largest, squares, dt);
+  }
+
+  /// accumulate() from the step's largest |Δθ_j| and Σ_j Δθ_j² (a team's, summed over its ranks).
+  ROTORSWEEP_HD void accumulate_turns(kernels::lane_mask<V> accepted, V largest, V squares, V dt) {
     const V safe_dt = kernels::lane_select(accepted, dt, V(1.0));
     const auto is_fast = largest > rate * safe_dt;
     const auto begins = accepted & is_fast & (fast == V(0.0));

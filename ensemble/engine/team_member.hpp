@@ -1,0 +1,161 @@
+// One member on a team of threads from its start to its retirement (docs/architecture.md "Teams"):
+// DeviceMember's state machine (docs/model.md §3), its row loops over each rank's rows.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "ensemble/engine/member_progress.hpp"
+#include "ensemble/engine/member_result.hpp"
+#include "ensemble/engine/member_slots.hpp"
+#include "ensemble/engine/step_reducers.hpp"
+#include "kernels/lanes/angles.hpp"
+#include "kernels/lanes/host_device.hpp"
+#include "kernels/lanes/lane_arena.hpp"
+#include "kernels/lanes/team.hpp"
+#include "kernels/steppers/team_integrator.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// Runs members of the nearest-neighbour rows on a team with TeamIntegrator<Team, Stepper>: per step
+/// and per period what DeviceMember does on one thread (the same reducers, records, MemberProgress,
+/// wrap and slot), the rows split among the ranks and the team's sums where DeviceMember sums over
+/// rows. It runs what the team stepper carries: D and ρ̄ (observables.dissipation, alignment and
+/// slips, with or without disorder), at T = 0, without row profiles (team_schedule_fits).
+template <class Team, class Stepper>
+struct TeamMember {
+  using Model = typename Stepper::Model;
+  using Integrator = kernels::TeamIntegrator<Team, Stepper>;
+
+  /// Whether a team runs members of schedule s: R and ρ̄ at most, no noise, no row profiles, uniform or
+  /// disordered nearest-neighbour rows.
+  static bool team_schedule_fits(const SlotSchedule& s) {
+    const kernels::Integrals q = s.quadratures;
+    return !s.stochastic && !s.row_profiles && q.drive && !q.work && !q.stokes && !q.energy && !q.moments;
+  }
+
+  /// Values of scratch a member of schedule s needs on a team of `ranks`, shared by the team.
+  static std::size_t storage_size(const SlotSchedule& s, std::size_t ranks) {
+    return kernels::counted_storage<double>(
+        [&](kernels::LaneArena<double>& arena) { const Parts parts(s, ranks, arena); });
+  }
+
+  /// Integrates chunk member k of `slots` to its retirement on `team` and writes its slot; `storage`
+  /// (the team's, at least storage_size values) holds its vectors.
+  ROTORSWEEP_HD static void run(Team& team, const SlotSchedule& s, const SlotViews& slots, std::size_t k,
+                                double* storage, std::size_t capacity) {
+    const std::size_t n = s.rows, ranks = team.size();
+    kernels::LaneArena<double> arena(storage, capacity);
+    Parts parts(s, ranks, arena);
+    team.sync();
+    const kernels::Integrals Q = s.quadratures;
+    Model& model = parts.model;
+    model.set_lane(0, slot_parameters<Model>(s, slots, k));
+    kernels::TeamMemberState state;
+    state.y = parts.theta;
+    each_row(team, n, [&](std::size_t j) { state.y[j] = slots.y0[k * n + j]; });
+    state.t_stop = Model::period;
+    state.tolerance_scale = slots.tolerance_scale[k];
+    SlipCounter<double> slips(s.slip_rate, s.slip_energies);
+    slips.set_damping(0, slots.g[k]);
+    AlignmentExtrema<double> alignment;
+    DissipationSwing<double> swing;
+
+    MemberProgress progress;
+    for (;;) {
+      if (s.slips) each_row(team, n, [&](std::size_t j) { parts.theta_before[j] = state.y[j]; });
+      const double t_before = state.t;
+      const bool accepted = parts.integrator.attempt(team, model, state);
+      if (Q.alignment) alignment.accumulate(true, parts.integrator.start_integrands()[Q.alignment_index()]);
+      if (accepted) {
+        swing.accumulate(true, state.quad[Q.drive_index()]);
+        if (s.slips) {
+          const double largest = team.max([&](std::size_t r) {
+            const kernels::TeamRows rows = kernels::team_rows(n, ranks, r);
+            double m = 0.0;
+            for (std::size_t j = rows.begin; j < rows.end; ++j) {
+              const double turn = state.y[j] - parts.theta_before[j];
+              m = kernels::lane_max(m, kernels::lane_abs(turn));
+            }
+            return m;
+          });
+          const double squares = team.sum([&](std::size_t r) {
+            const kernels::TeamRows rows = kernels::team_rows(n, ranks, r);
+            double sum = 0.0;
+            for (std::size_t j = rows.begin; j < rows.end; ++j) {
+              const double turn = state.y[j] - parts.theta_before[j];
+              sum += turn * turn;
+            }
+            return sum;
+          });
+          slips.accumulate_turns(true, largest, squares, state.t - t_before);
+        }
+      }
+      if (state.status != kernels::LaneStatus::ok) break;
+      if (state.t < state.t_stop) continue;
+
+      PeriodRecord record;
+      record_quadratures(
+          s.channels, Q, record,
+          [&](std::size_t p) {  // the team carries R and ρ̄ only (team_schedule_fits)
+            return p < kernels::TeamMemberState::max_quadratures ? state.quad[p] : 0.0;
+          },
+          Model::period, state.t);
+      if (Q.alignment) alignment.end_period(0, record);
+      swing.end_period(0, s.error_rtol, s.atol, record);
+      if (s.slips) slips.end_period(0, record);
+      const std::size_t closed = std::size_t(progress.periods());
+      double* end = slots.end_states + (k * s.end_capacity + closed % s.end_capacity) * n;
+      each_row(team, n, [&](std::size_t j) { end[j] = state.y[j]; });
+      team.one([&] {
+        double* slot = slots.records + (k * s.record_capacity + closed % s.record_capacity) * channel_count;
+        for (std::size_t c = 0; c < channel_count; ++c) slot[c] = record.values[c];
+      });
+      if (progress.close_period(s.periods, record.dissipation())) break;
+      for (double& q : state.quad) q = 0.0;
+      if (s.wrap_angles) {
+        state.t = 0.0;
+        state.t_stop = Model::period;
+        each_row(team, n, [&](std::size_t j) { state.y[j] = kernels::wrap_2pi(state.y[j]); });
+      } else {
+        state.t_stop = state.t + Model::period;
+      }
+    }
+    team.one([&] {
+      slots.status[k] = std::uint8_t(state.status);
+      slots.settled[k] = progress.settled() ? 1 : 0;
+      slots.periods[k] = progress.periods();
+      slots.steps[2 * k] = state.steps_accepted;
+      slots.steps[2 * k + 1] = state.steps_rejected;
+    });
+    each_row(team, n, [&](std::size_t j) { slots.theta[k * n + j] = state.y[j]; });
+  }
+
+ private:
+  /// What a member builds over the team's scratch (storage_size counts the same).
+  struct Parts {
+    Model model;
+    Integrator integrator;
+    double* theta;         ///< the state θ
+    double* theta_before;  ///< θ at the start of an attempt (slip counter)
+
+    ROTORSWEEP_HD Parts(const SlotSchedule& s, std::size_t ranks, kernels::LaneArena<double>& arena)
+        : model(s.rows, arena, s.quadratures),
+          integrator(model, ranks, {s.rtol, s.atol},
+                     {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
+                     s.first_step_scale, arena),
+          theta(arena.take(s.rows)),
+          theta_before(arena.take(s.rows)) {}
+  };
+
+  /// row(j) for every row, each rank its own.
+  template <class Row>
+  ROTORSWEEP_HD static void each_row(Team& team, std::size_t n, Row&& row) {
+    team.each([&](std::size_t r) {
+      const kernels::TeamRows rows = kernels::team_rows(n, team.size(), r);
+      for (std::size_t j = rows.begin; j < rows.end; ++j) row(j);
+    });
+  }
+};
+
+}  // namespace rotorsweep::ensemble

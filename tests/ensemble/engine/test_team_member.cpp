@@ -1,0 +1,90 @@
+// One member per team (ensemble/engine/team_member.hpp) on host teams of 1, 3 and 8 ranks against the
+// one-thread driver DeviceMember on the same slots: the same periods, slips, regimes and attractors, and
+// D and ρ̄ within the integration error, for uniform and disordered rows in the AFM, CP and FM regimes.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "ensemble/engine/device_member.hpp"
+#include "ensemble/engine/member_slots.hpp"
+#include "ensemble/engine/team_member.hpp"
+#include "ensemble/gpu/device_drivers.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "io/scene_parser.hpp"
+#include "kernels/lanes/team.hpp"
+#include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/rosenbrock.hpp"
+#include "kernels/steppers/team_rosenbrock.hpp"
+
+using namespace rotorsweep;
+using Catch::Detail::Approx;
+using Model = kernels::NearestNeighbourRows<double>;
+using Lanes = kernels::AdaptiveIntegrator<Model, kernels::Rodas4P2<Model>>;
+using Team = ensemble::TeamMember<kernels::HostTeam,
+                                  kernels::TeamRosenbrock<kernels::HostTeam, kernels::rodas4p2_tableau>>;
+
+namespace {
+
+/// Every member of the scene through `run(schedule, views, k)` in one chunk of slots.
+template <class Run>
+std::vector<ensemble::MemberResult> through_slots(const ensemble::Scene& scene, Run&& run) {
+  const ensemble::MemberPlan plan(scene);
+  std::vector<ensemble::Member> members;
+  for (std::size_t i = 0; i < plan.size(); ++i) members.push_back(plan[i]);
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const auto schedule = ensemble::slot_schedule(scene, members.front(),
+                                                ensemble::device_first_step_scale<Lanes>(members.front()));
+  ensemble::SlotChunk chunk(schedule, members.size());
+  chunk.fill(scene, {&source, 0, members.size()}, 0, members.size());
+  const ensemble::SlotViews views = chunk.views();
+  for (std::size_t k = 0; k < members.size(); ++k) run(schedule, views, k);
+  std::vector<ensemble::MemberResult> results;
+  for (std::size_t k = 0; k < members.size(); ++k) results.push_back(chunk.result(scene, k));
+  return results;
+}
+
+void check_teams_follow(const std::string& text) {
+  const auto scene = io::parse_scene_text(text, "team-member");
+  const auto thread =
+      through_slots(scene, [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
+        std::vector<double> storage(ensemble::DeviceMember<Model, Lanes>::storage_size(s));
+        ensemble::DeviceMember<Model, Lanes>::run(s, v, k, storage.data(), storage.size());
+      });
+  for (std::size_t ranks : {1u, 3u, 8u}) {
+    const auto team = through_slots(
+        scene, [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
+          REQUIRE(Team::team_schedule_fits(s));
+          std::vector<double> storage(Team::storage_size(s, ranks));
+          kernels::HostTeam crew(ranks);
+          Team::run(crew, s, v, k, storage.data(), storage.size());
+        });
+    for (std::size_t k = 0; k < thread.size(); ++k) {
+      const auto &a = thread[k], &b = team[k];
+      INFO("ranks " << ranks << ", member " << k << ": D " << a.dissipation() << ", "
+                    << a.final_state.attractor);
+      REQUIRE(b.status == a.status);
+      CHECK(b.periods_run == a.periods_run);
+      CHECK(b.slips_per_period() == a.slips_per_period());
+      CHECK(b.regime == a.regime);
+      CHECK(b.final_state.attractor == a.final_state.attractor);
+      CHECK(b.dissipation() == Approx(a.dissipation()).epsilon(1e-8).margin(1e-12));
+      CHECK(b.alignment_mean() == Approx(a.alignment_mean()).epsilon(1e-9));
+      CHECK(b.steps_accepted + b.steps_rejected == Approx(a.steps_accepted + a.steps_rejected).epsilon(0.01));
+    }
+  }
+}
+
+const std::string rows_20 =
+    "[model]\nrows = 20\n[drive]\ng = 0.0011\n[initial]\nkinds = [\"AFM\"]\nnoise = 0.01\nreplicas = 2\n"
+    "[schedule]\nrelax_periods = 2\naverage_periods = 2\n[numerics]\nrtol = 1e-10\natol = 1e-13\n";
+
+}  // namespace
+
+TEST_CASE("a team runs a disordered member as one thread does: AFM, CP and FM", "[team][device_member]") {
+  check_teams_follow(rows_20 + "[sweep]\nA = [1.0, 6.0, 12.0]\n[disorder]\nA = 1e-6\n");
+}
+
+TEST_CASE("a team runs uniform rows as one thread does, the period wrapped", "[team][device_member]") {
+  check_teams_follow(rows_20 + "wrap_angles = true\n[sweep]\nA = [1.0, 12.0]\n");
+}
