@@ -20,19 +20,15 @@ namespace rotorsweep::ensemble {
 /// Runs members of the nearest-neighbour rows on a team with TeamIntegrator<Team, Stepper>: per step
 /// and per period what DeviceMember does on one thread (the same reducers, records, MemberProgress,
 /// wrap and slot), the rows split among the ranks and the team's sums where DeviceMember sums over
-/// rows. It runs what the team stepper carries: D and ρ̄ (observables.dissipation, alignment and
-/// slips, with or without disorder), at T = 0, without row profiles (team_schedule_fits).
+/// rows. It runs every observable of uniform or disordered rows at T = 0 but the row profiles
+/// (team_schedule_fits).
 template <class Team, class Stepper>
 struct TeamMember {
   using Model = typename Stepper::Model;
   using Integrator = kernels::TeamIntegrator<Team, Stepper>;
 
-  /// Whether a team runs members of schedule s: R and ρ̄ at most, no noise, no row profiles, uniform or
-  /// disordered nearest-neighbour rows.
-  static bool team_schedule_fits(const SlotSchedule& s) {
-    const kernels::Integrals q = s.quadratures;
-    return !s.stochastic && !s.row_profiles && q.drive && !q.work && !q.stokes && !q.energy && !q.moments;
-  }
+  /// Whether a team runs members of schedule s: no noise and no row profiles.
+  static bool team_schedule_fits(const SlotSchedule& s) { return !s.stochastic && !s.row_profiles; }
 
   /// Values of scratch a member of schedule s needs on a team of `ranks`, shared by the team.
   static std::size_t storage_size(const SlotSchedule& s, std::size_t ranks) {
@@ -68,7 +64,7 @@ struct TeamMember {
       const bool accepted = parts.integrator.attempt(team, model, state);
       if (Q.alignment) alignment.accumulate(true, parts.integrator.start_integrands()[Q.alignment_index()]);
       if (accepted) {
-        swing.accumulate(true, state.quad[Q.drive_index()]);
+        if (Q.drive) swing.accumulate(true, state.quad[Q.drive_index()]);
         if (s.slips) {
           const double largest = team.max([&](std::size_t r) {
             const kernels::TeamRows rows = kernels::team_rows(n, ranks, r);
@@ -96,13 +92,9 @@ struct TeamMember {
 
       PeriodRecord record;
       record_quadratures(
-          s.channels, Q, record,
-          [&](std::size_t p) {  // the team carries R and ρ̄ only (team_schedule_fits)
-            return p < kernels::TeamMemberState::max_quadratures ? state.quad[p] : 0.0;
-          },
-          Model::period, state.t);
+          s.channels, Q, record, [&](std::size_t p) { return state.quad[p]; }, Model::period, state.t);
       if (Q.alignment) alignment.end_period(0, record);
-      swing.end_period(0, s.error_rtol, s.atol, record);
+      if (Q.drive) swing.end_period(0, s.error_rtol, s.atol, record);
       if (s.slips) slips.end_period(0, record);
       const std::size_t closed = std::size_t(progress.periods());
       double* end = slots.end_states + (k * s.end_capacity + closed % s.end_capacity) * n;

@@ -17,9 +17,8 @@ namespace rotorsweep::kernels {
 /// The stages of RosenbrockStepper for NearestNeighbourRows<double> on a team of `ranks`: each rank
 /// forms its rows' arguments and right-hand sides and evaluates the model over them
 /// (evaluate_range), the team solves with TeamCyclicTridiagonal, and the quadratures' stage values
-/// come from team sums (identical on every rank, so each may keep its own copy). It carries the
-/// drive's integral R and, where the model does, the alignment's (the scene's default observables);
-/// the model must carry no other quadrature. Without evaluate_displaced, and with the sums over the
+/// come from team sums (identical on every rank, so each may keep its own copy); every quadrature the
+/// model carries (R, W, S, ρ̄, H, the moments). Without evaluate_displaced, and with the sums over the
 /// team in butterfly order, its bits differ from the lanes' at rounding level (docs/numerics.md "The
 /// stage solve on a team").
 template <class Team, const RosenbrockTableau& Table>
@@ -27,25 +26,25 @@ class TeamRosenbrock {
  public:
   using Model = NearestNeighbourRows<double>;
   static constexpr int stages = Table.stages;
-  static constexpr std::size_t quadratures = 2;  ///< at most: R, then ρ̄
+  static constexpr std::size_t quadratures = Integrals::max_count;  ///< at most
 
   ROTORSWEEP_HD TeamRosenbrock(const Model& model, std::size_t ranks, LaneArena<double>& arena)
       : n_(model.dimension()),
         ranks_(ranks),
-        alignment_(model.integrals().alignment),
+        carried_(model.quadrature_count()),
         work_(n_, arena),
         jacobian_(n_, ranks, arena),
         f_(arena.take(n_)),
         df_dt_(arena.take(n_)),
         argument_(arena.take(n_)),
         stages_(arena.take(std::size_t(stages) * n_)),
-        drive_gradient_(arena.take(n_)),
-        alignment_gradient_(arena.take(n_)),
-        partial_(arena.take(2 * ranks)) {}
+        dq_dy_(arena.take(quadratures * n_)),
+        scratch_(arena.take(n_)),
+        partial_(arena.take(quadratures * ranks)) {}
 
   ROTORSWEEP_HD static constexpr int order() { return Table.order; }
   ROTORSWEEP_HD static constexpr int embedded_order() { return Table.embedded_order; }
-  ROTORSWEEP_HD std::size_t quadrature_count() const { return alignment_ ? 2 : 1; }
+  ROTORSWEEP_HD std::size_t quadrature_count() const { return carried_; }
 
   /// One step of size h from (t, y, q) into y_new, q_new and the error estimates; returns whether it
   /// resolves every unstable direction (RosenbrockStepper::attempt). y and y_new are the team's.
@@ -71,14 +70,25 @@ class TeamRosenbrock {
     team.each([&](std::size_t r) {
       const TeamRows rows = team_rows(n_, ranks_, r);
       const Model::RowSums sums = model.evaluate_range(work_, y, t, f_, rows.begin, rows.end);
-      partial_[2 * r] = sums.lag;
-      partial_[2 * r + 1] = sums.cos_link;
+      const Model::IntegrandSums more = model.integrand_sums_range(work_, f_, rows.begin, rows.end);
+      double* mine = partial_ + quadratures * r;
+      mine[0] = sums.lag;
+      mine[1] = sums.cos_link;
+      mine[2] = more.lag_force;
+      mine[3] = more.force_squares;
+      mine[4] = more.energy;
     });
+    const auto total = [&](std::size_t i) {
+      return team.sum([&](std::size_t r) { return partial_[quadratures * r + i]; });
+    };
     Model::RowSums sums;
-    sums.lag = team.sum([&](std::size_t r) { return partial_[2 * r]; });
-    sums.cos_link = team.sum([&](std::size_t r) { return partial_[2 * r + 1]; });
-    qdot[0] = model.drive_integrand(sums);
-    if (alignment_) qdot[1] = model.alignment_integrand(sums);
+    sums.lag = total(0);
+    sums.cos_link = total(1);
+    Model::IntegrandSums more;
+    more.lag_force = total(2);
+    more.force_squares = total(3);
+    more.energy = total(4);
+    model.team_integrands(sums, more, t, qdot);
   }
   /// f of the last evaluate (the team's).
   ROTORSWEEP_HD const double* rate() const { return f_; }
@@ -129,7 +139,7 @@ class TeamRosenbrock {
     jacobian_.solve(team, u);
     const double* integrands = I == 0 ? start_qdot_ : qdot_;
     for (std::size_t p = 0; p < quadrature_count(); ++p) {
-      const double* gradient = p == 0 ? drive_gradient_ : alignment_gradient_;
+      const double* gradient = dq_dy_ + p * n_;
       const double dot = team.sum([&](std::size_t r) {
         const TeamRows rows = team_rows(n_, ranks_, r);
         double partial = 0.0;
@@ -177,28 +187,33 @@ class TeamRosenbrock {
     }
   }
 
-  /// f, the integrands, J, ∂f/∂t and the integrands' gradients at (y, t).
+  /// f, the integrands, J, ∂f/∂t and the integrands' gradients at (y, t): the gradients read J's
+  /// rows and the trigonometry of the neighbouring ranks' rows, so they take a phase of their own.
   ROTORSWEEP_HD void linearize(Team& team, const Model& model, const double* y, double t) {
     evaluate(team, model, y, t, start_qdot_);
     team.each([&](std::size_t r) {
       const TeamRows rows = team_rows(n_, ranks_, r);
       model.jacobian_range(work_, jacobian_.diagonal(), jacobian_.links(), df_dt_, rows.begin, rows.end);
-      partial_[2 * r] = model.integrand_gradient_range(
-          work_, drive_gradient_, alignment_ ? alignment_gradient_ : nullptr, rows.begin, rows.end);
     });
-    Model::RowSums lag_sum;
-    lag_sum.lag = team.sum([&](std::size_t r) { return partial_[2 * r]; });
-    dq_dt_[0] = -model.drive_integrand(lag_sum);
-    dq_dt_[1] = 0.0;
+    team.each([&](std::size_t r) {
+      const TeamRows rows = team_rows(n_, ranks_, r);
+      model.integrand_gradient_range(work_, f_, jacobian_.diagonal(), jacobian_.links(), df_dt_, scratch_,
+                                     dq_dy_, partial_ + quadratures * r, t, rows.begin, rows.end);
+    });
+    double time_sums[quadratures] = {};
+    for (std::size_t p = 0; p < carried_; ++p)
+      time_sums[p] = team.sum([&](std::size_t r) { return partial_[quadratures * r + p]; });
+    model.team_time_derivatives(time_sums, t, start_qdot_, dq_dt_);
   }
 
   std::size_t n_, ranks_;
-  bool alignment_;
+  std::size_t carried_;  ///< the model's quadratures
   Model::Workspace work_;
   TeamCyclicTridiagonal<Team> jacobian_;
   double *f_, *df_dt_, *argument_, *stages_;
-  double *drive_gradient_, *alignment_gradient_;  ///< ∂R/∂θ, ∂ρ̄/∂θ
-  double* partial_;                               ///< per rank: its part of a sum
+  double* dq_dy_;    ///< ∂q̇_p/∂θ_k at [p·N + k]
+  double* scratch_;  ///< J x for the gradients
+  double* partial_;  ///< per rank: its parts of sums (quadratures values each)
   // the quadratures' integrands and ∂/∂t: team sums, the same on every rank (each keeps its own)
   double start_qdot_[quadratures] = {}, qdot_[quadratures] = {}, dq_dt_[quadratures] = {};
 };

@@ -195,10 +195,29 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
     return disordered_ ? range_pass<true>(w, theta, t, f, begin, end)
                        : range_pass<false>(w, theta, t, f, begin, end);
   }
-  /// The drive's integrand R and the alignment's ρ̄ from the team's sums.
-  ROTORSWEEP_HD V drive_integrand(const RowSums& sums) const { return A_ * sums.lag; }
-  ROTORSWEEP_HD V alignment_integrand(const RowSums& sums) const {
-    return alignment_from_link_sum(sums.cos_link);
+  /// The further sums over rows [begin, end) that W, S and H need (those the model carries), after
+  /// the rank's evaluate_range: Σ lag_j f_j, Σ f_j², Σ of the rows' energy terms.
+  struct IntegrandSums {
+    V lag_force = V(0.0), force_squares = V(0.0), energy = V(0.0);
+  };
+  ROTORSWEEP_HD IntegrandSums integrand_sums_range(const Workspace& w, const V* f, std::size_t begin,
+                                                   std::size_t end) const {
+    IntegrandSums sums;
+    if (integrals_.work)
+      sums.lag_force =
+          row_products(begin, end, disordered_ ? weighted_lag<true>(w) : weighted_lag<false>(w), f);
+    if (integrals_.stokes) sums.force_squares = row_products(begin, end, f, f);
+    if (integrals_.energy)
+      sums.energy = disordered_ ? energy_range<true>(w, begin, end) : energy_range<false>(w, begin, end);
+    return sums;
+  }
+  /// The carried integrands at time t from the team's sums.
+  ROTORSWEEP_HD void team_integrands(const RowSums& sums, const IntegrandSums& more, V t, V* qdot) const {
+    integrands_from_sums(
+        integrals_, A_, g_, [&] { return sums.lag; }, [&] { return more.lag_force; },
+        [&] { return more.force_squares; }, [&] { return alignment_from_link_sum(sums.cos_link); },
+        [&] { return more.energy; }, qdot);
+    row_moment_integrands(integrals_, t, qdot);
   }
   /// J's diagonal, the links after rows [begin, end) and ∂f/∂t there, once every rank's
   /// evaluate_range at the point is done (row begin reads link begin − 1).
@@ -211,22 +230,22 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
       df_dt[j] = row.df_dt;
     }
   }
-  /// ∂R/∂θ_k and ∂ρ̄/∂θ_k for rows [begin, end) (as jacobian_range, after every rank's pass; no
-  /// alignment where it is null); returns the rows' sum of (1 + δ_k) cos(θ_k − t), whose sum over the
-  /// team gives ∂R/∂t = −drive_integrand({that sum}).
-  ROTORSWEEP_HD V integrand_gradient_range(const Workspace& w, V* drive, V* alignment, std::size_t begin,
-                                           std::size_t end) const {
-    V sum(0.0);
-    for (std::size_t k = begin; k < end; ++k) {
-      const V lag = disordered_ ? scaled<true>(A_row_, k, w.cos_lag[k]) : w.cos_lag[k];
-      drive[k] = A_ * lag;
-      sum += lag;
-      if (alignment) {
-        const std::size_t km = (k == 0) ? rows_ - 1 : k - 1;
-        alignment[k] = V(0.5 / double(rows_)) * (w.sin_link[km] - w.sin_link[k]);
-      }
-    }
-    return sum;
+  /// The carried integrands' gradients dq_dtheta[q·N + k] for rows k in [begin, end) at time t, and
+  /// their parts of the sums behind ∂q̇/∂t in time_sums (team_time_derivatives), once every rank's
+  /// jacobian_range at the point is done (J's rows through diag and off; `scratch` holds N values).
+  ROTORSWEEP_HD void integrand_gradient_range(const Workspace& w, const V* f, const V* diag, const V* off,
+                                              const V* df_dt, V* scratch, V* dq_dtheta, V* time_sums, V t,
+                                              std::size_t begin, std::size_t end) const {
+    if (disordered_)
+      gradient_range<true>(w, f, diag, off, df_dt, scratch, dq_dtheta, time_sums, begin, end);
+    else
+      gradient_range<false>(w, f, diag, off, df_dt, scratch, dq_dtheta, time_sums, begin, end);
+    row_moment_gradient_range(integrals_, rows_, t, dq_dtheta, begin, end);
+  }
+  /// ∂q̇/∂t at time t from the team's time sums and the integrands there.
+  ROTORSWEEP_HD void team_time_derivatives(const V* time_sums, V t, const V* qdot, V* dq_dt) const {
+    finish_time_derivatives(integrals_, A_, g_, time_sums, dq_dt);
+    row_moment_time_derivatives(integrals_, t, qdot, dq_dt);
   }
   /// Whether lane `lane`'s member is symmetry protected (its stage solves keep all-equal rows equal).
   ROTORSWEEP_HD bool strict_fm(std::size_t lane) const { return lane_get(strict_fm_, lane) != 0.0; }
@@ -336,6 +355,36 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
     return {inv_g_ * (V(-6.0) * scaled<per_row>(anisotropy_row_, j, cos_2theta) + coupled +
                       scaled<per_row>(coupling_row_, jm, w.cos_link[jm]) + A_ * lag),
             lane_neg(inv_g_) * coupled, lane_neg(inv_g_) * A_ * lag};
+  }
+
+  /// integrand_gradient_range over one rank's rows, J x from J's rows and x's neighbours.
+  template <bool per_row>
+  ROTORSWEEP_HD void gradient_range(const Workspace& w, const V* f, const V* diag, const V* off,
+                                    const V* df_dt, V* scratch, V* dq_dtheta, V* time_sums, std::size_t begin,
+                                    std::size_t end) const {
+    const std::size_t n = rows_;
+    row_integrand_gradient_range(
+        integrals_, n, A_, g_, weighted_lag<per_row>(w),
+        [&](std::size_t k) { return scaled<per_row>(A_row_, k, w.cos_lag[k]); }, f,
+        [&](const V* x, V* out) {
+          for (std::size_t k = begin; k < end; ++k) {
+            const std::size_t km = (k == 0) ? n - 1 : k - 1, k1 = (k + 1 == n) ? 0 : k + 1;
+            out[k] = diag[k] * x[k] + off[k] * x[k1] + off[km] * x[km];
+          }
+        },
+        df_dt, scratch,
+        [&](V* grad, std::size_t first, std::size_t last) { alignment_gradient_range(w, grad, first, last); },
+        dq_dtheta, time_sums, begin, end);
+  }
+
+  /// ∂ρ̄/∂θ_k = (1/2N) (sin(θ_{k−1} − θ_k) − sin(θ_k − θ_{k+1})) for rows [first, last).
+  ROTORSWEEP_HD void alignment_gradient_range(const Workspace& w, V* grad, std::size_t first,
+                                              std::size_t last) const {
+    const V scale(0.5 / double(rows_));
+    for (std::size_t k = first; k < last; ++k) {
+      const std::size_t km = (k == 0) ? rows_ - 1 : k - 1;
+      grad[k] = scale * (w.sin_link[km] - w.sin_link[k]);
+    }
   }
 
   /// evaluate_range's pass: rows [begin, end) in row order, their neighbours read but not stored.
@@ -467,8 +516,14 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
 
   template <bool per_row>
   ROTORSWEEP_HD V energy_from_trigonometry(const Workspace& w) const {
+    return energy_range<per_row>(w, 0, rows_);
+  }
+
+  /// The energy terms of rows [begin, end), summed in row order.
+  template <bool per_row>
+  ROTORSWEEP_HD V energy_range(const Workspace& w, std::size_t begin, std::size_t end) const {
     V h(0.0);
-    for (std::size_t j = 0; j < rows_; ++j) {
+    for (std::size_t j = begin; j < end; ++j) {
       const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
       h += V(-1.5) * scaled<per_row>(anisotropy_row_, j, cos_2theta) +
            scaled<per_row>(coupling_row_, j, w.cos_link[j]) + A_ * scaled<per_row>(A_row_, j, w.cos_lag[j]);
@@ -495,13 +550,7 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
                                          V* dq_dtheta, V* dq_dt) const {
     const std::size_t n = rows_;
     const auto cos_lag = [&](std::size_t k) { return scaled<per_row>(A_row_, k, w.cos_lag[k]); };
-    const auto alignment_gradient = [&](V* grad) {
-      const V scale(0.5 / double(n));
-      for (std::size_t k = 0; k < n; ++k) {
-        const std::size_t km = (k == 0) ? n - 1 : k - 1;
-        grad[k] = scale * (w.sin_link[km] - w.sin_link[k]);
-      }
-    };
+    const auto alignment_gradient = [&](V* grad) { alignment_gradient_range(w, grad, 0, n); };
     row_integrand_gradients(integrals_, n, A_, g_, weighted_lag<per_row>(w), cos_lag, f, J, df_dt, w.product,
                             alignment_gradient, dq_dtheta, dq_dt);
   }

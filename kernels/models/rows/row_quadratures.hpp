@@ -55,26 +55,37 @@ ROTORSWEEP_HD V row_sum(std::size_t n, const V* x) {
   return sum;
 }
 
-/// The integrands of the set q at one point: R = A Σ lag_j, W = A Σ lag_j f_j, S = g Σ f_j², and ρ̄ and H from
-/// the model. `lag` is the drive's sin(θ_j − t), weighted by the row's share of A where rows
-/// differ, and lag_sum() its sum in row order (row_sum); the callables are called, and `lag` is
-/// read (for W), only when the set q carries what needs them.
+/// Σ_j a_j b_j over the rows [begin, end), in row order.
+template <class V>
+ROTORSWEEP_HD V row_products(std::size_t begin, std::size_t end, const V* a, const V* b) {
+  V sum(0.0);
+  for (std::size_t j = begin; j < end; ++j) sum += a[j] * b[j];
+  return sum;
+}
+
+/// The integrands of the set q at one point from sums over the rows: R = A Σ lag_j (lag_sum()),
+/// W = A Σ lag_j f_j (lag_force_sum()), S = g Σ f_j² (force_squares()), and ρ̄ and H from the model; a
+/// callable is called only when q carries what needs it (a team passes the team's sums).
+template <class V, class LagSum, class LagForceSum, class ForceSquares, class Alignment, class Energy>
+ROTORSWEEP_HD void integrands_from_sums(Integrals q, const V& A, const V& g, LagSum&& lag_sum,
+                                        LagForceSum&& lag_force_sum, ForceSquares&& force_squares,
+                                        Alignment&& alignment, Energy&& energy, V* qdot) {
+  if (q.drive) qdot[q.drive_index()] = A * lag_sum();
+  if (q.work) qdot[q.work_index()] = A * lag_force_sum();
+  if (q.stokes) qdot[q.stokes_index()] = g * force_squares();
+  if (q.alignment) qdot[q.alignment_index()] = alignment();
+  if (q.energy) qdot[q.energy_index()] = energy();
+}
+
+/// The integrands of the set q at one point over all n rows: `lag` is the drive's sin(θ_j − t),
+/// weighted by the row's share of A where rows differ, and lag_sum() its sum in row order
+/// (row_sum); W's and S's sums are taken in row order (row_products).
 template <class V, class LagSum, class Alignment, class Energy>
 ROTORSWEEP_HD void row_integrands(Integrals q, std::size_t n, const V& A, const V& g, LagSum&& lag_sum,
                                   const V* lag, const V* f, Alignment&& alignment, Energy&& energy, V* qdot) {
-  if (q.drive) qdot[q.drive_index()] = A * lag_sum();
-  if (q.work) {
-    V sum(0.0);
-    for (std::size_t j = 0; j < n; ++j) sum += lag[j] * f[j];
-    qdot[q.work_index()] = A * sum;
-  }
-  if (q.stokes) {
-    V sum(0.0);
-    for (std::size_t j = 0; j < n; ++j) sum += f[j] * f[j];
-    qdot[q.stokes_index()] = g * sum;
-  }
-  if (q.alignment) qdot[q.alignment_index()] = alignment();
-  if (q.energy) qdot[q.energy_index()] = energy();
+  integrands_from_sums(
+      q, A, g, lag_sum, [&] { return row_products(0, n, lag, f); }, [&] { return row_products(0, n, f, f); },
+      alignment, energy, qdot);
 }
 
 /// The moments' integrands t q̇ of R, W and S at time t, from their integrands in `qdot`
@@ -88,74 +99,120 @@ ROTORSWEEP_HD void row_moment_integrands(Integrals q, const V& t, V* qdot) {
   qdot[m + 2] = t * qdot[q.stokes_index()];
 }
 
-/// Their gradients: ∂(t q̇)/∂θ = t ∂q̇/∂θ and ∂(t q̇)/∂t = q̇ + t ∂q̇/∂t, from those of R, W and S
-/// (row_integrand_gradients) and their integrands.
+/// The moments' gradients over the rows [begin, end): ∂(t q̇)/∂θ = t ∂q̇/∂θ, from those of R, W and S.
 template <class V>
-ROTORSWEEP_HD void row_moment_gradients(Integrals q, std::size_t n, const V& t, const V* qdot, V* dq_dtheta,
-                                        V* dq_dt) {
+ROTORSWEEP_HD void row_moment_gradient_range(Integrals q, std::size_t n, const V& t, V* dq_dtheta,
+                                             std::size_t begin, std::size_t end) {
   if (!q.moments) return;
   const std::size_t bases[3] = {q.drive_index(), q.work_index(), q.stokes_index()};
   for (std::size_t i = 0; i < 3; ++i) {
     const std::size_t base = bases[i], moment = q.moment_index() + i;
-    for (std::size_t k = 0; k < n; ++k) dq_dtheta[moment * n + k] = t * dq_dtheta[base * n + k];
-    dq_dt[moment] = qdot[base] + t * dq_dt[base];
+    for (std::size_t k = begin; k < end; ++k) dq_dtheta[moment * n + k] = t * dq_dtheta[base * n + k];
   }
 }
 
-/// The gradients of the integrands of the set q (dq_dtheta[q·N + k] = ∂qdot_q/∂θ_k, dq_dt[q] = ∂qdot_q/∂t)
-/// from the symmetric Jacobian J of f, ∂f/∂t, `sin_lag` as in row_integrands and cos_lag(k), its θ_k
-/// derivative; `product` is scratch of N values; alignment_gradient(grad) writes ∂ρ̄/∂θ.
+/// The moments' ∂(t q̇)/∂t = q̇ + t ∂q̇/∂t, from the integrands and time derivatives of R, W and S.
+template <class V>
+ROTORSWEEP_HD void row_moment_time_derivatives(Integrals q, const V& t, const V* qdot, V* dq_dt) {
+  if (!q.moments) return;
+  const std::size_t bases[3] = {q.drive_index(), q.work_index(), q.stokes_index()};
+  for (std::size_t i = 0; i < 3; ++i) dq_dt[q.moment_index() + i] = qdot[bases[i]] + t * dq_dt[bases[i]];
+}
+
+/// Both over all n rows (row_integrand_gradients' and row_integrands' results as input).
+template <class V>
+ROTORSWEEP_HD void row_moment_gradients(Integrals q, std::size_t n, const V& t, const V* qdot, V* dq_dtheta,
+                                        V* dq_dt) {
+  row_moment_gradient_range(q, n, t, dq_dtheta, 0, n);
+  row_moment_time_derivatives(q, t, qdot, dq_dt);
+}
+
+/// The gradients of the integrands of the set q over the rows [begin, end) (dq_dtheta[q·N + k] =
+/// ∂qdot_q/∂θ_k), from the symmetric Jacobian J of f through product(x, out), which writes
+/// out[k] = (J x)_k for those rows, ∂f/∂t, `sin_lag` as in row_integrands and cos_lag(k), its θ_k
+/// derivative; `scratch` holds N values; alignment_gradient(grad, begin, end) writes ∂ρ̄/∂θ there.
+/// time_sums[p] gets the rows' part of the sum that finish_time_derivatives turns into ∂qdot_p/∂t.
+template <class V, class CosLag, class Product, class AlignmentGradient>
+ROTORSWEEP_HD void row_integrand_gradient_range(Integrals q, std::size_t n, const V& A, const V& g,
+                                                const V* sin_lag, CosLag&& cos_lag, const V* f,
+                                                Product&& product, const V* df_dt, V* scratch,
+                                                AlignmentGradient&& alignment_gradient, V* dq_dtheta,
+                                                V* time_sums, std::size_t begin, std::size_t end) {
+  if (q.drive) {
+    V* grad = dq_dtheta + q.drive_index() * n;
+    V sum(0.0);
+    for (std::size_t k = begin; k < end; ++k) {
+      const V lag = cos_lag(k);
+      grad[k] = A * lag;
+      sum += lag;
+    }
+    time_sums[q.drive_index()] = sum;
+  }
+  if (q.work) {
+    V* grad = dq_dtheta + q.work_index() * n;
+    product(sin_lag, scratch);  // J symmetric: Jᵀ sin_lag
+    V sum(0.0);
+    for (std::size_t k = begin; k < end; ++k) {
+      const V lag = cos_lag(k);
+      grad[k] = A * (lag * f[k] + scratch[k]);
+      sum += sin_lag[k] * df_dt[k] - lag * f[k];
+    }
+    time_sums[q.work_index()] = sum;
+  }
+  if (q.stokes) {
+    V* grad = dq_dtheta + q.stokes_index() * n;
+    product(f, scratch);
+    V sum(0.0);
+    for (std::size_t k = begin; k < end; ++k) {
+      grad[k] = V(2.0) * g * scratch[k];
+      sum += f[k] * df_dt[k];
+    }
+    time_sums[q.stokes_index()] = sum;
+  }
+  if (q.alignment) {
+    alignment_gradient(dq_dtheta + q.alignment_index() * n, begin, end);
+    time_sums[q.alignment_index()] = V(0.0);
+  }
+  if (q.energy) {
+    V* grad = dq_dtheta + q.energy_index() * n;
+    V sum(0.0);
+    for (std::size_t k = begin; k < end; ++k) {
+      grad[k] = lane_neg(g) * f[k];
+      sum += sin_lag[k];
+    }
+    time_sums[q.energy_index()] = sum;
+  }
+}
+
+/// ∂qdot_p/∂t of the set q from the sums over all rows that row_integrand_gradient_range's parts add to.
+template <class V>
+ROTORSWEEP_HD void finish_time_derivatives(Integrals q, const V& A, const V& g, const V* time_sums,
+                                           V* dq_dt) {
+  if (q.drive) dq_dt[q.drive_index()] = lane_neg(A) * time_sums[q.drive_index()];
+  if (q.work) dq_dt[q.work_index()] = A * time_sums[q.work_index()];
+  if (q.stokes) dq_dt[q.stokes_index()] = V(2.0) * g * time_sums[q.stokes_index()];
+  if (q.alignment) dq_dt[q.alignment_index()] = V(0.0);
+  if (q.energy) dq_dt[q.energy_index()] = A * time_sums[q.energy_index()];
+}
+
+/// The gradients and ∂/∂t of the integrands over all n rows (dq_dt[q] = ∂qdot_q/∂t), with J's own
+/// product; `product` is scratch of N values; alignment_gradient(grad) writes ∂ρ̄/∂θ.
 template <class V, class Jacobian, class CosLag, class AlignmentGradient>
 ROTORSWEEP_HD void row_integrand_gradients(Integrals q, std::size_t n, const V& A, const V& g,
                                            const V* sin_lag, CosLag&& cos_lag, const V* f, const Jacobian& J,
                                            const V* df_dt, V* product, AlignmentGradient&& alignment_gradient,
                                            V* dq_dtheta, V* dq_dt) {
-  if (q.drive) {
-    V* grad = dq_dtheta + q.drive_index() * n;
-    V sum(0.0);
-    for (std::size_t k = 0; k < n; ++k) {
-      const V lag = cos_lag(k);
-      grad[k] = A * lag;
-      sum += lag;
-    }
-    dq_dt[q.drive_index()] = lane_neg(A) * sum;
-  }
-  if (q.work) {
-    V* grad = dq_dtheta + q.work_index() * n;
-    for (std::size_t k = 0; k < n; ++k) product[k] = V(0.0);
-    J.multiply_add(sin_lag, product);  // J symmetric: Jᵀ sin_lag
-    V sum(0.0);
-    for (std::size_t k = 0; k < n; ++k) {
-      const V lag = cos_lag(k);
-      grad[k] = A * (lag * f[k] + product[k]);
-      sum += sin_lag[k] * df_dt[k] - lag * f[k];
-    }
-    dq_dt[q.work_index()] = A * sum;
-  }
-  if (q.stokes) {
-    V* grad = dq_dtheta + q.stokes_index() * n;
-    for (std::size_t k = 0; k < n; ++k) product[k] = V(0.0);
-    J.multiply_add(f, product);
-    V sum(0.0);
-    for (std::size_t k = 0; k < n; ++k) {
-      grad[k] = V(2.0) * g * product[k];
-      sum += f[k] * df_dt[k];
-    }
-    dq_dt[q.stokes_index()] = V(2.0) * g * sum;
-  }
-  if (q.alignment) {
-    alignment_gradient(dq_dtheta + q.alignment_index() * n);
-    dq_dt[q.alignment_index()] = V(0.0);
-  }
-  if (q.energy) {
-    V* grad = dq_dtheta + q.energy_index() * n;
-    V sum(0.0);
-    for (std::size_t k = 0; k < n; ++k) {
-      grad[k] = lane_neg(g) * f[k];
-      sum += sin_lag[k];
-    }
-    dq_dt[q.energy_index()] = A * sum;
-  }
+  V time_sums[Integrals::max_count];
+  for (auto& s : time_sums) s = V(0.0);
+  row_integrand_gradient_range(
+      q, n, A, g, sin_lag, cos_lag, f,
+      [&](const V* x, V* out) {
+        for (std::size_t k = 0; k < n; ++k) out[k] = V(0.0);
+        J.multiply_add(x, out);
+      },
+      df_dt, product, [&](V* grad, std::size_t, std::size_t) { alignment_gradient(grad); }, dq_dtheta,
+      time_sums, 0, n);
+  finish_time_derivatives(q, A, g, time_sums, dq_dt);
 }
 
 }  // namespace rotorsweep::kernels

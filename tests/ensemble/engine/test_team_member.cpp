@@ -70,6 +70,12 @@ void check_teams_follow(const std::string& text) {
       CHECK(b.final_state.attractor == a.final_state.attractor);
       CHECK(b.dissipation() == Approx(a.dissipation()).epsilon(1e-8).margin(1e-12));
       CHECK(b.alignment_mean() == Approx(a.alignment_mean()).epsilon(1e-9));
+      for (const auto channel :
+           {ensemble::Channel::work, ensemble::Channel::stokes, ensemble::Channel::energy_mean,
+            ensemble::Channel::dissipation_moment, ensemble::Channel::stokes_moment}) {
+        INFO("channel " << std::size_t(channel));
+        CHECK(b.mean(channel) == Approx(a.mean(channel)).epsilon(1e-8).margin(1e-12));
+      }
       CHECK(b.steps_accepted + b.steps_rejected == Approx(a.steps_accepted + a.steps_rejected).epsilon(0.01));
     }
   }
@@ -87,4 +93,11 @@ TEST_CASE("a team runs a disordered member as one thread does: AFM, CP and FM", 
 
 TEST_CASE("a team runs uniform rows as one thread does, the period wrapped", "[team][device_member]") {
   check_teams_follow(rows_20 + "wrap_angles = true\n[sweep]\nA = [1.0, 12.0]\n");
+}
+
+TEST_CASE("a team carries every quadrature as one thread does: W, S, H and the moments",
+          "[team][device_member]") {
+  check_teams_follow(rows_20 +
+                     "[sweep]\nA = [1.0, 6.0, 12.0]\n[disorder]\nA = 1e-6\n[observables]\nestimators = true\n"
+                     "energy = true\nmoments = true\n");
 }
