@@ -77,7 +77,7 @@ struct SlipCounter {
     for (std::size_t j = 0; j < rows; ++j) {
       const V turn = theta_after[j] - theta_before[j];
       largest = kernels::lane_max(largest, kernels::lane_abs(turn));
-      squares += turn * turn;
+      if (energies) squares += turn * turn;  // only the slips' energies read them
     }
     accumulate_turns(accepted, largest, squares, dt);
   }

@@ -75,7 +75,7 @@ struct TeamMember {
             }
             return m;
           });
-          const double squares = team.sum([&](std::size_t r) {
+          const double squares = !s.slip_energies ? 0.0 : team.sum([&](std::size_t r) {
             const kernels::TeamRows rows = kernels::team_rows(n, ranks, r);
             double sum = 0.0;
             for (std::size_t j = rows.begin; j < rows.end; ++j) {

@@ -570,10 +570,7 @@ def main():
     plot_friction(axes[0, 1], rotorsweep, members, reduction)
     plot_basins(axes[1, 0], members, grid, max(grid["rows"]))
     plot_repeating(axes[1, 1], members, grid)
-    figure.tight_layout()
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(args.out, dpi=90)
-    print(f"\nwrote {args.out}")
+    study_command_line.save(figure, args.out, 90)
 
 
 if __name__ == "__main__":

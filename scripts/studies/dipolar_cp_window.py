@@ -340,10 +340,7 @@ def main():
     predicted = predictions(landscape, sweeps, mapping)
     for column, kind in enumerate(("paper", "field")):
         plot_windows(figure.add_subplot(layout[1, column]), predicted, window, kind)
-    figure.tight_layout()
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(args.out, dpi=80)
-    print(f"\nwrote {args.out}")
+    study_command_line.save(figure, args.out, 80)
 
 
 if __name__ == "__main__":

@@ -348,8 +348,7 @@ def figure(deterministic, thermal, J, rows, config, out):
     ax.set_ylabel("energy dissipated by one slip")
     ax.set_title("per slip: finite (jump) or ∝ g (smooth)", fontsize=8)
     ax.legend(fontsize=6)
-    fig.tight_layout()
-    fig.savefig(out, dpi=80)
+    study_command_line.save(fig, out, 80)
 
 
 def main():
@@ -373,9 +372,7 @@ def main():
     print_slips(slips)
     rows = slip_energy_scaling(slips, config)
 
-    args.out.parent.mkdir(parents=True, exist_ok=True)
     figure(deterministic, thermal, J, rows, config, args.out)
-    progress(f"figure: {args.out}")
 
 
 if __name__ == "__main__":

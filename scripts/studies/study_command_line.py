@@ -21,3 +21,11 @@ def parse(doc, figure, quick_help):
     import rotorsweep
 
     return args, rotorsweep
+
+
+def save(figure, out, dpi):
+    """Lays the study's figure out and writes it to `out` (its directory made)."""
+    figure.tight_layout()
+    out.parent.mkdir(parents=True, exist_ok=True)
+    figure.savefig(out, dpi=dpi)
+    print(f"\nwrote {out}")

@@ -9,13 +9,17 @@ from conftest import run_cli
 
 SCRIPT = pathlib.Path(__file__).resolve().parents[2] / "scripts" / "plot_slider.py"
 
-SLIDER = """
+#: a 3 × 2 slider over 9 × 9 magnets
+SMALL = """
 [slider]
 columns = 3
 rows = 2
 [substrate]
 columns = 9
 rows = 9
+"""
+
+SLIDER = SMALL + """
 [drive]
 rest = 0.5
 end = 2.5
@@ -68,13 +72,7 @@ def test_plot_slider_refuses_a_row_model_file(tmp_path, executable):
     assert "is not a slider result" in done.stderr
 
 
-VELOCITY = """
-[slider]
-columns = 3
-rows = 2
-[substrate]
-columns = 9
-rows = 9
+VELOCITY = SMALL + """
 [drive]
 rest = 0.2
 periods = 2
