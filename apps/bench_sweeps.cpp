@@ -1,10 +1,13 @@
-// `rotorsweep bench gpu`: whole-sweep throughput on the GPU backend (or, with --device cpu, on this
-// machine's cores for scale): step attempts per second per member and per rotor, and a 10⁶-member curve.
+// `rotorsweep bench gpu`: whole-sweep throughput on the GPU backend, a member per thread and per team
+// (or, with --device cpu, on this machine's cores for scale): step attempts/s and a 10⁶-member curve.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
@@ -33,22 +36,72 @@ std::string scene_text(const BenchScene& s, const std::string& device) {
          "\"\nrtol = 1e-6\natol = 1e-9\ndevice = \"" + device + "\"\n";
 }
 
-/// One sweep (plan, device work, host summaries; no file): a table row.
-void run_row(const BenchScene& s, const BenchGpuOptions& options) {
+/// How members are laid on the GPU for a row: threads per member and, for a team, where its
+/// scratch lives (set through ROTORSWEEP_GPU_TEAM and ROTORSWEEP_GPU_SCRATCH); team 0 is the
+/// default mapping, and on the CPU the lanes.
+struct Mapping {
+  int team = 0;
+  std::string scratch;
+};
+
+std::string mapping_label(const Mapping& m, const BenchGpuOptions& options) {
+  if (options.device == "cpu") return "lanes";
+  if (m.team == 0) return "default";
+  if (m.team == 1) return "thread";
+  return "team " + std::to_string(m.team) + ", " + m.scratch;
+}
+
+void set_mapping(const Mapping& m) {
+  if (m.team > 0)
+    ::setenv("ROTORSWEEP_GPU_TEAM", std::to_string(m.team).c_str(), 1);
+  else
+    ::unsetenv("ROTORSWEEP_GPU_TEAM");
+  if (!m.scratch.empty())
+    ::setenv("ROTORSWEEP_GPU_SCRATCH", m.scratch.c_str(), 1);
+  else
+    ::unsetenv("ROTORSWEEP_GPU_SCRATCH");
+}
+
+/// The mappings a scene is measured with: the lanes on the CPU; on the GPU a member per thread and
+/// per team of each size in options.teams up to N where teams run the scene, in shared and/or global
+/// memory.
+std::vector<Mapping> mappings_of(const ensemble::Scene& scene, int rows, const BenchGpuOptions& options) {
+  if (options.device == "cpu") return {Mapping{}};
+  std::vector<Mapping> out;
+  for (const int team : options.teams) {
+    if (team == 1) out.push_back({1, ""});
+    if (team == 1 || team > rows || !ensemble::gpu_teams_fit(scene)) continue;
+    for (const char* scratch : {"shared", "global"})
+      if (options.scratch == "both" || options.scratch == scratch) out.push_back({team, scratch});
+  }
+  return out;
+}
+
+/// One sweep (plan, device work, host summaries; no file) with mapping m: a table row.
+void run_row(const BenchScene& s, const BenchGpuOptions& options, const Mapping& m) {
   const auto scene = io::parse_scene_text(scene_text(s, options.device), "bench");
   const auto members = ensemble::plan_members(scene);
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto outcome = ensemble::run_sweep(scene, members, options.threads, {});
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  double attempts = 0;
-  std::size_t ok = 0;
-  for (const auto& r : outcome.results) {
-    attempts += r.steps_accepted + r.steps_rejected;
-    ok += r.status == kernels::LaneStatus::ok;
+  const std::string label = mapping_label(m, options);
+  set_mapping(m);
+  try {
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto outcome = ensemble::run_sweep(scene, members, options.threads, {});
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    double attempts = 0;
+    std::size_t ok = 0;
+    for (const auto& r : outcome.results) {
+      attempts += r.steps_accepted + r.steps_rejected;
+      ok += r.status == kernels::LaneStatus::ok;
+    }
+    const double n = double(members.size());
+    std::printf("| %d | %s | %s | %zu | %.2f | %.0f | %.3g | %.3g | %zu |\n", s.rows, s.stepper,
+                label.c_str(), members.size(), wall, attempts / n, attempts / wall, s.rows * attempts / wall,
+                ok);
+  } catch (const std::runtime_error& e) {
+    std::printf("| %d | %s | %s | %zu | — | — | — | — | (%s) |\n", s.rows, s.stepper, label.c_str(),
+                members.size(), e.what());
   }
-  const double n = double(members.size());
-  std::printf("| %d | %s | %zu | %.2f | %.0f | %.3g | %.3g | %zu |\n", s.rows, s.stepper, members.size(),
-              wall, attempts / n, attempts / wall, s.rows * attempts / wall, ok);
+  set_mapping({});
   std::fflush(stdout);
 }
 
@@ -61,28 +114,34 @@ int run_bench_gpu(const BenchGpuOptions& options) {
     return 2;
   }
   const bool gpu = options.device == "gpu";
-  std::printf("rotorsweep bench gpu: device %s, %s, members × %.3g\n",
-              gpu ? ensemble::gpu_info().name.c_str() : "cpu",
-              gpu ? "one member per GPU thread" : "lanes on OpenMP threads", options.scale);
+  std::printf("rotorsweep bench gpu: device %s, members × %.3g\n",
+              gpu ? ensemble::gpu_info().name.c_str() : "cpu", options.scale);
   // replicas scaled, at least one per A value
   const auto scaled = [&](BenchScene s) {
     s.replicas = std::max(1, int(std::lround(s.replicas * options.scale)));
     return s;
   };
   std::printf(
-      "| N | stepper | members | wall s | attempts/member | member-attempts/s | rotor-attempts/s | ok |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+      "| N | stepper | mapping | members | wall s | attempts/member | member-attempts/s | rotor-attempts/s | "
+      "ok "
+      "|\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
   if (!options.curve_only) {
-    for (const BenchScene s : {BenchScene{2, "rodas4", 1000, 100}, BenchScene{20, "rodas4", 1000, 100},
-                               BenchScene{20, "rodas5p", 1000, 100}, BenchScene{20, "ros2", 1000, 100},
+    for (const BenchScene s : {BenchScene{2, "rodas4", 1000, 100}, BenchScene{2, "rodas4p2", 1000, 100},
+                               BenchScene{20, "rodas4", 1000, 100}, BenchScene{20, "rodas5p", 1000, 100},
                                BenchScene{20, "rodas4p2", 1000, 100}, BenchScene{20, "dopri5", 1000, 100},
-                               BenchScene{128, "rodas4", 1000, 20}})
-      run_row(scaled(s), options);
+                               BenchScene{128, "rodas4", 1000, 20}, BenchScene{128, "rodas4p2", 1000, 20},
+                               BenchScene{1024, "rodas4p2", 250, 4}}) {
+      if (std::find(options.rows.begin(), options.rows.end(), s.rows) == options.rows.end()) continue;
+      const BenchScene row = scaled(s);
+      const auto scene = io::parse_scene_text(scene_text(row, options.device), "bench");
+      for (const Mapping& m : mappings_of(scene, row.rows, options)) run_row(row, options, m);
+    }
   }
   if (options.curve || options.curve_only) {
     std::printf("whole friction curve: 1000 A × 1000 random starts (× %.3g), N = 20, rodas4, 4 periods\n",
                 options.scale);
-    run_row(scaled({20, "rodas4", 1000, 1000}), options);
+    run_row(scaled({20, "rodas4", 1000, 1000}), options, Mapping{});
   }
   return 0;
 }

@@ -232,8 +232,8 @@ int main(int argc, char** argv) {
   BenchGpuOptions bench_gpu;
   auto* gpu_cmd = bench_cmd->add_subcommand(
       "gpu",
-      "Step attempts/s per member and per rotor of whole sweeps on the GPU (N = 2, 20, 128, each "
-      "stepper) and a 10^6-member friction curve");
+      "Step attempts/s per member and per rotor of whole sweeps on the GPU (N = 2, 20, 128, 1024, each "
+      "stepper, a member per thread and per team) and a 10^6-member friction curve");
   gpu_cmd
       ->add_option("--device", bench_gpu.device,
                    "Where the sweeps run ('cpu': this machine's cores, for scale)")
@@ -246,6 +246,20 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 4096));
   gpu_cmd->add_flag("!--no-curve", bench_gpu.curve, "Skip the 10^6-member curve");
   gpu_cmd->add_flag("--curve-only", bench_gpu.curve_only, "Only the 10^6-member curve");
+  gpu_cmd->add_option("--rows", bench_gpu.rows, "The scenes to measure, by N")
+      ->check(CLI::IsMember({2, 20, 128, 1024}))
+      ->delimiter(',')
+      ->capture_default_str();
+  gpu_cmd
+      ->add_option(
+          "--teams", bench_gpu.teams,
+          "Threads per member to measure on the GPU (1: a member per thread; 2 … 32: a team of a warp)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16, 32}))
+      ->delimiter(',')
+      ->capture_default_str();
+  gpu_cmd->add_option("--scratch", bench_gpu.scratch, "Where a team's scratch lives: shared, global or both")
+      ->check(CLI::IsMember({"shared", "global", "both"}))
+      ->capture_default_str();
 
   try {
     app.parse(argc, argv);

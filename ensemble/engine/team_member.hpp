@@ -31,7 +31,7 @@ struct TeamMember {
   static bool team_schedule_fits(const SlotSchedule& s) { return !s.stochastic && !s.row_profiles; }
 
   /// Values of scratch a member of schedule s needs on a team of `ranks`, shared by the team.
-  static std::size_t storage_size(const SlotSchedule& s, std::size_t ranks) {
+  ROTORSWEEP_HD static std::size_t storage_size(const SlotSchedule& s, std::size_t ranks) {
     return kernels::counted_storage<double>(
         [&](kernels::LaneArena<double>& arena) { const Parts parts(s, ranks, arena); });
   }

@@ -1,5 +1,6 @@
 // Which DeviceMember a row scene runs on the device (docs/architecture.md "Backends"): the row model
-// on the double lane (nearest neighbours, or a coupling table) and its integrator (a stepper, or Langevin).
+// on the double lane (nearest neighbours, or a coupling table), its integrator (a stepper, or Langevin)
+// and a stepper's team form (docs/architecture.md "Teams").
 #pragma once
 
 #include "ensemble/engine/device_member.hpp"
@@ -9,6 +10,7 @@
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/leimkuhler_matthews.hpp"
 #include "kernels/steppers/stepper_list.hpp"
+#include "kernels/steppers/team_rosenbrock.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -16,6 +18,17 @@ namespace rotorsweep::ensemble {
 template <kernels::StepperId id, class Model>
 using DeviceAdaptiveIntegrator =
     kernels::AdaptiveIntegrator<Model, typename kernels::stepper_at<id>::type::template type<Model>>;
+
+template <class Team, const kernels::RosenbrockTableau& Table>
+kernels::TeamRosenbrock<Team, Table> team_stepper_of(const kernels::RosenbrockTableau&);
+template <class Team, const kernels::ExplicitTableau& Table>
+void team_stepper_of(const kernels::ExplicitTableau&);
+
+/// Stepper `id` on a team of the nearest-neighbour rows (TeamRosenbrock), or void for the explicit
+/// stepper, which has no team form.
+template <kernels::StepperId id, class Team>
+using DeviceTeamStepper = decltype(team_stepper_of<Team, kernels::stepper_at<id>::type::tableau>(
+    kernels::stepper_at<id>::type::tableau));
 
 /// Calls f.template operator()<Model>() with the scene's row model on the double lane, as
 /// with_row_model picks it for the CPU: NearestNeighbourRows, or CoupledRows for a coupling table

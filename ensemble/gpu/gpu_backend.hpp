@@ -1,10 +1,11 @@
-// The GPU backend (docs/architecture.md "Backends"): whether a CUDA GPU is there, and the sweep of
-// one variant on it, one member per GPU thread through the device driver (ensemble/engine/device_member.hpp).
+// The GPU backend (docs/architecture.md "Backends", "Teams"): whether a CUDA GPU is there, and the
+// sweep of one variant on it, a member per thread (DeviceMember) or per team of threads (TeamMember).
 #pragma once
 
 #include <cstddef>
 #include <string>
 
+#include "ensemble/gpu/gpu_launch.hpp"
 #include "ensemble/rows/scene.hpp"
 #include "ensemble/rows/sweep.hpp"
 
@@ -21,7 +22,8 @@ struct GpuInfo {
 /// The first CUDA device (probed once).
 const GpuInfo& gpu_info();
 
-/// "cpu", or "gpu (<name>)" for a scene with numerics.device = "gpu" (the result file's "device").
+/// "cpu", or for a scene with numerics.device = "gpu" the result file's "device": "gpu (<name>; 8
+/// threads per member)", the threads per member at each N where the scene has several.
 std::string device_label(const Scene& scene);
 
 /// Scratch (lane values per GPU thread) the kernel is compiled for: one size, so each stepper has
@@ -29,19 +31,14 @@ std::string device_label(const Scene& scene);
 /// 18 GiB on an H100), but a member touches only DeviceMember::storage_size(N) of it.
 inline constexpr std::size_t gpu_thread_scratch = 8192;
 
-/// The most rows one member may have on the GPU with the scene's stepper (its scratch lives in
-/// per-thread memory of a fixed size), an even number like every row count.
+/// The most rows a member on a team may have: its scratch lives in global or shared memory, sized
+/// at launch; the limit keeps one team's (about 60 N values) well below a GPU's memory.
+inline constexpr std::size_t gpu_team_max_rows = 1 << 16;
+
+/// The most rows one member may have on the GPU with the scene's model and stepper: gpu_team_max_rows
+/// where it runs on teams, else what a thread's scratch of a fixed size holds (an even number like
+/// every row count).
 std::size_t gpu_max_rows(const Scene& scene);
-
-/// How the GPU backend launches: threads per block, and blocks (0: as many as fit at once).
-struct GpuLaunch {
-  int threads_per_block = 128;
-  int blocks = 0;
-};
-
-/// The launch in use: the defaults, or ROTORSWEEP_GPU_BLOCK and ROTORSWEEP_GPU_BLOCKS from the
-/// environment (results do not depend on it; tests and benchmarks vary it).
-GpuLaunch gpu_launch();
 
 /// Runs the members of `range` (one variant) on the GPU; results go to `sink` as each chunk
 /// returns. Throws std::runtime_error where there is no GPU backend or no GPU.

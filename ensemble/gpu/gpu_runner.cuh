@@ -1,6 +1,6 @@
-// The GPU sweep of one variant: a persistent grid whose threads each take the next member from a
-// counter (refill) and run it with DeviceMember<Model, Integrator>; the host fills and reads chunks
-// of member slots.
+// The GPU sweep of one variant: a persistent grid whose threads, or teams of a warp's threads, each
+// take the next member from a counter (refill) and run it with DeviceMember or TeamMember; the host
+// fills and reads chunks of member slots.
 #pragma once
 
 #include <cuda_runtime.h>
@@ -8,13 +8,17 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "ensemble/engine/member_slots.hpp"
+#include "ensemble/engine/team_member.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "kernels/lanes/team.hpp"
 
 namespace rotorsweep::ensemble::gpu {
 
@@ -36,6 +40,42 @@ __global__ void sweep_slots(SlotSchedule schedule, SlotViews slots, unsigned lon
     DeviceMember<Model, Integrator>::run(schedule, slots, std::size_t(k), storage, gpu_thread_scratch);
   }
 }
+
+/// A member per team of `team` threads of a warp (TeamMember): the team's first thread takes the next
+/// member from the counter for all; the team's scratch is its part of the block's shared memory or,
+/// where `scratch` is given, of that global buffer (per_team values each).
+template <class Stepper>
+__global__ void sweep_slots_on_teams(SlotSchedule schedule, SlotViews slots, unsigned long long count,
+                                     unsigned long long* next, unsigned team, double* scratch,
+                                     std::size_t per_team) {
+  extern __shared__ double shared_scratch[];
+  const kernels::WarpTeam crew(team);
+  const std::size_t teams = blockDim.x / team, mine = threadIdx.x / team;
+  double* storage = scratch ? scratch + (std::size_t(blockIdx.x) * teams + mine) * per_team
+                            : shared_scratch + mine * per_team;
+  for (;;) {
+    const unsigned long long k = crew.first([&] { return atomicAdd(next, 1ull); });
+    if (k >= count) return;
+    TeamMember<const kernels::WarpTeam, Stepper>::run(crew, schedule, slots, std::size_t(k), storage,
+                                                      per_team);
+    crew.sync();
+  }
+}
+
+/// A buffer of device memory, freed with its owner.
+class DeviceBuffer {
+ public:
+  DeviceBuffer(std::size_t bytes, const char* what) {
+    check(cudaMalloc(&data_, std::max<std::size_t>(bytes, 8)), what);
+  }
+  DeviceBuffer(const DeviceBuffer&) = delete;
+  DeviceBuffer& operator=(const DeviceBuffer&) = delete;
+  ~DeviceBuffer() { cudaFree(data_); }
+  void* data() const { return data_; }
+
+ private:
+  void* data_ = nullptr;
+};
 
 /// One chunk's device buffers (SlotChunk::buffers() order) and its member counter.
 class DeviceChunk {
@@ -80,38 +120,38 @@ class DeviceChunk {
   unsigned long long* counter_ = nullptr;
 };
 
-/// The variant's members in chunks: while the GPU runs one chunk, the host fills the next and
-/// summarizes the last. Stops between chunks when control.stop is raised.
-template <class Model, class Integrator>
-SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_threads,
-                       const SweepControl& control, const ResultSink& sink) {
-  using Driver = DeviceMember<Model, Integrator>;
-  const GpuInfo& info = gpu_info();
-  if (!info.available) throw std::runtime_error("numerics.device = \"gpu\": " + info.why);
-  const Member variant = range.source->at(range.begin);
-  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
-  if (Driver::storage_size(schedule) > gpu_thread_scratch)
-    throw std::runtime_error("model.rows = " + std::to_string(variant.rows) +
-                             " is more than the GPU backend holds (" + std::to_string(gpu_max_rows(scene)) +
-                             " rows with this scene's model and stepper)");
+/// How one chunk's kernel is launched: the grid, each block's dynamic shared memory, and how many
+/// members run at once (threads, or teams).
+struct ChunkGrid {
+  int blocks = 0, threads_per_block = 0;
+  std::size_t shared_bytes = 0;
+  std::size_t resident = 0;
+};
 
-  const auto kernel = sweep_slots<Model, Integrator>;
-  const GpuLaunch launch = gpu_launch();
-  int blocks = launch.blocks;
-  if (blocks <= 0) {
-    int per_multiprocessor = 0;
-    check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_multiprocessor, kernel, launch.threads_per_block,
-                                                        0),
-          "sizing the grid");
-    blocks = std::max(1, per_multiprocessor) * info.multiprocessors;
-  }
-  const std::size_t resident = std::size_t(blocks) * std::size_t(launch.threads_per_block);
+/// The blocks that fit on the GPU at once for `kernel` (or launch.blocks where set).
+template <class Kernel>
+int resident_blocks(Kernel kernel, const GpuLaunch& launch, std::size_t shared_bytes) {
+  if (launch.blocks > 0) return launch.blocks;
+  int per_multiprocessor = 0;
+  check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_multiprocessor, kernel, launch.threads_per_block,
+                                                      shared_bytes),
+        "sizing the grid");
+  return std::max(1, per_multiprocessor) * gpu_info().multiprocessors;
+}
+
+/// The variant's members in chunks: while the GPU runs one chunk (launch(stream, views, count,
+/// counter)), the host fills the next and summarizes the last. Stops between chunks when control.stop
+/// is raised.
+template <class Launch>
+SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const SlotSchedule& schedule,
+                        const ChunkGrid& grid, int host_threads, const SweepControl& control,
+                        const ResultSink& sink, Launch&& launch) {
   const std::size_t members = range.end - range.begin;
-  const std::size_t chunk = std::min(members, std::max<std::size_t>(8 * resident, 1 << 16));
+  const std::size_t chunk = std::min(members, std::max<std::size_t>(8 * grid.resident, 1 << 16));
 
   SweepOutcome outcome;
   auto& stats = outcome.statistics;
-  stats.threads = int(resident);
+  stats.threads = grid.blocks * grid.threads_per_block;
   stats.lane_width = 1;
   const auto start = std::chrono::steady_clock::now();
   std::array<SlotChunk, 2> host{SlotChunk(schedule, chunk), SlotChunk(schedule, chunk)};
@@ -124,8 +164,7 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
     const std::size_t count = std::min(chunk, range.end - first);
     host[b].fill(scene, range, first, count);
     device[b]->upload(host[b], stream);
-    kernel<<<blocks, launch.threads_per_block, 0, stream>>>(schedule, device[b]->views(), count,
-                                                            device[b]->counter());
+    launch(stream, device[b]->views(), (unsigned long long)count, device[b]->counter());
     check(cudaGetLastError(), "launching the sweep kernel");
     device[b]->download(host[b], stream);
   };
@@ -153,6 +192,90 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
   stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.interrupted = control.stopped();
   return outcome;
+}
+
+/// The GPU's description, or an error where there is none.
+inline const GpuInfo& available_gpu() {
+  const GpuInfo& info = gpu_info();
+  if (!info.available) throw std::runtime_error("numerics.device = \"gpu\": " + info.why);
+  return info;
+}
+
+/// The variant's members, one per thread (DeviceMember<Model, Integrator>, the CPU lanes' bits).
+template <class Model, class Integrator>
+SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_threads,
+                       const SweepControl& control, const ResultSink& sink) {
+  using Driver = DeviceMember<Model, Integrator>;
+  available_gpu();
+  const Member variant = range.source->at(range.begin);
+  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
+  if (Driver::storage_size(schedule) > gpu_thread_scratch)
+    throw std::runtime_error("model.rows = " + std::to_string(variant.rows) +
+                             " is more than the GPU backend holds (" + std::to_string(gpu_max_rows(scene)) +
+                             " rows with this scene's model and stepper on one thread each)");
+
+  const auto kernel = sweep_slots<Model, Integrator>;
+  const GpuLaunch launch = gpu_launch();
+  ChunkGrid grid{resident_blocks(kernel, launch, 0), launch.threads_per_block, 0, 0};
+  grid.resident = std::size_t(grid.blocks) * std::size_t(grid.threads_per_block);
+  return run_chunks(scene, range, schedule, grid, host_threads, control, sink,
+                    [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
+                        unsigned long long* counter) {
+                      kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(schedule, views, count,
+                                                                                 counter);
+                    });
+}
+
+/// The variant's members, one per team of `team` threads (TeamMember<WarpTeam, Stepper>; the schedule's
+/// first-step scale is Integrator's, the same stepper on one lane). A block's teams keep their scratch
+/// in its shared memory where it fits (or ROTORSWEEP_GPU_SCRATCH says so), else in global memory, of
+/// which the resident teams take at most a quarter.
+template <class Integrator, class Stepper>
+SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team,
+                                int host_threads, const SweepControl& control, const ResultSink& sink) {
+  using Driver = TeamMember<const kernels::WarpTeam, Stepper>;
+  const GpuInfo& info = available_gpu();
+  const Member variant = range.source->at(range.begin);
+  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
+  if (!Driver::team_schedule_fits(schedule)) throw std::logic_error("a team cannot run this schedule");
+
+  const auto kernel = sweep_slots_on_teams<Stepper>;
+  const GpuLaunch launch = gpu_launch();
+  const std::size_t per_team = Driver::storage_size(schedule, team);
+  const std::size_t teams_per_block = std::size_t(launch.threads_per_block) / team;
+  const std::size_t block_bytes = teams_per_block * per_team * sizeof(double);
+  int shared_limit = 0;
+  check(cudaDeviceGetAttribute(&shared_limit, cudaDevAttrMaxSharedMemoryPerBlockOptin, 0),
+        "querying the shared memory");
+  const bool fits = block_bytes <= std::size_t(shared_limit);
+  if (launch.scratch == GpuScratch::shared && !fits)
+    throw std::runtime_error("ROTORSWEEP_GPU_SCRATCH = shared: a block's " + std::to_string(teams_per_block) +
+                             " teams need " + std::to_string(block_bytes / 1024) + " KiB, more than the " +
+                             std::to_string(shared_limit / 1024) +
+                             " KiB of shared memory a block has; use fewer threads per block "
+                             "(ROTORSWEEP_GPU_BLOCK) or global");
+  const bool shared = fits && launch.scratch != GpuScratch::global;
+  if (shared)
+    check(cudaFuncSetAttribute(kernel, cudaFuncAttributeMaxDynamicSharedMemorySize, int(block_bytes)),
+          "reserving shared memory");
+
+  ChunkGrid grid{resident_blocks(kernel, launch, shared ? block_bytes : 0), launch.threads_per_block,
+                 shared ? block_bytes : 0, 0};
+  if (!shared) {
+    const double quarter = info.memory_gib * double(1ull << 30) / 4.0;
+    grid.blocks =
+        int(std::max(1.0, std::min(double(grid.blocks), std::floor(quarter / double(block_bytes)))));
+  }
+  grid.resident = std::size_t(grid.blocks) * teams_per_block;
+  std::optional<DeviceBuffer> scratch;
+  if (!shared) scratch.emplace(std::size_t(grid.blocks) * block_bytes, "allocating team scratch");
+  double* global = shared ? nullptr : static_cast<double*>(scratch->data());
+  return run_chunks(scene, range, schedule, grid, host_threads, control, sink,
+                    [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
+                        unsigned long long* counter) {
+                      kernel<<<grid.blocks, grid.threads_per_block, grid.shared_bytes, stream>>>(
+                          schedule, views, count, counter, team, global, per_team);
+                    });
 }
 
 }  // namespace rotorsweep::ensemble::gpu

@@ -111,6 +111,13 @@ class WarpTeam {
     if (rank_ == 0) part();
     __syncwarp(mask_);
   }
+  /// value() on rank 0, handed to every rank (a shuffle from the team's first thread).
+  template <class Value>
+  __device__ unsigned long long first(Value&& value) const {
+    unsigned long long v = 0;
+    if (rank_ == 0) v = value();
+    return __shfl_sync(mask_, v, 0, size_);
+  }
   template <class Value>
   __device__ double sum(Value&& value) const {
     double v = value(std::size_t(rank_));

@@ -28,6 +28,7 @@ DormandPrince5<System> stepper_family_of(const ExplicitTableau&);
 template <const auto& Tableau, double SwingErrorFactor = 1.0>
 struct StepperEntry {
   static constexpr std::string_view name = Tableau.name;
+  static constexpr const auto& tableau = Tableau;
   static constexpr double swing_error_factor = SwingErrorFactor;
   template <class System>
   using type = decltype(stepper_family_of<System, Tableau>(Tableau));
@@ -51,7 +52,7 @@ inline constexpr auto stepper_swing_error_factors = steppers::swing_error_factor
 /// Position of a stepper in the list (its identity in scenes and dispatch).
 using StepperId = std::size_t;
 
-inline std::optional<StepperId> parse_stepper(std::string_view name) {
+constexpr std::optional<StepperId> parse_stepper(std::string_view name) {
   for (std::size_t i = 0; i < stepper_names.size(); ++i)
     if (stepper_names[i] == name) return i;
   return std::nullopt;

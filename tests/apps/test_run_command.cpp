@@ -324,6 +324,18 @@ TEST_CASE("bench gpu on the CPU reports the curve's members and attempts", "[app
   const auto dir = scratch_directory("bench-gpu");
   const auto bench = run_cli("bench gpu --device cpu --scale 1e-6 --curve-only", dir);
   REQUIRE(bench.exit_code == 0);
-  CHECK_THAT(bench.output, Catch::Contains("rotor-attempts/s") && Catch::Contains("| 20 | rodas4 | 1000 |") &&
+  CHECK_THAT(bench.output, Catch::Contains("rotor-attempts/s") &&
+                               Catch::Contains("| 20 | rodas4 | lanes | 1000 |") &&
                                Catch::EndsWith(" | 1000 |\n"));
+  const auto two = run_cli("bench gpu --device cpu --scale 1e-6 --no-curve --rows 2", dir);
+  REQUIRE(two.exit_code == 0);
+  CHECK_THAT(two.output, Catch::Contains("| 2 | rodas4 | lanes | 1000 |") &&
+                             Catch::Contains("| 2 | rodas4p2 | lanes | 1000 |") &&
+                             !Catch::Contains("| 20 |"));
+  for (const char* bad : {"--rows 3", "--teams 3", "--teams 64", "--scratch local"}) {
+    INFO(bad);
+    const auto refused = run_cli(std::string("bench gpu --device cpu --scale 1e-6 --curve-only ") + bad, dir);
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.output, Catch::Contains(std::string(bad).substr(0, std::string(bad).find(' '))));
+  }
 }

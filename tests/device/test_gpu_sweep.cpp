@@ -1,11 +1,12 @@
-// The GPU backend on a GPU (ctest label gpu; skipped with a message where none is present): the
-// CPU lanes' bits for the paper's members, the example scenes and every scene kind, launch-shape
-// invariance, and a failing member that leaves the others untouched.
+// The GPU backend on a GPU (ctest label gpu; skipped with a message where none is present): a member
+// per thread gives the CPU lanes' bits (paper, examples, every scene kind), a member per team a host
+// team's bits, neither depends on the launch shape, and a failing member leaves the others untouched.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "ensemble/gpu/gpu_backend.hpp"
@@ -14,10 +15,25 @@
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "support/same_results.hpp"
+#include "support/slot_runs.hpp"
 
 using namespace rotorsweep;
 
 namespace {
+
+/// Sets an environment variable (the GPU's launch) for the scope of the object.
+class ScopedVariable {
+ public:
+  ScopedVariable(const char* name, const std::string& value) : name_(name) {
+    ::setenv(name, value.c_str(), 1);
+  }
+  ScopedVariable(const ScopedVariable&) = delete;
+  ScopedVariable& operator=(const ScopedVariable&) = delete;
+  ~ScopedVariable() { ::unsetenv(name_); }
+
+ private:
+  const char* name_;
+};
 
 std::vector<ensemble::MemberResult> run_on(ensemble::Scene scene, ensemble::Device device,
                                            const std::vector<ensemble::Member>& members) {
@@ -25,7 +41,9 @@ std::vector<ensemble::MemberResult> run_on(ensemble::Scene scene, ensemble::Devi
   return ensemble::run_sweep(scene, members, 2, {}).results;
 }
 
+/// A member per GPU thread against the CPU lanes: the same bits.
 void check_gpu_matches_cpu(const ensemble::Scene& scene) {
+  const ScopedVariable per_thread("ROTORSWEEP_GPU_TEAM", "1");
   const auto members = ensemble::plan_members(scene);
   const auto cpu = run_on(scene, ensemble::Device::cpu, members);
   const auto gpu = run_on(scene, ensemble::Device::gpu, members);
@@ -103,22 +121,84 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("the GPU's results do not depend on the launch shape", "[gpu]") {
+TEST_CASE("the GPU's results do not depend on the launch shape or a team's scratch", "[gpu]") {
   const auto scene = io::parse_scene_text(curve_scene("rodas4", 20, "1e-6"), "launch");
   const auto members = ensemble::plan_members(scene);
-  const auto reference = run_on(scene, ensemble::Device::gpu, members);
-  for (const auto& [block, blocks] : {std::pair{"32", "1"}, std::pair{"64", "7"}, std::pair{"256", "1000"}}) {
-    ::setenv("ROTORSWEEP_GPU_BLOCK", block, 1);
-    ::setenv("ROTORSWEEP_GPU_BLOCKS", blocks, 1);
-    const auto other = run_on(scene, ensemble::Device::gpu, members);
-    std::string first;
-    INFO(block << " threads × " << blocks << " blocks");
-    CHECK(testing::count_differences(reference, other, first) == 0);
-    INFO(first);
-    CHECK(first.empty());
+  for (const char* team : {"1", "8"}) {
+    const ScopedVariable mapping("ROTORSWEEP_GPU_TEAM", team);
+    const auto reference = run_on(scene, ensemble::Device::gpu, members);
+    for (const auto& [block, blocks, scratch] :
+         {std::tuple{"32", "1", "global"}, std::tuple{"64", "7", "shared"},
+          std::tuple{"256", "1000", "global"}}) {
+      const ScopedVariable b("ROTORSWEEP_GPU_BLOCK", block), bs("ROTORSWEEP_GPU_BLOCKS", blocks),
+          sc("ROTORSWEEP_GPU_SCRATCH", scratch);
+      const auto other = run_on(scene, ensemble::Device::gpu, members);
+      std::string first;
+      INFO("team " << team << ": " << block << " threads × " << blocks << " blocks, scratch " << scratch);
+      CHECK(testing::count_differences(reference, other, first) == 0);
+      INFO(first);
+      CHECK(first.empty());
+    }
   }
-  ::unsetenv("ROTORSWEEP_GPU_BLOCK");
-  ::unsetenv("ROTORSWEEP_GPU_BLOCKS");
+}
+
+TEST_CASE("a member per GPU team gives a host team's bits, for every team size and linearly implicit stepper",
+          "[gpu]") {
+  const auto check_sizes = [&]<kernels::StepperId id>(const ensemble::Scene& scene) {
+    const auto members = ensemble::plan_members(scene);
+    for (const int team : {2, 4, 8, 16, 32}) {
+      const ScopedVariable mapping("ROTORSWEEP_GPU_TEAM", std::to_string(team));
+      const auto gpu = run_on(scene, ensemble::Device::gpu, members);
+      const auto host = testing::on_host_team<id>(scene, std::size_t(team));
+      std::string first;
+      INFO(kernels::stepper_names[id] << ", team " << team);
+      CHECK(testing::count_differences(host, gpu, first) == 0);
+      INFO(first);
+      CHECK(first.empty());
+    }
+  };
+  check_sizes.template operator()<*kernels::parse_stepper("rodas4p2")>(
+      io::parse_scene_text(curve_scene("rodas4p2", 20, "1e-8") +
+                               "[disorder]\nA = 1e-4\n[observables]\nestimators = true\nenergy = "
+                               "true\nmoments = true\n",
+                           "teams"));
+  check_sizes.template operator()<*kernels::parse_stepper("rodas5p")>(
+      io::parse_scene_text(curve_scene("rodas5p", 20, "1e-8"), "teams"));
+}
+
+TEST_CASE(
+    "a member per GPU team agrees with the CPU: labels on the examples but where rounding decides them, D to "
+    "1e-10 at rtol 1e-10",
+    "[gpu]") {
+  for (const char* path :
+       {ROTORSWEEP_SOURCE_DIR "/examples/friction_curve.toml", ROTORSWEEP_SOURCE_DIR "/examples/basins.toml",
+        ROTORSWEEP_SOURCE_DIR "/examples/robustness.toml"}) {
+    INFO(path);
+    const auto scene = io::parse_scene_file(path);
+    const auto members = ensemble::plan_members(scene);
+    const auto cpu = run_on(scene, ensemble::Device::cpu, members);
+    const auto gpu = run_on(scene, ensemble::Device::gpu, members);  // teams of 8 at N = 20
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      INFO("member " << i);
+      if (cpu[i].symmetry_limited) continue;  // rounding decides these (README "Regimes and slips")
+      CHECK(gpu[i].regime == cpu[i].regime);
+      CHECK(gpu[i].final_state.attractor == cpu[i].final_state.attractor);
+    }
+  }
+  const auto paper = io::parse_scene_text(
+      "[model]\nrows = 20\n[drive]\ng = [0.0011]\n[sweep]\nA = {from = 0.5, to = 14, count = 28}\n"
+      "[initial]\nkinds = [\"FM\", \"AFM\"]\nnoise = 0.01\n[disorder]\nA = 1e-6\n[schedule]\n"
+      "relax_periods = 2\naverage_periods = 2\n[numerics]\nrtol = 1e-10\natol = 1e-13\n",
+      "paper");
+  const auto members = ensemble::plan_members(paper);
+  const auto cpu = run_on(paper, ensemble::Device::cpu, members);
+  const auto gpu = run_on(paper, ensemble::Device::gpu, members);
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    INFO("A = " << members[i].A);
+    CHECK(gpu[i].regime == cpu[i].regime);
+    if (cpu[i].regime == ensemble::Regime::cp) continue;
+    CHECK(gpu[i].dissipation() == Approx(cpu[i].dissipation()).epsilon(1e-10).margin(1e-14));
+  }
 }
 
 TEST_CASE("a member that fails on the GPU leaves the others' bits alone", "[gpu]") {

@@ -3,6 +3,7 @@
 // scene kind (disorder, temperature, coupling tables, open rows, row profiles).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -185,8 +186,9 @@ TEST_CASE("the device member driver at T > 0: the Langevin stepper, its noise an
   check_backends_agree(scene);
 }
 
-TEST_CASE("the GPU's row limit depends on the model, the integrator and the row profiles",
+TEST_CASE("a GPU thread's row limit depends on the model, the integrator and the row profiles",
           "[device_member]") {
+  ::setenv("ROTORSWEEP_GPU_TEAM", "1", 1);  // a member per thread, also where a team could run it
   const auto limit = [](const std::string& text) {
     return ensemble::gpu_max_rows(io::parse_scene_text(text, "device-member-limit"));
   };
@@ -198,4 +200,5 @@ TEST_CASE("the GPU's row limit depends on the model, the integrator and the row 
                          "couplings = \"dipolar\"\n")) < nearest);
   CHECK(limit(plain + "[observables]\nrow_profiles = true\n") < nearest);
   CHECK(limit(plain + "[thermal]\ntemperature = 0.1\n") > nearest);  // one stage, no error estimate
+  ::unsetenv("ROTORSWEEP_GPU_TEAM");
 }

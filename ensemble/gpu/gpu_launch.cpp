@@ -1,0 +1,69 @@
+// The GPU backend's launch (docs/architecture.md "Teams"): the shape and the mapping from the
+// environment, which scenes run on teams, and the team's size by N.
+#include "ensemble/gpu/gpu_launch.hpp"
+
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "ensemble/gpu/device_drivers.hpp"
+#include "kernels/lanes/team.hpp"
+
+namespace rotorsweep::ensemble {
+
+namespace {
+
+int positive_from_environment(const char* name, int fallback) {
+  const char* text = std::getenv(name);
+  if (!text || !*text) return fallback;
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (*end != '\0' || value < 1 || value > (1 << 20))
+    throw std::runtime_error(std::string(name) + " = '" + text + "': must be a positive integer");
+  return int(value);
+}
+
+GpuScratch scratch_from_environment() {
+  const char* text = std::getenv("ROTORSWEEP_GPU_SCRATCH");
+  if (!text || !*text) return GpuScratch::automatic;
+  const std::string value = text;
+  if (value == "shared") return GpuScratch::shared;
+  if (value == "global") return GpuScratch::global;
+  throw std::runtime_error("ROTORSWEEP_GPU_SCRATCH = '" + value + "': allowed: shared, global");
+}
+
+}  // namespace
+
+GpuLaunch gpu_launch() {
+  GpuLaunch launch;
+  launch.threads_per_block = positive_from_environment("ROTORSWEEP_GPU_BLOCK", launch.threads_per_block);
+  if (launch.threads_per_block > 1024 || launch.threads_per_block % 32 != 0)
+    throw std::runtime_error("ROTORSWEEP_GPU_BLOCK: must be a multiple of 32 from 32 to 1024");
+  launch.blocks = positive_from_environment("ROTORSWEEP_GPU_BLOCKS", 0);
+  const int team = positive_from_environment("ROTORSWEEP_GPU_TEAM", 0);
+  if (team > 32 || (team & (team - 1)) != 0)
+    throw std::runtime_error("ROTORSWEEP_GPU_TEAM = " + std::to_string(team) +
+                             ": allowed: 1, 2, 4, 8, 16, 32");
+  launch.team = unsigned(team);
+  launch.scratch = scratch_from_environment();
+  return launch;
+}
+
+bool gpu_teams_fit(const Scene& scene) {
+  if (!scene.couplings.nearest_neighbour() || scene.thermal.on() || scene.row_profiles) return false;
+  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
+    return !std::is_void_v<DeviceTeamStepper<id, kernels::HostTeam>>;
+  });
+}
+
+unsigned gpu_team_size(const Scene& scene, std::size_t rows, const GpuLaunch& launch) {
+  if (!gpu_teams_fit(scene)) return 1;
+  if (launch.team) return launch.team;
+  if (rows <= 4) return 1;
+  unsigned team = 1;
+  while (team < 32 && 3 * team < rows) team *= 2;
+  return team;
+}
+
+}  // namespace rotorsweep::ensemble

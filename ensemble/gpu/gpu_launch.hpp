@@ -1,0 +1,39 @@
+// How the GPU backend lays a variant's members on threads (docs/architecture.md "Teams"): a member per
+// thread or per team of a warp's threads, the team's size by N, and the launch shape.
+#pragma once
+
+#include <cstddef>
+
+#include "ensemble/rows/scene.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// Where a team keeps its member's vectors: the block's shared memory where its teams' fit, else global
+/// memory (automatic), or as asked.
+enum class GpuScratch { automatic, shared, global };
+
+/// How the GPU backend launches: threads per block, blocks (0: as many as fit at once), threads per
+/// member (0: by N, gpu_team_size) and where a team's scratch lives. Results do not depend on the
+/// block shape; a team's size changes the last bits (docs/numerics.md "The stage solve on a team").
+struct GpuLaunch {
+  int threads_per_block = 128;
+  int blocks = 0;
+  unsigned team = 0;
+  GpuScratch scratch = GpuScratch::automatic;
+};
+
+/// The launch in use: the defaults, or from the environment ROTORSWEEP_GPU_BLOCK (a multiple of 32 up
+/// to 1024), ROTORSWEEP_GPU_BLOCKS, ROTORSWEEP_GPU_TEAM (1, 2, 4, 8, 16 or 32) and
+/// ROTORSWEEP_GPU_SCRATCH (shared or global); a bad value throws std::runtime_error naming it.
+GpuLaunch gpu_launch();
+
+/// Whether the scene's members can run on a team (ensemble/engine/team_member.hpp): nearest-neighbour
+/// rows at T = 0 without row profiles, with a linearly implicit stepper.
+bool gpu_teams_fit(const Scene& scene);
+
+/// Threads per member of N = `rows`: 1 where teams do not fit the scene; else launch.team where set;
+/// else 1 up to 4 rows and above that the smallest power of two ≥ N/3 (two or three rows per thread),
+/// at most a warp (32).
+unsigned gpu_team_size(const Scene& scene, std::size_t rows, const GpuLaunch& launch);
+
+}  // namespace rotorsweep::ensemble

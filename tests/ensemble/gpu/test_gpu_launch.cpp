@@ -1,0 +1,134 @@
+// How the GPU backend lays members on threads (ensemble/gpu/gpu_launch.hpp), on the host: which scenes
+// run on teams, the team's size by N, the environment's settings and their errors, the file's label.
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_launch.hpp"
+#include "io/scene_parser.hpp"
+
+using namespace rotorsweep;
+
+namespace {
+
+/// Sets an environment variable for the scope of the object.
+class ScopedVariable {
+ public:
+  ScopedVariable(const char* name, const char* value) : name_(name) { ::setenv(name, value, 1); }
+  ScopedVariable(const ScopedVariable&) = delete;
+  ScopedVariable& operator=(const ScopedVariable&) = delete;
+  ~ScopedVariable() { ::unsetenv(name_); }
+
+ private:
+  const char* name_;
+};
+
+ensemble::Scene scene_of(const std::string& model, const std::string& rest = "") {
+  return io::parse_scene_text("[model]\n" + model + "\n[drive]\ng = [0.01]\n[sweep]\nA = [1, 8]\n" + rest,
+                              "launch");
+}
+
+std::string launch_error() {
+  try {
+    ensemble::gpu_launch();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("teams run nearest-neighbour rows at T = 0 without row profiles, with a linearly implicit stepper",
+          "[gpu_launch]") {
+  CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20")));
+  CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20", "[disorder]\nA = 1e-3\n")));
+  CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20", "[observables]\nestimators = true\nmoments = true\n")));
+  for (const char* stepper : {"rodas4", "ros2", "rodas4p2", "rodas5p"})
+    CHECK(ensemble::gpu_teams_fit(
+        scene_of("rows = 20", std::string("[numerics]\nstepper = \"") + stepper + "\"\n")));
+  CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20", "[numerics]\nstepper = \"dopri5\"\n")));
+  CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2")));
+  CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20\nboundary = \"open\"")));
+  CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n")));
+  CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20", "[observables]\nrow_profiles = true\n")));
+}
+
+TEST_CASE("a team has two or three rows per thread, up to a warp; N up to 4 runs a member per thread",
+          "[gpu_launch]") {
+  const auto scene = scene_of("rows = 20");
+  const ensemble::GpuLaunch launch;
+  for (const auto& [rows, team] :
+       {std::pair{2u, 1u}, std::pair{4u, 1u}, std::pair{6u, 2u}, std::pair{8u, 4u}, std::pair{20u, 8u},
+        std::pair{48u, 16u}, std::pair{96u, 32u}, std::pair{1024u, 32u}})
+    CHECK(ensemble::gpu_team_size(scene, rows, launch) == team);
+  for (std::size_t rows = 6; rows <= 96; rows += 2) {
+    const unsigned team = ensemble::gpu_team_size(scene, rows, launch);
+    INFO("N = " << rows << ", team " << team);
+    CHECK((team & (team - 1)) == 0);
+    CHECK((rows + team - 1) / team <= 3);                 // at most three rows per thread
+    CHECK((team == 2 || (rows + team - 1) / team >= 2));  // and no smaller team would do
+  }
+  CHECK(ensemble::gpu_team_size(scene_of("rows = 20\nboundary = \"open\""), 1024, launch) == 1);
+  CHECK(ensemble::gpu_team_size(scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n"), 64, launch) == 1);
+}
+
+TEST_CASE("the environment sets the launch; a bad value is one error naming it", "[gpu_launch]") {
+  const auto plain = ensemble::gpu_launch();
+  CHECK(plain.threads_per_block == 128);
+  CHECK(plain.blocks == 0);
+  CHECK(plain.team == 0);
+  CHECK(plain.scratch == ensemble::GpuScratch::automatic);
+  {
+    const ScopedVariable team("ROTORSWEEP_GPU_TEAM", "16");
+    const ScopedVariable scratch("ROTORSWEEP_GPU_SCRATCH", "global");
+    const auto launch = ensemble::gpu_launch();
+    CHECK(launch.team == 16);
+    CHECK(launch.scratch == ensemble::GpuScratch::global);
+    CHECK(ensemble::gpu_team_size(scene_of("rows = 2"), 2, launch) == 16);  // asked for, even at N = 2
+    CHECK(ensemble::gpu_team_size(scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2"), 20, launch) ==
+          1);
+  }
+  for (const char* bad : {"3", "64", "eight", "0"}) {
+    const ScopedVariable team("ROTORSWEEP_GPU_TEAM", bad);
+    INFO(bad);
+    CHECK_THAT(launch_error(), Catch::Contains("ROTORSWEEP_GPU_TEAM"));
+  }
+  {
+    const ScopedVariable team("ROTORSWEEP_GPU_TEAM", "12");
+    CHECK_THAT(launch_error(), Catch::Contains("allowed: 1, 2, 4, 8, 16, 32"));
+  }
+  {
+    const ScopedVariable scratch("ROTORSWEEP_GPU_SCRATCH", "local");
+    CHECK_THAT(launch_error(),
+               Catch::Contains("ROTORSWEEP_GPU_SCRATCH") && Catch::Contains("shared, global"));
+  }
+  {
+    const ScopedVariable block("ROTORSWEEP_GPU_BLOCK", "48");
+    CHECK_THAT(launch_error(), Catch::Contains("ROTORSWEEP_GPU_BLOCK") && Catch::Contains("multiple of 32"));
+  }
+}
+
+TEST_CASE("a member on a team has no per-thread row limit; on one thread it has", "[gpu_launch]") {
+  const auto scene = scene_of("rows = 20");
+  CHECK(ensemble::gpu_max_rows(scene) == ensemble::gpu_team_max_rows);
+  const ScopedVariable team("ROTORSWEEP_GPU_TEAM", "1");
+  const std::size_t per_thread = ensemble::gpu_max_rows(scene);
+  CHECK(per_thread >= 100);
+  CHECK(per_thread < ensemble::gpu_team_max_rows);
+}
+
+TEST_CASE("the result file's device says how many threads run a member", "[gpu_launch]") {
+  auto scene = scene_of("rows = 20");
+  scene.device = ensemble::Device::gpu;
+  CHECK_THAT(ensemble::device_label(scene),
+             Catch::StartsWith("gpu (") && Catch::EndsWith("; 8 threads per member)"));
+  auto pair = scene_of("rows = [2, 20]");
+  pair.device = ensemble::Device::gpu;
+  CHECK_THAT(ensemble::device_label(pair), Catch::EndsWith("; threads per member: 1 at N = 2, 8 at N = 20)"));
+  auto coupled = scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2");
+  coupled.device = ensemble::Device::gpu;
+  CHECK_THAT(ensemble::device_label(coupled), Catch::EndsWith("; 1 thread per member)"));
+}

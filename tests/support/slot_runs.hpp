@@ -1,0 +1,54 @@
+// Test support: a scene's members run on the host through one chunk of member slots, as the GPU
+// backend runs them: by one thread's driver, or by a host team (ensemble/engine/team_member.hpp).
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+#include "ensemble/engine/member_slots.hpp"
+#include "ensemble/engine/team_member.hpp"
+#include "ensemble/gpu/device_drivers.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "kernels/lanes/team.hpp"
+
+namespace rotorsweep::testing {
+
+/// Every member of the scene (one variant) through run(schedule, views, k) in one chunk of slots;
+/// the schedule's first-step scale is Integrator's.
+template <class Integrator, class Run>
+std::vector<ensemble::MemberResult> through_slots(const ensemble::Scene& scene, Run&& run) {
+  if (scene.variants().size() != 1) throw std::logic_error("through_slots: a scene of one variant");
+  const ensemble::MemberPlan plan(scene);
+  std::vector<ensemble::Member> members;
+  for (std::size_t i = 0; i < plan.size(); ++i) members.push_back(plan[i]);
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const auto schedule = ensemble::slot_schedule(
+      scene, members.front(), ensemble::device_first_step_scale<Integrator>(members.front()));
+  ensemble::SlotChunk chunk(schedule, members.size());
+  chunk.fill(scene, {&source, 0, members.size()}, 0, members.size());
+  const ensemble::SlotViews views = chunk.views();
+  for (std::size_t k = 0; k < members.size(); ++k) run(schedule, views, k);
+  std::vector<ensemble::MemberResult> results;
+  for (std::size_t k = 0; k < members.size(); ++k) results.push_back(chunk.result(scene, k));
+  return results;
+}
+
+/// Every member of the scene, whose stepper is `id`, on a host team of `ranks`: the bits a GPU team
+/// of that size gives (kernels/lanes/team.hpp).
+template <kernels::StepperId id>
+std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& scene, std::size_t ranks) {
+  using Model = kernels::NearestNeighbourRows<double>;
+  using Team = ensemble::TeamMember<kernels::HostTeam, ensemble::DeviceTeamStepper<id, kernels::HostTeam>>;
+  if (scene.stepper != id) throw std::logic_error("on_host_team: the scene has another stepper");
+  return through_slots<ensemble::DeviceAdaptiveIntegrator<id, Model>>(
+      scene, [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
+        if (!Team::team_schedule_fits(s))
+          throw std::logic_error("on_host_team: a team cannot run this scene");
+        std::vector<double> storage(Team::storage_size(s, ranks));
+        kernels::HostTeam crew(ranks);
+        Team::run(crew, s, v, k, storage.data(), storage.size());
+      });
+}
+
+}  // namespace rotorsweep::testing
