@@ -1,9 +1,10 @@
 // One member on a team of threads from its start to its retirement (docs/architecture.md "Teams"):
-// DeviceMember's state machine (docs/model.md §3), its row loops over each rank's rows.
+// DeviceMember's state machine (docs/model.md §3, §7 at T > 0), its row loops over each rank's rows.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "ensemble/engine/member_progress.hpp"
 #include "ensemble/engine/member_result.hpp"
@@ -17,18 +18,20 @@
 
 namespace rotorsweep::ensemble {
 
-/// Runs members of the nearest-neighbour rows on a team with TeamIntegrator<Team, Stepper>: per step
-/// and per period what DeviceMember does on one thread (the same reducers, records, MemberProgress,
-/// wrap and slot), the rows split among the ranks and the team's sums where DeviceMember sums over
-/// rows. It runs every observable of uniform or disordered rows at T = 0 but the row profiles
-/// (team_schedule_fits).
-template <class Team, class Stepper>
+/// Runs members of the nearest-neighbour rows on a team with Integrator (TeamIntegrator<Team, Stepper>,
+/// or TeamLeimkuhlerMatthews<Team> at T > 0): per step and per period what DeviceMember does on one
+/// thread (the same reducers, records, MemberProgress, wrap and slot), the rows split among the ranks
+/// and the team's sums where DeviceMember sums over rows. It runs every observable of uniform or
+/// disordered rows but the row profiles (team_schedule_fits).
+template <class Team, class Integrator>
 struct TeamMember {
-  using Model = typename Stepper::Model;
-  using Integrator = kernels::TeamIntegrator<Team, Stepper>;
+  using Model = typename Integrator::Model;
+  static constexpr bool stochastic = Integrator::stochastic;
 
-  /// Whether a team runs members of schedule s: no noise and no row profiles.
-  static bool team_schedule_fits(const SlotSchedule& s) { return !s.stochastic && !s.row_profiles; }
+  /// Whether this team member runs members of schedule s: its kind of integrator, no row profiles.
+  static bool team_schedule_fits(const SlotSchedule& s) {
+    return s.stochastic == stochastic && !s.row_profiles;
+  }
 
   /// Values of scratch a member of schedule s needs on a team of `ranks`, shared by the team.
   ROTORSWEEP_HD static std::size_t storage_size(const SlotSchedule& s, std::size_t ranks) {
@@ -54,8 +57,14 @@ struct TeamMember {
     state.tolerance_scale = slots.tolerance_scale[k];
     SlipCounter<double> slips(s.slip_rate, s.slip_energies);
     slips.set_damping(0, slots.g[k]);
+    if constexpr (stochastic) {
+      const double g = slots.g[k];
+      parts.integrator.start(slots.noise_key[k], g, model.curvature_bound(0));
+      slips.set_rate(0, thermal_slip_rate(s.slip_rate, s.temperature, g, parts.integrator.step_size()));
+    }
     AlignmentExtrema<double> alignment;
     DissipationSwing<double> swing;
+    const bool swing_on = Q.drive && !stochastic;
 
     MemberProgress progress;
     for (;;) {
@@ -64,7 +73,7 @@ struct TeamMember {
       const bool accepted = parts.integrator.attempt(team, model, state);
       if (Q.alignment) alignment.accumulate(true, parts.integrator.start_integrands()[Q.alignment_index()]);
       if (accepted) {
-        if (Q.drive) swing.accumulate(true, state.quad[Q.drive_index()]);
+        if (swing_on) swing.accumulate(true, state.quad[Q.drive_index()]);
         if (s.slips) {
           const double largest = team.max([&](std::size_t r) {
             const kernels::TeamRows rows = kernels::team_rows(n, ranks, r);
@@ -94,8 +103,9 @@ struct TeamMember {
       record_quadratures(
           s.channels, Q, record, [&](std::size_t p) { return state.quad[p]; }, Model::period, state.t);
       if (Q.alignment) alignment.end_period(0, record);
-      if (Q.drive) swing.end_period(0, s.error_rtol, s.atol, record);
+      if (swing_on) swing.end_period(0, s.error_rtol, s.atol, record);
       if (s.slips) slips.end_period(0, record);
+      if constexpr (stochastic) record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
       const std::size_t closed = std::size_t(progress.periods());
       double* end = slots.end_states + (k * s.end_capacity + closed % s.end_capacity) * n;
       each_row(team, n, [&](std::size_t j) { end[j] = state.y[j]; });
@@ -133,12 +143,20 @@ struct TeamMember {
 
     ROTORSWEEP_HD Parts(const SlotSchedule& s, std::size_t ranks, kernels::LaneArena<double>& arena)
         : model(s.rows, arena, s.quadratures),
-          integrator(model, ranks, {s.rtol, s.atol},
-                     {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
-                     s.first_step_scale, arena),
+          integrator(make_integrator(model, s, ranks, arena)),
           theta(arena.take(s.rows)),
           theta_before(arena.take(s.rows)) {}
   };
+
+  ROTORSWEEP_HD static Integrator make_integrator(const Model& model, const SlotSchedule& s,
+                                                  std::size_t ranks, kernels::LaneArena<double>& arena) {
+    if constexpr (stochastic)
+      return Integrator(model, ranks, {s.temperature, s.steps_per_period, s.step_fraction}, arena);
+    else
+      return Integrator(model, ranks, {s.rtol, s.atol},
+                        {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
+                        s.first_step_scale, arena);
+  }
 
   /// row(j) for every row, each rank its own.
   template <class Row>

@@ -51,7 +51,8 @@ GpuLaunch gpu_launch() {
 }
 
 bool gpu_teams_fit(const Scene& scene) {
-  if (!scene.couplings.nearest_neighbour() || scene.thermal.on() || scene.row_profiles) return false;
+  if (!scene.couplings.nearest_neighbour() || scene.row_profiles) return false;
+  if (scene.thermal.on()) return true;  // the Langevin stepper, whatever numerics.stepper says
   return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
     return !std::is_void_v<DeviceTeamStepper<id, kernels::HostTeam>>;
   });

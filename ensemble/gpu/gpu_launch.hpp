@@ -28,7 +28,7 @@ struct GpuLaunch {
 GpuLaunch gpu_launch();
 
 /// Whether the scene's members can run on a team (ensemble/engine/team_member.hpp): nearest-neighbour
-/// rows at T = 0 without row profiles, with a linearly implicit stepper.
+/// rows without row profiles, at T > 0 or with a linearly implicit stepper.
 bool gpu_teams_fit(const Scene& scene);
 
 /// Threads per member of N = `rows`: 1 where teams do not fit the scene; else launch.team where set;

@@ -41,10 +41,10 @@ __global__ void sweep_slots(SlotSchedule schedule, SlotViews slots, unsigned lon
   }
 }
 
-/// A member per team of `team` threads of a warp (TeamMember): the team's first thread takes the next
-/// member from the counter for all; the team's scratch is its part of the block's shared memory or,
-/// where `scratch` is given, of that global buffer (per_team values each).
-template <class Stepper>
+/// A member per team of `team` threads of a warp (TeamMember<WarpTeam, TeamIntegrator>): the team's first
+/// thread takes the next member from the counter for all; the team's scratch is its part of the block's
+/// shared memory or, where `scratch` is given, of that global buffer (per_team values each).
+template <class TeamIntegrator>
 __global__ void sweep_slots_on_teams(SlotSchedule schedule, SlotViews slots, unsigned long long count,
                                      unsigned long long* next, unsigned team, double* scratch,
                                      std::size_t per_team) {
@@ -56,8 +56,8 @@ __global__ void sweep_slots_on_teams(SlotSchedule schedule, SlotViews slots, uns
   for (;;) {
     const unsigned long long k = crew.first([&] { return atomicAdd(next, 1ull); });
     if (k >= count) return;
-    TeamMember<const kernels::WarpTeam, Stepper>::run(crew, schedule, slots, std::size_t(k), storage,
-                                                      per_team);
+    TeamMember<const kernels::WarpTeam, TeamIntegrator>::run(crew, schedule, slots, std::size_t(k), storage,
+                                                             per_team);
     crew.sync();
   }
 }
@@ -226,20 +226,20 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
                     });
 }
 
-/// The variant's members, one per team of `team` threads (TeamMember<WarpTeam, Stepper>; the schedule's
-/// first-step scale is Integrator's, the same stepper on one lane). A block's teams keep their scratch
-/// in its shared memory where it fits (or ROTORSWEEP_GPU_SCRATCH says so), else in global memory, of
+/// The variant's members, one per team of `team` threads (TeamMember<WarpTeam, TeamIntegrator>; the
+/// schedule's first-step scale is Integrator's, the same integrator on one lane). A block's teams keep their
+/// scratch in its shared memory where it fits (or ROTORSWEEP_GPU_SCRATCH says so), else in global memory, of
 /// which the resident teams take at most a quarter.
-template <class Integrator, class Stepper>
+template <class Integrator, class TeamIntegrator>
 SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team,
                                 int host_threads, const SweepControl& control, const ResultSink& sink) {
-  using Driver = TeamMember<const kernels::WarpTeam, Stepper>;
+  using Driver = TeamMember<const kernels::WarpTeam, TeamIntegrator>;
   const GpuInfo& info = available_gpu();
   const Member variant = range.source->at(range.begin);
   const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
   if (!Driver::team_schedule_fits(schedule)) throw std::logic_error("a team cannot run this schedule");
 
-  const auto kernel = sweep_slots_on_teams<Stepper>;
+  const auto kernel = sweep_slots_on_teams<TeamIntegrator>;
   const GpuLaunch launch = gpu_launch();
   const std::size_t per_team = Driver::storage_size(schedule, team);
   const std::size_t teams_per_block = std::size_t(launch.threads_per_block) / team;

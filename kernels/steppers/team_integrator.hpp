@@ -33,6 +33,7 @@ template <class Team, class Stepper>
 class TeamIntegrator {
  public:
   using Model = typename Stepper::Model;
+  static constexpr bool stochastic = false;
 
   ROTORSWEEP_HD TeamIntegrator(const Model& model, std::size_t ranks, Tolerances tol, StepLimits limits,
                                double first_step_scale, LaneArena<double>& arena)

@@ -11,6 +11,7 @@
 #include "kernels/linear/team_cyclic_tridiagonal.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
+#include "kernels/steppers/team_evaluation.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -67,28 +68,7 @@ class TeamRosenbrock {
 
   /// f at (y, t) into `f` over the team, with the quadratures' integrands (the first step's rate).
   ROTORSWEEP_HD void evaluate(Team& team, const Model& model, const double* y, double t, double* qdot) {
-    team.each([&](std::size_t r) {
-      const TeamRows rows = team_rows(n_, ranks_, r);
-      const Model::RowSums sums = model.evaluate_range(work_, y, t, f_, rows.begin, rows.end);
-      const Model::IntegrandSums more = model.integrand_sums_range(work_, f_, rows.begin, rows.end);
-      double* mine = partial_ + quadratures * r;
-      mine[0] = sums.lag;
-      mine[1] = sums.cos_link;
-      mine[2] = more.lag_force;
-      mine[3] = more.force_squares;
-      mine[4] = more.energy;
-    });
-    const auto total = [&](std::size_t i) {
-      return team.sum([&](std::size_t r) { return partial_[quadratures * r + i]; });
-    };
-    Model::RowSums sums;
-    sums.lag = total(0);
-    sums.cos_link = total(1);
-    Model::IntegrandSums more;
-    more.lag_force = total(2);
-    more.force_squares = total(3);
-    more.energy = total(4);
-    model.team_integrands(sums, more, t, qdot);
+    team_evaluate(team, model, work_, y, t, f_, partial_, quadratures, qdot);
   }
   /// f of the last evaluate (the team's).
   ROTORSWEEP_HD const double* rate() const { return f_; }

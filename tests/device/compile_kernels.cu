@@ -1,6 +1,7 @@
 // The kernels compiled for a GPU: the row model, both stepper families and the adaptive
 // integrator instantiated on the double lane inside a __global__ function, and on warp teams the stage
-// solve, a member's integration and a whole member through its slots (nvcc, no GPU needed).
+// solve, a member's integration and whole members through their slots, at T = 0 and T > 0 (nvcc, no GPU
+// needed).
 #include "ensemble/engine/team_member.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
@@ -10,6 +11,7 @@
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "kernels/steppers/team_integrator.hpp"
+#include "kernels/steppers/team_leimkuhler_matthews.hpp"
 #include "kernels/steppers/team_rosenbrock.hpp"
 
 using namespace rotorsweep::kernels;
@@ -77,13 +79,24 @@ __global__ void advance_on_teams(double* storage, std::size_t per_team, std::siz
   if (crew.rank() == 0) drive[team] = state.quad[0];
 }
 
-/// Members of a chunk of slots, one per warp team, from start to retirement (ensemble/engine/team_member.hpp).
+/// Members of a chunk of slots, one per warp team, from start to retirement
+/// (ensemble/engine/team_member.hpp).
 __global__ void run_members_on_teams(rotorsweep::ensemble::SlotSchedule schedule,
-                                     rotorsweep::ensemble::SlotViews slots, double* storage, std::size_t per_team,
-                                     unsigned team_size) {
+                                     rotorsweep::ensemble::SlotViews slots, double* storage,
+                                     std::size_t per_team, unsigned team_size) {
   using Stepper = TeamRosenbrock<const WarpTeam, rodas4p2_tableau>;
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
-  rotorsweep::ensemble::TeamMember<const WarpTeam, Stepper>::run(crew, schedule, slots, team,
-                                                                 storage + team * per_team, per_team);
+  rotorsweep::ensemble::TeamMember<const WarpTeam, TeamIntegrator<const WarpTeam, Stepper>>::run(
+      crew, schedule, slots, team, storage + team * per_team, per_team);
+}
+
+/// Members at T > 0, one per warp team (kernels/steppers/team_leimkuhler_matthews.hpp).
+__global__ void run_thermal_members_on_teams(rotorsweep::ensemble::SlotSchedule schedule,
+                                             rotorsweep::ensemble::SlotViews slots, double* storage,
+                                             std::size_t per_team, unsigned team_size) {
+  const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
+  const WarpTeam crew(team_size);
+  rotorsweep::ensemble::TeamMember<const WarpTeam, TeamLeimkuhlerMatthews<const WarpTeam>>::run(
+      crew, schedule, slots, team, storage + team * per_team, per_team);
 }

@@ -14,6 +14,8 @@
 #include "ensemble/rows/paper_table.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "kernels/steppers/leimkuhler_matthews.hpp"
+#include "kernels/steppers/team_leimkuhler_matthews.hpp"
 #include "support/same_results.hpp"
 #include "support/slot_runs.hpp"
 
@@ -142,7 +144,7 @@ TEST_CASE("the GPU's results do not depend on the launch shape or a team's scrat
   }
 }
 
-TEST_CASE("a member per GPU team gives a host team's bits, for every team size and linearly implicit stepper",
+TEST_CASE("a member per GPU team gives a host team's bits, for every team size, stepper and at T > 0",
           "[gpu]") {
   const auto check_sizes = [&]<kernels::StepperId id>(const ensemble::Scene& scene) {
     const auto members = ensemble::plan_members(scene);
@@ -162,6 +164,24 @@ TEST_CASE("a member per GPU team gives a host team's bits, for every team size a
                                "[disorder]\nA = 1e-4\n[observables]\nestimators = true\nenergy = "
                                "true\nmoments = true\n",
                            "teams"));
+  const auto thermal = io::parse_scene_text(
+      "[model]\nrows = 20\n[drive]\ng = [0.01]\n[sweep]\nA = [1, 6, 12]\n[initial]\nkinds = [\"random\"]\n"
+      "replicas = 2\n[thermal]\ntemperature = 0.05\nsteps_per_period = 200\n[observables]\nenergy = true\n",
+      "teams-thermal");
+  const auto members = ensemble::plan_members(thermal);
+  for (const int team : {2, 8, 32}) {
+    const ScopedVariable mapping("ROTORSWEEP_GPU_TEAM", std::to_string(team));
+    const auto gpu = run_on(thermal, ensemble::Device::gpu, members);
+    using Model = kernels::NearestNeighbourRows<double>;
+    const auto host =
+        testing::on_host_team<kernels::LeimkuhlerMatthews<Model>,
+                              kernels::TeamLeimkuhlerMatthews<kernels::HostTeam>>(thermal, std::size_t(team));
+    std::string first;
+    INFO("T > 0, team " << team);
+    CHECK(testing::count_differences(host, gpu, first) == 0);
+    INFO(first);
+    CHECK(first.empty());
+  }
   check_sizes.template operator()<*kernels::parse_stepper("rodas5p")>(
       io::parse_scene_text(curve_scene("rodas5p", 20, "1e-8"), "teams"));
 }

@@ -1,11 +1,12 @@
 // Test support: a scene's members run on the host through one chunk of member slots, as the GPU
-// backend runs them: by one thread's driver, or by a host team (ensemble/engine/team_member.hpp).
+// backend runs them: by one thread's driver (DeviceMember), or by a host team (TeamMember).
 #pragma once
 
 #include <cstddef>
 #include <stdexcept>
 #include <vector>
 
+#include "ensemble/engine/device_member.hpp"
 #include "ensemble/engine/member_slots.hpp"
 #include "ensemble/engine/team_member.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
@@ -34,20 +35,40 @@ std::vector<ensemble::MemberResult> through_slots(const ensemble::Scene& scene, 
   return results;
 }
 
-/// Every member of the scene, whose stepper is `id`, on a host team of `ranks`: the bits a GPU team
-/// of that size gives (kernels/lanes/team.hpp).
-template <kernels::StepperId id>
+/// Every member of the scene on a host team of `ranks` with TeamIntegrator (its first-step scale that
+/// of Integrator, the same integrator on one lane): the bits a GPU team of that size gives
+/// (kernels/lanes/team.hpp).
+template <class Integrator, class TeamIntegrator>
 std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& scene, std::size_t ranks) {
-  using Model = kernels::NearestNeighbourRows<double>;
-  using Team = ensemble::TeamMember<kernels::HostTeam, ensemble::DeviceTeamStepper<id, kernels::HostTeam>>;
-  if (scene.stepper != id) throw std::logic_error("on_host_team: the scene has another stepper");
-  return through_slots<ensemble::DeviceAdaptiveIntegrator<id, Model>>(
+  using Team = ensemble::TeamMember<kernels::HostTeam, TeamIntegrator>;
+  return through_slots<Integrator>(
       scene, [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
         if (!Team::team_schedule_fits(s))
           throw std::logic_error("on_host_team: a team cannot run this scene");
         std::vector<double> storage(Team::storage_size(s, ranks));
         kernels::HostTeam crew(ranks);
         Team::run(crew, s, v, k, storage.data(), storage.size());
+      });
+}
+
+/// on_host_team with stepper `id` of the list, which the scene names.
+template <kernels::StepperId id>
+std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& scene, std::size_t ranks) {
+  using Model = kernels::NearestNeighbourRows<double>;
+  using Stepper = ensemble::DeviceTeamStepper<id, kernels::HostTeam>;
+  if (scene.stepper != id) throw std::logic_error("on_host_team: the scene has another stepper");
+  return on_host_team<ensemble::DeviceAdaptiveIntegrator<id, Model>,
+                      kernels::TeamIntegrator<kernels::HostTeam, Stepper>>(scene, ranks);
+}
+
+/// Every member of the scene one by one with DeviceMember<Model, Integrator>: the CPU lanes' bits.
+template <class Model, class Integrator>
+std::vector<ensemble::MemberResult> on_one_thread(const ensemble::Scene& scene) {
+  using Driver = ensemble::DeviceMember<Model, Integrator>;
+  return through_slots<Integrator>(
+      scene, [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
+        std::vector<double> storage(Driver::storage_size(s));
+        Driver::run(s, v, k, storage.data(), storage.size());
       });
 }
 

@@ -1,6 +1,6 @@
 // One member per team (ensemble/engine/team_member.hpp) on host teams of 1, 3 and 8 ranks against the
-// one-thread driver DeviceMember on the same slots: the same periods, slips, regimes and attractors, and
-// D and ρ̄ within the integration error, for uniform and disordered rows in the AFM, CP and FM regimes.
+// one-thread driver DeviceMember on the same slots: the same periods, slips, regimes and attractors, D
+// and ρ̄ within the integration error (AFM, CP, FM; at T > 0 the same path), and the examples' labels.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -16,7 +16,9 @@
 #include "io/scene_parser.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/leimkuhler_matthews.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
+#include "kernels/steppers/team_leimkuhler_matthews.hpp"
 #include "kernels/steppers/team_rosenbrock.hpp"
 #include "support/slot_runs.hpp"
 
@@ -24,26 +26,17 @@ using namespace rotorsweep;
 using Catch::Detail::Approx;
 using Model = kernels::NearestNeighbourRows<double>;
 using Lanes = kernels::AdaptiveIntegrator<Model, kernels::Rodas4P2<Model>>;
-using Team = ensemble::TeamMember<kernels::HostTeam,
-                                  kernels::TeamRosenbrock<kernels::HostTeam, kernels::rodas4p2_tableau>>;
+using TeamLanes =
+    kernels::TeamIntegrator<kernels::HostTeam,
+                            kernels::TeamRosenbrock<kernels::HostTeam, kernels::rodas4p2_tableau>>;
 
 namespace {
 
 void check_teams_follow(const std::string& text) {
   const auto scene = io::parse_scene_text(text, "team-member");
-  const auto thread = testing::through_slots<Lanes>(
-      scene, [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
-        std::vector<double> storage(ensemble::DeviceMember<Model, Lanes>::storage_size(s));
-        ensemble::DeviceMember<Model, Lanes>::run(s, v, k, storage.data(), storage.size());
-      });
+  const auto thread = testing::on_one_thread<Model, Lanes>(scene);
   for (std::size_t ranks : {1u, 3u, 8u}) {
-    const auto team = testing::through_slots<Lanes>(
-        scene, [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
-          REQUIRE(Team::team_schedule_fits(s));
-          std::vector<double> storage(Team::storage_size(s, ranks));
-          kernels::HostTeam crew(ranks);
-          Team::run(crew, s, v, k, storage.data(), storage.size());
-        });
+    const auto team = testing::on_host_team<Lanes, TeamLanes>(scene, ranks);
     for (std::size_t k = 0; k < thread.size(); ++k) {
       const auto &a = thread[k], &b = team[k];
       INFO("ranks " << ranks << ", member " << k << ": D " << a.dissipation() << ", "
@@ -106,6 +99,39 @@ TEST_CASE("a team of eight gives the CPU lanes' labels on the examples but where
       if (lanes[k].symmetry_limited) continue;
       CHECK(team[k].regime == lanes[k].regime);
       CHECK(team[k].final_state.attractor == lanes[k].final_state.attractor);
+    }
+  }
+}
+
+TEST_CASE("at T > 0 a team steps a member along the lanes' path: the same noise, angles and slips",
+          "[team][device_member]") {
+  using Langevin = kernels::LeimkuhlerMatthews<Model>;
+  const auto scene = io::parse_scene_text(
+      rows_20 +
+          "[sweep]\nA = [1.0, 6.0]\n[disorder]\nA = 1e-3\n[thermal]\ntemperature = 0.05\n"
+          "steps_per_period = 200\nseed = 3\n[observables]\nenergy = true\nmoments = true\n",
+      "team-thermal");
+  REQUIRE(scene.thermal.on());
+  const auto thread = testing::on_one_thread<Model, Langevin>(scene);
+  for (std::size_t ranks : {1u, 3u, 8u}) {
+    const auto team =
+        testing::on_host_team<Langevin, kernels::TeamLeimkuhlerMatthews<kernels::HostTeam>>(scene, ranks);
+    for (std::size_t k = 0; k < thread.size(); ++k) {
+      const auto &a = thread[k], &b = team[k];
+      INFO("ranks " << ranks << ", member " << k << ": D " << a.dissipation());
+      REQUIRE(b.status == a.status);
+      CHECK(b.periods_run == a.periods_run);
+      CHECK(b.steps_accepted == a.steps_accepted);
+      CHECK(b.theta_final == a.theta_final);  // the path's bits: only the quadratures are summed otherwise
+      CHECK(b.slips_per_period() == a.slips_per_period());
+      CHECK(b.regime == a.regime);
+      CHECK(b.dissipation() == Approx(a.dissipation()).epsilon(1e-12).margin(1e-14));
+      CHECK(b.alignment_mean() == Approx(a.alignment_mean()).epsilon(1e-12));
+      for (const auto channel :
+           {ensemble::Channel::work, ensemble::Channel::stokes, ensemble::Channel::energy_mean}) {
+        INFO("channel " << std::size_t(channel));
+        CHECK(b.mean(channel) == Approx(a.mean(channel)).epsilon(1e-12).margin(1e-14));
+      }
     }
   }
 }

@@ -41,7 +41,7 @@ std::string launch_error() {
 
 }  // namespace
 
-TEST_CASE("teams run nearest-neighbour rows at T = 0 without row profiles, with a linearly implicit stepper",
+TEST_CASE("teams run nearest-neighbour rows without row profiles, at T > 0 or with a linearly implicit stepper",
           "[gpu_launch]") {
   CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20")));
   CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20", "[disorder]\nA = 1e-3\n")));
@@ -52,7 +52,11 @@ TEST_CASE("teams run nearest-neighbour rows at T = 0 without row profiles, with 
   CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20", "[numerics]\nstepper = \"dopri5\"\n")));
   CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2")));
   CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20\nboundary = \"open\"")));
-  CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n")));
+  CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n")));
+  CHECK(ensemble::gpu_teams_fit(
+      scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n[numerics]\nstepper = \"dopri5\"\n")));  // Langevin
+  CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2",
+                                               "[thermal]\ntemperature = 0.01\n")));
   CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20", "[observables]\nrow_profiles = true\n")));
 }
 
@@ -72,7 +76,8 @@ TEST_CASE("a team has two or three rows per thread, up to a warp; N up to 4 runs
     CHECK((team == 2 || (rows + team - 1) / team >= 2));  // and no smaller team would do
   }
   CHECK(ensemble::gpu_team_size(scene_of("rows = 20\nboundary = \"open\""), 1024, launch) == 1);
-  CHECK(ensemble::gpu_team_size(scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n"), 64, launch) == 1);
+  CHECK(ensemble::gpu_team_size(scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n"), 64, launch) == 32);
+  CHECK(ensemble::gpu_team_size(scene_of("rows = 20", "[observables]\nrow_profiles = true\n"), 64, launch) == 1);
 }
 
 TEST_CASE("the environment sets the launch; a bad value is one error naming it", "[gpu_launch]") {
