@@ -142,6 +142,8 @@ int run_bench_gpu(const BenchGpuOptions& options) {
     std::printf("whole friction curve: 1000 A × 1000 random starts (× %.3g), N = 20, rodas4, 4 periods\n",
                 options.scale);
     run_row(scaled({20, "rodas4", 1000, 1000}), options, Mapping{});
+    const bool per_thread = std::find(options.teams.begin(), options.teams.end(), 1) != options.teams.end();
+    if (gpu && per_thread) run_row(scaled({20, "rodas4", 1000, 1000}), options, Mapping{1, ""});
   }
   return 0;
 }

@@ -10,6 +10,7 @@
 #include "ensemble/engine/member_result.hpp"
 #include "ensemble/engine/member_slots.hpp"
 #include "ensemble/engine/step_reducers.hpp"
+#include "ensemble/engine/team_row_profile.hpp"
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
@@ -22,16 +23,14 @@ namespace rotorsweep::ensemble {
 /// or TeamLeimkuhlerMatthews<Team> at T > 0): per step and per period what DeviceMember does on one
 /// thread (the same reducers, records, MemberProgress, wrap and slot), the rows split among the ranks
 /// and the team's sums where DeviceMember sums over rows. It runs every observable of uniform or
-/// disordered rows but the row profiles (team_schedule_fits).
+/// disordered rows, the row profiles included.
 template <class Team, class Integrator>
 struct TeamMember {
   using Model = typename Integrator::Model;
   static constexpr bool stochastic = Integrator::stochastic;
 
-  /// Whether this team member runs members of schedule s: its kind of integrator, no row profiles.
-  static bool team_schedule_fits(const SlotSchedule& s) {
-    return s.stochastic == stochastic && !s.row_profiles;
-  }
+  /// Whether this team member runs members of schedule s: those of its kind of integrator.
+  static bool team_schedule_fits(const SlotSchedule& s) { return s.stochastic == stochastic; }
 
   /// Values of scratch a member of schedule s needs on a team of `ranks`, shared by the team.
   ROTORSWEEP_HD static std::size_t storage_size(const SlotSchedule& s, std::size_t ranks) {
@@ -65,11 +64,13 @@ struct TeamMember {
     AlignmentExtrema<double> alignment;
     DissipationSwing<double> swing;
     const bool swing_on = Q.drive && !stochastic;
+    if (s.row_profiles) parts.profile.start(team, model, state);
 
     MemberProgress progress;
     for (;;) {
       if (s.slips) each_row(team, n, [&](std::size_t j) { parts.theta_before[j] = state.y[j]; });
       const double t_before = state.t;
+      if (s.row_profiles) parts.profile.before_step(team, model, state);
       const bool accepted = parts.integrator.attempt(team, model, state);
       if (Q.alignment) alignment.accumulate(true, parts.integrator.start_integrands()[Q.alignment_index()]);
       if (accepted) {
@@ -96,6 +97,7 @@ struct TeamMember {
           slips.accumulate_turns(true, largest, squares, state.t - t_before);
         }
       }
+      if (s.row_profiles) parts.profile.after_step(team, model, state, accepted);
       if (state.status != kernels::LaneStatus::ok) break;
       if (state.t < state.t_stop) continue;
 
@@ -109,6 +111,9 @@ struct TeamMember {
       const std::size_t closed = std::size_t(progress.periods());
       double* end = slots.end_states + (k * s.end_capacity + closed % s.end_capacity) * n;
       each_row(team, n, [&](std::size_t j) { end[j] = state.y[j]; });
+      if (s.row_profiles)
+        parts.profile.take_period(
+            team, slots.profiles + (k * s.profile_capacity + closed % s.profile_capacity) * 2 * n);
       team.one([&] {
         double* slot = slots.records + (k * s.record_capacity + closed % s.record_capacity) * channel_count;
         for (std::size_t c = 0; c < channel_count; ++c) slot[c] = record.values[c];
@@ -138,14 +143,16 @@ struct TeamMember {
   struct Parts {
     Model model;
     Integrator integrator;
-    double* theta;         ///< the state θ
-    double* theta_before;  ///< θ at the start of an attempt (slip counter)
+    double* theta;                                     ///< the state θ
+    double* theta_before;                              ///< θ at the start of an attempt (slip counter)
+    TeamRowProfileIntegral<Team, stochastic> profile;  ///< sized only where the schedule asks for it
 
     ROTORSWEEP_HD Parts(const SlotSchedule& s, std::size_t ranks, kernels::LaneArena<double>& arena)
         : model(s.rows, arena, s.quadratures),
           integrator(make_integrator(model, s, ranks, arena)),
           theta(arena.take(s.rows)),
-          theta_before(arena.take(s.rows)) {}
+          theta_before(arena.take(s.rows)),
+          profile(s.row_profiles ? s.rows : 0, arena) {}
   };
 
   ROTORSWEEP_HD static Integrator make_integrator(const Model& model, const SlotSchedule& s,

@@ -42,16 +42,18 @@ GpuLaunch gpu_launch() {
     throw std::runtime_error("ROTORSWEEP_GPU_BLOCK: must be a multiple of 32 from 32 to 1024");
   launch.blocks = positive_from_environment("ROTORSWEEP_GPU_BLOCKS", 0);
   const int team = positive_from_environment("ROTORSWEEP_GPU_TEAM", 0);
-  if (team > 32 || (team & (team - 1)) != 0)
-    throw std::runtime_error("ROTORSWEEP_GPU_TEAM = " + std::to_string(team) +
-                             ": allowed: 1, 2, 4, 8, 16, 32");
+  if (team > 1024 || (team & (team - 1)) != 0)
+    throw std::runtime_error(
+        "ROTORSWEEP_GPU_TEAM = " + std::to_string(team) +
+        ": allowed: a power of two up to 1024 (1: a member per thread, 2 … 32: a team of "
+        "a warp, 64 … 1024: a whole block)");
   launch.team = unsigned(team);
   launch.scratch = scratch_from_environment();
   return launch;
 }
 
 bool gpu_teams_fit(const Scene& scene) {
-  if (!scene.couplings.nearest_neighbour() || scene.row_profiles) return false;
+  if (!scene.couplings.nearest_neighbour()) return false;
   if (scene.thermal.on()) return true;  // the Langevin stepper, whatever numerics.stepper says
   return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
     return !std::is_void_v<DeviceTeamStepper<id, kernels::HostTeam>>;

@@ -1,5 +1,5 @@
 // How the GPU backend lays a variant's members on threads (docs/architecture.md "Teams"): a member per
-// thread or per team of a warp's threads, the team's size by N, and the launch shape.
+// thread or per team of a warp's or a block's threads, the team's size by N, and the launch shape.
 #pragma once
 
 #include <cstddef>
@@ -23,12 +23,13 @@ struct GpuLaunch {
 };
 
 /// The launch in use: the defaults, or from the environment ROTORSWEEP_GPU_BLOCK (a multiple of 32 up
-/// to 1024), ROTORSWEEP_GPU_BLOCKS, ROTORSWEEP_GPU_TEAM (1, 2, 4, 8, 16 or 32) and
+/// to 1024), ROTORSWEEP_GPU_BLOCKS, ROTORSWEEP_GPU_TEAM (a power of two up to 1024; above 32 a team is
+/// a whole block, whose size it sets) and
 /// ROTORSWEEP_GPU_SCRATCH (shared or global); a bad value throws std::runtime_error naming it.
 GpuLaunch gpu_launch();
 
 /// Whether the scene's members can run on a team (ensemble/engine/team_member.hpp): nearest-neighbour
-/// rows without row profiles, at T > 0 or with a linearly implicit stepper.
+/// rows at T > 0 or with a linearly implicit stepper.
 bool gpu_teams_fit(const Scene& scene);
 
 /// Threads per member of N = `rows`: 1 where teams do not fit the scene; else launch.team where set;

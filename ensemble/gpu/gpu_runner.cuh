@@ -12,6 +12,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "ensemble/engine/member_slots.hpp"
@@ -41,23 +42,37 @@ __global__ void sweep_slots(SlotSchedule schedule, SlotViews slots, unsigned lon
   }
 }
 
-/// A member per team of `team` threads of a warp (TeamMember<WarpTeam, TeamIntegrator>): the team's first
-/// thread takes the next member from the counter for all; the team's scratch is its part of the block's
-/// shared memory or, where `scratch` is given, of that global buffer (per_team values each).
+/// A member per team (TeamMember): of `team` threads of a warp (WarpTeam), or of the whole block
+/// (BlockTeam, team = 0: its exchange is the first blockDim.x values of the block's shared memory). The
+/// team's first thread takes the next member from the counter for all; the team's scratch is its
+/// part of the block's shared memory or, where `scratch` is given, of that global buffer (per_team
+/// values each).
 template <class TeamIntegrator>
 __global__ void sweep_slots_on_teams(SlotSchedule schedule, SlotViews slots, unsigned long long count,
                                      unsigned long long* next, unsigned team, double* scratch,
                                      std::size_t per_team) {
+  using Team = std::remove_const_t<typename TeamIntegrator::TeamType>;
   extern __shared__ double shared_scratch[];
-  const kernels::WarpTeam crew(team);
-  const std::size_t teams = blockDim.x / team, mine = threadIdx.x / team;
+  std::size_t teams = 1, mine = 0;
+  double* shared_storage = shared_scratch;
+  if constexpr (std::is_same_v<Team, kernels::BlockTeam>) {
+    shared_storage += blockDim.x;
+  } else {
+    teams = blockDim.x / team;
+    mine = threadIdx.x / team;
+  }
+  const Team crew = [&] {
+    if constexpr (std::is_same_v<Team, kernels::BlockTeam>)
+      return kernels::BlockTeam(shared_scratch);
+    else
+      return kernels::WarpTeam(team);
+  }();
   double* storage = scratch ? scratch + (std::size_t(blockIdx.x) * teams + mine) * per_team
-                            : shared_scratch + mine * per_team;
+                            : shared_storage + mine * per_team;
   for (;;) {
     const unsigned long long k = crew.first([&] { return atomicAdd(next, 1ull); });
     if (k >= count) return;
-    TeamMember<const kernels::WarpTeam, TeamIntegrator>::run(crew, schedule, slots, std::size_t(k), storage,
-                                                             per_team);
+    TeamMember<const Team, TeamIntegrator>::run(crew, schedule, slots, std::size_t(k), storage, per_team);
     crew.sync();
   }
 }
@@ -226,41 +241,41 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
                     });
 }
 
-/// The variant's members, one per team of `team` threads (TeamMember<WarpTeam, TeamIntegrator>; the
-/// schedule's first-step scale is Integrator's, the same integrator on one lane). A block's teams keep their
-/// scratch in its shared memory where it fits (or ROTORSWEEP_GPU_SCRATCH says so), else in global memory, of
-/// which the resident teams take at most a quarter.
+/// run_slots_on_teams for one kind of team (TeamIntegrator's).
 template <class Integrator, class TeamIntegrator>
-SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team,
-                                int host_threads, const SweepControl& control, const ResultSink& sink) {
-  using Driver = TeamMember<const kernels::WarpTeam, TeamIntegrator>;
+SweepOutcome run_teams(const Scene& scene, const VariantRange& range, unsigned team, int host_threads,
+                       const SweepControl& control, const ResultSink& sink) {
+  using Team = typename TeamIntegrator::TeamType;
+  constexpr bool block_team = std::is_same_v<std::remove_const_t<Team>, kernels::BlockTeam>;
+  using Driver = TeamMember<Team, TeamIntegrator>;
   const GpuInfo& info = available_gpu();
   const Member variant = range.source->at(range.begin);
   const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
   if (!Driver::team_schedule_fits(schedule)) throw std::logic_error("a team cannot run this schedule");
 
   const auto kernel = sweep_slots_on_teams<TeamIntegrator>;
-  const GpuLaunch launch = gpu_launch();
+  GpuLaunch launch = gpu_launch();
+  if (block_team) launch.threads_per_block = int(team);  // one team per block
   const std::size_t per_team = Driver::storage_size(schedule, team);
   const std::size_t teams_per_block = std::size_t(launch.threads_per_block) / team;
+  const std::size_t exchange_bytes = block_team ? team * sizeof(double) : 0;
   const std::size_t block_bytes = teams_per_block * per_team * sizeof(double);
   int shared_limit = 0;
   check(cudaDeviceGetAttribute(&shared_limit, cudaDevAttrMaxSharedMemoryPerBlockOptin, 0),
         "querying the shared memory");
-  const bool fits = block_bytes <= std::size_t(shared_limit);
+  const bool fits = exchange_bytes + block_bytes <= std::size_t(shared_limit);
   if (launch.scratch == GpuScratch::shared && !fits)
     throw std::runtime_error("ROTORSWEEP_GPU_SCRATCH = shared: a block's " + std::to_string(teams_per_block) +
-                             " teams need " + std::to_string(block_bytes / 1024) + " KiB, more than the " +
-                             std::to_string(shared_limit / 1024) +
+                             " teams need " + std::to_string((exchange_bytes + block_bytes) / 1024) +
+                             " KiB, more than the " + std::to_string(shared_limit / 1024) +
                              " KiB of shared memory a block has; use fewer threads per block "
                              "(ROTORSWEEP_GPU_BLOCK) or global");
   const bool shared = fits && launch.scratch != GpuScratch::global;
-  if (shared)
-    check(cudaFuncSetAttribute(kernel, cudaFuncAttributeMaxDynamicSharedMemorySize, int(block_bytes)),
-          "reserving shared memory");
+  const std::size_t shared_bytes = exchange_bytes + (shared ? block_bytes : 0);
+  check(cudaFuncSetAttribute(kernel, cudaFuncAttributeMaxDynamicSharedMemorySize, int(shared_bytes)),
+        "reserving shared memory");
 
-  ChunkGrid grid{resident_blocks(kernel, launch, shared ? block_bytes : 0), launch.threads_per_block,
-                 shared ? block_bytes : 0, 0};
+  ChunkGrid grid{resident_blocks(kernel, launch, shared_bytes), launch.threads_per_block, shared_bytes, 0};
   if (!shared) {
     const double quarter = info.memory_gib * double(1ull << 30) / 4.0;
     grid.blocks =
@@ -276,6 +291,21 @@ SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, u
                       kernel<<<grid.blocks, grid.threads_per_block, grid.shared_bytes, stream>>>(
                           schedule, views, count, counter, team, global, per_team);
                     });
+}
+
+/// The variant's members, one per team of `team` threads with TeamIntegratorFor<Team> (TeamMember; the
+/// schedule's first-step scale is Integrator's, the same integrator on one lane): teams of a warp up
+/// to 32 threads, a block's team above. A block's teams keep their scratch in its shared memory where
+/// it fits (or ROTORSWEEP_GPU_SCRATCH says so), else in global memory, of which the resident teams
+/// take at most a quarter.
+template <class Integrator, template <class> class TeamIntegratorFor>
+SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team,
+                                int host_threads, const SweepControl& control, const ResultSink& sink) {
+  if (team > 32)
+    return run_teams<Integrator, TeamIntegratorFor<const kernels::BlockTeam>>(scene, range, team,
+                                                                              host_threads, control, sink);
+  return run_teams<Integrator, TeamIntegratorFor<const kernels::WarpTeam>>(scene, range, team, host_threads,
+                                                                           control, sink);
 }
 
 }  // namespace rotorsweep::ensemble::gpu

@@ -14,8 +14,8 @@ SweepOutcome run_langevin(const Scene& scene, const VariantRange& range, int hos
     if constexpr (std::is_same_v<Model, kernels::NearestNeighbourRows<double>>) {
       const unsigned team = gpu_team_size(scene, range.source->at(range.begin).rows, gpu_launch());
       if (team > 1)
-        return run_slots_on_teams<Integrator, kernels::TeamLeimkuhlerMatthews<const kernels::WarpTeam>>(
-            scene, range, team, host_threads, control, sink);
+        return run_slots_on_teams<Integrator, kernels::TeamLeimkuhlerMatthews>(scene, range, team,
+                                                                               host_threads, control, sink);
     }
     return run_slots<Model, Integrator>(scene, range, host_threads, control, sink);
   });

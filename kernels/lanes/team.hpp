@@ -141,6 +141,70 @@ class WarpTeam {
  private:
   unsigned size_, rank_, mask_;
 };
+/// A team of a whole block of `blockDim.x` threads (a power of two from 64 to 1024: several warps),
+/// for members whose rows a warp would give too many each: phases end with __syncthreads, votes are
+/// __syncthreads_and, and sums and maxima go through `exchange` (blockDim.x values of the block's
+/// shared memory) in HostTeam's butterfly order, so a block team reproduces a host team's bits too.
+class BlockTeam {
+ public:
+  __device__ explicit BlockTeam(double* exchange)
+      : size_(blockDim.x), rank_(threadIdx.x), exchange_(exchange) {}
+
+  __device__ std::size_t size() const { return size_; }
+  __device__ std::size_t rank() const { return rank_; }
+  __device__ void sync() const { __syncthreads(); }
+
+  template <class Part>
+  __device__ void each(Part&& part) const {
+    part(std::size_t(rank_));
+    __syncthreads();
+  }
+  template <class Part>
+  __device__ void one(Part&& part) const {
+    if (rank_ == 0) part();
+    __syncthreads();
+  }
+  /// value() on rank 0, handed to every rank through the exchange.
+  template <class Value>
+  __device__ unsigned long long first(Value&& value) const {
+    auto* slot = reinterpret_cast<unsigned long long*>(exchange_);
+    if (rank_ == 0) *slot = value();
+    __syncthreads();
+    const unsigned long long v = *slot;
+    __syncthreads();
+    return v;
+  }
+  template <class Value>
+  __device__ double sum(Value&& value) const {
+    return reduce(value, [](double a, double b) { return a + b; });
+  }
+  template <class Value>
+  __device__ double max(Value&& value) const {
+    return reduce(value, [](double a, double b) { return b > a ? b : a; });
+  }
+  template <class Test>
+  __device__ bool all(Test&& test) const {
+    return __syncthreads_and(test(std::size_t(rank_)) ? 1 : 0) != 0;
+  }
+
+ private:
+  /// v_i ∘ v_{i+o} for o = size/2, size/4, …, 1 (HostTeam::sum's order), the result to every rank.
+  template <class Value, class Combine>
+  __device__ double reduce(Value&& value, Combine&& combine) const {
+    exchange_[rank_] = value(std::size_t(rank_));
+    __syncthreads();
+    for (unsigned offset = size_ / 2; offset >= 1; offset /= 2) {
+      if (rank_ < offset) exchange_[rank_] = combine(exchange_[rank_], exchange_[rank_ + offset]);
+      __syncthreads();
+    }
+    const double v = exchange_[0];
+    __syncthreads();
+    return v;
+  }
+
+  unsigned size_, rank_;
+  double* exchange_;
+};
 #endif
 
 }  // namespace rotorsweep::kernels

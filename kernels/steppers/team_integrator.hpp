@@ -33,6 +33,7 @@ template <class Team, class Stepper>
 class TeamIntegrator {
  public:
   using Model = typename Stepper::Model;
+  using TeamType = Team;
   static constexpr bool stochastic = false;
 
   ROTORSWEEP_HD TeamIntegrator(const Model& model, std::size_t ranks, Tolerances tol, StepLimits limits,

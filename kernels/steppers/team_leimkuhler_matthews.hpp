@@ -27,6 +27,7 @@ template <class Team>
 class TeamLeimkuhlerMatthews {
  public:
   using Model = NearestNeighbourRows<double>;
+  using TeamType = Team;
   using Settings = typename LeimkuhlerMatthews<Model>::Settings;
   static constexpr bool stochastic = true;
   static constexpr std::size_t partial_stride = 5;  ///< team_evaluate's values per rank

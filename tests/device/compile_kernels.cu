@@ -1,7 +1,5 @@
-// The kernels compiled for a GPU: the row model, both stepper families and the adaptive
-// integrator instantiated on the double lane inside a __global__ function, and on warp teams the stage
-// solve, a member's integration and whole members through their slots, at T = 0 and T > 0 (nvcc, no GPU
-// needed).
+// The kernels compiled for a GPU (nvcc, no GPU needed): the row model and both stepper families on the
+// double lane, and on warp and block teams the stage solve and whole members at T = 0 and T > 0.
 #include "ensemble/engine/team_member.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
@@ -99,4 +97,15 @@ __global__ void run_thermal_members_on_teams(rotorsweep::ensemble::SlotSchedule 
   const WarpTeam crew(team_size);
   rotorsweep::ensemble::TeamMember<const WarpTeam, TeamLeimkuhlerMatthews<const WarpTeam>>::run(
       crew, schedule, slots, team, storage + team * per_team, per_team);
+}
+
+/// Members, one per block team of blockDim.x threads (several warps; kernels/lanes/team.hpp BlockTeam).
+__global__ void run_members_on_blocks(rotorsweep::ensemble::SlotSchedule schedule,
+                                      rotorsweep::ensemble::SlotViews slots, double* storage,
+                                      std::size_t per_team) {
+  extern __shared__ double exchange[];
+  using Stepper = TeamRosenbrock<const BlockTeam, rodas4p2_tableau>;
+  const BlockTeam crew(exchange);
+  rotorsweep::ensemble::TeamMember<const BlockTeam, TeamIntegrator<const BlockTeam, Stepper>>::run(
+      crew, schedule, slots, blockIdx.x, storage + blockIdx.x * per_team, per_team);
 }

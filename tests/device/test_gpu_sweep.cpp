@@ -162,11 +162,12 @@ TEST_CASE("a member per GPU team gives a host team's bits, for every team size, 
   check_sizes.template operator()<*kernels::parse_stepper("rodas4p2")>(
       io::parse_scene_text(curve_scene("rodas4p2", 20, "1e-8") +
                                "[disorder]\nA = 1e-4\n[observables]\nestimators = true\nenergy = "
-                               "true\nmoments = true\n",
+                               "true\nmoments = true\nrow_profiles = true\n",
                            "teams"));
   const auto thermal = io::parse_scene_text(
       "[model]\nrows = 20\n[drive]\ng = [0.01]\n[sweep]\nA = [1, 6, 12]\n[initial]\nkinds = [\"random\"]\n"
-      "replicas = 2\n[thermal]\ntemperature = 0.05\nsteps_per_period = 200\n[observables]\nenergy = true\n",
+      "replicas = 2\n[thermal]\ntemperature = 0.05\nsteps_per_period = 200\n[observables]\nenergy = true\n"
+      "row_profiles = true\n",
       "teams-thermal");
   const auto members = ensemble::plan_members(thermal);
   for (const int team : {2, 8, 32}) {
@@ -178,6 +179,21 @@ TEST_CASE("a member per GPU team gives a host team's bits, for every team size, 
                               kernels::TeamLeimkuhlerMatthews<kernels::HostTeam>>(thermal, std::size_t(team));
     std::string first;
     INFO("T > 0, team " << team);
+    CHECK(testing::count_differences(host, gpu, first) == 0);
+    INFO(first);
+    CHECK(first.empty());
+  }
+  const auto wide = io::parse_scene_text(
+      "[model]\nrows = 128\n[drive]\ng = [0.0011]\n[sweep]\nA = [1, 6, 12]\n[initial]\nkinds = [\"AFM\"]\n"
+      "noise = 0.01\n[disorder]\nA = 1e-6\n[schedule]\nrelax_periods = 1\naverage_periods = 1\n"
+      "[numerics]\nrtol = 1e-8\natol = 1e-11\n",
+      "block-teams");
+  for (const int team : {64, 128}) {  // teams of several warps (BlockTeam)
+    const ScopedVariable mapping("ROTORSWEEP_GPU_TEAM", std::to_string(team));
+    const auto gpu = run_on(wide, ensemble::Device::gpu, ensemble::plan_members(wide));
+    const auto host = testing::on_host_team<*kernels::parse_stepper("rodas4p2")>(wide, std::size_t(team));
+    std::string first;
+    INFO("N = 128, team " << team);
     CHECK(testing::count_differences(host, gpu, first) == 0);
     INFO(first);
     CHECK(first.empty());

@@ -259,6 +259,16 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
       link[j] = V(0.5) + V(0.5) * w.cos_link[j];
     }
   }
+  /// row_profile over rows [begin, end) (a team rank's), their f into `f` as evaluate_range's: the
+  /// same values per row, bit for bit.
+  ROTORSWEEP_HD void row_profile_range(Workspace& w, const V* theta, V t, V* f, V* drive, V* link,
+                                       std::size_t begin, std::size_t end) const {
+    evaluate_range(w, theta, t, f, begin, end);
+    for (std::size_t j = begin; j < end; ++j) {
+      drive[j] = A_ * (A_row_[j] * w.sin_lag[j]);
+      link[j] = V(0.5) + V(0.5) * w.cos_link[j];
+    }
+  }
 
  private:
   // Every loop below is written once for both cases: per_row = false is the uniform model (the

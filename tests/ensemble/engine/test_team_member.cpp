@@ -57,6 +57,13 @@ void check_teams_follow(const std::string& text) {
         CHECK(b.mean(channel) == Approx(a.mean(channel)).epsilon(1e-8).margin(1e-12));
       }
       CHECK(b.steps_accepted + b.steps_rejected == Approx(a.steps_accepted + a.steps_rejected).epsilon(0.01));
+      REQUIRE(b.row_dissipation.size() == a.row_dissipation.size());
+      REQUIRE(b.link_alignment.size() == a.link_alignment.size());
+      for (std::size_t j = 0; j < a.row_dissipation.size(); ++j) {
+        INFO("row " << j);
+        CHECK(b.row_dissipation[j] == Approx(a.row_dissipation[j]).epsilon(1e-8).margin(1e-12));
+        CHECK(b.link_alignment[j] == Approx(a.link_alignment[j]).epsilon(1e-9));
+      }
     }
   }
 }
@@ -75,11 +82,11 @@ TEST_CASE("a team runs uniform rows as one thread does, the period wrapped", "[t
   check_teams_follow(rows_20 + "wrap_angles = true\n[sweep]\nA = [1.0, 12.0]\n");
 }
 
-TEST_CASE("a team carries every quadrature as one thread does: W, S, H and the moments",
+TEST_CASE("a team carries every quadrature and the row profiles as one thread does: W, S, H, the moments",
           "[team][device_member]") {
   check_teams_follow(rows_20 +
                      "[sweep]\nA = [1.0, 6.0, 12.0]\n[disorder]\nA = 1e-6\n[observables]\nestimators = true\n"
-                     "energy = true\nmoments = true\n");
+                     "energy = true\nmoments = true\nrow_profiles = true\n");
 }
 
 TEST_CASE("a team of eight gives the CPU lanes' labels on the examples but where rounding decides them",
@@ -109,7 +116,8 @@ TEST_CASE("at T > 0 a team steps a member along the lanes' path: the same noise,
   const auto scene = io::parse_scene_text(
       rows_20 +
           "[sweep]\nA = [1.0, 6.0]\n[disorder]\nA = 1e-3\n[thermal]\ntemperature = 0.05\n"
-          "steps_per_period = 200\nseed = 3\n[observables]\nenergy = true\nmoments = true\n",
+          "steps_per_period = 200\nseed = 3\n[observables]\nenergy = true\nmoments = true\nrow_profiles = "
+          "true\n",
       "team-thermal");
   REQUIRE(scene.thermal.on());
   const auto thread = testing::on_one_thread<Model, Langevin>(scene);
@@ -123,6 +131,9 @@ TEST_CASE("at T > 0 a team steps a member along the lanes' path: the same noise,
       CHECK(b.periods_run == a.periods_run);
       CHECK(b.steps_accepted == a.steps_accepted);
       CHECK(b.theta_final == a.theta_final);  // the path's bits: only the quadratures are summed otherwise
+      CHECK(b.row_dissipation == a.row_dissipation);  // and the row profiles, per row, with them
+      CHECK(b.link_alignment == a.link_alignment);
+      CHECK_FALSE(a.row_dissipation.empty());
       CHECK(b.slips_per_period() == a.slips_per_period());
       CHECK(b.regime == a.regime);
       CHECK(b.dissipation() == Approx(a.dissipation()).epsilon(1e-12).margin(1e-14));
