@@ -43,7 +43,7 @@ __global__ void sweep_slots(SlotSchedule schedule, SlotViews slots, unsigned lon
 }
 
 /// A member per team (TeamMember): of `team` threads of a warp (WarpTeam), or of the whole block
-/// (BlockTeam, team = 0: its exchange is the first blockDim.x values of the block's shared memory). The
+/// (BlockTeam, team = blockDim.x: its exchange is the first blockDim.x values of the shared memory). The
 /// team's first thread takes the next member from the counter for all; the team's scratch is its
 /// part of the block's shared memory or, where `scratch` is given, of that global buffer (per_team
 /// values each).

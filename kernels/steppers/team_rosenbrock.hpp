@@ -39,7 +39,7 @@ class TeamRosenbrock {
         df_dt_(arena.take(n_)),
         argument_(arena.take(n_)),
         stages_(arena.take(std::size_t(stages) * n_)),
-        dq_dy_(arena.take(quadratures * n_)),
+        dq_dy_(arena.take(carried_ * n_)),
         scratch_(arena.take(n_)),
         partial_(arena.take(quadratures * ranks)) {}
 
