@@ -70,23 +70,56 @@ class DenseSymmetric {
   /// Factorises M = shift·I − J: factor_ holds L below the diagonal (unit diagonal implied) within
   /// the envelope.
   ROTORSWEEP_HD void factor(V shift) {
-    const std::size_t n = n_;
-    for (std::size_t i = 0; i < n * n; ++i) factor_[i] = lane_neg(entries_[i]);
-    for (std::size_t i = 0; i < n; ++i) factor_[i * n + i] += shift;
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t fk = first(k);
-      V d = factor_[k * n + k];
-      for (std::size_t m = fk; m < k; ++m) d -= factor_[k * n + m] * factor_[k * n + m] * pivot_[m];
-      pivot_[k] = d;
-      inv_pivot_[k] = V(1.0) / d;
-      for_rows_below(k, [&](std::size_t i) {
-        const std::size_t fi = first(i);
-        V s = factor_[i * n + k];
-        for (std::size_t m = fi > fk ? fi : fk; m < k; ++m)
-          s -= factor_[i * n + m] * factor_[k * n + m] * pivot_[m];
-        factor_[i * n + k] = s * inv_pivot_[k];
-      });
+    const auto every_row = [](std::size_t) { return true; };
+    start_factor(shift, every_row);
+    for (std::size_t k = 0; k < n_; ++k) {
+      set_pivot(k, column_pivot(k));
+      eliminate_column(k, inv_pivot_[k], every_row);
     }
+    finish_factor(shift);
+  }
+
+  // factor() in steps, for a team that shares the matrix (TeamDenseSymmetric): each step's rows are
+  // independent of one another, and every value is computed as factor() computes it.
+
+  /// M's entries into the factor, for the rows where mine(i).
+  template <class Mine>
+  ROTORSWEEP_HD void start_factor(V shift, Mine&& mine) {
+    const std::size_t n = n_;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!mine(i)) continue;
+      for (std::size_t m = 0; m < n; ++m) factor_[i * n + m] = lane_neg(entries_[i * n + m]);
+      factor_[i * n + i] += shift;
+    }
+  }
+  /// Column k's pivot, once L's columns before k and their pivots are in place.
+  ROTORSWEEP_HD V column_pivot(std::size_t k) const {
+    const std::size_t n = n_;
+    V d = factor_[k * n + k];
+    for (std::size_t m = first(k); m < k; ++m) d -= factor_[k * n + m] * factor_[k * n + m] * pivot_[m];
+    return d;
+  }
+  /// Column k's pivot stored (by one rank of a team).
+  ROTORSWEEP_HD void set_pivot(std::size_t k, V d) {
+    pivot_[k] = d;
+    inv_pivot_[k] = V(1.0) / d;
+  }
+  /// L's column k in the rows below k where mine(i), with 1 / column k's pivot.
+  template <class Mine>
+  ROTORSWEEP_HD void eliminate_column(std::size_t k, V inverse_pivot, Mine&& mine) {
+    const std::size_t n = n_, fk = first(k);
+    for_rows_below(k, [&](std::size_t i) {
+      if (!mine(i)) return;
+      const std::size_t fi = first(i);
+      V s = factor_[i * n + k];
+      for (std::size_t m = fi > fk ? fi : fk; m < k; ++m)
+        s -= factor_[i * n + m] * factor_[k * n + m] * pivot_[m];
+      factor_[i * n + k] = s * inverse_pivot;
+    });
+  }
+  /// The inertia test and the strict-FM closed form from the finished factor.
+  ROTORSWEEP_HD void finish_factor(V shift) {
+    const std::size_t n = n_;
     positive_definite_ = inv_pivot_[0] > V(0.0);
     for (std::size_t i = 1; i < n; ++i) positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
 

@@ -1,10 +1,11 @@
 // The kernels compiled for a GPU (nvcc, no GPU needed): the row model and both stepper families on the
-// double lane, and on warp and block teams the stage solve and whole members at T = 0 and T > 0.
+// double lane, and on warp and block teams the stage solves and whole members at T = 0 and T > 0.
 #include "ensemble/engine/team_member.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/linear/team_cyclic_tridiagonal.hpp"
+#include "kernels/linear/team_dense_symmetric.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -39,25 +40,31 @@ template __global__ void advance_members<stepper_at<2>::type::type<Model>>(doubl
                                                                            const double*, const double*,
                                                                            double*);
 
-/// The stage solve on a warp team: each team of `team_size` threads factors and solves one member's
-/// ring (kernels/linear/team_cyclic_tridiagonal.hpp) over its part of `storage`.
+/// The stage solves on a warp team: each team of `team_size` threads factors and solves one member's
+/// ring (kernels/linear/team_cyclic_tridiagonal.hpp) and its dense coupled rows
+/// (team_dense_symmetric.hpp) over its part of `storage`.
 __global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_t rows, unsigned team_size,
                                double* rhs, int* definite) {
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
   LaneArena<double> arena(storage + team * per_team, per_team);
   TeamCyclicTridiagonal<const WarpTeam> J(rows, team_size, arena);
+  TeamDenseSymmetric<const WarpTeam> coupled(rows, team_size, arena);
   crew.sync();
   crew.each([&](std::size_t rank) {
     const TeamRows mine = team_rows(rows, team_size, rank);
     for (std::size_t i = mine.begin; i < mine.end; ++i) {
       J.diag(i) = -2.0 + 0.01 * double(i % 7);
       J.off(i) = 0.3;
+      for (std::size_t k = 0; k < rows; ++k)
+        coupled.entry(i, k) = i == k ? -2.0 : 0.1 / double(1 + (i + k) % 5);
     }
   });
   J.factor(crew, 3.0);
   J.solve(crew, rhs + team * rows);
-  if (crew.rank() == 0) definite[team] = J.positive_definite() ? 1 : 0;
+  coupled.factor(crew, 3.0);
+  coupled.solve(crew, rhs + team * rows);
+  if (crew.rank() == 0) definite[team] = J.positive_definite() && coupled.positive_definite() ? 1 : 0;
 }
 
 /// A member of the nearest-neighbour rows integrated by a warp team over one period (team_integrator.hpp).

@@ -1,0 +1,71 @@
+// The dense stage solve of coupled rows (docs/model.md §1 "Extended couplings") on a team of threads
+// (docs/architecture.md "Teams"): DenseSymmetric's LDLᵀ with each column's rows spread over the ranks.
+#pragma once
+
+#include <cstddef>
+
+#include "kernels/lanes/host_device.hpp"
+#include "kernels/lanes/lane_arena.hpp"
+#include "kernels/lanes/team.hpp"
+#include "kernels/linear/dense_symmetric.hpp"
+
+namespace rotorsweep::kernels {
+
+/// DenseSymmetric<double> of one member, shared by a team: the factor goes column by column, every
+/// rank computing the column's pivot alike and L's entries in its rows (row i on rank i mod R), one
+/// barrier per column; the solve's two substitutions, a chain of dependencies, run on rank 0; J x
+/// goes row by row over the ranks. Every value is computed as DenseSymmetric computes it, so the
+/// factor, the solution and the inertia test have its bits.
+template <class Team>
+class TeamDenseSymmetric {
+ public:
+  static constexpr std::size_t storage_size(std::size_t n) { return DenseSymmetric<double>::storage_size(n); }
+
+  ROTORSWEEP_HD TeamDenseSymmetric(std::size_t n, std::size_t ranks, LaneArena<double>& arena)
+      : ranks_(ranks), dense_(n, arena) {}
+
+  ROTORSWEEP_HD std::size_t size() const { return dense_.size(); }
+  ROTORSWEEP_HD void set_band(std::size_t band, bool wrap) { dense_.set_band(band, wrap); }
+  ROTORSWEEP_HD double& entry(std::size_t j, std::size_t k) { return dense_.entry(j, k); }
+  ROTORSWEEP_HD const double& entry(std::size_t j, std::size_t k) const { return dense_.entry(j, k); }
+  ROTORSWEEP_HD bool positive_definite() const { return dense_.positive_definite(); }
+  ROTORSWEEP_HD void keep_constant_solutions(bool keep) { dense_.keep_constant_solutions(keep); }
+
+  /// Factorises M = shift·I − J (every rank, together).
+  ROTORSWEEP_HD void factor(Team& team, double shift) {
+    const std::size_t n = dense_.size();
+    team.each([&](std::size_t r) { dense_.start_factor(shift, [&](std::size_t i) { return mine(i, r); }); });
+    for (std::size_t k = 0; k < n; ++k)
+      team.each([&](std::size_t r) {
+        const double d = dense_.column_pivot(k);  // alike on every rank: row k is complete
+        if (mine(k, r)) dense_.set_pivot(k, d);
+        dense_.eliminate_column(k, 1.0 / d, [&](std::size_t i) { return mine(i, r); });
+      });
+    dense_.finish_factor(shift);
+  }
+
+  /// Solves M x = r in place, with M from the last factor(); r is the team's.
+  ROTORSWEEP_HD void solve(Team& team, double* r) const {
+    team.one([&] { dense_.solve(r); });
+  }
+
+  /// y += J x, each rank its rows.
+  ROTORSWEEP_HD void multiply_add(Team& team, const double* x, double* y) const {
+    const std::size_t n = dense_.size();
+    team.each([&](std::size_t r) {
+      for (std::size_t j = r; j < n; j += ranks_) {
+        double sum = 0.0;
+        for (std::size_t k = 0; k < n; ++k) sum += dense_.entry(j, k) * x[k];
+        y[j] += sum;
+      }
+    });
+  }
+
+ private:
+  ROTORSWEEP_HD bool mine(std::size_t row, std::size_t rank) const { return row % ranks_ == rank; }
+
+  std::size_t ranks_;
+  DenseSymmetric<double> dense_;
+};
+
+}  // namespace rotorsweep::kernels
