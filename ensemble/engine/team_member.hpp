@@ -4,8 +4,8 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 
+#include "ensemble/engine/device_period_record.hpp"
 #include "ensemble/engine/member_progress.hpp"
 #include "ensemble/engine/member_result.hpp"
 #include "ensemble/engine/member_slots.hpp"
@@ -101,13 +101,9 @@ struct TeamMember {
       if (state.status != kernels::LaneStatus::ok) break;
       if (state.t < state.t_stop) continue;
 
-      PeriodRecord record;
-      record_quadratures(
-          s.channels, Q, record, [&](std::size_t p) { return state.quad[p]; }, Model::period, state.t);
-      if (Q.alignment) alignment.end_period(0, record);
-      if (swing_on) swing.end_period(0, s.error_rtol, s.atol, record);
-      if (s.slips) slips.end_period(0, record);
-      if constexpr (stochastic) record[Channel::dissipation_error] = std::numeric_limits<double>::quiet_NaN();
+      const PeriodRecord record = device_period_record(
+          s, [&](std::size_t p) { return state.quad[p]; }, Model::period, state.t, alignment, swing, swing_on,
+          slips, stochastic);
       const std::size_t closed = std::size_t(progress.periods());
       double* end = slots.end_states + (k * s.end_capacity + closed % s.end_capacity) * n;
       each_row(team, n, [&](std::size_t j) { end[j] = state.y[j]; });
