@@ -246,8 +246,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 4096));
   gpu_cmd->add_flag("!--no-curve", bench_gpu.curve, "Skip the 10^6-member curve");
   gpu_cmd->add_flag("--curve-only", bench_gpu.curve_only, "Only the 10^6-member curve");
-  gpu_cmd->add_option("--rows", bench_gpu.rows, "The scenes to measure, by N")
-      ->check(CLI::IsMember({2, 20, 128, 1024}))
+  gpu_cmd
+      ->add_option("--rows", bench_gpu.rows,
+                   "The scenes to measure, by N (48: dipolar open rows, as the slider's)")
+      ->check(CLI::IsMember({2, 20, 48, 128, 1024}))
       ->delimiter(',')
       ->capture_default_str();
   gpu_cmd

@@ -19,11 +19,11 @@
 
 namespace rotorsweep::ensemble {
 
-/// Runs members of the nearest-neighbour rows on a team with Integrator (TeamIntegrator<Team, Stepper>,
-/// or TeamLeimkuhlerMatthews<Team> at T > 0): per step and per period what DeviceMember does on one
+/// Runs members of a row model on a team with Integrator (TeamIntegrator<Team, Stepper>, or
+/// TeamLeimkuhlerMatthews<Team, Model> at T > 0): per step and per period what DeviceMember does on one
 /// thread (the same reducers, records, MemberProgress, wrap and slot), the rows split among the ranks
-/// and the team's sums where DeviceMember sums over rows. It runs every observable of uniform or
-/// disordered rows, the row profiles included.
+/// and the team's sums where DeviceMember sums over rows. It runs every observable of nearest-neighbour
+/// rows (uniform or disordered) and of coupling tables (periodic or open), the row profiles included.
 template <class Team, class Integrator>
 struct TeamMember {
   using Model = typename Integrator::Model;
@@ -139,9 +139,9 @@ struct TeamMember {
   struct Parts {
     Model model;
     Integrator integrator;
-    double* theta;                                     ///< the state θ
-    double* theta_before;                              ///< θ at the start of an attempt (slip counter)
-    TeamRowProfileIntegral<Team, stochastic> profile;  ///< sized only where the schedule asks for it
+    double* theta;         ///< the state θ
+    double* theta_before;  ///< θ at the start of an attempt (slip counter)
+    TeamRowProfileIntegral<Team, Model, stochastic> profile;  ///< sized only where the schedule asks for it
 
     ROTORSWEEP_HD Parts(const SlotSchedule& s, std::size_t ranks, kernels::LaneArena<double>& arena)
         : model(s.rows, arena, s.quadratures),

@@ -8,27 +8,28 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
-#include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/steppers/team_evaluation.hpp"
 #include "kernels/steppers/team_integrator.hpp"
 
 namespace rotorsweep::ensemble {
 
-/// RowProfileIntegral<NearestNeighbourRows<double>, stochastic> for one member on a team: each step
-/// integrated by two-point Gauss–Legendre quadrature of the cubic Hermite interpolant (at T > 0 the
-/// profile at each step's start), with the same values per row, so on the same path it gives the
-/// same bits. The interpolant's nodes of every rank are in place before any rank evaluates the
-/// profile there (its links read the next rank's first row).
-template <class Team, bool stochastic>
+/// RowProfileIntegral<Model, stochastic> of a row model on the double lane for one member on a team:
+/// each step integrated by two-point Gauss–Legendre quadrature of the cubic Hermite interpolant (at
+/// T > 0 the profile at each step's start), with the same values per row, so on the same path it
+/// gives the same bits. The interpolant's nodes of every rank are in place before any rank evaluates the
+/// profile there (its links read the next rank's first row), and so is every rank's trigonometry
+/// where the model's range forms read it across ranks (kernels::team_trigonometry).
+template <class Team, class Model, bool stochastic>
 class TeamRowProfileIntegral {
  public:
-  using Model = kernels::NearestNeighbourRows<double>;
-
   /// Takes its views for N = rows (none for rows = 0: switched off).
   ROTORSWEEP_HD TeamRowProfileIntegral(std::size_t rows, kernels::LaneArena<double>& arena)
       : n_(rows), work_(rows, arena), row_(rows, arena) {}
 
   /// The member starts at state s: its sums restart (and f there is the interpolant's first slope).
   ROTORSWEEP_HD void start(Team& team, const Model& model, const kernels::TeamMemberState& s) {
+    links_ = model.links();
+    if constexpr (!stochastic) kernels::team_trigonometry(team, model, work_, s.y, s.t);
     each_range(team, [&](std::size_t begin, std::size_t end) {
       for (std::size_t j = begin; j < end; ++j) row_.drive_sum[j] = row_.link_sum[j] = 0.0;
       if constexpr (!stochastic) model.evaluate_range(work_, s.y, s.t, row_.f_before, begin, end);
@@ -37,6 +38,7 @@ class TeamRowProfileIntegral {
 
   ROTORSWEEP_HD void before_step(Team& team, const Model& model, const kernels::TeamMemberState& s) {
     t_before_ = s.t;
+    if constexpr (stochastic) kernels::team_trigonometry(team, model, work_, s.y, s.t);
     each_range(team, [&](std::size_t begin, std::size_t end) {
       if constexpr (stochastic)
         model.row_profile_range(work_, s.y, s.t, row_.scratch, row_.drive_node, row_.link_node, begin, end);
@@ -53,6 +55,7 @@ class TeamRowProfileIntegral {
         add(h, row_.drive_node, row_.link_node, begin, end);
       });
     } else {
+      kernels::team_trigonometry(team, model, work_, s.y, s.t);
       each_range(team, [&](std::size_t begin, std::size_t end) {
         model.evaluate_range(work_, s.y, s.t, row_.f_now, begin, end);
       });
@@ -65,14 +68,17 @@ class TeamRowProfileIntegral {
     }
   }
 
-  /// The period just ended: writes its R_j (rows) then its link integrals (N links) to `out` and
-  /// starts the next period's sums.
+  /// The period just ended: writes its R_j (rows) then its link integrals (links: N periodic, N − 1
+  /// open) to `out` and starts the next period's sums.
   ROTORSWEEP_HD void take_period(Team& team, double* out) {
     each_range(team, [&](std::size_t begin, std::size_t end) {
       for (std::size_t j = begin; j < end; ++j) {
         out[j] = row_.drive_sum[j];
+        row_.drive_sum[j] = 0.0;
+      }
+      for (std::size_t j = begin; j < end && j < links_; ++j) {
         out[n_ + j] = row_.link_sum[j];
-        row_.drive_sum[j] = row_.link_sum[j] = 0.0;
+        row_.link_sum[j] = 0.0;
       }
     });
   }
@@ -98,6 +104,7 @@ class TeamRowProfileIntegral {
         row_.theta_node[j] = start * row_.theta_before[j] + start_slope * row_.f_before[j] +
                              end * theta_now[j] + end_slope * row_.f_now[j];
     });
+    kernels::team_trigonometry(team, model, work_, row_.theta_node, t_before_ + s * h);
     each_range(team, [&](std::size_t begin, std::size_t stop) {
       model.row_profile_range(work_, row_.theta_node, t_before_ + s * h, row_.scratch, row_.drive_node,
                               row_.link_node, begin, stop);
@@ -107,14 +114,12 @@ class TeamRowProfileIntegral {
 
   ROTORSWEEP_HD void add(double weight, const double* drive, const double* link, std::size_t begin,
                          std::size_t end) {
-    for (std::size_t j = begin; j < end; ++j) {
-      row_.drive_sum[j] += weight * drive[j];
-      row_.link_sum[j] += weight * link[j];
-    }
+    for (std::size_t j = begin; j < end; ++j) row_.drive_sum[j] += weight * drive[j];
+    for (std::size_t j = begin; j < end && j < links_; ++j) row_.link_sum[j] += weight * link[j];
   }
 
-  std::size_t n_;
-  Model::Workspace work_;
+  std::size_t n_, links_ = 0;
+  typename Model::Workspace work_;
   RowProfileArrays<double> row_;  ///< the per-row arrays, each rank its rows
   double t_before_ = 0.0;
 };

@@ -19,15 +19,15 @@ template <kernels::StepperId id, class Model>
 using DeviceAdaptiveIntegrator =
     kernels::AdaptiveIntegrator<Model, typename kernels::stepper_at<id>::type::template type<Model>>;
 
-template <class Team, const kernels::RosenbrockTableau& Table>
-kernels::TeamRosenbrock<Team, Table> team_stepper_of(const kernels::RosenbrockTableau&);
-template <class Team, const kernels::ExplicitTableau& Table>
+template <class Team, const kernels::RosenbrockTableau& Table, class Model>
+kernels::TeamRosenbrock<Team, Table, Model> team_stepper_of(const kernels::RosenbrockTableau&);
+template <class Team, const kernels::ExplicitTableau& Table, class Model>
 void team_stepper_of(const kernels::ExplicitTableau&);
 
-/// Stepper `id` on a team of the nearest-neighbour rows (TeamRosenbrock), or void for the explicit
-/// stepper, which has no team form.
-template <kernels::StepperId id, class Team>
-using DeviceTeamStepper = decltype(team_stepper_of<Team, kernels::stepper_at<id>::type::tableau>(
+/// Stepper `id` on a team of Model (TeamRosenbrock), or void for the explicit stepper, which has no
+/// team form.
+template <kernels::StepperId id, class Team, class Model>
+using DeviceTeamStepper = decltype(team_stepper_of<Team, kernels::stepper_at<id>::type::tableau, Model>(
     kernels::stepper_at<id>::type::tableau));
 
 /// Calls f.template operator()<Model>() with the scene's row model on the double lane, as

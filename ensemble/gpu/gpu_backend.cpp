@@ -22,7 +22,8 @@ std::string device_label(const Scene& scene) {
 }
 
 std::size_t gpu_max_rows(const Scene& scene) {
-  if (gpu_team_size(scene, gpu_team_max_rows, gpu_launch()) > 1) return gpu_team_max_rows;
+  if (gpu_team_size(scene, gpu_team_max_rows, gpu_launch()) > 1)
+    return scene.couplings.nearest_neighbour() ? gpu_team_max_rows : gpu_coupled_team_max_rows;
   return with_device_driver(scene, [&]<class Model, class Integrator>() {
     SlotSchedule s;  // what the scratch depends on: rows, quadratures, row profiles
     s.quadratures = scene.observables.quadratures();

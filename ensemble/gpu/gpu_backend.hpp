@@ -32,12 +32,14 @@ std::string device_label(const Scene& scene);
 inline constexpr std::size_t gpu_thread_scratch = 8192;
 
 /// The most rows a member on a team may have: its scratch lives in global or shared memory, sized
-/// at launch; the limit keeps one team's (about 60 N values) well below a GPU's memory.
+/// at launch; the limits keep one team's well below a GPU's memory: about 60 N values for nearest
+/// neighbours, and for a coupling table its two dense N × N matrices (268 MB at 4096 rows).
 inline constexpr std::size_t gpu_team_max_rows = 1 << 16;
+inline constexpr std::size_t gpu_coupled_team_max_rows = 1 << 12;
 
 /// The most rows one member may have on the GPU with the scene's model and stepper: gpu_team_max_rows
-/// where it runs on teams, else what a thread's scratch of a fixed size holds (an even number like
-/// every row count).
+/// (gpu_coupled_team_max_rows with a coupling table) where it runs on teams, else what a thread's
+/// scratch of a fixed size holds (an even number like every row count).
 std::size_t gpu_max_rows(const Scene& scene);
 
 /// Runs the members of `range` (one variant) on the GPU; results go to `sink` as each chunk

@@ -53,10 +53,9 @@ GpuLaunch gpu_launch() {
 }
 
 bool gpu_teams_fit(const Scene& scene) {
-  if (!scene.couplings.nearest_neighbour()) return false;
   if (scene.thermal.on()) return true;  // the Langevin stepper, whatever numerics.stepper says
   return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-    return !std::is_void_v<DeviceTeamStepper<id, kernels::HostTeam>>;
+    return !std::is_void_v<DeviceTeamStepper<id, kernels::HostTeam, kernels::NearestNeighbourRows<double>>>;
   });
 }
 

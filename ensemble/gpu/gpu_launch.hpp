@@ -28,8 +28,8 @@ struct GpuLaunch {
 /// ROTORSWEEP_GPU_SCRATCH (shared or global); a bad value throws std::runtime_error naming it.
 GpuLaunch gpu_launch();
 
-/// Whether the scene's members can run on a team (ensemble/engine/team_member.hpp): nearest-neighbour
-/// rows at T > 0 or with a linearly implicit stepper.
+/// Whether the scene's members can run on a team (ensemble/engine/team_member.hpp): rows (nearest
+/// neighbours or a coupling table) at T > 0 or with a linearly implicit stepper.
 bool gpu_teams_fit(const Scene& scene);
 
 /// Threads per member of N = `rows`: 1 where teams do not fit the scene; else launch.team where set;

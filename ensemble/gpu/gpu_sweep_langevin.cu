@@ -1,22 +1,25 @@
 // The GPU sweep at temperature T > 0 (docs/model.md §7): the Langevin stepper on the row model
 // (nearest neighbours or a coupling table), a member per thread or per team, in its own translation unit.
-#include <type_traits>
-
 #include "ensemble/gpu/gpu_runner.cuh"
 #include "kernels/steppers/team_leimkuhler_matthews.hpp"
 
 namespace rotorsweep::ensemble::gpu {
 
+/// The Langevin stepper for Model on a team of kind Team.
+template <class Model>
+struct LangevinOnTeams {
+  template <class Team>
+  using type = kernels::TeamLeimkuhlerMatthews<Team, Model>;
+};
+
 SweepOutcome run_langevin(const Scene& scene, const VariantRange& range, int host_threads,
                           const SweepControl& control, const ResultSink& sink) {
   return with_device_model(scene, [&]<class Model>() {
     using Integrator = kernels::LeimkuhlerMatthews<Model>;
-    if constexpr (std::is_same_v<Model, kernels::NearestNeighbourRows<double>>) {
-      const unsigned team = gpu_team_size(scene, range.source->at(range.begin).rows, gpu_launch());
-      if (team > 1)
-        return run_slots_on_teams<Integrator, kernels::TeamLeimkuhlerMatthews>(scene, range, team,
-                                                                               host_threads, control, sink);
-    }
+    const unsigned team = gpu_team_size(scene, range.source->at(range.begin).rows, gpu_launch());
+    if (team > 1)
+      return run_slots_on_teams<Integrator, LangevinOnTeams<Model>::template type>(
+          scene, range, team, host_threads, control, sink);
     return run_slots<Model, Integrator>(scene, range, host_threads, control, sink);
   });
 }

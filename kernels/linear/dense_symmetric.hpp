@@ -55,13 +55,15 @@ class DenseSymmetric {
     entry(k, j) += x;
   }
 
+  /// (J x)_j, summed over the columns in order.
+  ROTORSWEEP_HD V row_product(std::size_t j, const V* x) const {
+    V sum(0.0);
+    for (std::size_t k = 0; k < n_; ++k) sum += entry(j, k) * x[k];
+    return sum;
+  }
   /// y += J x
   ROTORSWEEP_HD void multiply_add(const V* x, V* y) const {
-    for (std::size_t j = 0; j < n_; ++j) {
-      V sum(0.0);
-      for (std::size_t k = 0; k < n_; ++k) sum += entry(j, k) * x[k];
-      y[j] += sum;
-    }
+    for (std::size_t j = 0; j < n_; ++j) y[j] += row_product(j, x);
   }
 
   ROTORSWEEP_HD lane_mask<V> positive_definite() const { return positive_definite_; }

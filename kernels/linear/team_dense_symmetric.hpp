@@ -49,15 +49,13 @@ class TeamDenseSymmetric {
     team.one([&] { dense_.solve(r); });
   }
 
+  /// (J x)_j, as DenseSymmetric's.
+  ROTORSWEEP_HD double row_product(std::size_t j, const double* x) const { return dense_.row_product(j, x); }
   /// y += J x, each rank its rows.
   ROTORSWEEP_HD void multiply_add(Team& team, const double* x, double* y) const {
     const std::size_t n = dense_.size();
     team.each([&](std::size_t r) {
-      for (std::size_t j = r; j < n; j += ranks_) {
-        double sum = 0.0;
-        for (std::size_t k = 0; k < n; ++k) sum += dense_.entry(j, k) * x[k];
-        y[j] += sum;
-      }
+      for (std::size_t j = r; j < n; j += ranks_) y[j] += dense_.row_product(j, x);
     });
   }
 

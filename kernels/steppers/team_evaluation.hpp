@@ -1,27 +1,46 @@
-// The nearest-neighbour rows' right-hand side at one point on a team (docs/architecture.md "Teams"):
-// f over each rank's rows, and the quadratures' integrands (docs/model.md §3) from team sums.
+// A row model's right-hand side at one point on a team (docs/architecture.md "Teams"): f over each
+// rank's rows, and the quadratures' integrands (docs/model.md §3) from team sums.
 #pragma once
 
 #include <cstddef>
 
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/team.hpp"
-#include "kernels/models/rows/nearest_neighbour_rows.hpp"
 
 namespace rotorsweep::kernels {
 
+/// Whether Model's range forms read the trigonometry of other ranks' rows, which a phase of its own
+/// puts in place first (CoupledRows: a row's pairs reach across the row), rather than taking their
+/// neighbours' themselves (NearestNeighbourRows).
+template <class Model>
+concept TrigonometryFirst = requires(const Model& model, typename Model::Workspace& work, const double* y) {
+  model.trigonometry_range(work, y, 0.0, std::size_t(0), std::size_t(0));
+};
+
+/// Each rank's rows' trigonometry at (y, t) where Model's range forms read it across ranks; nothing
+/// (and no barrier) otherwise.
+template <class Team, class Model>
+ROTORSWEEP_HD void team_trigonometry(Team& team, const Model& model, typename Model::Workspace& work,
+                                     const double* y, double t) {
+  if constexpr (TrigonometryFirst<Model>)
+    team.each([&](std::size_t r) {
+      const TeamRows rows = team_rows(model.dimension(), team.size(), r);
+      model.trigonometry_range(work, y, t, rows.begin, rows.end);
+    });
+}
+
 /// f(y, t) into f, each rank its rows (evaluate_range), and the integrands into qdot from the team's
 /// sums of the ranks' parts, which each rank leaves at partial + stride · rank (5 values).
-template <class Team>
-ROTORSWEEP_HD void team_evaluate(Team& team, const NearestNeighbourRows<double>& model,
-                                 NearestNeighbourRows<double>::Workspace& work, const double* y, double t,
-                                 double* f, double* partial, std::size_t stride, double* qdot) {
-  using Model = NearestNeighbourRows<double>;
+template <class Team, class Model>
+ROTORSWEEP_HD void team_evaluate(Team& team, const Model& model, typename Model::Workspace& work,
+                                 const double* y, double t, double* f, double* partial, std::size_t stride,
+                                 double* qdot) {
   const std::size_t n = model.dimension(), ranks = team.size();
+  team_trigonometry(team, model, work, y, t);
   team.each([&](std::size_t r) {
     const TeamRows rows = team_rows(n, ranks, r);
-    const Model::RowSums sums = model.evaluate_range(work, y, t, f, rows.begin, rows.end);
-    const Model::IntegrandSums more = model.integrand_sums_range(work, f, rows.begin, rows.end);
+    const typename Model::RowSums sums = model.evaluate_range(work, y, t, f, rows.begin, rows.end);
+    const typename Model::IntegrandSums more = model.integrand_sums_range(work, f, rows.begin, rows.end);
     double* mine = partial + stride * r;
     mine[0] = sums.lag;
     mine[1] = sums.cos_link;
@@ -32,10 +51,10 @@ ROTORSWEEP_HD void team_evaluate(Team& team, const NearestNeighbourRows<double>&
   const auto total = [&](std::size_t i) {
     return team.sum([&](std::size_t r) { return partial[stride * r + i]; });
   };
-  Model::RowSums sums;
+  typename Model::RowSums sums;
   sums.lag = total(0);
   sums.cos_link = total(1);
-  Model::IntegrandSums more;
+  typename Model::IntegrandSums more;
   more.lag_force = total(2);
   more.force_squares = total(3);
   more.energy = total(4);

@@ -19,14 +19,14 @@
 
 namespace rotorsweep::kernels {
 
-/// LeimkuhlerMatthews::attempt for one member of the nearest-neighbour rows on a team: the same
-/// steps (evened out to land on t_stop), the same ξ of row j at step k (normal number k N + j of the
-/// member's stream), so the rows' path has the lanes' bits; only the quadratures, left-point sums of
-/// the integrands, come from team sums in another order.
-template <class Team>
+/// LeimkuhlerMatthews::attempt for one member of a row model on the double lane (NearestNeighbourRows
+/// or CoupledRows) on a team: the same steps (evened out to land on t_stop), the same ξ of row j at
+/// step k (normal number k N + j of the member's stream), so the rows' path has the lanes' bits; only
+/// the quadratures, left-point sums of the integrands, come from team sums in another order.
+template <class Team, class RowModel = NearestNeighbourRows<double>>
 class TeamLeimkuhlerMatthews {
  public:
-  using Model = NearestNeighbourRows<double>;
+  using Model = RowModel;
   using TeamType = Team;
   using Settings = typename LeimkuhlerMatthews<Model>::Settings;
   static constexpr bool stochastic = true;
@@ -99,7 +99,7 @@ class TeamLeimkuhlerMatthews {
  private:
   Settings settings_;
   std::size_t n_, ranks_;
-  Model::Workspace work_;
+  typename Model::Workspace work_;
   double *f_, *xi_next_;
   double* partial_;  ///< per rank: its parts of the integrands' sums
   double qdot_[TeamMemberState::max_quadratures] = {};

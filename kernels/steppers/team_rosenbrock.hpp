@@ -1,5 +1,5 @@
-// A Rosenbrock step (Hairer & Wanner Eq. IV.7.25, as RosenbrockStepper) of one member of the
-// nearest-neighbour rows on a team of threads (docs/architecture.md "Teams"): vectors over each rank's rows.
+// A Rosenbrock step (Hairer & Wanner Eq. IV.7.25, as RosenbrockStepper) of one member of a row model
+// on a team of threads (docs/architecture.md "Teams"): vectors over each rank's rows.
 #pragma once
 
 #include <cstddef>
@@ -8,24 +8,25 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
-#include "kernels/linear/team_cyclic_tridiagonal.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
 #include "kernels/steppers/team_evaluation.hpp"
+#include "kernels/steppers/team_linearization.hpp"
 
 namespace rotorsweep::kernels {
 
-/// The stages of RosenbrockStepper for NearestNeighbourRows<double> on a team of `ranks`: each rank
-/// forms its rows' arguments and right-hand sides and evaluates the model over them
-/// (evaluate_range), the team solves with TeamCyclicTridiagonal, and the quadratures' stage values
-/// come from team sums (identical on every rank, so each may keep its own copy); every quadrature the
-/// model carries (R, W, S, ρ̄, H, the moments). Without evaluate_displaced, and with the sums over the
-/// team in butterfly order, its bits differ from the lanes' at rounding level (docs/numerics.md "The
-/// stage solve on a team").
-template <class Team, const RosenbrockTableau& Table>
+/// The stages of RosenbrockStepper for a row model on the double lane (NearestNeighbourRows or
+/// CoupledRows) on a team of `ranks`: each rank forms its rows' arguments and right-hand sides and
+/// evaluates the model over them (team_evaluate), the team solves with the model's TeamStageMatrix
+/// (TeamCyclicTridiagonal, TeamDenseSymmetric), and the quadratures' stage values come from team sums
+/// (identical on every rank, so each may keep its own copy); every quadrature the model carries (R,
+/// W, S, ρ̄, H, the moments). With the sums over the team in butterfly order (and for nearest
+/// neighbours without evaluate_displaced), its bits differ from the lanes' at rounding level
+/// (docs/numerics.md "The stage solve on a team").
+template <class Team, const RosenbrockTableau& Table, class RowModel = NearestNeighbourRows<double>>
 class TeamRosenbrock {
  public:
-  using Model = NearestNeighbourRows<double>;
+  using Model = RowModel;
   static constexpr int stages = Table.stages;
   static constexpr std::size_t quadratures = Integrals::max_count;  ///< at most
 
@@ -167,19 +168,10 @@ class TeamRosenbrock {
     }
   }
 
-  /// f, the integrands, J, ∂f/∂t and the integrands' gradients at (y, t): the gradients read J's
-  /// rows and the trigonometry of the neighbouring ranks' rows, so they take a phase of their own.
+  /// f, the integrands, J, ∂f/∂t and the integrands' gradients at (y, t).
   ROTORSWEEP_HD void linearize(Team& team, const Model& model, const double* y, double t) {
     evaluate(team, model, y, t, start_qdot_);
-    team.each([&](std::size_t r) {
-      const TeamRows rows = team_rows(n_, ranks_, r);
-      model.jacobian_range(work_, jacobian_.diagonal(), jacobian_.links(), df_dt_, rows.begin, rows.end);
-    });
-    team.each([&](std::size_t r) {
-      const TeamRows rows = team_rows(n_, ranks_, r);
-      model.integrand_gradient_range(work_, f_, jacobian_.diagonal(), jacobian_.links(), df_dt_, scratch_,
-                                     dq_dy_, partial_ + quadratures * r, t, rows.begin, rows.end);
-    });
+    team_linearize(team, model, work_, f_, jacobian_, df_dt_, scratch_, dq_dy_, partial_, quadratures, t);
     double time_sums[quadratures] = {};
     for (std::size_t p = 0; p < carried_; ++p)
       time_sums[p] = team.sum([&](std::size_t r) { return partial_[quadratures * r + p]; });
@@ -188,8 +180,8 @@ class TeamRosenbrock {
 
   std::size_t n_, ranks_;
   std::size_t carried_;  ///< the model's quadratures
-  Model::Workspace work_;
-  TeamCyclicTridiagonal<Team> jacobian_;
+  typename Model::Workspace work_;
+  TeamStageMatrix<Model, Team> jacobian_;
   double *f_, *df_dt_, *argument_, *stages_;
   double* dq_dy_;    ///< ∂q̇_p/∂θ_k at [p·N + k]
   double* scratch_;  ///< J x for the gradients

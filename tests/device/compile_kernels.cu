@@ -1,11 +1,13 @@
 // The kernels compiled for a GPU (nvcc, no GPU needed): the row model and both stepper families on the
-// double lane, and on warp and block teams the stage solves and whole members at T = 0 and T > 0.
+// double lane, and on warp and block teams the stage solves and whole members (nearest neighbours and a
+// coupling table) at T = 0 and T > 0.
 #include "ensemble/engine/team_member.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/linear/team_cyclic_tridiagonal.hpp"
 #include "kernels/linear/team_dense_symmetric.hpp"
+#include "kernels/models/rows/coupled_rows.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -94,6 +96,23 @@ __global__ void run_members_on_teams(rotorsweep::ensemble::SlotSchedule schedule
   const WarpTeam crew(team_size);
   rotorsweep::ensemble::TeamMember<const WarpTeam, TeamIntegrator<const WarpTeam, Stepper>>::run(
       crew, schedule, slots, team, storage + team * per_team, per_team);
+}
+
+/// Members of a coupling table, one per warp team (CoupledRows' range forms, TeamDenseSymmetric).
+__global__ void run_coupled_members_on_teams(rotorsweep::ensemble::SlotSchedule schedule,
+                                             rotorsweep::ensemble::SlotViews slots, double* storage,
+                                             std::size_t per_team, unsigned team_size) {
+  using Stepper = TeamRosenbrock<const WarpTeam, rodas4p2_tableau, CoupledRows<double>>;
+  const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
+  const WarpTeam crew(team_size);
+  rotorsweep::ensemble::TeamMember<const WarpTeam, TeamIntegrator<const WarpTeam, Stepper>>::run(
+      crew, schedule, slots, team, storage + team * per_team, per_team);
+  rotorsweep::ensemble::TeamMember<
+      const WarpTeam, TeamLeimkuhlerMatthews<const WarpTeam, CoupledRows<double>>>::run(crew, schedule, slots,
+                                                                                        team,
+                                                                                        storage +
+                                                                                            team * per_team,
+                                                                                        per_team);
 }
 
 /// Members at T > 0, one per warp team (kernels/steppers/team_leimkuhler_matthews.hpp).

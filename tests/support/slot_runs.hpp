@@ -51,14 +51,15 @@ std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& scene, s
       });
 }
 
-/// on_host_team with stepper `id` of the list, which the scene names.
+/// on_host_team with stepper `id` of the list, which the scene names, on the scene's row model.
 template <kernels::StepperId id>
 std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& scene, std::size_t ranks) {
-  using Model = kernels::NearestNeighbourRows<double>;
-  using Stepper = ensemble::DeviceTeamStepper<id, kernels::HostTeam>;
   if (scene.stepper != id) throw std::logic_error("on_host_team: the scene has another stepper");
-  return on_host_team<ensemble::DeviceAdaptiveIntegrator<id, Model>,
-                      kernels::TeamIntegrator<kernels::HostTeam, Stepper>>(scene, ranks);
+  return ensemble::with_device_model(scene, [&]<class Model>() {
+    using Stepper = ensemble::DeviceTeamStepper<id, kernels::HostTeam, Model>;
+    return on_host_team<ensemble::DeviceAdaptiveIntegrator<id, Model>,
+                        kernels::TeamIntegrator<kernels::HostTeam, Stepper>>(scene, ranks);
+  });
 }
 
 /// Every member of the scene one by one with DeviceMember<Model, Integrator>: the CPU lanes' bits.

@@ -177,12 +177,8 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
   /// The N links of the ring.
   ROTORSWEEP_HD std::size_t links() const { return rows_; }
 
-  /// Sums over the rows that one pass collects, each in row order: the drive's lags (weighted by
-  /// the rows' shares of A) and the links' cosines.
-  struct RowSums {
-    V lag = V(0.0);
-    V cos_link = V(0.0);
-  };
+  using RowSums = RowRangeSums<V>;
+  using IntegrandSums = IntegrandRangeSums<V>;
 
   // A team's evaluation (docs/architecture.md "Teams"): each rank passes over its rows [begin, end),
   // the team adds the ranks' sums, and the integrands and the Jacobian follow.
@@ -196,10 +192,7 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
                        : range_pass<false>(w, theta, t, f, begin, end);
   }
   /// The further sums over rows [begin, end) that W, S and H need (those the model carries), after
-  /// the rank's evaluate_range: Σ lag_j f_j, Σ f_j², Σ of the rows' energy terms.
-  struct IntegrandSums {
-    V lag_force = V(0.0), force_squares = V(0.0), energy = V(0.0);
-  };
+  /// the rank's evaluate_range.
   ROTORSWEEP_HD IntegrandSums integrand_sums_range(const Workspace& w, const V* f, std::size_t begin,
                                                    std::size_t end) const {
     IntegrandSums sums;
@@ -213,11 +206,9 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
   }
   /// The carried integrands at time t from the team's sums.
   ROTORSWEEP_HD void team_integrands(const RowSums& sums, const IntegrandSums& more, V t, V* qdot) const {
-    integrands_from_sums(
-        integrals_, A_, g_, [&] { return sums.lag; }, [&] { return more.lag_force; },
-        [&] { return more.force_squares; }, [&] { return alignment_from_link_sum(sums.cos_link); },
-        [&] { return more.energy; }, qdot);
-    row_moment_integrands(integrals_, t, qdot);
+    integrands_from_team_sums(
+        integrals_, A_, g_, sums, more, [&](const V& cos_link) { return alignment_from_link_sum(cos_link); },
+        t, qdot);
   }
   /// J's diagonal, the links after rows [begin, end) and ∂f/∂t there, once every rank's
   /// evaluate_range at the point is done (row begin reads link begin − 1).
@@ -244,8 +235,7 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
   }
   /// ∂q̇/∂t at time t from the team's time sums and the integrands there.
   ROTORSWEEP_HD void team_time_derivatives(const V* time_sums, V t, const V* qdot, V* dq_dt) const {
-    finish_time_derivatives(integrals_, A_, g_, time_sums, dq_dt);
-    row_moment_time_derivatives(integrals_, t, qdot, dq_dt);
+    time_derivatives_from_team_sums(integrals_, A_, g_, time_sums, t, qdot, dq_dt);
   }
   /// Whether lane `lane`'s member is symmetry protected (its stage solves keep all-equal rows equal).
   ROTORSWEEP_HD bool strict_fm(std::size_t lane) const { return lane_get(strict_fm_, lane) != 0.0; }

@@ -99,6 +99,33 @@ ROTORSWEEP_HD void row_moment_integrands(Integrals q, const V& t, V* qdot) {
   qdot[m + 2] = t * qdot[q.stokes_index()];
 }
 
+/// Sums over rows [begin, end) that one evaluation collects, each in row order: the drive's lags
+/// (weighted by the rows' shares of A) and the cosines of the links after those rows.
+template <class V>
+struct RowRangeSums {
+  V lag = V(0.0);
+  V cos_link = V(0.0);
+};
+
+/// The further sums over rows [begin, end) that W, S and H need (those a model carries): Σ lag_j f_j,
+/// Σ f_j², Σ of the rows' energy terms.
+template <class V>
+struct IntegrandRangeSums {
+  V lag_force = V(0.0), force_squares = V(0.0), energy = V(0.0);
+};
+
+/// The carried integrands of the set q at time t from a team's sums over every row; alignment(cos_link)
+/// turns the links' cosine sum into ρ̄.
+template <class V, class Alignment>
+ROTORSWEEP_HD void integrands_from_team_sums(Integrals q, const V& A, const V& g, const RowRangeSums<V>& sums,
+                                             const IntegrandRangeSums<V>& more, Alignment&& alignment,
+                                             const V& t, V* qdot) {
+  integrands_from_sums(
+      q, A, g, [&] { return sums.lag; }, [&] { return more.lag_force; }, [&] { return more.force_squares; },
+      [&] { return alignment(sums.cos_link); }, [&] { return more.energy; }, qdot);
+  row_moment_integrands(q, t, qdot);
+}
+
 /// The moments' gradients over the rows [begin, end): ∂(t q̇)/∂θ = t ∂q̇/∂θ, from those of R, W and S.
 template <class V>
 ROTORSWEEP_HD void row_moment_gradient_range(Integrals q, std::size_t n, const V& t, V* dq_dtheta,
@@ -193,6 +220,15 @@ ROTORSWEEP_HD void finish_time_derivatives(Integrals q, const V& A, const V& g, 
   if (q.stokes) dq_dt[q.stokes_index()] = V(2.0) * g * time_sums[q.stokes_index()];
   if (q.alignment) dq_dt[q.alignment_index()] = V(0.0);
   if (q.energy) dq_dt[q.energy_index()] = A * time_sums[q.energy_index()];
+}
+
+/// ∂qdot_p/∂t of the set q with the moments' at time t, from a team's time sums over every row and the
+/// integrands there.
+template <class V>
+ROTORSWEEP_HD void time_derivatives_from_team_sums(Integrals q, const V& A, const V& g, const V* time_sums,
+                                                   const V& t, const V* qdot, V* dq_dt) {
+  finish_time_derivatives(q, A, g, time_sums, dq_dt);
+  row_moment_time_derivatives(q, t, qdot, dq_dt);
 }
 
 /// The gradients and ∂/∂t of the integrands over all n rows (dq_dt[q] = ∂qdot_q/∂t), with J's own

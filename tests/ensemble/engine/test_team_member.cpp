@@ -1,6 +1,7 @@
 // One member per team (ensemble/engine/team_member.hpp) on host teams of 1, 3 and 8 ranks against the
 // one-thread driver DeviceMember on the same slots: the same periods, slips, regimes and attractors, D
-// and ρ̄ within the integration error (AFM, CP, FM; at T > 0 the same path), and the examples' labels.
+// and ρ̄ within the integration error (AFM, CP, FM; nearest neighbours and coupling tables; at T > 0
+// the same path), and the examples' labels.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -25,27 +26,41 @@
 using namespace rotorsweep;
 using Catch::Detail::Approx;
 using Model = kernels::NearestNeighbourRows<double>;
-using Lanes = kernels::AdaptiveIntegrator<Model, kernels::Rodas4P2<Model>>;
-using TeamLanes =
-    kernels::TeamIntegrator<kernels::HostTeam,
-                            kernels::TeamRosenbrock<kernels::HostTeam, kernels::rodas4p2_tableau>>;
+using Coupled = kernels::CoupledRows<double>;
 
 namespace {
 
-void check_teams_follow(const std::string& text) {
+/// rodas4p2 on Rows, on one lane and on a host team.
+template <class Rows>
+using Lanes = kernels::AdaptiveIntegrator<Rows, kernels::Rodas4P2<Rows>>;
+template <class Rows>
+using TeamLanes =
+    kernels::TeamIntegrator<kernels::HostTeam,
+                            kernels::TeamRosenbrock<kernels::HostTeam, kernels::rodas4p2_tableau, Rows>>;
+
+/// A team's members against one thread's: the same labels, D and the other means within 1e-8 (1e-10
+/// outside CP). Where rounding decides CP (`cp_rounding`: uniform rows, whose symmetry only rounding
+/// breaks at each slip), CP members keep their labels and D within 1 %: a team, whose sums differ from
+/// the lanes' only in order, moves D by up to 0.5 % there (docs/numerics.md "The stage solve on a team").
+template <class Rows = Model>
+void check_teams_follow(const std::string& text, bool cp_rounding = false) {
   const auto scene = io::parse_scene_text(text, "team-member");
-  const auto thread = testing::on_one_thread<Model, Lanes>(scene);
+  const auto thread = testing::on_one_thread<Rows, Lanes<Rows>>(scene);
   for (std::size_t ranks : {1u, 3u, 8u}) {
-    const auto team = testing::on_host_team<Lanes, TeamLanes>(scene, ranks);
+    const auto team = testing::on_host_team<Lanes<Rows>, TeamLanes<Rows>>(scene, ranks);
     for (std::size_t k = 0; k < thread.size(); ++k) {
       const auto &a = thread[k], &b = team[k];
       INFO("ranks " << ranks << ", member " << k << ": D " << a.dissipation() << ", "
                     << a.final_state.attractor);
       REQUIRE(b.status == a.status);
       CHECK(b.periods_run == a.periods_run);
-      CHECK(b.slips_per_period() == a.slips_per_period());
       CHECK(b.regime == a.regime);
       CHECK(b.final_state.attractor == a.final_state.attractor);
+      if (cp_rounding && a.regime == ensemble::Regime::cp) {
+        CHECK(b.dissipation() == Approx(a.dissipation()).epsilon(0.01));
+        continue;
+      }
+      CHECK(b.slips_per_period() == a.slips_per_period());
       CHECK(b.dissipation() == Approx(a.dissipation()).epsilon(1e-8).margin(1e-12));
       if (a.regime != ensemble::Regime::cp)
         CHECK(b.dissipation() == Approx(a.dissipation()).epsilon(1e-10).margin(1e-14));
@@ -62,6 +77,9 @@ void check_teams_follow(const std::string& text) {
       for (std::size_t j = 0; j < a.row_dissipation.size(); ++j) {
         INFO("row " << j);
         CHECK(b.row_dissipation[j] == Approx(a.row_dissipation[j]).epsilon(1e-8).margin(1e-12));
+      }
+      for (std::size_t j = 0; j < a.link_alignment.size(); ++j) {
+        INFO("link " << j);
         CHECK(b.link_alignment[j] == Approx(a.link_alignment[j]).epsilon(1e-9));
       }
     }
@@ -72,58 +90,16 @@ const std::string rows_20 =
     "[model]\nrows = 20\n[drive]\ng = 0.0011\n[initial]\nkinds = [\"AFM\"]\nnoise = 0.01\nreplicas = 2\n"
     "[schedule]\nrelax_periods = 2\naverage_periods = 2\n[numerics]\nrtol = 1e-10\natol = 1e-13\n";
 
-}  // namespace
-
-TEST_CASE("a team runs a disordered member as one thread does: AFM, CP and FM", "[team][device_member]") {
-  check_teams_follow(rows_20 + "[sweep]\nA = [1.0, 6.0, 12.0]\n[disorder]\nA = 1e-6\n");
-}
-
-TEST_CASE("a team runs uniform rows as one thread does, the period wrapped", "[team][device_member]") {
-  check_teams_follow(rows_20 + "wrap_angles = true\n[sweep]\nA = [1.0, 12.0]\n");
-}
-
-TEST_CASE("a team carries every quadrature and the row profiles as one thread does: W, S, H, the moments",
-          "[team][device_member]") {
-  check_teams_follow(rows_20 +
-                     "[sweep]\nA = [1.0, 6.0, 12.0]\n[disorder]\nA = 1e-6\n[observables]\nestimators = true\n"
-                     "energy = true\nmoments = true\nrow_profiles = true\n");
-}
-
-TEST_CASE("a team of eight gives the CPU lanes' labels on the examples but where rounding decides them",
-          "[team][device_member]") {
-  // the examples with fewer replicas; every member but the symmetry-limited ones keeps its labels
-  for (const auto& [path, replicas] : {std::pair{ROTORSWEEP_SOURCE_DIR "/examples/friction_curve.toml", 1},
-                                       std::pair{ROTORSWEEP_SOURCE_DIR "/examples/basins.toml", 8},
-                                       std::pair{ROTORSWEEP_SOURCE_DIR "/examples/robustness.toml", 1}}) {
-    INFO(path);
-    auto scene = io::parse_scene_file(path);
-    scene.replicas = replicas;
-    const auto lanes = ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {}).results;
-    const auto team = testing::on_host_team<*kernels::parse_stepper("rodas4p2")>(scene, 8);
-    REQUIRE(team.size() == lanes.size());
-    for (std::size_t k = 0; k < lanes.size(); ++k) {
-      INFO("member " << k << ": " << lanes[k].final_state.attractor);
-      if (lanes[k].symmetry_limited) continue;
-      CHECK(team[k].regime == lanes[k].regime);
-      CHECK(team[k].final_state.attractor == lanes[k].final_state.attractor);
-    }
-  }
-}
-
-TEST_CASE("at T > 0 a team steps a member along the lanes' path: the same noise, angles and slips",
-          "[team][device_member]") {
-  using Langevin = kernels::LeimkuhlerMatthews<Model>;
-  const auto scene = io::parse_scene_text(
-      rows_20 +
-          "[sweep]\nA = [1.0, 6.0]\n[disorder]\nA = 1e-3\n[thermal]\ntemperature = 0.05\n"
-          "steps_per_period = 200\nseed = 3\n[observables]\nenergy = true\nmoments = true\nrow_profiles = "
-          "true\n",
-      "team-thermal");
+template <class Rows>
+void check_thermal_path(const std::string& text) {
+  using Langevin = kernels::LeimkuhlerMatthews<Rows>;
+  const auto scene = io::parse_scene_text(text, "team-thermal");
   REQUIRE(scene.thermal.on());
-  const auto thread = testing::on_one_thread<Model, Langevin>(scene);
+  const auto thread = testing::on_one_thread<Rows, Langevin>(scene);
   for (std::size_t ranks : {1u, 3u, 8u}) {
     const auto team =
-        testing::on_host_team<Langevin, kernels::TeamLeimkuhlerMatthews<kernels::HostTeam>>(scene, ranks);
+        testing::on_host_team<Langevin, kernels::TeamLeimkuhlerMatthews<kernels::HostTeam, Rows>>(scene,
+                                                                                                  ranks);
     for (std::size_t k = 0; k < thread.size(); ++k) {
       const auto &a = thread[k], &b = team[k];
       INFO("ranks " << ranks << ", member " << k << ": D " << a.dissipation());
@@ -144,5 +120,69 @@ TEST_CASE("at T > 0 a team steps a member along the lanes' path: the same noise,
         CHECK(b.mean(channel) == Approx(a.mean(channel)).epsilon(1e-12).margin(1e-14));
       }
     }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a team runs a disordered member as one thread does: AFM, CP and FM", "[team][device_member]") {
+  check_teams_follow(rows_20 + "[sweep]\nA = [1.0, 6.0, 12.0]\n[disorder]\nA = 1e-6\n");
+}
+
+TEST_CASE("a team runs uniform rows as one thread does, the period wrapped", "[team][device_member]") {
+  check_teams_follow(rows_20 + "wrap_angles = true\n[sweep]\nA = [1.0, 12.0]\n");
+}
+
+TEST_CASE("a team carries every quadrature and the row profiles as one thread does: W, S, H, the moments",
+          "[team][device_member]") {
+  check_teams_follow(rows_20 +
+                     "[sweep]\nA = [1.0, 6.0, 12.0]\n[disorder]\nA = 1e-6\n[observables]\nestimators = true\n"
+                     "energy = true\nmoments = true\nrow_profiles = true\n");
+}
+
+TEST_CASE(
+    "a team runs a coupling table as one thread does: dipolar rows, periodic and open, every quadrature",
+    "[team][device_member]") {
+  const std::string observables =
+      "[observables]\nestimators = true\nenergy = true\nmoments = true\nrow_profiles = true\n";
+  const std::string dipolar = rows_20 + "[sweep]\nA = [1.0, 6.0, 12.0]\n" + observables;
+  check_teams_follow<Coupled>("[model]\ncouplings = \"dipolar\"\nrange = 4\n" + dipolar.substr(8), true);
+  check_teams_follow<Coupled>("[model]\nboundary = \"open\"\n" + dipolar.substr(8), true);
+}
+
+TEST_CASE("a team of eight gives the CPU lanes' labels on the examples but where rounding decides them",
+          "[team][device_member]") {
+  // the examples with fewer replicas; every member but the symmetry-limited ones keeps its labels
+  for (const auto& [path, replicas] :
+       {std::pair{ROTORSWEEP_SOURCE_DIR "/examples/friction_curve.toml", 1},
+        std::pair{ROTORSWEEP_SOURCE_DIR "/examples/basins.toml", 8},
+        std::pair{ROTORSWEEP_SOURCE_DIR "/examples/robustness.toml", 1},
+        std::pair{ROTORSWEEP_SOURCE_DIR "/examples/experiment_rows.toml", 1}}) {
+    INFO(path);
+    auto scene = io::parse_scene_file(path);
+    scene.replicas = replicas;
+    const auto lanes = ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {}).results;
+    const auto team = testing::on_host_team<*kernels::parse_stepper("rodas4p2")>(scene, 8);
+    REQUIRE(team.size() == lanes.size());
+    for (std::size_t k = 0; k < lanes.size(); ++k) {
+      INFO("member " << k << ": " << lanes[k].final_state.attractor);
+      if (lanes[k].symmetry_limited) continue;
+      CHECK(team[k].regime == lanes[k].regime);
+      CHECK(team[k].final_state.attractor == lanes[k].final_state.attractor);
+    }
+  }
+}
+
+TEST_CASE("at T > 0 a team steps a member along the lanes' path: the same noise, angles and slips",
+          "[team][device_member]") {
+  const std::string thermal =
+      "[sweep]\nA = [1.0, 6.0]\n[thermal]\ntemperature = 0.05\nsteps_per_period = 200\nseed = 3\n"
+      "[observables]\nenergy = true\nmoments = true\nrow_profiles = true\n";
+  SECTION("disordered nearest neighbours") {
+    check_thermal_path<Model>(rows_20 + "[disorder]\nA = 1e-3\n" + thermal);
+  }
+  SECTION("a coupling table") {
+    check_thermal_path<Coupled>("[model]\ncouplings = \"dipolar\"\nrange = 3\n" + rows_20.substr(8) +
+                                thermal);
   }
 }

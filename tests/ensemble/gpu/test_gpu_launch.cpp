@@ -41,7 +41,8 @@ std::string launch_error() {
 
 }  // namespace
 
-TEST_CASE("teams run nearest-neighbour rows at T > 0 or with a linearly implicit stepper", "[gpu_launch]") {
+TEST_CASE("teams run rows at T > 0 or with a linearly implicit stepper, coupling tables too",
+          "[gpu_launch]") {
   CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20")));
   CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20", "[disorder]\nA = 1e-3\n")));
   CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20", "[observables]\nestimators = true\nmoments = true\n")));
@@ -49,12 +50,14 @@ TEST_CASE("teams run nearest-neighbour rows at T > 0 or with a linearly implicit
     CHECK(ensemble::gpu_teams_fit(
         scene_of("rows = 20", std::string("[numerics]\nstepper = \"") + stepper + "\"\n")));
   CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20", "[numerics]\nstepper = \"dopri5\"\n")));
-  CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2")));
-  CHECK_FALSE(ensemble::gpu_teams_fit(scene_of("rows = 20\nboundary = \"open\"")));
+  CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2")));
+  CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20\nboundary = \"open\"")));
+  CHECK_FALSE(ensemble::gpu_teams_fit(
+      scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2", "[numerics]\nstepper = \"dopri5\"\n")));
   CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n")));
   CHECK(ensemble::gpu_teams_fit(scene_of(
       "rows = 20", "[thermal]\ntemperature = 0.01\n[numerics]\nstepper = \"dopri5\"\n")));  // Langevin
-  CHECK_FALSE(ensemble::gpu_teams_fit(
+  CHECK(ensemble::gpu_teams_fit(
       scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2", "[thermal]\ntemperature = 0.01\n")));
   CHECK(ensemble::gpu_teams_fit(scene_of("rows = 20", "[observables]\nrow_profiles = true\n")));
 }
@@ -74,7 +77,10 @@ TEST_CASE("a team has two or three rows per thread, up to a warp; N up to 4 runs
     CHECK((rows + team - 1) / team <= 3);                 // at most three rows per thread
     CHECK((team == 2 || (rows + team - 1) / team >= 2));  // and no smaller team would do
   }
-  CHECK(ensemble::gpu_team_size(scene_of("rows = 20\nboundary = \"open\""), 1024, launch) == 1);
+  CHECK(ensemble::gpu_team_size(scene_of("rows = 20\nboundary = \"open\""), 1024, launch) == 32);
+  CHECK(ensemble::gpu_team_size(
+            scene_of("rows = 20\nboundary = \"open\"", "[numerics]\nstepper = \"dopri5\"\n"), 1024, launch) ==
+        1);
   CHECK(ensemble::gpu_team_size(scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n"), 64, launch) == 32);
   CHECK(ensemble::gpu_team_size(scene_of("rows = 20", "[observables]\nrow_profiles = true\n"), 64, launch) ==
         32);
@@ -94,7 +100,9 @@ TEST_CASE("the environment sets the launch; a bad value is one error naming it",
     CHECK(launch.scratch == ensemble::GpuScratch::global);
     CHECK(ensemble::gpu_team_size(scene_of("rows = 2"), 2, launch) == 16);  // asked for, even at N = 2
     CHECK(ensemble::gpu_team_size(scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2"), 20, launch) ==
-          1);
+          16);
+    CHECK(ensemble::gpu_team_size(scene_of("rows = 20", "[numerics]\nstepper = \"dopri5\"\n"), 20, launch) ==
+          1);  // no team form: a member per thread whatever is asked
   }
   for (const char* bad : {"3", "2048", "eight", "0", "96"}) {
     const ScopedVariable team("ROTORSWEEP_GPU_TEAM", bad);
@@ -125,6 +133,16 @@ TEST_CASE("a member on a team has no per-thread row limit; on one thread it has"
   CHECK(per_thread < ensemble::gpu_team_max_rows);
 }
 
+TEST_CASE("a coupling table on a team holds up to 4096 rows, on one thread what its dense matrices leave",
+          "[gpu_launch]") {
+  const auto scene = scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = \"all\"\nboundary = \"open\"");
+  CHECK(ensemble::gpu_max_rows(scene) == ensemble::gpu_coupled_team_max_rows);
+  const ScopedVariable team("ROTORSWEEP_GPU_TEAM", "1");
+  const std::size_t per_thread = ensemble::gpu_max_rows(scene);
+  CHECK(per_thread >= 49);  // the experiment's slider, as rows
+  CHECK(per_thread < 64);   // 2 N² values of 8192
+}
+
 TEST_CASE("the result file's device says how many threads run a member", "[gpu_launch]") {
   auto scene = scene_of("rows = 20");
   scene.device = ensemble::Device::gpu;
@@ -135,5 +153,8 @@ TEST_CASE("the result file's device says how many threads run a member", "[gpu_l
   CHECK_THAT(ensemble::device_label(pair), Catch::EndsWith("; threads per member: 1 at N = 2, 8 at N = 20)"));
   auto coupled = scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2");
   coupled.device = ensemble::Device::gpu;
-  CHECK_THAT(ensemble::device_label(coupled), Catch::EndsWith("; 1 thread per member)"));
+  CHECK_THAT(ensemble::device_label(coupled), Catch::EndsWith("; 8 threads per member)"));
+  auto explicit_stepper = scene_of("rows = 20", "[numerics]\nstepper = \"dopri5\"\n");
+  explicit_stepper.device = ensemble::Device::gpu;
+  CHECK_THAT(ensemble::device_label(explicit_stepper), Catch::EndsWith("; 1 thread per member)"));
 }

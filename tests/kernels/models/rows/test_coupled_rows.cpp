@@ -1,13 +1,16 @@
 // The row model with a coupling table (kernels/models/rows/coupled_rows.hpp, docs/model.md §1 "Extended
 // couplings"): Jacobian, ∂f/∂t and integrand gradients against central differences for random
 // tables, periodic and open; f = −∇H/g; the nearest-neighbour table against NearestNeighbourRows;
-// the dense LDLᵀ solve and its inertia against Eigen; SIMD lanes equal to scalar ones.
+// the dense LDLᵀ solve and its inertia against Eigen; SIMD lanes equal to scalar ones; the range
+// forms a team uses, over any split of the rows, give the whole-row bits.
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
+#include <tuple>
 #include <vector>
 
+#include "kernels/lanes/team.hpp"
 #include "kernels/models/rows/coupled_rows.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "support/kernel_scratch.hpp"
@@ -201,5 +204,70 @@ TEST_CASE("coupled rows: SIMD lanes give the scalar bits", "[kernels][model][cou
     const auto e = evaluate(scalars[l], thetas[l], 0.3 * double(l));
     for (std::size_t j = 0; j < n; ++j) CHECK(lane_get(f[j], l) == e.f[j]);
     for (std::size_t p = 0; p < nq; ++p) CHECK(lane_get(q[p], l) == e.q[p]);
+  }
+}
+
+TEST_CASE("coupled rows: the range forms over any split of the rows give the whole rows' bits",
+          "[kernels][model][couplings][team]") {
+  // periodic with 2M < N, and open with every pair, also M = N − 1; every quadrature
+  for (const auto& [n, range, open] :
+       {std::tuple{7u, 3u, false}, std::tuple{20u, 9u, false}, std::tuple{20u, 2u, false},
+        std::tuple{7u, 6u, true}, std::tuple{20u, 5u, true}, std::tuple{2u, 1u, true}}) {
+    const Table table(range, unsigned(n + range));
+    const auto m = rotorsweep::testing::model<Model>(n, every, table.parameters(4.3, 0.37, open));
+    const auto theta = random_values(n, unsigned(3 * n + range), -3.0, 9.0);
+    const double t = 1.3;
+    auto w = rotorsweep::testing::workspace(m);
+    std::vector<double> f(n), q(nq), df_dt(n), dq_dy(nq * n), dq_dt(nq), drive(n), link(n);
+    auto J = rotorsweep::testing::jacobian<Model::Jacobian>(n);
+    m.linearize(w, theta.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
+    m.row_profile(w, theta.data(), t, drive.data(), link.data());
+    for (std::size_t ranks : {1u, 2u, 3u, 8u}) {
+      INFO("N " << n << ", range " << range << ", open " << open << ", ranks " << ranks);
+      auto w2 = rotorsweep::testing::workspace(m);
+      auto J2 = rotorsweep::testing::jacobian<Model::Jacobian>(n);
+      std::vector<double> f2(n), df2(n), dq2(nq * n), scratch(n), time_sums(nq * ranks), drive2(n), link2(n),
+          f3(n);
+      Model::RowSums sums;
+      Model::IntegrandSums more;
+      for (std::size_t r = 0; r < ranks; ++r) {  // the phase before: every rank's trigonometry
+        const TeamRows rows = team_rows(n, ranks, r);
+        m.trigonometry_range(w2, theta.data(), t, rows.begin, rows.end);
+      }
+      for (std::size_t r = 0; r < ranks; ++r) {
+        const TeamRows rows = team_rows(n, ranks, r);
+        const Model::RowSums part = m.evaluate_range(w2, theta.data(), t, f2.data(), rows.begin, rows.end);
+        const Model::IntegrandSums extra = m.integrand_sums_range(w2, f2.data(), rows.begin, rows.end);
+        sums.lag += part.lag;
+        sums.cos_link += part.cos_link;
+        more.lag_force += extra.lag_force;
+        more.force_squares += extra.force_squares;
+        more.energy += extra.energy;
+      }
+      for (std::size_t r = 0; r < ranks; ++r) {  // once every rank's f is in place
+        const TeamRows rows = team_rows(n, ranks, r);
+        m.jacobian_range(w2, J2, df2.data(), rows.begin, rows.end);
+        m.integrand_gradient_range(w2, f2.data(), J2, df2.data(), scratch.data(), dq2.data(),
+                                   time_sums.data() + nq * r, t, rows.begin, rows.end);
+        m.row_profile_range(w2, theta.data(), t, f3.data(), drive2.data(), link2.data(), rows.begin,
+                            rows.end);
+      }
+      CHECK(f2 == f);
+      CHECK(f3 == f);
+      CHECK(df2 == df_dt);
+      CHECK(dq2 == dq_dy);
+      CHECK(drive2 == drive);
+      for (std::size_t j = 0; j < m.links(); ++j) CHECK(link2[j] == link[j]);
+      for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t k = 0; k < n; ++k) REQUIRE(J2.entry(j, k) == J.entry(j, k));
+      std::vector<double> q2(nq), totals(nq), dq_dt2(nq);
+      m.team_integrands(sums, more, t, q2.data());
+      for (std::size_t p = 0; p < nq; ++p) {
+        for (std::size_t r = 0; r < ranks; ++r) totals[p] += time_sums[nq * r + p];
+        CHECK(q2[p] == Approx(q[p]).epsilon(1e-13).margin(1e-13));
+      }
+      m.team_time_derivatives(totals.data(), t, q2.data(), dq_dt2.data());
+      for (std::size_t p = 0; p < nq; ++p) CHECK(dq_dt2[p] == Approx(dq_dt[p]).epsilon(1e-13).margin(1e-13));
+    }
   }
 }
