@@ -144,8 +144,10 @@ TEST_CASE("the GPU's results do not depend on the launch shape or a team's scrat
   }
 }
 
-TEST_CASE("a member per GPU team gives a host team's bits, for every team size, stepper and at T > 0",
-          "[gpu]") {
+TEST_CASE(
+    "a member per GPU team gives a host team's bits, for every team size, stepper, coupling tables and "
+    "at T > 0",
+    "[gpu]") {
   const auto check_sizes = [&]<kernels::StepperId id>(const ensemble::Scene& scene) {
     const auto members = ensemble::plan_members(scene);
     for (const int team : {2, 4, 8, 16, 32}) {
@@ -164,6 +166,14 @@ TEST_CASE("a member per GPU team gives a host team's bits, for every team size, 
                                "[disorder]\nA = 1e-4\n[observables]\nestimators = true\nenergy = "
                                "true\nmoments = true\nrow_profiles = true\n",
                            "teams"));
+  // a coupling table, periodic, and the experiment's open dipolar rows (TeamDenseSymmetric)
+  check_sizes.template operator()<*kernels::parse_stepper("rodas4p2")>(io::parse_scene_text(
+      "[model]\nrows = 20\ncouplings = \"dipolar\"\nrange = 4\n" +
+          curve_scene("rodas4p2", 20, "1e-8").substr(17) +
+          "[observables]\nestimators = true\nenergy = true\nmoments = true\nrow_profiles = true\n",
+      "teams-coupled"));
+  check_sizes.template operator()<*kernels::parse_stepper("rodas4p2")>(
+      io::parse_scene_file(ROTORSWEEP_SOURCE_DIR "/examples/experiment_rows.toml"));
   const auto thermal = io::parse_scene_text(
       "[model]\nrows = 20\n[drive]\ng = [0.01]\n[sweep]\nA = [1, 6, 12]\n[initial]\nkinds = [\"random\"]\n"
       "replicas = 2\n[thermal]\ntemperature = 0.05\nsteps_per_period = 200\n[observables]\nenergy = true\n"
