@@ -1,12 +1,13 @@
 // The kernels compiled for a GPU (nvcc, no GPU needed): the row model and both stepper families on the
-// double lane, and on warp and block teams the stage solves and whole members (nearest neighbours and a
-// coupling table) at T = 0 and T > 0.
+// double lane, and on warp and block teams the stage solves (ring, dense, slider) and whole members
+// (nearest neighbours at T = 0 and T > 0, a coupling table at T = 0).
 #include "ensemble/engine/team_member.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/linear/team_cyclic_tridiagonal.hpp"
 #include "kernels/linear/team_dense_symmetric.hpp"
+#include "kernels/linear/team_second_order_jacobian.hpp"
 #include "kernels/models/rows/coupled_rows.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
@@ -43,8 +44,9 @@ template __global__ void advance_members<stepper_at<2>::type::type<Model>>(doubl
                                                                            double*);
 
 /// The stage solves on a warp team: each team of `team_size` threads factors and solves one member's
-/// ring (kernels/linear/team_cyclic_tridiagonal.hpp) and its dense coupled rows
-/// (team_dense_symmetric.hpp) over its part of `storage`.
+/// ring (kernels/linear/team_cyclic_tridiagonal.hpp), its dense coupled rows (team_dense_symmetric.hpp)
+/// and an inertial slider's (team_second_order_jacobian.hpp) over its part of `storage`, in place on
+/// its 2 N values of `rhs`.
 __global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_t rows, unsigned team_size,
                                double* rhs, int* definite) {
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
@@ -52,6 +54,8 @@ __global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_
   LaneArena<double> arena(storage + team * per_team, per_team);
   TeamCyclicTridiagonal<const WarpTeam> J(rows, team_size, arena);
   TeamDenseSymmetric<const WarpTeam> coupled(rows, team_size, arena);
+  TeamSecondOrderJacobian<const WarpTeam, true> slider(2 * rows, team_size, arena);
+  slider.set_dynamics(0.7, 0.2);
   crew.sync();
   crew.each([&](std::size_t rank) {
     const TeamRows mine = team_rows(rows, team_size, rank);
@@ -59,14 +63,18 @@ __global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_
       J.diag(i) = -2.0 + 0.01 * double(i % 7);
       J.off(i) = 0.3;
       for (std::size_t k = 0; k < rows; ++k)
-        coupled.entry(i, k) = i == k ? -2.0 : 0.1 / double(1 + (i + k) % 5);
+        coupled.entry(i, k) = slider.stiffness().entry(i, k) = i == k ? -2.0 : 0.1 / double(1 + (i + k) % 5);
     }
   });
   J.factor(crew, 3.0);
-  J.solve(crew, rhs + team * rows);
+  J.solve(crew, rhs + 2 * team * rows);
   coupled.factor(crew, 3.0);
-  coupled.solve(crew, rhs + team * rows);
-  if (crew.rank() == 0) definite[team] = J.positive_definite() && coupled.positive_definite() ? 1 : 0;
+  coupled.solve(crew, rhs + 2 * team * rows);
+  slider.factor(crew, 3.0);
+  slider.solve(crew, rhs + 2 * team * rows);
+  if (crew.rank() == 0)
+    definite[team] =
+        J.positive_definite() && coupled.positive_definite() && slider.positive_definite() ? 1 : 0;
 }
 
 /// A member of the nearest-neighbour rows integrated by a warp team over one period (team_integrator.hpp).
@@ -107,12 +115,6 @@ __global__ void run_coupled_members_on_teams(rotorsweep::ensemble::SlotSchedule 
   const WarpTeam crew(team_size);
   rotorsweep::ensemble::TeamMember<const WarpTeam, TeamIntegrator<const WarpTeam, Stepper>>::run(
       crew, schedule, slots, team, storage + team * per_team, per_team);
-  rotorsweep::ensemble::TeamMember<
-      const WarpTeam, TeamLeimkuhlerMatthews<const WarpTeam, CoupledRows<double>>>::run(crew, schedule, slots,
-                                                                                        team,
-                                                                                        storage +
-                                                                                            team * per_team,
-                                                                                        per_team);
 }
 
 /// Members at T > 0, one per warp team (kernels/steppers/team_leimkuhler_matthews.hpp).

@@ -182,7 +182,7 @@ TEST_CASE("at T > 0 a team steps a member along the lanes' path: the same noise,
     check_thermal_path<Model>(rows_20 + "[disorder]\nA = 1e-3\n" + thermal);
   }
   SECTION("a coupling table") {
-    check_thermal_path<Coupled>("[model]\ncouplings = \"dipolar\"\nrange = 3\n" + rows_20.substr(8) +
+    check_thermal_path<Coupled>("[model]\nrows = 8\ncouplings = \"dipolar\"\nrange = 3" + rows_20.substr(17) +
                                 thermal);
   }
 }

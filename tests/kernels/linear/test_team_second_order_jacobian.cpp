@@ -1,0 +1,74 @@
+// The slider's stage solve on a host team (kernels/linear/team_second_order_jacobian.hpp) against
+// SecondOrderJacobian itself: the same solution, J x and inertia test bit for bit, inertial and overdamped.
+#include <catch2/catch.hpp>
+#include <random>
+#include <vector>
+
+#include "kernels/lanes/team.hpp"
+#include "kernels/linear/second_order_jacobian.hpp"
+#include "kernels/linear/team_second_order_jacobian.hpp"
+
+using namespace rotorsweep::kernels;
+
+namespace {
+
+/// A matrix over its own storage.
+template <class Matrix, class... Ranks>
+struct Built {
+  std::vector<double> storage;
+  LaneArena<double> arena;
+  Matrix matrix;
+  explicit Built(std::size_t dimension, Ranks... ranks)
+      : storage(Matrix::storage_size(dimension)),
+        arena(storage.data(), storage.size()),
+        matrix(dimension, ranks..., arena) {}
+};
+
+template <bool Inertial>
+void check_team_solve(std::mt19937_64& rng, std::size_t& indefinite, std::size_t& cases) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (std::size_t rotors : {1u, 7u, 49u})
+    for (std::size_t ranks : {1u, 2u, 3u, 8u, 32u})
+      for (int draw = 0; draw < 4; ++draw) {
+        const std::size_t dimension = Inertial ? 2 * rotors : rotors;
+        Built<SecondOrderJacobian<double, Inertial>> one(dimension);
+        Built<TeamSecondOrderJacobian<HostTeam, Inertial>, std::size_t> team(dimension, ranks);
+        for (std::size_t j = 0; j < rotors; ++j)  // a symmetric stiffness K, its diagonal 1 + U(−1, 1)
+          for (std::size_t k = j; k < rotors; ++k) {
+            const double x = j == k ? 1.0 + u(rng) : u(rng) / double(rotors);
+            one.matrix.stiffness().entry(j, k) = one.matrix.stiffness().entry(k, j) = x;
+            team.matrix.stiffness().entry(j, k) = team.matrix.stiffness().entry(k, j) = x;
+          }
+        const double inertia = 0.3 + 0.5 * (u(rng) + 1.0), damping = 0.2 + 0.5 * (u(rng) + 1.0);
+        one.matrix.set_dynamics(inertia, damping);
+        team.matrix.set_dynamics(inertia, damping);
+        const double shift = draw % 2 == 0 ? 6.0 : 0.05;  // definite, or likely not
+        HostTeam crew(ranks);
+        one.matrix.factor(shift);
+        team.matrix.factor(crew, shift);
+        std::vector<double> r(dimension), x(dimension), y(dimension, 0.25), y_team(dimension, 0.25);
+        for (double& v : r) v = u(rng);
+        x = r;
+        one.matrix.solve(x.data());
+        team.matrix.solve(crew, r.data());
+        one.matrix.multiply_add(x.data(), y.data());
+        team.matrix.multiply_add(crew, x.data(), y_team.data());
+        INFO((Inertial ? "inertial" : "overdamped") << ", " << rotors << " rotors, ranks " << ranks);
+        CHECK(r == x);
+        CHECK(y_team == y);
+        CHECK(team.matrix.positive_definite() == bool(one.matrix.positive_definite()));
+        indefinite += !one.matrix.positive_definite();
+        ++cases;
+      }
+}
+
+}  // namespace
+
+TEST_CASE("the slider's stage solve on a team gives SecondOrderJacobian's bits: solution, J x, inertia",
+          "[kernels][team][slider]") {
+  std::mt19937_64 rng(5);
+  std::size_t indefinite = 0, cases = 0;
+  check_team_solve<true>(rng, indefinite, cases);
+  check_team_solve<false>(rng, indefinite, cases);
+  CHECK(indefinite > cases / 8);  // both kinds were tested
+}
