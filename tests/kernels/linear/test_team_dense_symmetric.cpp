@@ -8,23 +8,14 @@
 #include "kernels/lanes/team.hpp"
 #include "kernels/linear/dense_symmetric.hpp"
 #include "kernels/linear/team_dense_symmetric.hpp"
+#include "support/built_matrix.hpp"
 
 using rotorsweep::kernels::DenseSymmetric;
 using rotorsweep::kernels::HostTeam;
-using rotorsweep::kernels::LaneArena;
 using Team = rotorsweep::kernels::TeamDenseSymmetric<HostTeam>;
+using rotorsweep::testing::BuiltMatrix;
 
 namespace {
-
-/// A matrix over its own storage.
-template <class Matrix, class... Ranks>
-struct Built {
-  std::vector<double> storage;
-  LaneArena<double> arena;
-  Matrix matrix;
-  explicit Built(std::size_t n, Ranks... ranks)
-      : storage(Matrix::storage_size(n)), arena(storage.data(), storage.size()), matrix(n, ranks..., arena) {}
-};
 
 /// A symmetric J within `band` of the diagonal (with `wrap` also in the ring's corners), entries U(−1, 1)
 /// and a diagonal −2 + U(−1, 1), into both matrices.
@@ -52,8 +43,8 @@ TEST_CASE("a team's dense LDLᵀ gives DenseSymmetric's bits: solution, inertia 
                                      std::pair{std::size_t(2), false}})
       for (std::size_t ranks : {1u, 2u, 3u, 8u, 32u})
         for (int draw_index = 0; draw_index < 4; ++draw_index) {
-          Built<DenseSymmetric<double>> sequential(n);
-          Built<Team, std::size_t> team(n, ranks);
+          BuiltMatrix<DenseSymmetric<double>> sequential(n);
+          BuiltMatrix<Team, std::size_t> team(n, ranks);
           sequential.matrix.set_band(band, wrap);
           team.matrix.set_band(band, wrap);
           draw(sequential.matrix, team.matrix, n, band, wrap, rng);
@@ -80,7 +71,7 @@ TEST_CASE("a team's dense LDLᵀ gives DenseSymmetric's bits: solution, inertia 
 
 TEST_CASE("a team's dense solve keeps a strict-FM member's rows equal", "[kernels][team]") {
   const std::size_t n = 12;
-  Built<Team, std::size_t> team(n, std::size_t(4));
+  BuiltMatrix<Team, std::size_t> team(n, std::size_t(4));
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t distance = j > k ? j - k : k - j,

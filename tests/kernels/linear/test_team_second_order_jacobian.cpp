@@ -7,22 +7,12 @@
 #include "kernels/lanes/team.hpp"
 #include "kernels/linear/second_order_jacobian.hpp"
 #include "kernels/linear/team_second_order_jacobian.hpp"
+#include "support/built_matrix.hpp"
 
 using namespace rotorsweep::kernels;
+using rotorsweep::testing::BuiltMatrix;
 
 namespace {
-
-/// A matrix over its own storage.
-template <class Matrix, class... Ranks>
-struct Built {
-  std::vector<double> storage;
-  LaneArena<double> arena;
-  Matrix matrix;
-  explicit Built(std::size_t dimension, Ranks... ranks)
-      : storage(Matrix::storage_size(dimension)),
-        arena(storage.data(), storage.size()),
-        matrix(dimension, ranks..., arena) {}
-};
 
 template <bool Inertial>
 void check_team_solve(std::mt19937_64& rng, std::size_t& indefinite, std::size_t& cases) {
@@ -31,8 +21,8 @@ void check_team_solve(std::mt19937_64& rng, std::size_t& indefinite, std::size_t
     for (std::size_t ranks : {1u, 2u, 3u, 8u, 32u})
       for (int draw = 0; draw < 4; ++draw) {
         const std::size_t dimension = Inertial ? 2 * rotors : rotors;
-        Built<SecondOrderJacobian<double, Inertial>> one(dimension);
-        Built<TeamSecondOrderJacobian<HostTeam, Inertial>, std::size_t> team(dimension, ranks);
+        BuiltMatrix<SecondOrderJacobian<double, Inertial>> one(dimension);
+        BuiltMatrix<TeamSecondOrderJacobian<HostTeam, Inertial>, std::size_t> team(dimension, ranks);
         for (std::size_t j = 0; j < rotors; ++j)  // a symmetric stiffness K, its diagonal 1 + U(−1, 1)
           for (std::size_t k = j; k < rotors; ++k) {
             const double x = j == k ? 1.0 + u(rng) : u(rng) / double(rotors);
