@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 
 #include "kernels/lanes/host_device.hpp"
@@ -26,37 +27,33 @@ using TeamStageMatrix = decltype(team_stage_matrix_of<Team>(std::declval<const M
 
 /// J, ∂f/∂t and the carried integrands' gradients dq_dy at time t, after team_evaluate there (f and the
 /// workspace's trigonometry in place); each rank leaves its parts of the time sums at partial + stride ·
-/// rank. Nearest neighbours: J's rows first, then the gradients (which read the next rank's link).
-template <class Team>
-ROTORSWEEP_HD void team_linearize(Team& team, const NearestNeighbourRows<double>& model,
-                                  const NearestNeighbourRows<double>::Workspace& work, const double* f,
-                                  TeamCyclicTridiagonal<Team>& J, double* df_dt, double* scratch, double* dq_dy,
-                                  double* partial, std::size_t stride, double t) {
-  const std::size_t n = model.dimension(), ranks = team.size();
-  team.each([&](std::size_t r) {
-    const TeamRows rows = team_rows(n, ranks, r);
-    model.jacobian_range(work, J.diagonal(), J.links(), df_dt, rows.begin, rows.end);
-  });
-  team.each([&](std::size_t r) {
-    const TeamRows rows = team_rows(n, ranks, r);
-    model.integrand_gradient_range(work, f, J.diagonal(), J.links(), df_dt, scratch, dq_dy, partial + stride * r,
-                                   t, rows.begin, rows.end);
-  });
-}
-
-/// The same for a coupling table: a rank's gradients read only its own rows of J, so one phase.
-template <class Team>
-ROTORSWEEP_HD void team_linearize(Team& team, const CoupledRows<double>& model,
-                                  const CoupledRows<double>::Workspace& work, const double* f,
-                                  TeamDenseSymmetric<Team>& J, double* df_dt, double* scratch, double* dq_dy,
-                                  double* partial, std::size_t stride, double t) {
-  const std::size_t n = model.dimension(), ranks = team.size();
-  team.each([&](std::size_t r) {
-    const TeamRows rows = team_rows(n, ranks, r);
-    model.jacobian_range(work, J, df_dt, rows.begin, rows.end);
-    model.integrand_gradient_range(work, f, J, df_dt, scratch, dq_dy, partial + stride * r, t, rows.begin,
-                                   rows.end);
-  });
+/// rank. Nearest neighbours take J's rows first and the gradients in a phase of their own (they read
+/// the previous rank's link); with a coupling table a rank's gradients read only its own rows of J.
+template <class Team, class Model>
+ROTORSWEEP_HD void team_linearize(Team& team, const Model& model, const typename Model::Workspace& work,
+                                  const double* f, TeamStageMatrix<Model, Team>& J, double* df_dt,
+                                  double* scratch, double* dq_dy, double* partial, std::size_t stride,
+                                  double t) {
+  const auto each_rank = [&](auto&& part) {
+    team.each([&](std::size_t r) {
+      const TeamRows rows = team_rows(model.dimension(), team.size(), r);
+      part(rows.begin, rows.end, partial + stride * r);
+    });
+  };
+  if constexpr (std::is_same_v<Model, NearestNeighbourRows<double>>) {
+    each_rank([&](std::size_t begin, std::size_t end, double*) {
+      model.jacobian_range(work, J.diagonal(), J.links(), df_dt, begin, end);
+    });
+    each_rank([&](std::size_t begin, std::size_t end, double* sums) {
+      model.integrand_gradient_range(work, f, J.diagonal(), J.links(), df_dt, scratch, dq_dy, sums, t, begin,
+                                     end);
+    });
+  } else {
+    each_rank([&](std::size_t begin, std::size_t end, double* sums) {
+      model.jacobian_range(work, J, df_dt, begin, end);
+      model.integrand_gradient_range(work, f, J, df_dt, scratch, dq_dy, sums, t, begin, end);
+    });
+  }
 }
 
 }  // namespace rotorsweep::kernels

@@ -1,11 +1,14 @@
-// Test support: a stage matrix (sequential, or a team's with its ranks) over storage of its own, as
-// the stage solves' tests build them side by side.
+// Test support: a stage matrix (sequential, or a team's with its ranks) over storage of its own, and
+// the check that a team's solve gives the sequential one's bits, as the stage solves' tests use them.
 #pragma once
 
+#include <catch2/catch.hpp>
 #include <cstddef>
+#include <random>
 #include <vector>
 
 #include "kernels/lanes/lane_arena.hpp"
+#include "kernels/lanes/team.hpp"
 
 namespace rotorsweep::testing {
 
@@ -20,5 +23,28 @@ struct BuiltMatrix {
         arena(storage.data(), storage.size()),
         matrix(size, ranks..., arena) {}
 };
+
+/// Factors `one` and `team` (the same matrix) at `shift`, solves a right-hand side of `size` values
+/// U(−1, 1) and forms y + J x with each (on a host team of `ranks`), and checks that the team's
+/// solution, J x and inertia test are `one`'s bit for bit; returns whether `one` was definite.
+template <class One, class Team>
+bool check_same_solve(One& one, Team& team, std::size_t ranks, double shift, std::size_t size,
+                      std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  kernels::HostTeam crew(ranks);
+  one.factor(shift);
+  team.factor(crew, shift);
+  std::vector<double> r(size), x(size), y(size, 0.25), y_team(size, 0.25);
+  for (double& v : r) v = u(rng);
+  x = r;
+  one.solve(x.data());
+  team.solve(crew, r.data());
+  one.multiply_add(x.data(), y.data());
+  team.multiply_add(crew, x.data(), y_team.data());
+  CHECK(r == x);
+  CHECK(y_team == y);
+  CHECK(team.positive_definite() == bool(one.positive_definite()));
+  return bool(one.positive_definite());
+}
 
 }  // namespace rotorsweep::testing
