@@ -172,51 +172,130 @@ class SliderModel {
                                V* dq_dt) const {
     prepare(w, y, t, true);
     rates(w, y, f, qdot);
+    team_time_derivatives(jacobian_range(w, y, t, J, df_dt, dq_dy, 0, n_), t, dq_dt);
+  }
+
+  // A team's evaluation (docs/architecture.md "Teams"): each rank takes its rotors' trigonometry and
+  // field (prepare_range), then, once every rank's is in place (the pair sums read every rotor), their
+  // pair sums and torques (torque_range), rates and rows of K. Each rotor's values come from the same
+  // operations in the same order as over every rotor, so any split gives f, K, ∂f/∂t and the gradients
+  // bit for bit; only the sums over rotors (the quadratures' integrands) take the team's order.
+
+  /// Sums over rotors [begin, end): −Σ ∂E/∂ξ terms (the drive's force) and the dissipation's Σ θ̇² or Σ τ².
+  struct RotorSums {
+    V force = V(0.0), dissipation = V(0.0);
+  };
+  /// Sums over rotors [begin, end) behind ∂q̇/∂t: −Σ curvature (the force's ξ-derivative) and Σ τ ∂f/∂t.
+  struct RateSums {
+    V force_rate = V(0.0), dissipation_rate = V(0.0);
+  };
+
+  /// sin, cos and the substrate field of rotors [begin, end) at (y, t); with `curvatures` also the
+  /// second x-derivative term of F.
+  ROTORSWEEP_HD void prepare_range(Workspace& w, const V* y, V t, bool curvatures, std::size_t begin,
+                                   std::size_t end) const {
+    const V xi = displacement(t);
+    for (std::size_t r = begin; r < end; ++r) {
+      lane_sincos(y[r], w.sin[r], w.cos[r]);
+      const TrackField<V> b = field_in_lanes(substrate_.data(), turned_ ? r : row(r), xi + start_x_[r]);
+      w.bx[r] = mu_ * b.bx;
+      w.bz[r] = mu_ * b.bz;
+      w.dbx[r] = mu_ * b.dbx;
+      w.dbz[r] = mu_ * b.dbz;
+      if (curvatures) w.curvature[r] = mu_ * (b.d2bx * w.cos[r] - b.d2bz * w.sin[r]);
+    }
+  }
+  /// P c, Q s and τ of rotors [begin, end), once every rank's prepare_range at the point is done.
+  ROTORSWEEP_HD void torque_range(Workspace& w, std::size_t begin, std::size_t end) const {
+    for (std::size_t r = begin; r < end; ++r) {
+      // rotor k = j·columns + i in ascending order, its offset from r read along the table's rows
+      const V* p = p_ + pair(r, 0);
+      const V* q = q_ + pair(r, 0);
+      V pc(0.0), qs(0.0);
+      for (std::size_t j = 0, k = 0; j < grid_.rows; ++j, p += width_, q += width_)
+        for (std::size_t i = 0; i < grid_.columns; ++i, ++k) {
+          pc += p[i] * w.cos[k];
+          qs += q[i] * w.sin[k];
+        }
+      w.p_cos[r] = pc;
+      w.q_sin[r] = qs;
+      w.torque[r] = w.sin[r] * pc - w.cos[r] * qs - (w.bx[r] * w.sin[r] + w.bz[r] * w.cos[r]);
+    }
+  }
+  /// f of rotors [begin, end) (θ̇, and θ̈ with inertia) after their torque_range, and their sums.
+  ROTORSWEEP_HD RotorSums rates_range(const Workspace& w, const V* y, V* f, std::size_t begin,
+                                      std::size_t end) const {
+    RotorSums sums;
+    for (std::size_t r = begin; r < end; ++r) sums.force -= w.dbx[r] * w.cos[r] - w.dbz[r] * w.sin[r];
+    for (std::size_t r = begin; r < end; ++r) {
+      if constexpr (Inertial) {
+        f[r] = y[n_ + r];
+        f[n_ + r] = (w.torque[r] - damping_ * y[n_ + r]) * inv_inertia_;
+        sums.dissipation += y[n_ + r] * y[n_ + r];
+      } else {
+        f[r] = w.torque[r] * inv_damping_;
+        sums.dissipation += w.torque[r] * w.torque[r];
+      }
+    }
+    return sums;
+  }
+  /// The quadratures' integrands from the sums over every rotor.
+  ROTORSWEEP_HD void team_integrands(const RotorSums& sums, V* qdot) const {
+    qdot[impulse_index] = sums.force;
+    qdot[dissipation_index] = Inertial ? damping_ * sums.dissipation : sums.dissipation * inv_damping_;
+  }
+  /// K's rows [begin, end) (every column), J's dynamics, ∂f/∂t and the quadratures' gradients dq_dy of
+  /// rotors [begin, end) at time t, after their rates_range at the point (with curvatures); returns
+  /// their parts of the sums behind ∂q̇/∂t. `J` is SecondOrderJacobian or a team's (stiffness(),
+  /// set_dynamics()).
+  template <class Matrix>
+  ROTORSWEEP_HD RateSums jacobian_range(const Workspace& w, const V* y, V t, Matrix& J, V* df_dt, V* dq_dy,
+                                        std::size_t begin, std::size_t end) const {
     const std::size_t dim = dimension();
     auto& K = J.stiffness();
     J.set_dynamics(inertia_, damping_);
-    for (std::size_t r = 0; r < n_; ++r) {
-      // K = ∂τ/∂θ = −∂²E/∂θ²: off the diagonal −(P s_r s_q + Q c_r c_q)
-      for (std::size_t k = r + 1; k < n_; ++k) {
-        const std::size_t at = pair(r, k);
-        const V value = lane_neg(p_[at] * w.sin[r] * w.sin[k] + q_[at] * w.cos[r] * w.cos[k]);
-        K.entry(r, k) = value;
-        K.entry(k, r) = value;
-      }
-      K.entry(r, r) =
-          w.cos[r] * w.p_cos[r] + w.sin[r] * w.q_sin[r] - (w.bx[r] * w.cos[r] - w.bz[r] * w.sin[r]);
-    }
     // ∂/∂t = ξ'(t) ∂/∂ξ, ξ' = v once the slider moves
     const V rate = lane_select(t > rest_, speed_, V(0.0));
     const V weight = Inertial ? inv_inertia_ : inv_damping_;
-    for (std::size_t k = 0; k < dim; ++k) df_dt[k] = V(0.0);
-    V force_rate(0.0);
-    for (std::size_t r = 0; r < n_; ++r) {
+    RateSums sums;
+    for (std::size_t r = begin; r < end; ++r) {
+      // K = ∂τ/∂θ = −∂²E/∂θ²: off the diagonal −(P s_r s_q + Q c_r c_q), formed from the pair's first rotor
+      for (std::size_t k = 0; k < n_; ++k) {
+        if (k == r) continue;
+        const std::size_t first = k < r ? k : r, second = k < r ? r : k, at = pair(first, second);
+        K.entry(r, k) =
+            lane_neg(p_[at] * w.sin[first] * w.sin[second] + q_[at] * w.cos[first] * w.cos[second]);
+      }
+      K.entry(r, r) =
+          w.cos[r] * w.p_cos[r] + w.sin[r] * w.q_sin[r] - (w.bx[r] * w.cos[r] - w.bz[r] * w.sin[r]);
       const V torque_rate = lane_neg(rate) * (w.dbx[r] * w.sin[r] + w.dbz[r] * w.cos[r]);
+      if constexpr (Inertial) df_dt[r] = V(0.0);
       df_dt[Inertial ? n_ + r : r] = weight * torque_rate;
-      force_rate -= w.curvature[r];
+      sums.force_rate -= w.curvature[r];
       dq_dy[impulse_index * dim + r] = w.dbx[r] * w.sin[r] + w.dbz[r] * w.cos[r];
       if constexpr (Inertial) dq_dy[impulse_index * dim + n_ + r] = V(0.0);
     }
-    dq_dt[impulse_index] = rate * force_rate;
     V* grad = dq_dy + dissipation_index * dim;
-    if constexpr (Inertial) {
-      for (std::size_t r = 0; r < n_; ++r) {
-        grad[r] = V(0.0);
-        grad[n_ + r] = V(2.0) * damping_ * y[n_ + r];
-      }
-      dq_dt[dissipation_index] = V(0.0);
-    } else {
-      // ∂(Σ τ²/γ)/∂θ_k = (2/γ) Σ_r τ_r K_rk, and ∂/∂t = (2/γ) Σ_r τ_r ∂τ_r/∂t
-      V time_part(0.0);
-      for (std::size_t k = 0; k < n_; ++k) {
+    for (std::size_t k = begin; k < end; ++k) {
+      if constexpr (Inertial) {
+        grad[k] = V(0.0);
+        grad[n_ + k] = V(2.0) * damping_ * y[n_ + k];
+      } else {
+        // ∂(Σ τ²/γ)/∂θ_k = (2/γ) Σ_r τ_r K_rk (K_rk = K_kr, this rank's row k), and ∂/∂t = (2/γ) Σ_r τ_r
+        // ∂τ_r/∂t
         V sum(0.0);
-        for (std::size_t r = 0; r < n_; ++r) sum += w.torque[r] * K.entry(r, k);
+        for (std::size_t r = 0; r < n_; ++r) sum += w.torque[r] * K.entry(k, r);
         grad[k] = V(2.0) * inv_damping_ * sum;
-        time_part += w.torque[k] * df_dt[k];
+        sums.dissipation_rate += w.torque[k] * df_dt[k];
       }
-      dq_dt[dissipation_index] = V(2.0) * time_part;
     }
+    return sums;
+  }
+  /// ∂q̇/∂t at time t from the sums over every rotor.
+  ROTORSWEEP_HD void team_time_derivatives(const RateSums& sums, V t, V* dq_dt) const {
+    const V rate = lane_select(t > rest_, speed_, V(0.0));
+    dq_dt[impulse_index] = rate * sums.force_rate;
+    dq_dt[dissipation_index] = Inertial ? V(0.0) : V(2.0) * sums.dissipation_rate;
   }
 
   /// The shift δ (units of a) of the four tables that give the field's y- and z-derivatives to forces():
@@ -298,53 +377,14 @@ class SliderModel {
 
   /// f and the quadrature integrands from a prepared workspace.
   ROTORSWEEP_HD void rates(const Workspace& w, const V* y, V* f, V* qdot) const {
-    V force(0.0);
-    for (std::size_t r = 0; r < n_; ++r) force -= w.dbx[r] * w.cos[r] - w.dbz[r] * w.sin[r];
-    qdot[impulse_index] = force;
-    V dissipation(0.0);
-    if constexpr (Inertial) {
-      for (std::size_t r = 0; r < n_; ++r) {
-        f[r] = y[n_ + r];
-        f[n_ + r] = (w.torque[r] - damping_ * y[n_ + r]) * inv_inertia_;
-        dissipation += y[n_ + r] * y[n_ + r];
-      }
-      qdot[dissipation_index] = damping_ * dissipation;
-    } else {
-      for (std::size_t r = 0; r < n_; ++r) {
-        f[r] = w.torque[r] * inv_damping_;
-        dissipation += w.torque[r] * w.torque[r];
-      }
-      qdot[dissipation_index] = dissipation * inv_damping_;
-    }
+    team_integrands(rates_range(w, y, f, 0, n_), qdot);
   }
 
   /// sin, cos, the substrate field at every rotor, P c, Q s and τ; with `curvatures` also the
   /// second x-derivative term of F.
   ROTORSWEEP_HD void prepare(Workspace& w, const V* y, V t, bool curvatures) const {
-    for (std::size_t r = 0; r < n_; ++r) lane_sincos(y[r], w.sin[r], w.cos[r]);
-    const V xi = displacement(t);
-    for (std::size_t r = 0; r < n_; ++r) {
-      const TrackField<V> b = field_in_lanes(substrate_.data(), turned_ ? r : row(r), xi + start_x_[r]);
-      w.bx[r] = mu_ * b.bx;
-      w.bz[r] = mu_ * b.bz;
-      w.dbx[r] = mu_ * b.dbx;
-      w.dbz[r] = mu_ * b.dbz;
-      if (curvatures) w.curvature[r] = mu_ * (b.d2bx * w.cos[r] - b.d2bz * w.sin[r]);
-    }
-    for (std::size_t r = 0; r < n_; ++r) {
-      // rotor k = j·columns + i in ascending order, its offset from r read along the table's rows
-      const V* p = p_ + pair(r, 0);
-      const V* q = q_ + pair(r, 0);
-      V pc(0.0), qs(0.0);
-      for (std::size_t j = 0, k = 0; j < grid_.rows; ++j, p += width_, q += width_)
-        for (std::size_t i = 0; i < grid_.columns; ++i, ++k) {
-          pc += p[i] * w.cos[k];
-          qs += q[i] * w.sin[k];
-        }
-      w.p_cos[r] = pc;
-      w.q_sin[r] = qs;
-      w.torque[r] = w.sin[r] * pc - w.cos[r] * qs - (w.bx[r] * w.sin[r] + w.bz[r] * w.cos[r]);
-    }
+    prepare_range(w, y, t, curvatures, 0, n_);
+    torque_range(w, 0, n_);
   }
 
   SliderGrid grid_;

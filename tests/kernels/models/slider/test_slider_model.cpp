@@ -1,7 +1,8 @@
 // The slider model (kernels/models/slider/slider_model.hpp, docs/model.md §9): torques and the drive's force
 // against differences of the energy (also for a shifted, turned slider over turned substrate moments), the
 // linearization against differences of f, a 2 × 1 slider against a direct dense-sum reference, energy
-// conservation and the energy balance, the overdamped limit, SIMD = scalar.
+// conservation and the energy balance, the overdamped limit, SIMD = scalar, and the range forms a team
+// uses against the whole slider.
 #include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
@@ -9,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "kernels/lanes/team.hpp"
 #include "kernels/models/slider/slider_model.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
@@ -207,6 +209,68 @@ TEST_CASE("slider: Jacobian, df/dt and integrand gradients match central differe
   SECTION("overdamped") {
     const auto m = make_model<Overdamped>(grid, parameters<Overdamped>(s, 0.5));
     rotorsweep::testing::check_linearization(m, random_state(grid.rotors(), 8, 0.0), 3.1);
+  }
+}
+
+namespace {
+
+/// The range forms a team uses over `ranks` splits of the rotors (each phase for every rank first)
+/// against evaluate and linearize over every rotor: f, K, ∂f/∂t and dq_dy bit for bit, the integrands
+/// and their time derivatives (team sums) to rounding.
+template <class Model>
+void check_range_forms(const Model& m, const std::vector<double>& y, double t) {
+  const std::size_t n = m.rotors(), dim = m.dimension();
+  auto w = rotorsweep::testing::workspace(m);
+  std::vector<double> f(dim), q(2), df_dt(dim), dq_dy(2 * dim), dq_dt(2);
+  auto J = rotorsweep::testing::jacobian<typename Model::Jacobian>(dim);
+  m.linearize(w, y.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
+  for (std::size_t ranks : {1u, 2u, 3u, 8u}) {
+    INFO(n << " rotors, ranks " << ranks);
+    auto w2 = rotorsweep::testing::workspace(m);
+    auto J2 = rotorsweep::testing::jacobian<typename Model::Jacobian>(dim);
+    std::vector<double> f2(dim), df2(dim), dq2(2 * dim), q2(2), dq_dt2(2);
+    typename Model::RotorSums sums;
+    typename Model::RateSums rates;
+    const auto each_rank = [&](auto&& part) {
+      for (std::size_t r = 0; r < ranks; ++r) {
+        const TeamRows rows = team_rows(n, ranks, r);
+        part(rows.begin, rows.end);
+      }
+    };
+    each_rank([&](std::size_t b, std::size_t e) { m.prepare_range(w2, y.data(), t, true, b, e); });
+    each_rank([&](std::size_t b, std::size_t e) { m.torque_range(w2, b, e); });
+    each_rank([&](std::size_t b, std::size_t e) {
+      const auto part = m.rates_range(w2, y.data(), f2.data(), b, e);
+      sums.force += part.force;
+      sums.dissipation += part.dissipation;
+      const auto rate = m.jacobian_range(w2, y.data(), t, J2, df2.data(), dq2.data(), b, e);
+      rates.force_rate += rate.force_rate;
+      rates.dissipation_rate += rate.dissipation_rate;
+    });
+    m.team_integrands(sums, q2.data());
+    m.team_time_derivatives(rates, t, dq_dt2.data());
+    CHECK(f2 == f);
+    CHECK(df2 == df_dt);
+    CHECK(dq2 == dq_dy);
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t k = 0; k < n; ++k) REQUIRE(J2.stiffness().entry(j, k) == J.stiffness().entry(j, k));
+    for (std::size_t p = 0; p < 2; ++p) {
+      CHECK(q2[p] == Approx(q[p]).epsilon(1e-13).margin(1e-13));
+      CHECK(dq_dt2[p] == Approx(dq_dt[p]).epsilon(1e-13).margin(1e-13));
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("slider: the range forms over any split of the rotors give the whole slider's bits",
+          "[kernels][slider][team]") {
+  for (const SliderGrid grid : {SliderGrid{3, 3}, SliderGrid{7, 7}, SliderGrid{1, 2}}) {
+    const Substrate s(grid, 0.4);
+    check_range_forms(make_model<Inertial>(grid, parameters<Inertial>(s, 0.5)),
+                      random_state(2 * grid.rotors(), 11, 2.0), 3.1);
+    check_range_forms(make_model<Overdamped>(grid, parameters<Overdamped>(s, 0.5)),
+                      random_state(grid.rotors(), 12, 0.0), 3.1);
   }
 }
 
