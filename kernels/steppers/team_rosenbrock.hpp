@@ -15,18 +15,19 @@
 
 namespace rotorsweep::kernels {
 
-/// The stages of RosenbrockStepper for a row model on the double lane (NearestNeighbourRows or
-/// CoupledRows) on a team of `ranks`: each rank forms its rows' arguments and right-hand sides and
+/// The stages of RosenbrockStepper for a model on the double lane (NearestNeighbourRows, CoupledRows
+/// or the slider) on a team of `ranks`: each rank forms its rows' arguments and right-hand sides and
 /// evaluates the model over them (team_evaluate), the team solves with the model's TeamStageMatrix
-/// (TeamCyclicTridiagonal, TeamDenseSymmetric), and the quadratures' stage values come from team sums
-/// (identical on every rank, so each may keep its own copy); every quadrature the model carries (R,
-/// W, S, ρ̄, H, the moments). With the sums over the team in butterfly order (and for nearest
-/// neighbours without evaluate_displaced), its bits differ from the lanes' at rounding level
-/// (docs/numerics.md "The stage solve on a team").
-template <class Team, const RosenbrockTableau& Table, class RowModel = NearestNeighbourRows<double>>
+/// (TeamCyclicTridiagonal, TeamDenseSymmetric, TeamSecondOrderJacobian), and the quadratures' stage
+/// values come from team sums (identical on every rank, so each may keep its own copy); every
+/// quadrature the model carries (R, W, S, ρ̄, H, the moments; the slider's impulse and dissipation).
+/// With the sums over the team in butterfly order (and for nearest neighbours without
+/// evaluate_displaced), its bits differ from the lanes' at rounding level (docs/numerics.md "The stage
+/// solve on a team").
+template <class Team, const RosenbrockTableau& Table, class TeamModel = NearestNeighbourRows<double>>
 class TeamRosenbrock {
  public:
-  using Model = RowModel;
+  using Model = TeamModel;
   static constexpr int stages = Table.stages;
   static constexpr std::size_t quadratures = Integrals::max_count;  ///< at most
 
@@ -55,7 +56,7 @@ class TeamRosenbrock {
                              double* q_error) {
     linearize(team, model, y, t);
     const Step step{t, h, h * Table.gamma, 1.0 / h};
-    jacobian_.keep_constant_solutions(model.strict_fm(0));
+    if constexpr (requires { model.strict_fm(0); }) jacobian_.keep_constant_solutions(model.strict_fm(0));
     jacobian_.factor(team, 1.0 / step.h_gamma);
     double quad_stages[stages][quadratures] = {};
     run_stages(team, model, step, y, quad_stages, std::make_integer_sequence<int, stages>{});
@@ -171,7 +172,7 @@ class TeamRosenbrock {
   /// f, the integrands, J, ∂f/∂t and the integrands' gradients at (y, t).
   ROTORSWEEP_HD void linearize(Team& team, const Model& model, const double* y, double t) {
     evaluate(team, model, y, t, start_qdot_);
-    team_linearize(team, model, work_, f_, jacobian_, df_dt_, scratch_, dq_dy_, partial_, quadratures, t);
+    team_linearize(team, model, work_, y, f_, jacobian_, df_dt_, scratch_, dq_dy_, partial_, quadratures, t);
     double time_sums[quadratures] = {};
     for (std::size_t p = 0; p < carried_; ++p)
       time_sums[p] = team.sum([&](std::size_t r) { return partial_[quadratures * r + p]; });

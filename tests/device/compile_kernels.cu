@@ -1,6 +1,6 @@
 // The kernels compiled for a GPU (nvcc, no GPU needed): the row model and both stepper families on the
 // double lane, and on warp and block teams the stage solves (ring, dense, slider) and whole members
-// (nearest neighbours at T = 0 and T > 0, a coupling table at T = 0).
+// (nearest neighbours at T = 0 and T > 0, a coupling table at T = 0), and a slider's integration.
 #include "ensemble/engine/team_member.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
@@ -10,6 +10,7 @@
 #include "kernels/linear/team_second_order_jacobian.hpp"
 #include "kernels/models/rows/coupled_rows.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/models/slider/slider_model.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "kernels/steppers/team_integrator.hpp"
@@ -92,6 +93,26 @@ __global__ void advance_on_teams(double* storage, std::size_t per_team, std::siz
   state.t_stop = two_pi;
   integrator.advance(crew, model, state);
   if (crew.rank() == 0) drive[team] = state.quad[0];
+}
+
+/// A 7 × 7 inertial slider integrated by a warp team over one period (SliderModel's range forms,
+/// TeamSecondOrderJacobian).
+__global__ void advance_slider_on_teams(double* storage, std::size_t per_team, unsigned team_size,
+                                        SliderParameters parameters, double* y, double* impulse) {
+  using Slider = SliderModel<double, true>;
+  using Stepper = TeamRosenbrock<const WarpTeam, rodas5p_tableau, Slider>;
+  const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
+  const WarpTeam crew(team_size);
+  LaneArena<double> arena(storage + team * per_team, per_team);
+  Slider model(SliderGrid{7, 7}, SliderPlacement{}, arena);
+  model.set_lane(0, parameters);
+  TeamIntegrator<const WarpTeam, Stepper> integrator(model, team_size, {1e-6, 1e-6}, {}, 1e-3, arena);
+  crew.sync();
+  TeamMemberState state;
+  state.y = y + team * model.dimension();
+  state.t_stop = two_pi;
+  integrator.advance(crew, model, state);
+  if (crew.rank() == 0) impulse[team] = state.quad[Slider::impulse_index];
 }
 
 /// Members of a chunk of slots, one per warp team, from start to retirement

@@ -23,7 +23,7 @@ namespace rotorsweep::kernels {
 struct SliderGrid {
   std::size_t columns = 7;  ///< along the sliding direction x
   std::size_t rows = 7;     ///< across it, y
-  std::size_t rotors() const { return columns * rows; }
+  ROTORSWEEP_HD std::size_t rotors() const { return columns * rows; }
 };
 
 /// Where the rotors sit over the substrate (units of a): rotor (i, j) at R(tilt)·(i + shift_x, j + shift_y)
@@ -172,7 +172,9 @@ class SliderModel {
                                V* dq_dt) const {
     prepare(w, y, t, true);
     rates(w, y, f, qdot);
-    team_time_derivatives(jacobian_range(w, y, t, J, df_dt, dq_dy, 0, n_), t, dq_dt);
+    V time_sums[max_quadratures];
+    jacobian_range(w, y, t, J, df_dt, dq_dy, time_sums, 0, n_);
+    team_time_derivatives(time_sums, t, qdot, dq_dt);
   }
 
   // A team's evaluation (docs/architecture.md "Teams"): each rank takes its rotors' trigonometry and
@@ -184,10 +186,6 @@ class SliderModel {
   /// Sums over rotors [begin, end): −Σ ∂E/∂ξ terms (the drive's force) and the dissipation's Σ θ̇² or Σ τ².
   struct RotorSums {
     V force = V(0.0), dissipation = V(0.0);
-  };
-  /// Sums over rotors [begin, end) behind ∂q̇/∂t: −Σ curvature (the force's ξ-derivative) and Σ τ ∂f/∂t.
-  struct RateSums {
-    V force_rate = V(0.0), dissipation_rate = V(0.0);
   };
 
   /// sin, cos and the substrate field of rotors [begin, end) at (y, t); with `curvatures` also the
@@ -245,19 +243,19 @@ class SliderModel {
     qdot[dissipation_index] = Inertial ? damping_ * sums.dissipation : sums.dissipation * inv_damping_;
   }
   /// K's rows [begin, end) (every column), J's dynamics, ∂f/∂t and the quadratures' gradients dq_dy of
-  /// rotors [begin, end) at time t, after their rates_range at the point (with curvatures); returns
-  /// their parts of the sums behind ∂q̇/∂t. `J` is SecondOrderJacobian or a team's (stiffness(),
-  /// set_dynamics()).
+  /// rotors [begin, end) at time t, after their rates_range at the point (with curvatures), and their
+  /// parts of the sums behind ∂q̇/∂t in time_sums (−Σ curvature, Σ τ ∂f/∂t; team_time_derivatives).
+  /// `J` is SecondOrderJacobian or a team's (stiffness(), set_dynamics()).
   template <class Matrix>
-  ROTORSWEEP_HD RateSums jacobian_range(const Workspace& w, const V* y, V t, Matrix& J, V* df_dt, V* dq_dy,
-                                        std::size_t begin, std::size_t end) const {
+  ROTORSWEEP_HD void jacobian_range(const Workspace& w, const V* y, V t, Matrix& J, V* df_dt, V* dq_dy,
+                                    V* time_sums, std::size_t begin, std::size_t end) const {
     const std::size_t dim = dimension();
     auto& K = J.stiffness();
     J.set_dynamics(inertia_, damping_);
     // ∂/∂t = ξ'(t) ∂/∂ξ, ξ' = v once the slider moves
     const V rate = lane_select(t > rest_, speed_, V(0.0));
     const V weight = Inertial ? inv_inertia_ : inv_damping_;
-    RateSums sums;
+    V force_rate(0.0), dissipation_rate(0.0);
     for (std::size_t r = begin; r < end; ++r) {
       // K = ∂τ/∂θ = −∂²E/∂θ²: off the diagonal −(P s_r s_q + Q c_r c_q), formed from the pair's first rotor
       for (std::size_t k = 0; k < n_; ++k) {
@@ -271,7 +269,7 @@ class SliderModel {
       const V torque_rate = lane_neg(rate) * (w.dbx[r] * w.sin[r] + w.dbz[r] * w.cos[r]);
       if constexpr (Inertial) df_dt[r] = V(0.0);
       df_dt[Inertial ? n_ + r : r] = weight * torque_rate;
-      sums.force_rate -= w.curvature[r];
+      force_rate -= w.curvature[r];
       dq_dy[impulse_index * dim + r] = w.dbx[r] * w.sin[r] + w.dbz[r] * w.cos[r];
       if constexpr (Inertial) dq_dy[impulse_index * dim + n_ + r] = V(0.0);
     }
@@ -286,16 +284,17 @@ class SliderModel {
         V sum(0.0);
         for (std::size_t r = 0; r < n_; ++r) sum += w.torque[r] * K.entry(k, r);
         grad[k] = V(2.0) * inv_damping_ * sum;
-        sums.dissipation_rate += w.torque[k] * df_dt[k];
+        dissipation_rate += w.torque[k] * df_dt[k];
       }
     }
-    return sums;
+    time_sums[impulse_index] = force_rate;
+    time_sums[dissipation_index] = dissipation_rate;
   }
-  /// ∂q̇/∂t at time t from the sums over every rotor.
-  ROTORSWEEP_HD void team_time_derivatives(const RateSums& sums, V t, V* dq_dt) const {
+  /// ∂q̇/∂t at time t from the time sums over every rotor (the integrands are not needed).
+  ROTORSWEEP_HD void team_time_derivatives(const V* time_sums, V t, const V*, V* dq_dt) const {
     const V rate = lane_select(t > rest_, speed_, V(0.0));
-    dq_dt[impulse_index] = rate * sums.force_rate;
-    dq_dt[dissipation_index] = Inertial ? V(0.0) : V(2.0) * sums.dissipation_rate;
+    dq_dt[impulse_index] = rate * time_sums[impulse_index];
+    dq_dt[dissipation_index] = Inertial ? V(0.0) : V(2.0) * time_sums[dissipation_index];
   }
 
   /// The shift δ (units of a) of the four tables that give the field's y- and z-derivatives to forces():

@@ -14,6 +14,8 @@
 #include "kernels/models/slider/slider_model.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
+#include "kernels/steppers/team_integrator.hpp"
+#include "kernels/steppers/team_rosenbrock.hpp"
 #include "support/kernel_scratch.hpp"
 #include "support/linearization_check.hpp"
 
@@ -230,7 +232,7 @@ void check_range_forms(const Model& m, const std::vector<double>& y, double t) {
     auto J2 = rotorsweep::testing::jacobian<typename Model::Jacobian>(dim);
     std::vector<double> f2(dim), df2(dim), dq2(2 * dim), q2(2), dq_dt2(2);
     typename Model::RotorSums sums;
-    typename Model::RateSums rates;
+    std::vector<double> time_sums(2 * ranks), totals(2);
     const auto each_rank = [&](auto&& part) {
       for (std::size_t r = 0; r < ranks; ++r) {
         const TeamRows rows = team_rows(n, ranks, r);
@@ -243,12 +245,16 @@ void check_range_forms(const Model& m, const std::vector<double>& y, double t) {
       const auto part = m.rates_range(w2, y.data(), f2.data(), b, e);
       sums.force += part.force;
       sums.dissipation += part.dissipation;
-      const auto rate = m.jacobian_range(w2, y.data(), t, J2, df2.data(), dq2.data(), b, e);
-      rates.force_rate += rate.force_rate;
-      rates.dissipation_rate += rate.dissipation_rate;
     });
+    for (std::size_t r = 0; r < ranks; ++r) {
+      const TeamRows rows = team_rows(n, ranks, r);
+      m.jacobian_range(w2, y.data(), t, J2, df2.data(), dq2.data(), time_sums.data() + 2 * r, rows.begin,
+                       rows.end);
+      totals[0] += time_sums[2 * r];
+      totals[1] += time_sums[2 * r + 1];
+    }
     m.team_integrands(sums, q2.data());
-    m.team_time_derivatives(rates, t, dq_dt2.data());
+    m.team_time_derivatives(totals.data(), t, q2.data(), dq_dt2.data());
     CHECK(f2 == f);
     CHECK(df2 == df_dt);
     CHECK(dq2 == dq_dy);
@@ -262,6 +268,56 @@ void check_range_forms(const Model& m, const std::vector<double>& y, double t) {
 }
 
 }  // namespace
+
+namespace {
+
+/// A member of `m` from y0 over [0, 2π] at rtol 1e-10 by rodas4p2: the lanes' AdaptiveIntegrator
+/// against a host team of 1, 2, 3 and 8 ranks (TeamIntegrator over TeamRosenbrock).
+template <class Model>
+void check_team_follows(const Model& m, const std::vector<double>& y0) {
+  const Tolerances tight{1e-10, 1e-10};
+  using Lanes = AdaptiveIntegrator<Model, Rodas4P2<Model>>;
+  auto integrator = rotorsweep::testing::integrator<Lanes>(m, tight);
+  auto s = rotorsweep::testing::lane_state<double>(m.dimension(), Model::max_quadratures);
+  std::copy(y0.begin(), y0.end(), s.y);
+  s.t_stop = two_pi;
+  integrator.advance(m, s);
+  REQUIRE(s.status[0] == LaneStatus::ok);
+  using Team = TeamIntegrator<HostTeam, TeamRosenbrock<HostTeam, rodas4p2_tableau, Model>>;
+  for (std::size_t ranks : {1u, 2u, 3u, 8u}) {
+    INFO(m.rotors() << " rotors, ranks " << ranks << ", impulse " << s.quad[0]);
+    std::vector<double> storage(counted_storage<double>([&](LaneArena<double>& arena) {
+      const Team counted(m, ranks, tight, StepLimits{}, Lanes::first_step_scale(tight), arena);
+    }));
+    LaneArena<double> arena(storage.data(), storage.size());
+    Team team_integrator(m, ranks, tight, StepLimits{}, Lanes::first_step_scale(tight), arena);
+    std::vector<double> y = y0;
+    TeamMemberState state;
+    state.y = y.data();
+    state.t_stop = two_pi;
+    HostTeam crew(ranks);
+    team_integrator.advance(crew, m, state);
+    REQUIRE(state.status == LaneStatus::ok);
+    double largest = 0.0;
+    for (std::size_t k = 0; k < y.size(); ++k) largest = std::max(largest, std::fabs(y[k] - s.y[k]));
+    CHECK(largest < 1e-8);
+    for (std::size_t p = 0; p < 2; ++p) CHECK(state.quad[p] == Approx(s.quad[p]).epsilon(1e-9).margin(1e-12));
+    CHECK(state.steps_accepted + state.steps_rejected ==
+          Approx(s.steps_accepted + s.steps_rejected).epsilon(0.01));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("slider: a member on a team follows the lanes' integration over a period, inertial and overdamped",
+          "[kernels][slider][team]") {
+  const SliderGrid grid{7, 7};
+  const Substrate s(grid, 0.4);
+  check_team_follows(make_model<Inertial>(grid, parameters<Inertial>(s, 0.5)),
+                     random_state(2 * grid.rotors(), 21, 0.1));
+  check_team_follows(make_model<Overdamped>(grid, parameters<Overdamped>(s, 0.5)),
+                     random_state(grid.rotors(), 22, 0.0));
+}
 
 TEST_CASE("slider: the range forms over any split of the rotors give the whole slider's bits",
           "[kernels][slider][team]") {
