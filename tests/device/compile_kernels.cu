@@ -115,28 +115,25 @@ __global__ void advance_slider_on_teams(double* storage, std::size_t per_team, u
   if (crew.rank() == 0) impulse[team] = state.quad[Slider::impulse_index];
 }
 
-/// Members of a chunk of slots, one per warp team, from start to retirement
-/// (ensemble/engine/team_member.hpp).
+/// Members of a chunk of slots of the row model Rows, one per warp team, from start to retirement
+/// (ensemble/engine/team_member.hpp; for a coupling table CoupledRows' range forms and TeamDenseSymmetric).
+template <class Rows>
 __global__ void run_members_on_teams(rotorsweep::ensemble::SlotSchedule schedule,
                                      rotorsweep::ensemble::SlotViews slots, double* storage,
                                      std::size_t per_team, unsigned team_size) {
-  using Stepper = TeamRosenbrock<const WarpTeam, rodas4p2_tableau>;
+  using Stepper = TeamRosenbrock<const WarpTeam, rodas4p2_tableau, Rows>;
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
   rotorsweep::ensemble::TeamMember<const WarpTeam, TeamIntegrator<const WarpTeam, Stepper>>::run(
       crew, schedule, slots, team, storage + team * per_team, per_team);
 }
 
-/// Members of a coupling table, one per warp team (CoupledRows' range forms, TeamDenseSymmetric).
-__global__ void run_coupled_members_on_teams(rotorsweep::ensemble::SlotSchedule schedule,
-                                             rotorsweep::ensemble::SlotViews slots, double* storage,
-                                             std::size_t per_team, unsigned team_size) {
-  using Stepper = TeamRosenbrock<const WarpTeam, rodas4p2_tableau, CoupledRows<double>>;
-  const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
-  const WarpTeam crew(team_size);
-  rotorsweep::ensemble::TeamMember<const WarpTeam, TeamIntegrator<const WarpTeam, Stepper>>::run(
-      crew, schedule, slots, team, storage + team * per_team, per_team);
-}
+template __global__ void run_members_on_teams<Model>(rotorsweep::ensemble::SlotSchedule,
+                                                     rotorsweep::ensemble::SlotViews, double*, std::size_t,
+                                                     unsigned);
+template __global__ void run_members_on_teams<CoupledRows<double>>(rotorsweep::ensemble::SlotSchedule,
+                                                                   rotorsweep::ensemble::SlotViews, double*,
+                                                                   std::size_t, unsigned);
 
 /// Members at T > 0, one per warp team (kernels/steppers/team_leimkuhler_matthews.hpp).
 __global__ void run_thermal_members_on_teams(rotorsweep::ensemble::SlotSchedule schedule,
