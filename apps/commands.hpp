@@ -63,6 +63,7 @@ int run_sweep_command(const RunOptions& options);
 struct SliderOptions : SceneCommandOptions {
   std::string shard;    ///< "I/N": run part I of N of the plan; `merge` joins the parts
   bool resume = false;  ///< continue from OUTPUT.partial, left by a scan that stopped early
+  std::string device;   ///< "cpu" or "gpu": overrides numerics.device; empty: the scene's
 };
 int run_slider(const SliderOptions& options);
 

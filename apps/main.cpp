@@ -128,6 +128,9 @@ int main(int argc, char** argv) {
   add_scene_options(slider_cmd, slider, "Slider scene file (TOML)",
                     "Replace an existing output file even if it is not an HDF5 file, or a partial file");
   add_partial_options(slider_cmd, slider.resume, slider.shard);
+  slider_cmd
+      ->add_option("--device", slider.device, "Where members run: cpu or gpu (overrides numerics.device)")
+      ->check(CLI::IsMember({"cpu", "gpu"}));
 
   InfoOptions info;
   MergeOptions merge;

@@ -7,6 +7,7 @@
 
 #include "build_info.hpp"
 #include "ensemble/engine/instruction_set.hpp"
+#include "ensemble/gpu/gpu_slider.hpp"
 #include "io/slider_result_file.hpp"
 #include "mpi_session.hpp"
 #include "progress_line.hpp"
@@ -32,7 +33,8 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
       status != 0)
     return status;
 
-  const io::Provenance provenance{options.scene, version, revision, "cpu", ensemble::instruction_set().name};
+  const io::Provenance provenance{options.scene, version, revision, ensemble::slider_device_label(scene),
+                                  ensemble::instruction_set().name};
   std::vector<std::size_t> mine;
   for (std::size_t i = std::size_t(mpi.rank()); i < scene.member_count(); i += std::size_t(mpi.size()))
     mine.push_back(i);

@@ -15,6 +15,8 @@
 #include "commands.hpp"
 #include "ensemble/engine/instruction_set.hpp"
 #include "ensemble/engine/thread_count.hpp"
+#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_slider.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "io/output_target.hpp"
 #include "io/slider_result_file.hpp"
@@ -28,6 +30,7 @@ namespace rotorsweep::apps {
 void print_slider_header(const SliderOptions& options, const ensemble::SliderScene& scene, int threads,
                          const std::optional<io::ShardLabel>& shard) {
   const auto [closest, farthest] = std::minmax_element(scene.separations.begin(), scene.separations.end());
+  char text[160];
   std::string sizes;
   for (const auto& size : scene.sizes)
     sizes += (sizes.empty() ? "" : ", ") + std::to_string(size.columns) + " × " + std::to_string(size.rows);
@@ -35,9 +38,11 @@ void print_slider_header(const SliderOptions& options, const ensemble::SliderSce
     std::fprintf(stderr, "shard %zu/%zu: members %zu, %zu, %zu, ... of the plan's %zu\n", shard->index,
                  shard->count, shard->index - 1, shard->index - 1 + shard->count,
                  shard->index - 1 + 2 * shard->count, shard->plan_members);
+  std::snprintf(text, sizeof text, "%d threads × %zu lanes", threads, ensemble::instruction_set().lanes);
+  const std::string where =
+      scene.device == ensemble::Device::gpu ? ensemble::slider_device_label(scene) : text;
   // the speed and damping axes where they have more than one value
   std::string axes;
-  char text[160];
   if (scene.speeds.size() > 1) {
     const auto [slowest, fastest] = std::minmax_element(scene.speeds.begin(), scene.speeds.end());
     std::snprintf(text, sizeof text, " × %zu speeds v = %g … %g mm/s", scene.speeds.size(), *slowest * 1e3,
@@ -53,11 +58,11 @@ void print_slider_header(const SliderOptions& options, const ensemble::SliderSce
   std::fprintf(
       stderr,
       "rotorsweep slider %s: %zu members (%zu sizes%s × %zu separations h = %g … %g mm × %zu replicas), "
-      "rotors %s over %zu × %zu, %s, %s rtol %g, %d threads × %zu lanes\n",
+      "rotors %s over %zu × %zu, %s, %s rtol %g, %s\n",
       options.scene.c_str(), scene.member_count(), scene.sizes.size(), axes.c_str(), scene.separations.size(),
       *closest * 1e3, *farthest * 1e3, scene.replicas, sizes.c_str(), scene.substrate_columns,
       scene.substrate_rows, scene.overdamped ? "overdamped" : "inertial",
-      kernels::stepper_names[scene.stepper].data(), scene.rtol, threads, ensemble::instruction_set().lanes);
+      kernels::stepper_names[scene.stepper].data(), scene.rtol, where.c_str());
 }
 
 namespace {
@@ -89,8 +94,17 @@ int run_slider(const SliderOptions& options) {
   ensemble::SliderScene scene;
   try {
     scene = io::parse_slider_scene_file(options.scene);
+    if (!options.device.empty()) {
+      scene.device = options.device == "gpu" ? ensemble::Device::gpu : ensemble::Device::cpu;
+      io::check_slider_device(scene);
+    }
   } catch (const io::SceneError& e) {
     std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+  if (scene.device == ensemble::Device::gpu && !ensemble::gpu_info().available) {
+    std::cerr << "error: numerics.device = \"gpu\" (or --device gpu): " << ensemble::gpu_info().why
+              << "; run with --device cpu\n";
     return 2;
   }
   int threads = 0;
@@ -135,7 +149,8 @@ int run_slider(const SliderOptions& options) {
           to_run.push_back(file->plan_index_of(row));
     } else {
       file.emplace(partial, scene,
-                   io::Provenance{options.scene, version, revision, "cpu", ensemble::instruction_set().name},
+                   io::Provenance{options.scene, version, revision, ensemble::slider_device_label(scene),
+                                  ensemble::instruction_set().name},
                    shard);
       for (std::size_t row = 0; row < file->rows(); ++row) to_run.push_back(file->plan_index_of(row));
     }

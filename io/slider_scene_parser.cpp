@@ -25,7 +25,7 @@ const std::map<std::string, std::set<std::string>> slider_keys{
     {"initial", {"kind", "noise", "replicas", "seed", "angles"}},
     {"observables",
      {"samples_per_period", "series", "angles", "energies", "field", "sublattices", "torques", "forces"}},
-    {"numerics", {"stepper", "rtol", "atol", "max_steps"}},
+    {"numerics", {"stepper", "rtol", "atol", "max_steps", "device"}},
     {"output", {"path"}},
 };
 
@@ -221,14 +221,36 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.rtol = numerics.number("rtol", scene.rtol, rtol_range, valid_rtol);
   scene.atol = numerics.number("atol", scene.atol, atol_range, valid_atol);
   scene.max_steps = read_max_steps(numerics);
+  scene.device = numerics.choice("device", "cpu", {"cpu", "gpu"}) == "gpu" ? ensemble::Device::gpu
+                                                                           : ensemble::Device::cpu;
 
   const Section output = section(root, "output");
   scene.output_path = output.text("path", scene.output_path);
   if (scene.member_count() > 10000000) fail("initial.replicas", "gives more than 10000000 members");
+  check_slider_device(scene);
   return scene;
 }
 
 }  // namespace
+
+void check_slider_device(const ensemble::SliderScene& scene) {
+  if (scene.device != ensemble::Device::gpu) return;
+  const std::string stepper(ensemble::default_slider_stepper_name);
+  if (scene.stepper != *kernels::parse_stepper(stepper))
+    fail("numerics.stepper", "must be \"" + stepper +
+                                 "\" with numerics.device = \"gpu\" (the slider's GPU kernels; other "
+                                 "steppers run with numerics.device = \"cpu\")");
+  for (const auto& [key, asked] : {std::pair{"angles", scene.angles},
+                                   {"energies", scene.energies},
+                                   {"field", scene.field},
+                                   {"sublattices", scene.sublattices},
+                                   {"torques", scene.torques},
+                                   {"forces", scene.forces}})
+    if (asked)
+      fail(std::string("observables.") + key,
+           "must be false with numerics.device = \"gpu\" (the GPU's slider keeps friction, order "
+           "parameters and energy; this series runs with numerics.device = \"cpu\")");
+}
 
 ensemble::SliderScene parse_slider_scene_text(std::string_view text, std::string_view source) {
   SliderScene scene = read_slider_scene(parse_toml(text, source));

@@ -2,7 +2,10 @@
 // per member) and the row limit (of a thread's scratch, or of a team's).
 #include "ensemble/gpu/gpu_backend.hpp"
 
+#include <stdexcept>
+
 #include "ensemble/gpu/device_drivers.hpp"
+#include "ensemble/gpu/gpu_slider.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -36,6 +39,31 @@ std::size_t gpu_max_rows(const Scene& scene) {
     while (fits(n + 1)) ++n;
     return n - n % 2;  // rows come in even numbers
   });
+}
+
+unsigned gpu_slider_team_size(SliderSize size, const GpuLaunch& launch) {
+  if (launch.team) {
+    if (launch.team < 2 || launch.team > 32)
+      throw std::runtime_error("ROTORSWEEP_GPU_TEAM = " + std::to_string(launch.team) +
+                               ": a slider member runs on a team of 2, 4, 8, 16 or 32 threads");
+    return launch.team;
+  }
+  unsigned team = 2;
+  while (team < 32 && 3 * team < size.rotors()) team *= 2;
+  return team;
+}
+
+std::string slider_device_label(const SliderScene& scene) {
+  if (scene.device == Device::cpu) return "cpu";
+  const GpuLaunch launch = gpu_launch();
+  std::string teams;
+  for (const SliderSize& size : scene.sizes)
+    teams +=
+        (teams.empty() ? "" : ", ") + std::to_string(gpu_slider_team_size(size, launch)) +
+        (scene.sizes.size() == 1 ? " threads per member"
+                                 : " at " + std::to_string(size.columns) + " × " + std::to_string(size.rows));
+  return "gpu (" + gpu_info().name + "; " + (scene.sizes.size() == 1 ? "" : "threads per member: ") + teams +
+         ")";
 }
 
 }  // namespace rotorsweep::ensemble

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_slider.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -14,6 +15,11 @@ const GpuInfo& gpu_info() {
 
 SweepOutcome run_gpu_row_sweep(const Scene&, const VariantRange&, int, const SweepControl&,
                                const ResultSink&) {
+  throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why);
+}
+
+bool run_gpu_slider_members(const SliderScene&, const std::vector<std::size_t>&, const SliderScanControl&,
+                            const std::function<void(std::vector<SliderMember>&&)>&) {
   throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why);
 }
 

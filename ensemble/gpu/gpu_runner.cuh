@@ -1,6 +1,6 @@
 // The GPU sweep of one variant: a persistent grid whose threads, or teams of a warp's threads, each
-// take the next member from a counter (refill) and run it with DeviceMember or TeamMember; the host
-// fills and reads chunks of member slots.
+// take the next member from a counter (refill) and run it with DeviceMember, TeamMember or
+// SliderTeamMember; the host fills and reads chunks of member slots.
 #pragma once
 
 #include <cuda_runtime.h>
@@ -9,6 +9,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -42,13 +43,13 @@ __global__ void sweep_slots(SlotSchedule schedule, SlotViews slots, unsigned lon
   }
 }
 
-/// A member per team (TeamMember): of `team` threads of a warp (WarpTeam), or of the whole block
-/// (BlockTeam, team = blockDim.x: its exchange is the first blockDim.x values of the shared memory). The
-/// team's first thread takes the next member from the counter for all; the team's scratch is its
-/// part of the block's shared memory or, where `scratch` is given, of that global buffer (per_team
-/// values each).
-template <class TeamIntegrator>
-__global__ void sweep_slots_on_teams(SlotSchedule schedule, SlotViews slots, unsigned long long count,
+/// A member per team (Driver<Team, TeamIntegrator>: TeamMember, SliderTeamMember): of `team` threads of
+/// a warp (WarpTeam), or of the whole block (BlockTeam, team = blockDim.x: its exchange is the first
+/// blockDim.x values of the shared memory). The team's first thread takes the next member from the
+/// counter for all; the team's scratch is its part of the block's shared memory or, where `scratch` is
+/// given, of that global buffer (per_team values each).
+template <template <class, class> class Driver, class TeamIntegrator, class Schedule, class Views>
+__global__ void sweep_slots_on_teams(Schedule schedule, Views slots, unsigned long long count,
                                      unsigned long long* next, unsigned team, double* scratch,
                                      std::size_t per_team) {
   using Team = std::remove_const_t<typename TeamIntegrator::TeamType>;
@@ -72,7 +73,7 @@ __global__ void sweep_slots_on_teams(SlotSchedule schedule, SlotViews slots, uns
   for (;;) {
     const unsigned long long k = crew.first([&] { return atomicAdd(next, 1ull); });
     if (k >= count) return;
-    TeamMember<const Team, TeamIntegrator>::run(crew, schedule, slots, std::size_t(k), storage, per_team);
+    Driver<const Team, TeamIntegrator>::run(crew, schedule, slots, std::size_t(k), storage, per_team);
     crew.sync();
   }
 }
@@ -92,10 +93,12 @@ class DeviceBuffer {
   void* data_ = nullptr;
 };
 
-/// One chunk's device buffers (SlotChunk::buffers() order) and its member counter.
+/// One chunk's device buffers (Chunk::buffers() order: SlotChunk, SliderSlotChunk) and its member
+/// counter; views_of makes the chunk's views of them.
+template <class Chunk, auto views_of>
 class DeviceChunk {
  public:
-  explicit DeviceChunk(SlotChunk& host) {
+  explicit DeviceChunk(Chunk& host) {
     for (const auto& b : host.buffers()) {
       void* p = nullptr;
       check(cudaMalloc(&p, std::max<std::size_t>(b.bytes, 8)), "allocating member slots");
@@ -109,10 +112,10 @@ class DeviceChunk {
     for (void* p : pointers_) cudaFree(p);
     cudaFree(counter_);
   }
-  SlotViews views() const { return slot_views(pointers_.data()); }
+  auto views() const { return views_of(pointers_.data()); }
   unsigned long long* counter() const { return counter_; }
 
-  void upload(SlotChunk& host, cudaStream_t stream) {
+  void upload(Chunk& host, cudaStream_t stream) {
     const auto buffers = host.buffers();
     for (std::size_t i = 0; i < buffers.size(); ++i)
       if (buffers[i].input)
@@ -121,7 +124,7 @@ class DeviceChunk {
             "copying member inputs");
     check(cudaMemsetAsync(counter_, 0, sizeof(unsigned long long), stream), "resetting the member counter");
   }
-  void download(SlotChunk& host, cudaStream_t stream) {
+  void download(Chunk& host, cudaStream_t stream) {
     const auto buffers = host.buffers();
     for (std::size_t i = 0; i < buffers.size(); ++i)
       if (!buffers[i].input)
@@ -134,6 +137,7 @@ class DeviceChunk {
   std::vector<void*> pointers_;
   unsigned long long* counter_ = nullptr;
 };
+using RowDeviceChunk = DeviceChunk<SlotChunk, slot_views>;
 
 /// How one chunk's kernel is launched: the grid, each block's dynamic shared memory, and how many
 /// members run at once (threads, or teams).
@@ -170,8 +174,8 @@ SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const Slo
   stats.lane_width = 1;
   const auto start = std::chrono::steady_clock::now();
   std::array<SlotChunk, 2> host{SlotChunk(schedule, chunk), SlotChunk(schedule, chunk)};
-  DeviceChunk device0(host[0]), device1(host[1]);
-  std::array<DeviceChunk*, 2> device{&device0, &device1};
+  RowDeviceChunk device0(host[0]), device1(host[1]);
+  std::array<RowDeviceChunk*, 2> device{&device0, &device1};
   cudaStream_t stream = nullptr;
   check(cudaStreamCreate(&stream), "creating a stream");
 
@@ -241,22 +245,21 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
                     });
 }
 
-/// run_slots_on_teams for one kind of team (TeamIntegrator's).
-template <class Integrator, class TeamIntegrator>
-SweepOutcome run_teams(const Scene& scene, const VariantRange& range, unsigned team, int host_threads,
-                       const SweepControl& control, const ResultSink& sink) {
-  using Team = typename TeamIntegrator::TeamType;
-  constexpr bool block_team = std::is_same_v<std::remove_const_t<Team>, kernels::BlockTeam>;
-  using Driver = TeamMember<Team, TeamIntegrator>;
+/// How teams of `team` threads are launched with `kernel` (a sweep_slots_on_teams) when each keeps
+/// `per_team` values of scratch: a block's teams in its shared memory where they fit (or
+/// ROTORSWEEP_GPU_SCRATCH says so), else in `scratch`, a global buffer of which the resident teams take
+/// at most a quarter of the GPU's memory.
+struct TeamLaunch {
+  ChunkGrid grid;
+  std::size_t per_team = 0;
+  std::unique_ptr<DeviceBuffer> scratch;  ///< with global scratch
+  double* global() const { return scratch ? static_cast<double*>(scratch->data()) : nullptr; }
+};
+template <class Kernel>
+TeamLaunch team_launch(Kernel kernel, unsigned team, bool block_team, std::size_t per_team) {
   const GpuInfo& info = available_gpu();
-  const Member variant = range.source->at(range.begin);
-  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
-  if (!Driver::team_schedule_fits(schedule)) throw std::logic_error("a team cannot run this schedule");
-
-  const auto kernel = sweep_slots_on_teams<TeamIntegrator>;
   GpuLaunch launch = gpu_launch();
   if (block_team) launch.threads_per_block = int(team);  // one team per block
-  const std::size_t per_team = Driver::storage_size(schedule, team);
   const std::size_t teams_per_block = std::size_t(launch.threads_per_block) / team;
   const std::size_t exchange_bytes = block_team ? team * sizeof(double) : 0;
   const std::size_t block_bytes = teams_per_block * per_team * sizeof(double);
@@ -275,22 +278,41 @@ SweepOutcome run_teams(const Scene& scene, const VariantRange& range, unsigned t
   check(cudaFuncSetAttribute(kernel, cudaFuncAttributeMaxDynamicSharedMemorySize, int(shared_bytes)),
         "reserving shared memory");
 
-  ChunkGrid grid{resident_blocks(kernel, launch, shared_bytes), launch.threads_per_block, shared_bytes, 0};
+  TeamLaunch out;
+  out.per_team = per_team;
+  out.grid = {resident_blocks(kernel, launch, shared_bytes), launch.threads_per_block, shared_bytes, 0};
   if (!shared) {
     const double quarter = info.memory_gib * double(1ull << 30) / 4.0;
-    grid.blocks =
-        int(std::max(1.0, std::min(double(grid.blocks), std::floor(quarter / double(block_bytes)))));
+    out.grid.blocks =
+        int(std::max(1.0, std::min(double(out.grid.blocks), std::floor(quarter / double(block_bytes)))));
+    out.scratch =
+        std::make_unique<DeviceBuffer>(std::size_t(out.grid.blocks) * block_bytes, "allocating team scratch");
   }
-  grid.resident = std::size_t(grid.blocks) * teams_per_block;
-  std::optional<DeviceBuffer> scratch;
-  if (!shared) scratch.emplace(std::size_t(grid.blocks) * block_bytes, "allocating team scratch");
-  double* global = shared ? nullptr : static_cast<double*>(scratch->data());
-  return run_chunks(scene, range, schedule, grid, host_threads, control, sink,
-                    [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
-                        unsigned long long* counter) {
-                      kernel<<<grid.blocks, grid.threads_per_block, grid.shared_bytes, stream>>>(
-                          schedule, views, count, counter, team, global, per_team);
-                    });
+  out.grid.resident = std::size_t(out.grid.blocks) * teams_per_block;
+  return out;
+}
+
+/// run_slots_on_teams for one kind of team (TeamIntegrator's).
+template <class Integrator, class TeamIntegrator>
+SweepOutcome run_teams(const Scene& scene, const VariantRange& range, unsigned team, int host_threads,
+                       const SweepControl& control, const ResultSink& sink) {
+  using Team = typename TeamIntegrator::TeamType;
+  constexpr bool block_team = std::is_same_v<std::remove_const_t<Team>, kernels::BlockTeam>;
+  using Driver = TeamMember<Team, TeamIntegrator>;
+  available_gpu();
+  const Member variant = range.source->at(range.begin);
+  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
+  if (!Driver::team_schedule_fits(schedule)) throw std::logic_error("a team cannot run this schedule");
+
+  const auto kernel = sweep_slots_on_teams<TeamMember, TeamIntegrator, SlotSchedule, SlotViews>;
+  const TeamLaunch teams = team_launch(kernel, team, block_team, Driver::storage_size(schedule, team));
+  return run_chunks(
+      scene, range, schedule, teams.grid, host_threads, control, sink,
+      [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
+          unsigned long long* counter) {
+        kernel<<<teams.grid.blocks, teams.grid.threads_per_block, teams.grid.shared_bytes, stream>>>(
+            schedule, views, count, counter, team, teams.global(), teams.per_team);
+      });
 }
 
 /// The variant's members, one per team of `team` threads with TeamIntegratorFor<Team> (TeamMember; the

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ensemble/engine/device.hpp"
 #include "ensemble/engine/member_progress.hpp"
 #include "ensemble/rows/coupling_table.hpp"
 #include "ensemble/rows/disorder.hpp"
@@ -20,9 +21,6 @@
 namespace rotorsweep::ensemble {
 
 enum class LaneKind { simd, scalar };
-
-/// Where members run: CPU lanes, or one member per thread of a CUDA GPU (ensemble/gpu/gpu_backend.hpp).
-enum class Device { cpu, gpu };
 
 /// One (N, tolerances) setting of a scene; members of different variants run in separate
 /// lane blocks (a block shares its row count and tolerances). Member carries its variant's values.

@@ -13,6 +13,8 @@
 
 #include "ensemble/engine/integration_loop.hpp"
 #include "ensemble/engine/member_progress.hpp"
+#include "ensemble/slider/slider_member_summary.hpp"
+#include "ensemble/slider/slider_sample_grid.hpp"
 #include "ensemble/slider/slider_scene.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "kernels/lanes/angles.hpp"
@@ -22,37 +24,6 @@
 #include "kernels/steppers/lane_status.hpp"
 
 namespace rotorsweep::ensemble {
-
-/// The times (scaled) at which the members of one speed stop and are sampled: a grid of
-/// `samples_per_period` per period through the start of sliding, from 0 to the end; every period
-/// boundary is on it.
-struct SliderSampleGrid {
-  std::vector<double> stops;
-  std::vector<long> index;  ///< samples since the start of sliding (negative during the rest)
-  std::size_t samples_per_period;
-  std::size_t periods;
-
-  /// The grid of a scene whose speed and end are set (slider_variant).
-  explicit SliderSampleGrid(const SliderScene& scene) : samples_per_period(scene.samples_per_period) {
-    const SliderUnits units(scene);
-    const double dt = kernels::two_pi / double(samples_per_period);
-    const double rest = scene.rest / units.time, end = scene.end / units.time;
-    const long first = -long(std::floor(rest / dt + 1e-9));
-    if (rest + double(first) * dt > 1e-12) {
-      stops.push_back(0.0);
-      index.push_back(first - 1);
-    }
-    for (long k = first; rest + double(k) * dt <= end * (1 + 1e-12); ++k) {
-      stops.push_back(rest + double(k) * dt);
-      index.push_back(k);
-    }
-    periods = std::size_t(std::max(0L, index.back()) / long(samples_per_period));
-  }
-  bool boundary(std::size_t stop) const {
-    return index[stop] >= 0 && index[stop] % long(samples_per_period) == 0 &&
-           std::size_t(index[stop] / long(samples_per_period)) <= periods;
-  }
-};
 
 /// Members (plan indices) of one slider size on the lanes of an IntegrationLoop over
 /// SliderModel<V, Inertial> with Stepper, for LaneScheduler: each member's stops are its speed's
@@ -93,7 +64,7 @@ class SliderProblem {
     lane.grid = &grids_[lane.member.index.speed];
     lane.table = std::make_shared<const kernels::SubstrateTable>(
         substrate_table<V>(variant, size_, lane.member.separation));
-    const kernels::SliderParameters parameters = slider_parameters(variant, *lane.table);
+    const kernels::SliderParameters parameters = slider_parameters(variant, lane.table->view());
     if (scene_.forces) build_gradient_tables(l);
     if (!primed_) {  // lanes never started compute along with this member's tables
       for (std::size_t other = 0; other < width; ++other) {
@@ -123,9 +94,7 @@ class SliderProblem {
       for (auto* series : {&m.force_x_series, &m.force_y_series, &m.force_z_series})
         series->assign(samples, 0.0);
     lane.sample = 0;
-    lane.impulse_at.clear();
-    lane.dissipation_at.clear();
-    lane.energy_at.clear();
+    lane.boundaries = {};
     return {0, int(samples), 0, 0.0};
   }
 
@@ -143,9 +112,9 @@ class SliderProblem {
     const std::size_t k = lane.sample++;
     record_sample(l, k);
     if (lane.grid->boundary(k)) {
-      lane.impulse_at.push_back(loop_.quadrature(l, Model::impulse_index));
-      lane.dissipation_at.push_back(loop_.quadrature(l, Model::dissipation_index));
-      lane.energy_at.push_back(kernels::lane_get(energy_, l));
+      lane.boundaries.impulse.push_back(loop_.quadrature(l, Model::impulse_index));
+      lane.boundaries.dissipation.push_back(loop_.quadrature(l, Model::dissipation_index));
+      lane.boundaries.energy.push_back(kernels::lane_get(energy_, l));
     }
     return 0.0;
   }
@@ -163,7 +132,7 @@ class SliderProblem {
     m.steps_rejected = loop_.steps_rejected(l);
     const bool ok = m.status == "ok";
     for (std::size_t k = lane.sample; k < lane.grid->stops.size(); ++k) record_sample(l, k);
-    summarize(lane, ok);
+    summarize_slider_member(scene_, *lane.grid, lane.boundaries, ok, m);
     loop_.release(l);
     retire(std::move(m));
   }
@@ -175,8 +144,8 @@ class SliderProblem {
     std::shared_ptr<const kernels::SubstrateTable> table;  ///< kept while the model may read it
     /// With SliderScene::forces: the tables at shifted tracks (SliderModel::GradientTable order)
     std::array<std::shared_ptr<const kernels::SubstrateTable>, 4> gradient;
-    std::size_t sample = 0;                                     ///< the next sample
-    std::vector<double> impulse_at, dissipation_at, energy_at;  ///< at each period boundary (scaled)
+    std::size_t sample = 0;       ///< the next sample
+    SliderBoundaries boundaries;  ///< so far
   };
 
   static typename Loop::Settings settings(const SliderScene& scene) {
@@ -217,10 +186,10 @@ class SliderProblem {
   void record_sample(std::size_t l, std::size_t k) {
     evaluate();
     SliderMember& m = lanes_[l].member;
-    m.friction_series[k] = kernels::lane_get(q_[Model::impulse_index], l) * units_.force;
-    m.order_x_series[k] = kernels::lane_get(along_x_, l);
-    m.order_y_series[k] = kernels::lane_get(across_y_, l);
-    m.energy_series[k] = kernels::lane_get(energy_, l) * units_.energy;
+    record_slider_sample(m, k,
+                         {kernels::lane_get(q_[Model::impulse_index], l), kernels::lane_get(along_x_, l),
+                          kernels::lane_get(across_y_, l), kernels::lane_get(energy_, l)},
+                         units_);
     if (scene_.angles)
       for (std::size_t r = 0; r < rotors_; ++r) m.angles[k * rotors_ + r] = loop_.component(l, r);
     if (scene_.rotor_observables()) record_rotors(l, k);
@@ -287,65 +256,6 @@ class SliderProblem {
     const auto series = rotor_series(m);
     for (std::size_t v = 0; v < series.size(); ++v)
       if (series[v].first) (*series[v].second)[k] = values[v];
-  }
-
-  /// Friction, work, dissipation, stored energy and balance per period, the mean friction and
-  /// order parameters (NaN for a member that failed: its values would describe a frozen state).
-  void summarize(Lane& lane, bool ok) const {
-    SliderMember& m = lane.member;
-    const SliderSampleGrid& grid = *lane.grid;
-    const double nan = std::nan("");
-    const double speed = 1.0 / kernels::two_pi, period = kernels::two_pi;
-    for (std::size_t p = 0; p < grid.periods; ++p) {
-      if (!ok) {
-        for (auto* values :
-             {&m.period_friction, &m.period_work, &m.period_dissipation, &m.period_stored, &m.period_balance})
-          values->push_back(nan);
-        continue;
-      }
-      const double impulse = lane.impulse_at[p + 1] - lane.impulse_at[p];
-      const double work = speed * impulse, dissipated = lane.dissipation_at[p + 1] - lane.dissipation_at[p];
-      const double stored = lane.energy_at[p + 1] - lane.energy_at[p];
-      m.period_friction.push_back(impulse / period * units_.force);
-      m.period_work.push_back(work * units_.energy);
-      m.period_dissipation.push_back(dissipated * units_.energy);
-      m.period_stored.push_back(stored * units_.energy);
-      m.period_balance.push_back((work - dissipated - stored) /
-                                 std::max({std::fabs(work), std::fabs(dissipated), 1e-300}));
-    }
-    m.friction = ok && grid.periods > 0 ? (lane.impulse_at[grid.periods] - lane.impulse_at[0]) /
-                                              (period * double(grid.periods)) * units_.force
-                                        : nan;
-    double sum_x = 0.0, sum_y = 0.0;
-    std::size_t count = 0;
-    for (std::size_t k = 0; k < grid.stops.size(); ++k) {
-      if (grid.index[k] <= 0) continue;
-      sum_x += m.order_x_series[k];
-      sum_y += m.order_y_series[k];
-      ++count;
-    }
-    m.order_x = ok && count ? sum_x / double(count) : nan;
-    m.order_y = ok && count ? sum_y / double(count) : nan;
-    if (scene_.forces) {
-      m.period_force_y = period_means(grid, m.force_y_series, ok);
-      m.period_force_z = period_means(grid, m.force_z_series, ok);
-    }
-  }
-
-  /// Per period of sliding, the trapezoidal mean of a series over the period's samples (NaN when the
-  /// member failed).
-  static std::vector<double> period_means(const SliderSampleGrid& grid, const std::vector<double>& series,
-                                          bool ok) {
-    const auto start = std::size_t(std::find(grid.index.begin(), grid.index.end(), 0L) - grid.index.begin());
-    const std::size_t per = grid.samples_per_period;
-    std::vector<double> means;
-    for (std::size_t p = 0; p < grid.periods; ++p) {
-      const std::size_t first = start + p * per;
-      double sum = 0.5 * (series[first] + series[first + per]);
-      for (std::size_t k = first + 1; k < first + per; ++k) sum += series[k];
-      means.push_back(ok ? sum / double(per) : std::nan(""));
-    }
-    return means;
   }
 
   const SliderScene& scene_;

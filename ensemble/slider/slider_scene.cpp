@@ -74,10 +74,11 @@ double field_drive_amplitude(const SliderScene& scene, SliderSize size, double s
   return scene.substrate_moment / scene.moment * (std::abs(bx) + std::abs(bz)) / points;
 }
 
-kernels::SliderParameters slider_parameters(const SliderScene& scene, const kernels::SubstrateTable& table) {
+kernels::SliderParameters slider_parameters(const SliderScene& scene,
+                                            const kernels::SubstrateTableView& table) {
   const SliderUnits units(scene);
   kernels::SliderParameters p;
-  p.substrate = table.view();
+  p.substrate = table;
   p.moment_ratio = scene.substrate_moment / scene.moment;
   p.inertia = scene.inertia / (units.energy * units.time * units.time);
   p.damping = scene.damping / (units.energy * units.time);

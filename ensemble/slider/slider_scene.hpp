@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "ensemble/engine/device.hpp"
 #include "kernels/models/slider/slider_model.hpp"
 #include "kernels/steppers/step_control.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -95,6 +96,9 @@ struct SliderScene {
   double rtol = 5e-7;
   double atol = 5e-7;
   double max_steps = 1e8;
+  /// Where the members run: CPU lanes, or a CUDA GPU, a member per team of threads (ensemble/slider/
+  /// slider_team_member.hpp; the series of SliderScene::gpu_series only).
+  Device device = Device::cpu;
 
   std::string output_path = "results/slider.h5";
   std::string text;  ///< the scene file as read
@@ -154,8 +158,9 @@ double paper_drive_amplitude(const SliderScene& scene, double separation);
 /// B₁ = (|B_x,1| + |B_z,1|)/2 over one lattice period (64 points), in units of μ0 m²/(4π a³).
 double field_drive_amplitude(const SliderScene& scene, SliderSize size, double separation);
 
-/// One lane's scaled parameters over `table`.
-kernels::SliderParameters slider_parameters(const SliderScene& scene, const kernels::SubstrateTable& table);
+/// One member's scaled parameters over `table` (a view of coefficients where the member reads them).
+kernels::SliderParameters slider_parameters(const SliderScene& scene,
+                                            const kernels::SubstrateTableView& table);
 
 /// Where a member sits in the scene's plan: size-major, then speed, damping, separation, replica.
 struct SliderMemberIndex {

@@ -13,6 +13,8 @@
 #include <optional>
 
 #include "ensemble/engine/lane_scheduler.hpp"
+#include "ensemble/gpu/gpu_slider.hpp"
+#include "ensemble/slider/slider_member_summary.hpp"
 #include "ensemble/slider/slider_problem.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/models/slider/slider_model.hpp"
@@ -23,21 +25,6 @@ namespace rotorsweep::ensemble {
 namespace {
 
 using V = kernels::simd_lane;
-
-/// Puts NaN before the member's own samples so that its series fill the timeline's `samples` columns
-/// (a speed whose rest has fewer samples than the fastest one's).
-void align_series(SliderMember& m, std::size_t samples) {
-  const std::size_t missing = samples - m.friction_series.size(), rotors = m.size.rotors();
-  if (missing == 0) return;
-  for (auto* series : {&m.friction_series, &m.order_x_series, &m.order_y_series, &m.energy_series,
-                       &m.substrate_energy_series, &m.pair_energy_series, &m.field_axis_series,
-                       &m.field_z_series, &m.moment_axis_even_series, &m.moment_z_even_series,
-                       &m.torque_even_series, &m.moment_axis_odd_series, &m.moment_z_odd_series,
-                       &m.torque_odd_series, &m.force_x_series, &m.force_y_series, &m.force_z_series})
-    if (!series->empty()) series->insert(series->begin(), missing, std::nan(""));
-  for (auto* per_rotor : {&m.angles, &m.torques})
-    if (!per_rotor->empty()) per_rotor->insert(per_rotor->begin(), missing * rotors, std::nan(""));
-}
 
 /// Runs the members of each size (`sizes`, plan indices) on lane schedulers, one per thread and
 /// size, with one counter per size: a thread whose size has no member left goes on to the next size
@@ -73,7 +60,7 @@ bool run_sizes(const SliderScene& scene, const std::vector<SliderSampleGrid>& gr
               return indices[k];
             },
             [&](SliderMember&& member) {
-              align_series(member, samples);
+              pad_to_timeline(member, samples);
               std::vector<SliderMember> one;
               one.push_back(std::move(member));
 #pragma omp critical(slider_finished)
@@ -139,6 +126,7 @@ SliderTimeline slider_timeline(const SliderScene& scene) {
 bool run_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                         const SliderScanControl& control,
                         const std::function<void(std::vector<SliderMember>&&)>& finished) {
+  if (scene.device == Device::gpu) return run_gpu_slider_members(scene, plan_indices, control, finished);
   std::vector<SliderSampleGrid> grids;
   for (std::size_t v = 0; v < scene.speeds.size(); ++v) grids.emplace_back(slider_variant(scene, v, 0));
   // the members of each size in turn (a lane scheduler's loop has one grid of rotors)

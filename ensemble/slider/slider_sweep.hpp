@@ -67,7 +67,8 @@ struct SliderScanControl {
 /// Runs the members `plan_indices` (ascending) in lane blocks of one size each and hands each block's
 /// members to `finished` as the block ends (one call at a time, blocks in any order). A member's
 /// results do not depend on which members share its block. Returns whether stopped() left members out;
-/// an exception in a worker (std::bad_alloc) stops the other blocks and is rethrown here.
+/// an exception in a worker (std::bad_alloc) stops the other blocks and is rethrown here. With
+/// SliderScene::device = gpu the members run on the GPU (run_gpu_slider_members), a chunk at a time.
 bool run_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                         const SliderScanControl& control,
                         const std::function<void(std::vector<SliderMember>&&)>& finished);

@@ -1,9 +1,11 @@
 // `rotorsweep slider` end to end (README "The experiment's slider"): scene in, complete HDF5 file out with
-// its datasets and units, `info` on it; bad keys and the wrong kind of scene as exit code 2, no file written;
+// its datasets and units, `info` on it; bad keys, the wrong kind of scene and what the GPU does not run
+// as exit code 2, no file written;
 // SIGINT and SIGTERM keep the finished members for --resume; shards merge to the single-process file.
 #include <catch2/catch.hpp>
 #include <filesystem>
 
+#include "ensemble/gpu/gpu_backend.hpp"
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
 #include "support/result_datasets.hpp"
@@ -75,6 +77,11 @@ TEST_CASE("slider refuses bad scenes with exit code 2 and writes nothing", "[app
   expect_refusal("slider", "[slider]\ntilt = -3.5\n[sweep]\nseparation = [8e-3]\n", "slider.tilt");
   expect_refusal("slider", "[sweep]\nseparation = [8e-3]\n[observables]\nseries = false\nforces = true\n",
                  "observables.forces");
+  expect_refusal("slider --device gpu", small_slider, "observables.angles");
+  expect_refusal("slider", one_h + "[numerics]\ndevice = \"gpu\"\nstepper = \"rodas4\"\n",
+                 "numerics.stepper");
+  if (!rotorsweep::ensemble::gpu_info().available)
+    expect_refusal("slider --device gpu", one_h, "run with --device cpu");
   expect_refusal("slider", "[model]\nrows = 20\n", "unknown; the scene sections are");
   expect_refusal("run", small_slider, "run them with `rotorsweep slider FILE`");
 }

@@ -1,7 +1,8 @@
 // The kernels compiled for a GPU (nvcc, no GPU needed): the row model and both stepper families on the
 // double lane, and on warp and block teams the stage solves (ring, dense, slider) and whole members
-// (nearest neighbours at T = 0 and T > 0, a coupling table at T = 0), and a slider's integration.
+// (nearest neighbours at T = 0 and T > 0, a coupling table at T = 0, the slider's).
 #include "ensemble/engine/team_member.hpp"
+#include "ensemble/slider/slider_team_member.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/lanes/team.hpp"
@@ -95,24 +96,17 @@ __global__ void advance_on_teams(double* storage, std::size_t per_team, std::siz
   if (crew.rank() == 0) drive[team] = state.quad[0];
 }
 
-/// A 7 × 7 inertial slider integrated by a warp team over one period (SliderModel's range forms,
+/// Slider members of a chunk of slots (7 × 7 inertial on the GPU's runs), one per warp team, from start
+/// to retirement (ensemble/slider/slider_team_member.hpp: SliderModel's range forms,
 /// TeamSecondOrderJacobian).
-__global__ void advance_slider_on_teams(double* storage, std::size_t per_team, unsigned team_size,
-                                        SliderParameters parameters, double* y, double* impulse) {
-  using Slider = SliderModel<double, true>;
-  using Stepper = TeamRosenbrock<const WarpTeam, rodas5p_tableau, Slider>;
+__global__ void run_slider_members_on_teams(rotorsweep::ensemble::SliderSlotSchedule schedule,
+                                            rotorsweep::ensemble::SliderSlotViews slots, double* storage,
+                                            std::size_t per_team, unsigned team_size) {
+  using Stepper = TeamRosenbrock<const WarpTeam, rodas5p_tableau, SliderModel<double, true>>;
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
-  LaneArena<double> arena(storage + team * per_team, per_team);
-  Slider model(SliderGrid{7, 7}, SliderPlacement{}, arena);
-  model.set_lane(0, parameters);
-  TeamIntegrator<const WarpTeam, Stepper> integrator(model, team_size, {1e-6, 1e-6}, {}, 1e-3, arena);
-  crew.sync();
-  TeamMemberState state;
-  state.y = y + team * model.dimension();
-  state.t_stop = two_pi;
-  integrator.advance(crew, model, state);
-  if (crew.rank() == 0) impulse[team] = state.quad[Slider::impulse_index];
+  rotorsweep::ensemble::SliderTeamMember<const WarpTeam, TeamIntegrator<const WarpTeam, Stepper>>::run(
+      crew, schedule, slots, team, storage + team * per_team, per_team);
 }
 
 /// Members of a chunk of slots of the row model Rows, one per warp team, from start to retirement

@@ -17,25 +17,14 @@
 #include "kernels/steppers/leimkuhler_matthews.hpp"
 #include "kernels/steppers/team_leimkuhler_matthews.hpp"
 #include "support/same_results.hpp"
+#include "support/scoped_variable.hpp"
 #include "support/slot_runs.hpp"
 
 using namespace rotorsweep;
 
 namespace {
 
-/// Sets an environment variable (the GPU's launch) for the scope of the object.
-class ScopedVariable {
- public:
-  ScopedVariable(const char* name, const std::string& value) : name_(name) {
-    ::setenv(name, value.c_str(), 1);
-  }
-  ScopedVariable(const ScopedVariable&) = delete;
-  ScopedVariable& operator=(const ScopedVariable&) = delete;
-  ~ScopedVariable() { ::unsetenv(name_); }
-
- private:
-  const char* name_;
-};
+using testing::ScopedVariable;
 
 std::vector<ensemble::MemberResult> run_on(ensemble::Scene scene, ensemble::Device device,
                                            const std::vector<ensemble::Member>& members) {

@@ -224,7 +224,7 @@ class SliderModel {
   ROTORSWEEP_HD RotorSums rates_range(const Workspace& w, const V* y, V* f, std::size_t begin,
                                       std::size_t end) const {
     RotorSums sums;
-    for (std::size_t r = begin; r < end; ++r) sums.force -= w.dbx[r] * w.cos[r] - w.dbz[r] * w.sin[r];
+    sums.force = force_range(w, begin, end);
     for (std::size_t r = begin; r < end; ++r) {
       if constexpr (Inertial) {
         f[r] = y[n_ + r];
@@ -317,7 +317,7 @@ class SliderModel {
     fy = V(0.0);
     fz = V(0.0);
     for (std::size_t r = 0; r < n_; ++r) {
-      fx += w.dbx[r] * w.cos[r] - w.dbz[r] * w.sin[r];
+      fx += field_work(w, r);
       const std::size_t track = turned_ ? r : row(r);
       const V x = xi + start_x_[r];
       const auto at = [&](GradientTable g) { return field_in_lanes(gradient_[g].data(), track, x); };
@@ -330,28 +330,46 @@ class SliderModel {
   /// E, the magnetic energy (pairs and substrate), in units of μ0 m²/(4π a³).
   ROTORSWEEP_HD V energy(Workspace& w, const V* y, V t) const {
     prepare(w, y, t, false);
-    V e(0.0);
-    for (std::size_t r = 0; r < n_; ++r)
-      e += V(0.5) * (w.cos[r] * w.p_cos[r] + w.sin[r] * w.q_sin[r]) -
-           (w.bx[r] * w.cos[r] - w.bz[r] * w.sin[r]);
-    return e;
+    return energy_range(w, 0, n_);
   }
 
   /// ½ I Σ θ̇² (0 when overdamped).
-  ROTORSWEEP_HD V kinetic_energy(const V* y) const {
-    V e(0.0);
-    if constexpr (Inertial)
-      for (std::size_t r = 0; r < n_; ++r) e += y[n_ + r] * y[n_ + r];
-    return V(0.5) * inertia_ * e;
-  }
+  ROTORSWEEP_HD V kinetic_energy(const V* y) const { return kinetic_energy_of(velocity_squares(y, 0, n_)); }
 
   /// The alignment of neighbours along x and across y: the mean of cos(θ_r − θ_q) over neighbouring
   /// pairs in each direction (+1 ferromagnetic, −1 antiferromagnetic).
   ROTORSWEEP_HD void order_parameters(const V* y, V& along_x, V& across_y) const {
     along_x = V(0.0);
     across_y = V(0.0);
+    alignment_range(y, 0, n_, along_x, across_y);
+    mean_alignment(along_x, across_y);
+  }
+
+  // A sample's observables on a team: each rank's part of F (force_range), of E (energy_range, after
+  // torque_range), of Σ θ̇² (velocity_squares) and of the alignments' sums (alignment_range), then the
+  // team's sums.
+
+  /// The magnetic energy of rotors [begin, end) (half of each pair's), after their torque_range.
+  ROTORSWEEP_HD V energy_range(const Workspace& w, std::size_t begin, std::size_t end) const {
+    V e(0.0);
+    for (std::size_t r = begin; r < end; ++r)
+      e += V(0.5) * (w.cos[r] * w.p_cos[r] + w.sin[r] * w.q_sin[r]) -
+           (w.bx[r] * w.cos[r] - w.bz[r] * w.sin[r]);
+    return e;
+  }
+  /// Σ θ̇² over rotors [begin, end) (0 when overdamped), and ½ I times such a sum.
+  ROTORSWEEP_HD V velocity_squares(const V* y, std::size_t begin, std::size_t end) const {
+    V e(0.0);
+    if constexpr (Inertial)
+      for (std::size_t r = begin; r < end; ++r) e += y[n_ + r] * y[n_ + r];
+    return e;
+  }
+  ROTORSWEEP_HD V kinetic_energy_of(V velocity_squares) const { return V(0.5) * inertia_ * velocity_squares; }
+  /// Adds cos(θ_r − θ_q) of the links from rotors [begin, end) to their neighbours at +x and +y.
+  ROTORSWEEP_HD void alignment_range(const V* y, std::size_t begin, std::size_t end, V& along_x,
+                                     V& across_y) const {
     V s, c;
-    for (std::size_t r = 0; r < n_; ++r) {
+    for (std::size_t r = begin; r < end; ++r) {
       if (column(r) + 1 < grid_.columns) {
         lane_sincos(y[r] - y[r + 1], s, c);
         along_x += c;
@@ -361,9 +379,22 @@ class SliderModel {
         across_y += c;
       }
     }
+  }
+  /// The alignments' sums over every link into their means (1 where a direction has no link).
+  ROTORSWEEP_HD void mean_alignment(V& along_x, V& across_y) const {
     const std::size_t x_links = (grid_.columns - 1) * grid_.rows, y_links = grid_.columns * (grid_.rows - 1);
     along_x = x_links ? along_x * V(1.0 / double(x_links)) : V(1.0);
     across_y = y_links ? across_y * V(1.0 / double(y_links)) : V(1.0);
+  }
+  /// The part of rotor r in −F, the drive's force (∂(m_r·B)/∂x), after its prepare_range.
+  ROTORSWEEP_HD V field_work(const Workspace& w, std::size_t r) const {
+    return w.dbx[r] * w.cos[r] - w.dbz[r] * w.sin[r];
+  }
+  /// The drive's force from rotors [begin, end), after their prepare_range.
+  ROTORSWEEP_HD V force_range(const Workspace& w, std::size_t begin, std::size_t end) const {
+    V force(0.0);
+    for (std::size_t r = begin; r < end; ++r) force -= field_work(w, r);
+    return force;
   }
 
  private:

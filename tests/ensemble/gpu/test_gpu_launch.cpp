@@ -1,5 +1,6 @@
 // How the GPU backend lays members on threads (ensemble/gpu/gpu_launch.hpp), on the host: which scenes
-// run on teams, the team's size by N, the environment's settings and their errors, the file's label.
+// run on teams, the team's size by N (and the slider's by its rotors), the environment's settings and
+// their errors, the file's label.
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <stdexcept>
@@ -7,23 +8,16 @@
 
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/gpu/gpu_launch.hpp"
+#include "ensemble/gpu/gpu_slider.hpp"
 #include "io/scene_parser.hpp"
+#include "io/slider_scene_parser.hpp"
+#include "support/scoped_variable.hpp"
 
 using namespace rotorsweep;
 
 namespace {
 
-/// Sets an environment variable for the scope of the object.
-class ScopedVariable {
- public:
-  ScopedVariable(const char* name, const char* value) : name_(name) { ::setenv(name, value, 1); }
-  ScopedVariable(const ScopedVariable&) = delete;
-  ScopedVariable& operator=(const ScopedVariable&) = delete;
-  ~ScopedVariable() { ::unsetenv(name_); }
-
- private:
-  const char* name_;
-};
+using testing::ScopedVariable;
 
 ensemble::Scene scene_of(const std::string& model, const std::string& rest = "") {
   return io::parse_scene_text("[model]\n" + model + "\n[drive]\ng = [0.01]\n[sweep]\nA = [1, 8]\n" + rest,
@@ -157,4 +151,30 @@ TEST_CASE("the result file's device says how many threads run a member", "[gpu_l
   auto explicit_stepper = scene_of("rows = 20", "[numerics]\nstepper = \"dopri5\"\n");
   explicit_stepper.device = ensemble::Device::gpu;
   CHECK_THAT(ensemble::device_label(explicit_stepper), Catch::EndsWith("; 1 thread per member)"));
+}
+
+TEST_CASE("a slider member's team: two or three rotors a thread, at most a warp; the file's label",
+          "[ensemble][gpu][slider]") {
+  const ensemble::GpuLaunch automatic;
+  CHECK(ensemble::gpu_slider_team_size({7, 7}, automatic) == 32);
+  CHECK(ensemble::gpu_slider_team_size({3, 2}, automatic) == 2);
+  CHECK(ensemble::gpu_slider_team_size({4, 4}, automatic) == 8);
+  CHECK(ensemble::gpu_slider_team_size({20, 20}, automatic) == 32);
+  ensemble::GpuLaunch asked;
+  asked.team = 8;
+  CHECK(ensemble::gpu_slider_team_size({7, 7}, asked) == 8);
+  for (const unsigned team : {1u, 64u}) {
+    asked.team = team;
+    CHECK_THROWS_WITH(ensemble::gpu_slider_team_size({7, 7}, asked),
+                      Catch::Contains("ROTORSWEEP_GPU_TEAM = " + std::to_string(team)) &&
+                          Catch::Contains("2, 4, 8, 16 or 32"));
+  }
+  const auto scene = io::parse_slider_scene_text(
+      "[slider]\ncolumns = [7, 3]\nrows = [7, 2]\n[sweep]\nseparation = [8e-3]\n[numerics]\ndevice = "
+      "\"gpu\"\n",
+      "label");
+  CHECK_THAT(ensemble::slider_device_label(scene),
+             Catch::Contains("threads per member: 32 at 7 × 7, 2 at 3 × 2"));
+  const ScopedVariable team("ROTORSWEEP_GPU_TEAM", "16");
+  CHECK_THAT(ensemble::slider_device_label(scene), Catch::Contains("16 at 7 × 7, 16 at 3 × 2"));
 }

@@ -1,0 +1,95 @@
+// The slider on the GPU (docs/architecture.md "Teams"): SliderTeamMember with rodas5p on warp teams,
+// inertial or overdamped; the substrate tables copied to device memory once per size and speed.
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "ensemble/gpu/gpu_runner.cuh"
+#include "ensemble/gpu/gpu_slider.hpp"
+#include "ensemble/slider/slider_slot_sweep.hpp"
+#include "ensemble/slider/slider_team_member.hpp"
+#include "kernels/steppers/team_rosenbrock.hpp"
+
+namespace rotorsweep::ensemble {
+
+namespace gpu {
+
+/// The slider's team integrator: the slider's default stepper (rodas5p) on a warp team.
+template <bool Inertial>
+using SliderTeamIntegrator =
+    kernels::TeamIntegrator<const kernels::WarpTeam,
+                            kernels::TeamRosenbrock<const kernels::WarpTeam, kernels::rodas5p_tableau,
+                                                    kernels::SliderModel<double, Inertial>>>;
+
+/// Chunks of slider slots on the GPU, a member per team of a warp's threads (gpu_slider_team_size of
+/// the chunk's size).
+template <bool Inertial>
+class GpuSliderDevice final : public SliderSlotDevice {
+ public:
+  using Integrator = SliderTeamIntegrator<Inertial>;
+  using Driver = SliderTeamMember<const kernels::WarpTeam, Integrator>;
+
+  std::size_t chunk_members(const SliderSlotSchedule& schedule) override {
+    team_ = gpu_slider_team_size({schedule.grid.columns, schedule.grid.rows}, gpu_launch());
+    launch_ = std::make_unique<TeamLaunch>(
+        team_launch(kernel(), team_, false, Driver::storage_size(schedule, team_)));
+    return std::max<std::size_t>(4 * launch_->grid.resident, 1024);
+  }
+
+  std::vector<kernels::SubstrateTableView> place_tables(
+      const std::vector<const kernels::SubstrateTable*>& tables) override {
+    tables_.clear();
+    std::vector<kernels::SubstrateTableView> views;
+    for (const kernels::SubstrateTable* table : tables) {
+      if (!table) {
+        views.emplace_back();
+        continue;
+      }
+      kernels::SubstrateTableView view = table->view();
+      const std::size_t bytes = view.tracks * view.intervals * 12 * sizeof(double);
+      tables_.push_back(std::make_unique<DeviceBuffer>(bytes, "allocating a substrate table"));
+      check(cudaMemcpy(tables_.back()->data(), view.coefficients, bytes, cudaMemcpyHostToDevice),
+            "copying a substrate table");
+      view.coefficients = static_cast<const double*>(tables_.back()->data());
+      views.push_back(view);
+    }
+    return views;
+  }
+
+  void run(SliderSlotChunk& chunk) override {
+    DeviceChunk<SliderSlotChunk, slider_slot_views> device(chunk);
+    device.upload(chunk, nullptr);
+    const TeamLaunch& l = *launch_;
+    kernel()<<<l.grid.blocks, l.grid.threads_per_block, l.grid.shared_bytes>>>(
+        chunk.schedule(), device.views(), (unsigned long long)chunk.count(), device.counter(), team_,
+        l.global(), l.per_team);
+    check(cudaGetLastError(), "launching the slider kernel");
+    device.download(chunk, nullptr);
+    check(cudaDeviceSynchronize(), "running the slider kernel");
+  }
+
+ private:
+  static auto kernel() {
+    return sweep_slots_on_teams<SliderTeamMember, Integrator, SliderSlotSchedule, SliderSlotViews>;
+  }
+
+  unsigned team_ = 32;
+  std::unique_ptr<TeamLaunch> launch_;
+  std::vector<std::unique_ptr<DeviceBuffer>> tables_;
+};
+
+}  // namespace gpu
+
+bool run_gpu_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                            const SliderScanControl& control,
+                            const std::function<void(std::vector<SliderMember>&&)>& finished) {
+  gpu::available_gpu();
+  if (scene.overdamped) {
+    gpu::GpuSliderDevice<false> device;
+    return run_slider_members_in_slots(scene, plan_indices, control, finished, device);
+  }
+  gpu::GpuSliderDevice<true> device;
+  return run_slider_members_in_slots(scene, plan_indices, control, finished, device);
+}
+
+}  // namespace rotorsweep::ensemble

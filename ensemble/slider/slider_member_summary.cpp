@@ -1,0 +1,93 @@
+// A slider member's results on the host (docs/model.md §9 "Observables"): samples in SI, per-period
+// friction (impulse / period), work v·impulse, dissipation, stored energy and their balance.
+#include "ensemble/slider/slider_member_summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernels/lanes/angles.hpp"
+
+namespace rotorsweep::ensemble {
+
+namespace {
+
+/// Per period of sliding, the trapezoidal mean of a series over the period's samples (NaN when the
+/// member failed).
+std::vector<double> period_means(const SliderSampleGrid& grid, const std::vector<double>& series, bool ok) {
+  const auto start = std::size_t(std::find(grid.index.begin(), grid.index.end(), 0L) - grid.index.begin());
+  const std::size_t per = grid.samples_per_period;
+  std::vector<double> means;
+  for (std::size_t p = 0; p < grid.periods; ++p) {
+    const std::size_t first = start + p * per;
+    double sum = 0.5 * (series[first] + series[first + per]);
+    for (std::size_t k = first + 1; k < first + per; ++k) sum += series[k];
+    means.push_back(ok ? sum / double(per) : std::nan(""));
+  }
+  return means;
+}
+
+}  // namespace
+
+void record_slider_sample(SliderMember& m, std::size_t k, const SliderSample& sample,
+                          const SliderUnits& units) {
+  m.friction_series[k] = sample.force * units.force;
+  m.order_x_series[k] = sample.order_x;
+  m.order_y_series[k] = sample.order_y;
+  m.energy_series[k] = sample.energy * units.energy;
+}
+
+void summarize_slider_member(const SliderScene& scene, const SliderSampleGrid& grid,
+                             const SliderBoundaries& at, bool ok, SliderMember& m) {
+  const SliderUnits units(scene);
+  const double nan = std::nan("");
+  const double speed = 1.0 / kernels::two_pi, period = kernels::two_pi;
+  for (std::size_t p = 0; p < grid.periods; ++p) {
+    if (!ok) {
+      for (auto* values :
+           {&m.period_friction, &m.period_work, &m.period_dissipation, &m.period_stored, &m.period_balance})
+        values->push_back(nan);
+      continue;
+    }
+    const double impulse = at.impulse[p + 1] - at.impulse[p];
+    const double work = speed * impulse, dissipated = at.dissipation[p + 1] - at.dissipation[p];
+    const double stored = at.energy[p + 1] - at.energy[p];
+    m.period_friction.push_back(impulse / period * units.force);
+    m.period_work.push_back(work * units.energy);
+    m.period_dissipation.push_back(dissipated * units.energy);
+    m.period_stored.push_back(stored * units.energy);
+    m.period_balance.push_back((work - dissipated - stored) /
+                               std::max({std::fabs(work), std::fabs(dissipated), 1e-300}));
+  }
+  m.friction = ok && grid.periods > 0 ? (at.impulse[grid.periods] - at.impulse[0]) /
+                                            (period * double(grid.periods)) * units.force
+                                      : nan;
+  double sum_x = 0.0, sum_y = 0.0;
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < grid.stops.size(); ++k) {
+    if (grid.index[k] <= 0) continue;
+    sum_x += m.order_x_series[k];
+    sum_y += m.order_y_series[k];
+    ++count;
+  }
+  m.order_x = ok && count ? sum_x / double(count) : nan;
+  m.order_y = ok && count ? sum_y / double(count) : nan;
+  if (scene.forces) {
+    m.period_force_y = period_means(grid, m.force_y_series, ok);
+    m.period_force_z = period_means(grid, m.force_z_series, ok);
+  }
+}
+
+void pad_to_timeline(SliderMember& m, std::size_t samples) {
+  const std::size_t missing = samples - m.friction_series.size(), rotors = m.size.rotors();
+  if (missing == 0) return;
+  for (auto* series : {&m.friction_series, &m.order_x_series, &m.order_y_series, &m.energy_series,
+                       &m.substrate_energy_series, &m.pair_energy_series, &m.field_axis_series,
+                       &m.field_z_series, &m.moment_axis_even_series, &m.moment_z_even_series,
+                       &m.torque_even_series, &m.moment_axis_odd_series, &m.moment_z_odd_series,
+                       &m.torque_odd_series, &m.force_x_series, &m.force_y_series, &m.force_z_series})
+    if (!series->empty()) series->insert(series->begin(), missing, std::nan(""));
+  for (auto* per_rotor : {&m.angles, &m.torques})
+    if (!per_rotor->empty()) per_rotor->insert(per_rotor->begin(), missing * rotors, std::nan(""));
+}
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,40 @@
+// What a slider member's samples and period boundaries become on the host, whichever backend ran it
+// (docs/model.md §9 "Observables"): the series in SI, friction and energy balance per period, means.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "ensemble/slider/slider_sample_grid.hpp"
+#include "ensemble/slider/slider_scene.hpp"
+#include "ensemble/slider/slider_sweep.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// A sample's observables, scaled: the drive's force F (the impulse's integrand), the order parameters
+/// along x and across y, and the energy E + ½ I Σ θ̇².
+struct SliderSample {
+  double force = 0.0, order_x = 0.0, order_y = 0.0, energy = 0.0;
+};
+
+/// Writes sample k of m's friction, order-parameter and energy series, in SI.
+void record_slider_sample(SliderMember& m, std::size_t k, const SliderSample& sample,
+                          const SliderUnits& units);
+
+/// A member's impulse, dissipation and energy (scaled) at each period boundary of its grid.
+struct SliderBoundaries {
+  std::vector<double> impulse, dissipation, energy;
+};
+
+/// Fills m's friction, work, dissipation, stored energy and balance per period, its mean friction and
+/// order parameters and (with SliderScene::forces) the per-period means of F_y and F_z, from its
+/// series (on `grid`'s samples) and boundaries; NaN where the member failed (`ok` false: its values
+/// would describe a frozen state).
+void summarize_slider_member(const SliderScene& scene, const SliderSampleGrid& grid,
+                             const SliderBoundaries& at, bool ok, SliderMember& m);
+
+/// Puts NaN before the member's own samples so that its series fill the timeline's `samples` columns
+/// (a speed whose rest has fewer samples than the fastest one's).
+void pad_to_timeline(SliderMember& m, std::size_t samples);
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,74 @@
+// A slider scan through slots (docs/architecture.md "Teams"): groups of one size and speed, their
+// separations' substrate tables (docs/model.md §9 "Substrate field") built once, chunks on the device.
+#include "ensemble/slider/slider_slot_sweep.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "kernels/models/slider/slider_model.hpp"
+#include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/stepper_list.hpp"
+
+namespace rotorsweep::ensemble {
+
+double slider_first_step_scale(const SliderScene& scene) {
+  using Model = kernels::SliderModel<double, true>;
+  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
+    using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
+    return kernels::AdaptiveIntegrator<Model, Stepper>::first_step_scale({scene.rtol, scene.atol});
+  });
+}
+
+bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                                 const SliderScanControl& control,
+                                 const std::function<void(std::vector<SliderMember>&&)>& finished,
+                                 SliderSlotDevice& device) {
+  const double first_step_scale = slider_first_step_scale(scene);
+  const int threads = control.threads > 0 ? control.threads : omp_get_max_threads();
+  std::size_t done = 0;
+  for (std::size_t begin = 0; begin < plan_indices.size();) {
+    // a group: the consecutive members of one size and speed
+    const SliderMemberIndex first = slider_plan_member(scene, plan_indices[begin]).index;
+    std::size_t end = begin;
+    std::vector<bool> used(scene.separations.size(), false);
+    for (; end < plan_indices.size(); ++end) {
+      const SliderMemberIndex at = slider_plan_member(scene, plan_indices[end]).index;
+      if (at.size != first.size || at.speed != first.speed) break;
+      used[at.separation] = true;
+    }
+    if (control.stopped && control.stopped()) return true;
+
+    const SliderScene variant = slider_variant(scene, first.speed, 0);
+    const SliderSize size = scene.sizes[first.size];
+    std::vector<std::optional<kernels::SubstrateTable>> tables(used.size());
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
+    for (std::size_t s = 0; s < used.size(); ++s)
+      if (used[s]) tables[s].emplace(substrate_table<double>(variant, size, scene.separations[s]));
+    std::vector<const kernels::SubstrateTable*> placed;
+    for (const auto& t : tables) placed.push_back(t ? &*t : nullptr);
+    const std::vector<kernels::SubstrateTableView> views = device.place_tables(placed);
+
+    const SliderSlotSchedule schedule = slider_slot_schedule(scene, first.speed, size, first_step_scale);
+    const std::size_t capacity = std::max<std::size_t>(1, device.chunk_members(schedule));
+    SliderSlotChunk chunk(scene, first.speed, schedule, std::min(capacity, end - begin));
+    for (std::size_t at = begin; at < end; at += chunk.capacity()) {
+      if (control.stopped && control.stopped()) return true;
+      const std::size_t count = std::min(chunk.capacity(), end - at);
+      chunk.fill(
+          {plan_indices.begin() + std::ptrdiff_t(at), plan_indices.begin() + std::ptrdiff_t(at + count)},
+          views);
+      device.run(chunk);
+      std::vector<SliderMember> members;
+      for (std::size_t k = 0; k < count; ++k) members.push_back(chunk.member(k));
+      finished(std::move(members));
+      done += count;
+      if (control.progress) control.progress(done);
+    }
+    begin = end;
+  }
+  return false;
+}
+
+}  // namespace rotorsweep::ensemble

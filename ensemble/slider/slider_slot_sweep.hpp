@@ -1,0 +1,41 @@
+// A slider scan through slots on a device (docs/architecture.md "Teams"): the members of each size and
+// speed in chunks, each separation's substrate table built once and placed where the device reads it.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "ensemble/slider/slider_scene.hpp"
+#include "ensemble/slider/slider_slots.hpp"
+#include "ensemble/slider/slider_sweep.hpp"
+#include "kernels/models/slider/substrate_table.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// What runs chunks of slider slots: the GPU (ensemble/gpu/gpu_slider.cu), or a host team.
+class SliderSlotDevice {
+ public:
+  virtual ~SliderSlotDevice() = default;
+  /// The most members one chunk of a slider of `grid` holds (enough to keep the device busy).
+  virtual std::size_t chunk_members(const SliderSlotSchedule& schedule) = 0;
+  /// Views of `tables` where the members read them (copies in device memory, kept until the next
+  /// call); a null table gives an empty view.
+  virtual std::vector<kernels::SubstrateTableView> place_tables(
+      const std::vector<const kernels::SubstrateTable*>& tables) = 0;
+  /// Runs every member of `chunk` to its retirement: inputs from its buffers, outputs into them.
+  virtual void run(SliderSlotChunk& chunk) = 0;
+};
+
+/// The first-step scale of the scene's stepper at its tolerances (kernels::AdaptiveIntegrator's).
+double slider_first_step_scale(const SliderScene& scene);
+
+/// run_slider_members on `device`: members `plan_indices` (ascending) in chunks of one size and speed,
+/// each chunk's members to `finished` at once (series on the scene's timeline); progress after each
+/// chunk, stopped() checked between chunks. Returns whether stopped() left members out.
+bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                                 const SliderScanControl& control,
+                                 const std::function<void(std::vector<SliderMember>&&)>& finished,
+                                 SliderSlotDevice& device);
+
+}  // namespace rotorsweep::ensemble

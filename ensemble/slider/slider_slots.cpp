@@ -1,0 +1,119 @@
+// The host side of slider slots (docs/architecture.md "Teams"): a chunk's inputs from the scene's plan
+// (parameters, start, the speed's sample grid) and its members' results from the slots' samples.
+#include "ensemble/slider/slider_slots.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "kernels/steppers/lane_status.hpp"
+
+namespace rotorsweep::ensemble {
+
+SliderSlotSchedule slider_slot_schedule(const SliderScene& scene, std::size_t speed, SliderSize size,
+                                        double first_step_scale) {
+  const SliderSampleGrid grid(slider_variant(scene, speed, 0));
+  SliderSlotSchedule schedule;
+  schedule.grid = {size.columns, size.rows};
+  schedule.placement = slider_placement(scene);
+  schedule.rtol = scene.rtol;
+  schedule.atol = scene.atol;
+  schedule.h_max = kernels::two_pi / double(scene.samples_per_period);  // as SliderProblem's lanes
+  schedule.max_steps = scene.max_steps;
+  schedule.first_step_scale = first_step_scale;
+  schedule.stops = grid.stops.size();
+  for (std::size_t s = 0; s < grid.stops.size(); ++s) schedule.boundaries += grid.boundary(s) ? 1 : 0;
+  return schedule;
+}
+
+SliderSlotChunk::SliderSlotChunk(const SliderScene& scene, std::size_t speed,
+                                 const SliderSlotSchedule& schedule, std::size_t capacity)
+    : scene_(scene),
+      grid_(slider_variant(scene, speed, 0)),
+      timeline_samples_(slider_timeline(scene).samples),
+      schedule_(schedule),
+      capacity_(capacity),
+      stops_(grid_.stops) {
+  for (std::size_t s = 0; s < grid_.stops.size(); ++s) boundary_.push_back(grid_.boundary(s) ? 1 : 0);
+  parameters_.resize(capacity);
+  y0_.resize(capacity * dimension());
+  samples_.resize(capacity * schedule_.stops * slider_sample_values);
+  boundary_values_.resize(capacity * schedule_.boundaries * slider_boundary_values);
+  status_.resize(capacity);
+  steps_.resize(2 * capacity);
+}
+
+std::size_t SliderSlotChunk::dimension() const {
+  return (scene_.overdamped ? 1 : 2) * schedule_.grid.rotors();
+}
+
+void SliderSlotChunk::fill(const std::vector<std::size_t>& plan_indices,
+                           const std::vector<kernels::SubstrateTableView>& tables) {
+  plan_indices_ = plan_indices;
+  const std::size_t dim = dimension();
+  std::fill(y0_.begin(), y0_.end(), 0.0);
+  for (std::size_t k = 0; k < plan_indices.size(); ++k) {
+    const SliderMember m = slider_plan_member(scene_, plan_indices[k]);
+    parameters_[k] =
+        slider_parameters(slider_variant(scene_, m.index.speed, m.index.damping), tables[m.index.separation]);
+    const std::vector<double> theta = slider_start(scene_, m.index);
+    std::copy(theta.begin(), theta.end(), y0_.begin() + std::ptrdiff_t(k * dim));
+  }
+}
+
+SliderMember SliderSlotChunk::member(std::size_t k) const {
+  SliderMember m = slider_plan_member(scene_, plan_indices_[k]);
+  const auto status = kernels::LaneStatus(status_[k]);
+  m.status = std::string(kernels::status_name(status));
+  m.steps_accepted = steps_[2 * k];
+  m.steps_rejected = steps_[2 * k + 1];
+  const SliderUnits units(scene_);
+  const std::size_t stops = schedule_.stops;
+  for (auto* series : {&m.friction_series, &m.order_x_series, &m.order_y_series, &m.energy_series})
+    series->assign(stops, 0.0);
+  for (std::size_t s = 0; s < stops; ++s) {
+    const double* v = samples_.data() + (k * stops + s) * slider_sample_values;
+    record_slider_sample(m, s, {v[0], v[1], v[2], v[3]}, units);
+  }
+  SliderBoundaries at;
+  for (std::size_t b = 0; b < schedule_.boundaries; ++b) {
+    const double* v = boundary_values_.data() + (k * schedule_.boundaries + b) * slider_boundary_values;
+    at.impulse.push_back(v[0]);
+    at.dissipation.push_back(v[1]);
+    at.energy.push_back(v[2]);
+  }
+  summarize_slider_member(scene_, grid_, at, status == kernels::LaneStatus::ok, m);
+  pad_to_timeline(m, timeline_samples_);
+  return m;
+}
+
+SliderSlotViews SliderSlotChunk::views() {
+  auto buffers = this->buffers();
+  std::vector<void*> pointers;
+  for (const auto& b : buffers) pointers.push_back(b.data);
+  return slider_slot_views(pointers.data());
+}
+
+std::vector<SliderSlotChunk::Buffer> SliderSlotChunk::buffers() {
+  const auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
+  return {{parameters_.data(), bytes(parameters_), true},
+          {y0_.data(), bytes(y0_), true},
+          {stops_.data(), bytes(stops_), true},
+          {boundary_.data(), bytes(boundary_), true},
+          {samples_.data(), bytes(samples_), false},
+          {boundary_values_.data(), bytes(boundary_values_), false},
+          {status_.data(), bytes(status_), false},
+          {steps_.data(), bytes(steps_), false}};
+}
+
+SliderSlotViews slider_slot_views(void* const* p) {
+  return {static_cast<const kernels::SliderParameters*>(p[0]),
+          static_cast<const double*>(p[1]),
+          static_cast<const double*>(p[2]),
+          static_cast<const std::uint8_t*>(p[3]),
+          static_cast<double*>(p[4]),
+          static_cast<double*>(p[5]),
+          static_cast<std::uint8_t*>(p[6]),
+          static_cast<double*>(p[7])};
+}
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,96 @@
+// Slider members laid out as flat arrays for a device (docs/architecture.md "Teams"): a chunk of one
+// size and speed — each member's parameters (its substrate table a view of coefficients on the device)
+// and start, the speed's sample grid — and the slots its samples and period boundaries go to.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "ensemble/slider/slider_member_summary.hpp"
+#include "ensemble/slider/slider_sample_grid.hpp"
+#include "ensemble/slider/slider_scene.hpp"
+#include "ensemble/slider/slider_sweep.hpp"
+#include "kernels/models/slider/slider_model.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// What every member of a chunk shares: the rotor grid and its placement, the tolerances and step
+/// limits of the CPU's lanes (SliderProblem), and the speed's sample grid's size.
+struct SliderSlotSchedule {
+  kernels::SliderGrid grid;
+  kernels::SliderPlacement placement;
+  double rtol = 0, atol = 0, h_max = 0, max_steps = 0;
+  double first_step_scale = 0;  ///< the stepper's (kernels::AdaptiveIntegrator), computed on the host
+  std::size_t stops = 0;        ///< samples (SliderSampleGrid::stops)
+  std::size_t boundaries = 0;   ///< period boundaries among them (periods + 1)
+};
+
+/// The schedule of the members of `scene` at speed `speed` with rotor grid `size`; first_step_scale:
+/// the stepper's at the scene's tolerances.
+SliderSlotSchedule slider_slot_schedule(const SliderScene& scene, std::size_t speed, SliderSize size,
+                                        double first_step_scale);
+
+/// Values a slot keeps per sample (SliderSample: force, order along x, across y, energy) and per period
+/// boundary (impulse, dissipation, energy), all scaled.
+inline constexpr std::size_t slider_sample_values = 4, slider_boundary_values = 3;
+
+/// Device-visible views of a chunk (k: the chunk position; inputs, then outputs).
+struct SliderSlotViews {
+  const kernels::SliderParameters* parameters = nullptr;  ///< [k]: its table where the device reads it
+  const double* y0 = nullptr;                             ///< [k · dimension + i]
+  const double* stops = nullptr;                          ///< [s] the grid's stops (scaled time)
+  const std::uint8_t* boundary = nullptr;                 ///< [s] whether stop s is a period boundary
+  double* samples = nullptr;                              ///< [(k · stops + s) · slider_sample_values + c]
+  double* boundary_values = nullptr;  ///< [(k · boundaries + b) · slider_boundary_values + c]
+  std::uint8_t* status = nullptr;     ///< [k] kernels::LaneStatus
+  double* steps = nullptr;            ///< [2k] accepted, [2k + 1] rejected
+};
+
+/// Host buffers of a chunk of one size and speed in the SliderSlotViews layout, the host side that fills
+/// them and makes SliderMembers of their outputs.
+class SliderSlotChunk {
+ public:
+  /// A chunk of up to `capacity` members of `scene` at speed `speed` (the dampings differ by member)
+  /// with `schedule` (slider_slot_schedule's for that speed).
+  SliderSlotChunk(const SliderScene& scene, std::size_t speed, const SliderSlotSchedule& schedule,
+                  std::size_t capacity);
+
+  /// Fills members `plan_indices` (at most capacity, all of this size and speed); tables[s] is the view
+  /// of separation s's table where the members read it.
+  void fill(const std::vector<std::size_t>& plan_indices,
+            const std::vector<kernels::SubstrateTableView>& tables);
+  /// Chunk member k's results from the outputs: series in SI on the scene's timeline, summaries.
+  SliderMember member(std::size_t k) const;
+
+  SliderSlotViews views();
+  const SliderSlotSchedule& schedule() const { return schedule_; }
+  std::size_t count() const { return plan_indices_.size(); }
+  std::size_t capacity() const { return capacity_; }
+  /// The state's dimension (θ, and ω with inertia).
+  std::size_t dimension() const;
+
+  /// Each buffer: its data and bytes in SliderSlotViews order, inputs first (for copies to a device).
+  struct Buffer {
+    void* data;
+    std::size_t bytes;
+    bool input;
+  };
+  std::vector<Buffer> buffers();
+
+ private:
+  const SliderScene& scene_;
+  SliderSampleGrid grid_;
+  std::size_t timeline_samples_;
+  SliderSlotSchedule schedule_;
+  std::size_t capacity_;
+  std::vector<std::size_t> plan_indices_;
+  std::vector<kernels::SliderParameters> parameters_;
+  std::vector<double> y0_, stops_, samples_, boundary_values_, steps_;
+  std::vector<std::uint8_t> boundary_, status_;
+};
+
+/// Views over buffers given in SliderSlotChunk::buffers() order (host or device memory).
+SliderSlotViews slider_slot_views(void* const* p);
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,130 @@
+// One slider member on a team of threads from its start to its retirement (docs/architecture.md
+// "Teams"): SliderProblem's lane on a team — stops on its sample grid, samples (docs/model.md §9) as team
+// sums.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "ensemble/slider/slider_member_summary.hpp"
+#include "ensemble/slider/slider_slots.hpp"
+#include "kernels/lanes/host_device.hpp"
+#include "kernels/lanes/lane_arena.hpp"
+#include "kernels/lanes/team.hpp"
+#include "kernels/steppers/team_integrator.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// Runs slider members on a team with Integrator (TeamIntegrator over TeamRosenbrock on
+/// SliderModel<double, Inertial>): the member steps to each stop of its grid as SliderProblem's lane
+/// does (the same step control, stops and budget), is sampled there — F, the order parameters and the
+/// energy from the ranks' sums — and keeps its impulse, dissipation and energy at period boundaries. A
+/// member that fails keeps its frozen state's samples; the summaries are the host's (SliderSlotChunk).
+template <class Team, class Integrator>
+struct SliderTeamMember {
+  using Model = typename Integrator::Model;
+
+  /// Values of scratch a member of schedule s needs on a team of `ranks`, shared by the team.
+  ROTORSWEEP_HD static std::size_t storage_size(const SliderSlotSchedule& s, std::size_t ranks) {
+    return kernels::counted_storage<double>(
+        [&](kernels::LaneArena<double>& arena) { const Parts parts(s, ranks, arena); });
+  }
+
+  /// Integrates chunk member k of `slots` to its retirement on `team` and writes its slots; `storage`
+  /// (the team's, at least storage_size values) holds its vectors.
+  ROTORSWEEP_HD static void run(Team& team, const SliderSlotSchedule& s, const SliderSlotViews& slots,
+                                std::size_t k, double* storage, std::size_t capacity) {
+    kernels::LaneArena<double> arena(storage, capacity);
+    Parts parts(s, team.size(), arena);
+    team.sync();
+    Model& model = parts.model;
+    model.set_lane(0, slots.parameters[k]);
+    const std::size_t dim = model.dimension();
+    kernels::TeamMemberState state;
+    state.y = parts.y;
+    team.each([&](std::size_t r) {
+      const kernels::TeamRows part = kernels::team_rows(dim, team.size(), r);
+      for (std::size_t i = part.begin; i < part.end; ++i) state.y[i] = slots.y0[k * dim + i];
+    });
+    std::size_t boundary = 0;
+    for (std::size_t stop = 0; stop < s.stops; ++stop) {
+      state.t_stop = slots.stops[stop];
+      parts.integrator.advance(team, model, state);  // nothing once the member has failed: it stays frozen
+      const SliderSample sample = sampled(team, model, parts, state);
+      const bool at_boundary = slots.boundary[stop] != 0;
+      team.one([&] {
+        double* v = slots.samples + (k * s.stops + stop) * slider_sample_values;
+        v[0] = sample.force;
+        v[1] = sample.order_x;
+        v[2] = sample.order_y;
+        v[3] = sample.energy;
+        if (at_boundary) {
+          double* b = slots.boundary_values + (k * s.boundaries + boundary) * slider_boundary_values;
+          b[0] = state.quad[Model::impulse_index];
+          b[1] = state.quad[Model::dissipation_index];
+          b[2] = sample.energy;
+        }
+      });
+      if (at_boundary) ++boundary;
+    }
+    team.one([&] {
+      slots.status[k] = std::uint8_t(state.status);
+      slots.steps[2 * k] = state.steps_accepted;
+      slots.steps[2 * k + 1] = state.steps_rejected;
+    });
+  }
+
+ private:
+  /// What a member builds over the team's scratch (storage_size counts the same).
+  struct Parts {
+    Model model;
+    Integrator integrator;
+    typename Model::Workspace work;  ///< the samples' evaluation
+    double* y;                       ///< the state θ (and ω)
+    double* partial;                 ///< each rank's parts of a sample's sums (5 values per rank)
+
+    ROTORSWEEP_HD Parts(const SliderSlotSchedule& s, std::size_t ranks, kernels::LaneArena<double>& arena)
+        : model(s.grid, s.placement, arena),
+          integrator(model, ranks, {s.rtol, s.atol}, {.h_max = s.h_max, .max_steps = s.max_steps},
+                     s.first_step_scale, arena),
+          work(model.dimension(), arena),
+          y(arena.take(model.dimension())),
+          partial(arena.take(5 * ranks)) {}
+  };
+
+  /// The sample at the member's state: each rank its rotors' field and torques, then its parts of F, E,
+  /// Σ θ̇² and the alignments' sums; the team adds them.
+  ROTORSWEEP_HD static SliderSample sampled(Team& team, const Model& model, Parts& parts,
+                                            const kernels::TeamMemberState& state) {
+    const std::size_t n = model.rotors();
+    const auto each_rank = [&](auto&& part) {
+      team.each([&](std::size_t r) {
+        const kernels::TeamRows rotors = kernels::team_rows(n, team.size(), r);
+        part(rotors.begin, rotors.end, parts.partial + 5 * r);
+      });
+    };
+    each_rank([&](std::size_t begin, std::size_t end, double*) {
+      model.prepare_range(parts.work, state.y, state.t, false, begin, end);
+    });
+    each_rank([&](std::size_t begin, std::size_t end, double* mine) {
+      model.torque_range(parts.work, begin, end);
+      mine[0] = model.force_range(parts.work, begin, end);
+      mine[1] = model.energy_range(parts.work, begin, end);
+      mine[2] = model.velocity_squares(state.y, begin, end);
+      mine[3] = mine[4] = 0.0;
+      model.alignment_range(state.y, begin, end, mine[3], mine[4]);
+    });
+    const auto total = [&](std::size_t c) {
+      return team.sum([&](std::size_t r) { return parts.partial[5 * r + c]; });
+    };
+    SliderSample sample;
+    sample.force = total(0);
+    sample.energy = total(1) + model.kinetic_energy_of(total(2));
+    sample.order_x = total(3);
+    sample.order_y = total(4);
+    model.mean_alignment(sample.order_x, sample.order_y);
+    return sample;
+  }
+};
+
+}  // namespace rotorsweep::ensemble
