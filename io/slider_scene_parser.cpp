@@ -204,12 +204,7 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.sublattices = observables.boolean("sublattices", scene.sublattices);
   scene.torques = observables.boolean("torques", scene.torques);
   scene.forces = observables.boolean("forces", scene.forces);
-  for (const auto& [key, asked] : {std::pair{"angles", scene.angles},
-                                   {"energies", scene.energies},
-                                   {"field", scene.field},
-                                   {"sublattices", scene.sublattices},
-                                   {"torques", scene.torques},
-                                   {"forces", scene.forces}})
+  for (const auto& [key, asked] : scene.optional_series())
     if (asked && !scene.series)
       fail(observables.key(key), "is a time series: it needs observables.series = true");
   for (const auto& [key, asked] : {std::pair{"angles", scene.angles}, {"torques", scene.torques}})
@@ -240,12 +235,7 @@ void check_slider_device(const ensemble::SliderScene& scene) {
     fail("numerics.stepper", "must be \"" + stepper +
                                  "\" with numerics.device = \"gpu\" (the slider's GPU kernels; other "
                                  "steppers run with numerics.device = \"cpu\")");
-  for (const auto& [key, asked] : {std::pair{"angles", scene.angles},
-                                   {"energies", scene.energies},
-                                   {"field", scene.field},
-                                   {"sublattices", scene.sublattices},
-                                   {"torques", scene.torques},
-                                   {"forces", scene.forces}})
+  for (const auto& [key, asked] : scene.optional_series())
     if (asked)
       fail(std::string("observables.") + key,
            "must be false with numerics.device = \"gpu\" (the GPU's slider keeps friction, order "

@@ -12,6 +12,7 @@
 #include "bindings.hpp"
 #include "ensemble/engine/instruction_set.hpp"
 #include "ensemble/engine/thread_count.hpp"
+#include "ensemble/gpu/gpu_slider.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "io/output_target.hpp"
 #include "io/slider_result_file.hpp"
@@ -38,9 +39,9 @@ std::size_t run_slider(const std::string& scene_text, bool is_path, int threads,
   threads = ensemble::thread_count(threads, "threads");
   const std::string source = is_path ? scene_text : std::string("<python>");
   io::OutputTarget target(output, {source}, io::Replaceable::hdf5, force);
-  io::SliderResultFile file(
-      target.temporary(), scene,
-      io::Provenance{source, version, revision, "cpu", ensemble::instruction_set().name});
+  io::SliderResultFile file(target.temporary(), scene,
+                            io::Provenance{source, version, revision, ensemble::slider_device_label(scene),
+                                           ensemble::instruction_set().name});
   std::atomic<bool> stop{false}, finished{false};
   std::atomic<std::size_t> done{0};
   io::SliderStreamOutcome outcome;

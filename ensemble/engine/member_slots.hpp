@@ -10,6 +10,7 @@
 
 #include "ensemble/engine/member_progress.hpp"
 #include "ensemble/engine/member_result.hpp"
+#include "ensemble/engine/slot_buffer.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/scene.hpp"
 #include "ensemble/rows/sweep.hpp"
@@ -137,13 +138,8 @@ class SlotChunk {
   std::size_t capacity() const { return capacity_; }
   const SlotSchedule& schedule() const { return schedule_; }
 
-  /// Each buffer: its data and size in bytes, in SlotViews order, inputs first (for copies to and
-  /// from a device).
-  struct Buffer {
-    void* data;
-    std::size_t bytes;
-    bool input;
-  };
+  /// Each buffer in SlotViews order, inputs first (for copies to and from a device).
+  using Buffer = SlotBuffer;
   std::vector<Buffer> buffers();
 
  private:

@@ -3,11 +3,13 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "ensemble/engine/device.hpp"
@@ -90,6 +92,16 @@ struct SliderScene {
   bool forces = false;                  ///< the substrate's force on the slider, F_x, F_y, F_z, per sample
   /// Whether samples need the substrate's field and torques rotor by rotor.
   bool rotor_observables() const { return energies || field || sublattices || torques; }
+  /// The series beyond friction, order parameters and energy (observables.<key>), each with whether
+  /// the scene asks for it.
+  std::array<std::pair<const char*, bool>, 6> optional_series() const {
+    return {{{"angles", angles},
+             {"energies", energies},
+             {"field", field},
+             {"sublattices", sublattices},
+             {"torques", torques},
+             {"forces", forces}}};
+  }
 
   // [numerics]
   kernels::StepperId stepper = *kernels::parse_stepper(default_slider_stepper_name);

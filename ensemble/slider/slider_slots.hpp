@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "ensemble/engine/slot_buffer.hpp"
 #include "ensemble/slider/slider_member_summary.hpp"
 #include "ensemble/slider/slider_sample_grid.hpp"
 #include "ensemble/slider/slider_scene.hpp"
@@ -70,12 +71,8 @@ class SliderSlotChunk {
   /// The state's dimension (θ, and ω with inertia).
   std::size_t dimension() const;
 
-  /// Each buffer: its data and bytes in SliderSlotViews order, inputs first (for copies to a device).
-  struct Buffer {
-    void* data;
-    std::size_t bytes;
-    bool input;
-  };
+  /// Each buffer in SliderSlotViews order, inputs first (for copies to and from a device).
+  using Buffer = SlotBuffer;
   std::vector<Buffer> buffers();
 
  private:
