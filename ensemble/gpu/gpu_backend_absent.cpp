@@ -19,7 +19,8 @@ SweepOutcome run_gpu_row_sweep(const Scene&, const VariantRange&, int, const Swe
 }
 
 bool run_gpu_slider_members(const SliderScene&, const std::vector<std::size_t>&, const SliderScanControl&,
-                            const std::function<void(std::vector<SliderMember>&&)>&) {
+                            const std::function<void(std::vector<SliderMember>&&)>&,
+                            const SliderTableBuilder&) {
   throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why);
 }
 

@@ -9,6 +9,7 @@
 
 #include "ensemble/gpu/gpu_launch.hpp"
 #include "ensemble/slider/slider_scene.hpp"
+#include "ensemble/slider/slider_slot_sweep.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 
 namespace rotorsweep::ensemble {
@@ -23,10 +24,11 @@ unsigned gpu_slider_team_size(SliderSize size, const GpuLaunch& launch);
 std::string slider_device_label(const SliderScene& scene);
 
 /// run_slider_members on the GPU: members `plan_indices` (ascending) in chunks of one size and speed,
-/// each chunk's members to `finished` as it returns. Throws std::runtime_error where there is no GPU
-/// backend or no GPU.
+/// each chunk's members to `finished` as it returns, the substrate tables built by `build_table` on
+/// the host. Throws std::runtime_error where there is no GPU backend or no GPU.
 bool run_gpu_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                             const SliderScanControl& control,
-                            const std::function<void(std::vector<SliderMember>&&)>& finished);
+                            const std::function<void(std::vector<SliderMember>&&)>& finished,
+                            const SliderTableBuilder& build_table);
 
 }  // namespace rotorsweep::ensemble

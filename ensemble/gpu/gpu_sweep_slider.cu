@@ -82,14 +82,15 @@ class GpuSliderDevice final : public SliderSlotDevice {
 
 bool run_gpu_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                             const SliderScanControl& control,
-                            const std::function<void(std::vector<SliderMember>&&)>& finished) {
+                            const std::function<void(std::vector<SliderMember>&&)>& finished,
+                            const SliderTableBuilder& build_table) {
   gpu::available_gpu();
   if (scene.overdamped) {
     gpu::GpuSliderDevice<false> device;
-    return run_slider_members_in_slots(scene, plan_indices, control, finished, device);
+    return run_slider_members_in_slots(scene, plan_indices, control, finished, device, build_table);
   }
   gpu::GpuSliderDevice<true> device;
-  return run_slider_members_in_slots(scene, plan_indices, control, finished, device);
+  return run_slider_members_in_slots(scene, plan_indices, control, finished, device, build_table);
 }
 
 }  // namespace rotorsweep::ensemble

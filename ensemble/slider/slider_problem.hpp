@@ -62,8 +62,7 @@ class SliderProblem {
     lane.member = slider_plan_member(scene_, plan_index);
     const SliderScene variant = slider_variant(scene_, lane.member.index.speed, lane.member.index.damping);
     lane.grid = &grids_[lane.member.index.speed];
-    lane.table = std::make_shared<const kernels::SubstrateTable>(
-        substrate_table<V>(variant, size_, lane.member.separation));
+    lane.table = table(variant, lane.member.index);
     const kernels::SliderParameters parameters = slider_parameters(variant, lane.table->view());
     if (scene_.forces) build_gradient_tables(l);
     if (!primed_) {  // lanes never started compute along with this member's tables
@@ -153,6 +152,19 @@ class SliderProblem {
     limits.h_max = kernels::two_pi / double(scene.samples_per_period);
     limits.max_steps = scene.max_steps;
     return {{scene.rtol, scene.atol}, limits};
+  }
+
+  /// The substrate table of a member at `index` of `variant`: the last one built where the member's
+  /// speed and separation are the last one's (replicas come one after another in the plan), else a new one.
+  std::shared_ptr<const kernels::SubstrateTable> table(const SliderScene& variant,
+                                                       const SliderMemberIndex& index) {
+    const std::pair key{index.speed, index.separation};
+    if (!last_table_ || last_table_key_ != key) {
+      last_table_ = std::make_shared<const kernels::SubstrateTable>(
+          substrate_table<V>(variant, size_, scene_.separations[index.separation]));
+      last_table_key_ = key;
+    }
+    return last_table_;
   }
 
   /// Lane l's member's four tables at shifted tracks, for the forces' y- and z-derivatives.
@@ -269,6 +281,8 @@ class SliderProblem {
   V force_x_ = V(0.0), force_y_ = V(0.0), force_z_ = V(0.0);  ///< with SliderScene::forces
   bool evaluated_ = false;  ///< f_, q_, the order parameters and energy_ are the current state's
   bool primed_ = false;     ///< every lane has parameters
+  std::shared_ptr<const kernels::SubstrateTable> last_table_;  ///< the last table built ...
+  std::pair<std::size_t, std::size_t> last_table_key_{};       ///< ... for this (speed, separation)
   std::vector<Lane> lanes_;
 };
 

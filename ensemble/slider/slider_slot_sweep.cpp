@@ -24,7 +24,7 @@ double slider_first_step_scale(const SliderScene& scene) {
 bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                                  const SliderScanControl& control,
                                  const std::function<void(std::vector<SliderMember>&&)>& finished,
-                                 SliderSlotDevice& device) {
+                                 SliderSlotDevice& device, const SliderTableBuilder& build_table) {
   const double first_step_scale = slider_first_step_scale(scene);
   const int threads = control.threads > 0 ? control.threads : omp_get_max_threads();
   std::size_t done = 0;
@@ -45,7 +45,7 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
     std::vector<std::optional<kernels::SubstrateTable>> tables(used.size());
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
     for (std::size_t s = 0; s < used.size(); ++s)
-      if (used[s]) tables[s].emplace(substrate_table<double>(variant, size, scene.separations[s]));
+      if (used[s]) tables[s].emplace(build_table(variant, size, scene.separations[s]));
     std::vector<const kernels::SubstrateTable*> placed;
     for (const auto& t : tables) placed.push_back(t ? &*t : nullptr);
     const std::vector<kernels::SubstrateTableView> views = device.place_tables(placed);

@@ -27,15 +27,20 @@ class SliderSlotDevice {
   virtual void run(SliderSlotChunk& chunk) = 0;
 };
 
+/// Builds the substrate table of a slider of `size` at separation h (m) over the scene's path
+/// (substrate_table<V>: the caller's lanes, every V giving the same table).
+using SliderTableBuilder = std::function<kernels::SubstrateTable(const SliderScene&, SliderSize, double)>;
+
 /// The first-step scale of the scene's stepper at its tolerances (kernels::AdaptiveIntegrator's).
 double slider_first_step_scale(const SliderScene& scene);
 
 /// run_slider_members on `device`: members `plan_indices` (ascending) in chunks of one size and speed,
-/// each chunk's members to `finished` at once (series on the scene's timeline); progress after each
-/// chunk, stopped() checked between chunks. Returns whether stopped() left members out.
+/// each chunk's members to `finished` at once (series on the scene's timeline), their separations'
+/// tables built by `build_table` on the control's threads; progress after each chunk, stopped()
+/// checked between chunks. Returns whether stopped() left members out.
 bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                                  const SliderScanControl& control,
                                  const std::function<void(std::vector<SliderMember>&&)>& finished,
-                                 SliderSlotDevice& device);
+                                 SliderSlotDevice& device, const SliderTableBuilder& build_table);
 
 }  // namespace rotorsweep::ensemble

@@ -57,12 +57,15 @@ inline std::vector<ensemble::SliderMember> slider_on_host_teams(const ensemble::
   const auto finished = [&](std::vector<ensemble::SliderMember>&& block) {
     for (auto& m : block) members[m.plan_index] = std::move(m);
   };
+  const auto build_table = [](const ensemble::SliderScene& variant, ensemble::SliderSize size, double h) {
+    return ensemble::substrate_table<double>(variant, size, h);
+  };
   if (scene.overdamped) {
     HostTeamSliderDevice<false> device(ranks, chunk);
-    ensemble::run_slider_members_in_slots(scene, all, {}, finished, device);
+    ensemble::run_slider_members_in_slots(scene, all, {}, finished, device, build_table);
   } else {
     HostTeamSliderDevice<true> device(ranks, chunk);
-    ensemble::run_slider_members_in_slots(scene, all, {}, finished, device);
+    ensemble::run_slider_members_in_slots(scene, all, {}, finished, device, build_table);
   }
   return members;
 }

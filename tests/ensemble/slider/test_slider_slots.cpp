@@ -171,7 +171,7 @@ TEST_CASE("slider slots: the GPU's example scan is the experiment's, and its 7 x
     INFO("member " << k);
     REQUIRE(lanes[k].status == "ok");
     CHECK(teams[k].status == "ok");
-    CHECK(std::fabs(teams[k].friction - lanes[k].friction) < 1e-8 * scale);
+    CHECK(std::fabs(teams[k].friction - lanes[k].friction) < 1e-10 * scale);  // measured: 2.5e-14
     CHECK(series_close(teams[k].energy_series, lanes[k].energy_series, 1e-8));
     CHECK(teams[k].steps_accepted == Approx(lanes[k].steps_accepted).epsilon(0.02));
   }
