@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# The GPU backend's device checks and timings in one call, each step under its own time limit
+# (docs/performance.md "GPU"): the GPU tests, `bench gpu` per N and mapping, the 10⁶-member curve as a
+# run, and the slider's 8 100-member scan (teams of 32, of 16, and two teams per block in shared memory).
+# Usage: scripts/bench/gpu_session.sh [BIN (build/bin, from `scripts/build.sh gpu`)] [OUT ($OUT, or
+# bench-results/gpu)]. Writes summary.txt (one line per step: exit code, seconds) and log.txt (every
+# step's output) to OUT, result files to a scratch folder it removes; prints the summary last. The
+# limits add up to 550 s, within one device call.
+set -uo pipefail
+cd "$(dirname "$0")/../.."
+bin=$(realpath "${1:-build/bin}")
+out=${2:-${OUT:-bench-results/gpu}}
+mkdir -p "$out"
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+: > "$out/summary.txt"
+: > "$out/log.txt"
+
+# step NAME LIMIT_SECONDS COMMAND...: runs COMMAND, its output into log.txt, a line into summary.txt.
+step() {
+  local name=$1 limit=$2
+  shift 2
+  echo "== $name: $*" >> "$out/log.txt"
+  local start rc ms
+  start=$(date +%s%N)
+  timeout "$limit" "$@" >> "$out/log.txt" 2>&1
+  rc=$?
+  ms=$((($(date +%s%N) - start) / 1000000))
+  printf '%-22s exit %3d  %5d.%d s%s\n' "$name" "$rc" $((ms / 1000)) $((ms % 1000 / 100)) \
+    "$([ "$rc" = 124 ] && echo "  (stopped at the ${limit} s limit)")" >> "$out/summary.txt"
+}
+
+if command -v nvidia-smi > /dev/null; then
+  nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm --format=csv >> "$out/log.txt" 2>&1
+fi
+step gpu_tests 180 "$bin/test_gpu"
+step bench_2_20_48 110 "$bin/rotorsweep" bench gpu --rows 2,20,48 --no-curve
+step bench_128_1024 50 "$bin/rotorsweep" bench gpu --rows 128,1024 --no-curve --scale 0.2
+step curve_run 50 "$bin/rotorsweep" run examples/friction_curve_gpu.toml -q -o "$scratch/curve.h5"
+step slider_team32 50 "$bin/rotorsweep" slider examples/experiment_7x7_gpu.toml -q -o "$scratch/slider.h5"
+step slider_team16 50 env ROTORSWEEP_GPU_TEAM=16 "$bin/rotorsweep" slider examples/experiment_7x7_gpu.toml -q \
+  -o "$scratch/slider16.h5"
+step slider_block64 50 env ROTORSWEEP_GPU_BLOCK=64 "$bin/rotorsweep" slider examples/experiment_7x7_gpu.toml -q \
+  -o "$scratch/slider64.h5"
+step slider_info 10 "$bin/rotorsweep" info "$scratch/slider.h5"
+cat "$out/summary.txt"
