@@ -235,11 +235,6 @@ void check_slider_device(const ensemble::SliderScene& scene) {
     fail("numerics.stepper", "must be \"" + stepper +
                                  "\" with numerics.device = \"gpu\" (the slider's GPU kernels; other "
                                  "steppers run with numerics.device = \"cpu\")");
-  for (const auto& [key, asked] : scene.optional_series())
-    if (asked)
-      fail(std::string("observables.") + key,
-           "must be false with numerics.device = \"gpu\" (the GPU's slider keeps friction, order "
-           "parameters and energy; this series runs with numerics.device = \"cpu\")");
 }
 
 ensemble::SliderScene parse_slider_scene_text(std::string_view text, std::string_view source) {

@@ -3,7 +3,9 @@
 #include "ensemble/slider/slider_member_summary.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "kernels/lanes/angles.hpp"
 
@@ -26,7 +28,69 @@ std::vector<double> period_means(const SliderSampleGrid& grid, const std::vector
   return means;
 }
 
+/// The series of sums over the rotors with whether the scene asks for each (SliderScene::energies,
+/// field, sublattices), in record_slider_rotor_sums' order.
+std::array<std::pair<bool, std::vector<double>*>, 10> rotor_series(SliderMember& m,
+                                                                   const SliderScene& scene) {
+  const bool e = scene.energies, f = scene.field, s = scene.sublattices;
+  return {{{e, &m.substrate_energy_series},
+           {e, &m.pair_energy_series},
+           {f, &m.field_axis_series},
+           {f, &m.field_z_series},
+           {s, &m.moment_axis_even_series},
+           {s, &m.moment_z_even_series},
+           {s, &m.torque_even_series},
+           {s, &m.moment_axis_odd_series},
+           {s, &m.moment_z_odd_series},
+           {s, &m.torque_odd_series}}};
+}
+
 }  // namespace
+
+void size_slider_series(SliderMember& m, const SliderScene& scene, std::size_t samples) {
+  const std::size_t rotors = m.size.rotors();
+  for (auto* series : {&m.friction_series, &m.order_x_series, &m.order_y_series, &m.energy_series})
+    series->assign(samples, 0.0);
+  if (scene.angles) m.angles.assign(samples * rotors, 0.0);
+  for (const auto& [asked, series] : rotor_series(m, scene))
+    if (asked) series->assign(samples, 0.0);
+  if (scene.torques) m.torques.assign(samples * rotors, 0.0);
+  if (scene.forces)
+    for (auto* series : {&m.force_x_series, &m.force_y_series, &m.force_z_series})
+      series->assign(samples, 0.0);
+}
+
+void record_slider_rotor_sums(SliderMember& m, std::size_t k, const SliderRotorSums& sums,
+                              const SliderScene& scene) {
+  const SliderUnits units(scene);
+  // μB in units of μ0 m_sub/(4π a³) times m_sub/m: B = μB · μ0 m/(4π a³), in T
+  const double tesla = 1e-7 * scene.moment / std::pow(scene.spacing, 3), n = double(m.size.rotors());
+  const std::array<double, 2> count{double(m.size.columns * ((m.size.rows + 1) / 2)),
+                                    double(m.size.columns * (m.size.rows / 2))};
+  const auto mean = [&](double sum, std::size_t parity) {
+    return count[parity] ? sum / count[parity] : std::nan("");  // a one-row slider has no odd rows
+  };
+  const std::array<double, 10> values{sums.substrate * units.energy,
+                                      sums.pairs * units.energy,
+                                      sums.field_axis / n * tesla,
+                                      sums.field_z / n * tesla,
+                                      mean(sums.moment_axis[0], 0),
+                                      mean(sums.moment_z[0], 0),
+                                      mean(sums.torque[0], 0) * units.energy,
+                                      mean(sums.moment_axis[1], 1),
+                                      mean(sums.moment_z[1], 1),
+                                      mean(sums.torque[1], 1) * units.energy};
+  const auto series = rotor_series(m, scene);
+  for (std::size_t v = 0; v < series.size(); ++v)
+    if (series[v].first) (*series[v].second)[k] = values[v];
+}
+
+void record_slider_forces(SliderMember& m, std::size_t k, const std::array<double, 3>& force,
+                          const SliderUnits& units) {
+  m.force_x_series[k] = force[0] * units.force;
+  m.force_y_series[k] = force[1] * units.force;
+  m.force_z_series[k] = force[2] * units.force;
+}
 
 void record_slider_sample(SliderMember& m, std::size_t k, const SliderSample& sample,
                           const SliderUnits& units) {

@@ -2,6 +2,7 @@
 // (docs/model.md §9 "Observables"): the series in SI, friction and energy balance per period, means.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -17,8 +18,30 @@ struct SliderSample {
   double force = 0.0, order_x = 0.0, order_y = 0.0, energy = 0.0;
 };
 
+/// A sample's sums over rotors for SliderScene::energies, field and sublattices, scaled, as
+/// SliderModel::RotorObservables gives them (energies in E0, μB in units of μ0 m_sub/(4π a³) times
+/// m_sub/m; [0] the even rows j = 0, 2, …, [1] the odd rows).
+struct SliderRotorSums {
+  double substrate = 0.0, pairs = 0.0, field_axis = 0.0, field_z = 0.0;
+  std::array<double, 2> moment_axis{}, moment_z{}, torque{};
+};
+
+/// Sizes m's series to `samples` samples: the four every scan keeps and those the scene asks for
+/// (angles and torques: samples × rotors).
+void size_slider_series(SliderMember& m, const SliderScene& scene, std::size_t samples);
+
 /// Writes sample k of m's friction, order-parameter and energy series, in SI.
 void record_slider_sample(SliderMember& m, std::size_t k, const SliderSample& sample,
+                          const SliderUnits& units);
+
+/// Writes sample k of the series the scene asks for among energies, field and sublattices, in SI: the
+/// substrate and pairs' energies (J), the mean B_∥ and B_z (T), and each parity's mean moment and mean
+/// substrate torque (N m; NaN for a parity without rows).
+void record_slider_rotor_sums(SliderMember& m, std::size_t k, const SliderRotorSums& sums,
+                              const SliderScene& scene);
+
+/// Writes sample k of the force series from F (scaled, E0/a), in N.
+void record_slider_forces(SliderMember& m, std::size_t k, const std::array<double, 3>& force,
                           const SliderUnits& units);
 
 /// A member's impulse, dissipation and energy (scaled) at each period boundary of its grid.

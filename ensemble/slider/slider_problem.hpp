@@ -49,6 +49,7 @@ class SliderProblem {
               slider_placement(scene)),
         f_(loop_.dimension()),
         q_(loop_.dimension()),
+        torques_(rotors_),
         lanes_(width) {}
 
   bool refill() const { return true; }
@@ -81,17 +82,8 @@ class SliderProblem {
     std::copy(theta.begin(), theta.end(), y0.begin());
     loop_.start(l, parameters, y0);
     loop_.set_stop(l, lane.grid->stops.front());
-    SliderMember& m = lane.member;
     const std::size_t samples = lane.grid->stops.size();
-    for (auto* series : {&m.friction_series, &m.order_x_series, &m.order_y_series, &m.energy_series})
-      series->assign(samples, 0.0);
-    if (scene_.angles) m.angles.assign(samples * rotors_, 0.0);
-    for (const auto& [asked, series] : rotor_series(m))
-      if (asked) series->assign(samples, 0.0);
-    if (scene_.torques) m.torques.assign(samples * rotors_, 0.0);
-    if (scene_.forces)
-      for (auto* series : {&m.force_x_series, &m.force_y_series, &m.force_z_series})
-        series->assign(samples, 0.0);
+    size_slider_series(lane.member, scene_, samples);
     lane.sample = 0;
     lane.boundaries = {};
     return {0, int(samples), 0, 0.0};
@@ -170,11 +162,10 @@ class SliderProblem {
   /// Lane l's member's four tables at shifted tracks, for the forces' y- and z-derivatives.
   void build_gradient_tables(std::size_t l) {
     Lane& lane = lanes_[l];
-    const double d = Model::gradient_step, h = lane.member.separation;
-    const std::array<std::pair<double, double>, 4> shifts{{{d, 0.0}, {-d, 0.0}, {0.0, d}, {0.0, -d}}};
+    const double h = lane.member.separation;
     for (std::size_t g = 0; g < 4; ++g)
       lane.gradient[g] = std::make_shared<const kernels::SubstrateTable>(
-          substrate_table<V>(scene_, size_, h, shifts[g].first, shifts[g].second));
+          substrate_table<V>(scene_, size_, h, Model::gradient_shifts[g][0], Model::gradient_shifts[g][1]));
     set_gradient_tables(l);
   }
   void set_gradient_tables(std::size_t l) {
@@ -192,6 +183,11 @@ class SliderProblem {
     model.evaluate(loop_.workspace(), s.y, s.t, f_.data(), q_.data());
     model.order_parameters(s.y, along_x_, across_y_);
     energy_ = model.energy(loop_.workspace(), s.y, s.t) + model.kinetic_energy(s.y);
+    if (scene_.rotor_observables()) {
+      rotor_sums_ = {};
+      model.rotor_observables_range(loop_.workspace(), 0, rotors_, rotor_sums_,
+                                    scene_.torques ? torques_.data() : nullptr);
+    }
     evaluated_ = true;
   }
 
@@ -204,70 +200,27 @@ class SliderProblem {
                          units_);
     if (scene_.angles)
       for (std::size_t r = 0; r < rotors_; ++r) m.angles[k * rotors_ + r] = loop_.component(l, r);
-    if (scene_.rotor_observables()) record_rotors(l, k);
-    if (scene_.forces) {
-      m.force_x_series[k] = kernels::lane_get(force_x_, l) * units_.force;
-      m.force_y_series[k] = kernels::lane_get(force_y_, l) * units_.force;
-      m.force_z_series[k] = kernels::lane_get(force_z_, l) * units_.force;
+    if (scene_.rotor_observables()) {
+      const auto at = [&](const V& v) { return kernels::lane_get(v, l); };
+      const auto& sums = rotor_sums_;
+      record_slider_rotor_sums(m, k,
+                               {at(sums.substrate),
+                                at(sums.pairs),
+                                at(sums.field_axis),
+                                at(sums.field_z),
+                                {at(sums.moment_axis[0]), at(sums.moment_axis[1])},
+                                {at(sums.moment_z[0]), at(sums.moment_z[1])},
+                                {at(sums.torque[0]), at(sums.torque[1])}},
+                               scene_);
+      if (scene_.torques)
+        for (std::size_t r = 0; r < rotors_; ++r)
+          m.torques[k * rotors_ + r] = at(torques_[r]) * units_.energy;
     }
-  }
-
-  /// The series of sums over the rotors with whether the scene asks for each (SliderScene::energies,
-  /// field, sublattices), in record_rotors' order.
-  std::array<std::pair<bool, std::vector<double>*>, 10> rotor_series(SliderMember& m) const {
-    const bool e = scene_.energies, f = scene_.field, s = scene_.sublattices;
-    return {{{e, &m.substrate_energy_series},
-             {e, &m.pair_energy_series},
-             {f, &m.field_axis_series},
-             {f, &m.field_z_series},
-             {s, &m.moment_axis_even_series},
-             {s, &m.moment_z_even_series},
-             {s, &m.torque_even_series},
-             {s, &m.moment_axis_odd_series},
-             {s, &m.moment_z_odd_series},
-             {s, &m.torque_odd_series}}};
-  }
-
-  /// Sample k of lane l's rotor observables, from the workspace of the sample's evaluation (scaled:
-  /// μB in the workspace, energies and torques in E0).
-  void record_rotors(std::size_t l, std::size_t k) {
-    const auto& w = loop_.workspace();
-    SliderMember& m = lanes_[l].member;
-    double substrate = 0.0, pairs = 0.0, field_axis = 0.0, field_z = 0.0;
-    std::array<double, 2> moment_axis{}, moment_z{}, torque{}, count{};  // even rows, odd rows
-    for (std::size_t r = 0; r < rotors_; ++r) {
-      const double c = kernels::lane_get(w.cos[r], l), s = kernels::lane_get(w.sin[r], l);
-      const double bx = kernels::lane_get(w.bx[r], l), bz = kernels::lane_get(w.bz[r], l);
-      const double tau = -(bx * s + bz * c);  // the substrate's part of τ_r (docs/model.md §9)
-      substrate -= bx * c - bz * s;
-      pairs += 0.5 * (c * kernels::lane_get(w.p_cos[r], l) + s * kernels::lane_get(w.q_sin[r], l));
-      field_axis += bx;
-      field_z += bz;
-      const std::size_t parity = (r / size_.columns) % 2;
-      moment_axis[parity] += c;
-      moment_z[parity] -= s;
-      torque[parity] += tau;
-      count[parity] += 1.0;
-      if (scene_.torques) m.torques[k * rotors_ + r] = tau * units_.energy;
-    }
-    // μB in units of μ0 m_sub/(4π a³) times m_sub/m: B = μB · μ0 m/(4π a³), in T
-    const double tesla = 1e-7 * scene_.moment / std::pow(scene_.spacing, 3), n = double(rotors_);
-    const auto mean = [&](double sum, std::size_t parity) {
-      return count[parity] ? sum / count[parity] : std::nan("");  // a one-row slider has no odd rows
-    };
-    const std::array<double, 10> values{substrate * units_.energy,
-                                        pairs * units_.energy,
-                                        field_axis / n * tesla,
-                                        field_z / n * tesla,
-                                        mean(moment_axis[0], 0),
-                                        mean(moment_z[0], 0),
-                                        mean(torque[0], 0) * units_.energy,
-                                        mean(moment_axis[1], 1),
-                                        mean(moment_z[1], 1),
-                                        mean(torque[1], 1) * units_.energy};
-    const auto series = rotor_series(m);
-    for (std::size_t v = 0; v < series.size(); ++v)
-      if (series[v].first) (*series[v].second)[k] = values[v];
+    if (scene_.forces)
+      record_slider_forces(
+          m, k,
+          {kernels::lane_get(force_x_, l), kernels::lane_get(force_y_, l), kernels::lane_get(force_z_, l)},
+          units_);
   }
 
   const SliderScene& scene_;
@@ -279,8 +232,10 @@ class SliderProblem {
   kernels::lane_vector<V> f_, q_;  ///< the sample's evaluation: f and the quadratures' integrands
   V along_x_ = V(0.0), across_y_ = V(0.0), energy_ = V(0.0);
   V force_x_ = V(0.0), force_y_ = V(0.0), force_z_ = V(0.0);  ///< with SliderScene::forces
-  bool evaluated_ = false;  ///< f_, q_, the order parameters and energy_ are the current state's
-  bool primed_ = false;     ///< every lane has parameters
+  typename Model::RotorObservables rotor_sums_;               ///< with SliderScene::rotor_observables()
+  kernels::lane_vector<V> torques_;  ///< each rotor's substrate torque, with SliderScene::torques
+  bool evaluated_ = false;           ///< f_, q_, the order parameters and energy_ are the current state's
+  bool primed_ = false;              ///< every lane has parameters
   std::shared_ptr<const kernels::SubstrateTable> last_table_;  ///< the last table built ...
   std::pair<std::size_t, std::size_t> last_table_key_{};       ///< ... for this (speed, separation)
   std::vector<Lane> lanes_;

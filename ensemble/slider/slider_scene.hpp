@@ -109,7 +109,7 @@ struct SliderScene {
   double atol = 5e-7;
   double max_steps = 1e8;
   /// Where the members run: CPU lanes, or a CUDA GPU, a member per team of threads (ensemble/slider/
-  /// slider_team_member.hpp; the series of SliderScene::gpu_series only).
+  /// slider_team_member.hpp; the slider's default stepper only).
   Device device = Device::cpu;
 
   std::string output_path = "results/slider.h5";

@@ -42,13 +42,27 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
 
     const SliderScene variant = slider_variant(scene, first.speed, 0);
     const SliderSize size = scene.sizes[first.size];
-    std::vector<std::optional<kernels::SubstrateTable>> tables(used.size());
+    // per separation its table, then with forces the four at shifted tracks (SliderModel::GradientTable),
+    // over the variant's path and the scene's as the CPU's lanes build them (the same path, their bits)
+    using Model = kernels::SliderModel<double, true>;
+    const std::size_t per = scene.forces ? 5 : 1;
+    std::vector<std::optional<kernels::SubstrateTable>> tables(used.size() * per);
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
-    for (std::size_t s = 0; s < used.size(); ++s)
-      if (used[s]) tables[s].emplace(build_table(variant, size, scene.separations[s]));
+    for (std::size_t i = 0; i < tables.size(); ++i) {
+      const std::size_t s = i / per, g = i % per;
+      if (!used[s]) continue;
+      const double dy = g ? Model::gradient_shifts[g - 1][0] : 0.0,
+                   ddepth = g ? Model::gradient_shifts[g - 1][1] : 0.0;
+      tables[i].emplace(build_table(g ? scene : variant, size, scene.separations[s], dy, ddepth));
+    }
     std::vector<const kernels::SubstrateTable*> placed;
     for (const auto& t : tables) placed.push_back(t ? &*t : nullptr);
-    const std::vector<kernels::SubstrateTableView> views = device.place_tables(placed);
+    const std::vector<kernels::SubstrateTableView> placed_views = device.place_tables(placed);
+    std::vector<SliderTableViews> views(used.size());
+    for (std::size_t s = 0; s < used.size(); ++s) {
+      views[s].substrate = placed_views[s * per];
+      for (std::size_t g = 1; g < per; ++g) views[s].gradient[g - 1] = placed_views[s * per + g];
+    }
 
     const SliderSlotSchedule schedule = slider_slot_schedule(scene, first.speed, size, first_step_scale);
     const std::size_t capacity = std::max<std::size_t>(1, device.chunk_members(schedule));

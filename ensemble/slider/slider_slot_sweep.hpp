@@ -20,24 +20,27 @@ class SliderSlotDevice {
   /// The most members one chunk of a slider of `grid` holds (enough to keep the device busy).
   virtual std::size_t chunk_members(const SliderSlotSchedule& schedule) = 0;
   /// Views of `tables` where the members read them (copies in device memory, kept until the next
-  /// call); a null table gives an empty view.
+  /// call), in their order; a null table gives an empty view.
   virtual std::vector<kernels::SubstrateTableView> place_tables(
       const std::vector<const kernels::SubstrateTable*>& tables) = 0;
   /// Runs every member of `chunk` to its retirement: inputs from its buffers, outputs into them.
   virtual void run(SliderSlotChunk& chunk) = 0;
 };
 
-/// Builds the substrate table of a slider of `size` at separation h (m) over the scene's path
-/// (substrate_table<V>: the caller's lanes, every V giving the same table).
-using SliderTableBuilder = std::function<kernels::SubstrateTable(const SliderScene&, SliderSize, double)>;
+/// Builds the substrate table of a slider of `size` at separation h (m) over the scene's path, its
+/// tracks moved by dy and the substrate farther by ddepth (units of a; substrate_table<V>: the
+/// caller's lanes, every V giving the same table).
+using SliderTableBuilder = std::function<kernels::SubstrateTable(const SliderScene&, SliderSize, double h,
+                                                                 double dy, double ddepth)>;
 
 /// The first-step scale of the scene's stepper at its tolerances (kernels::AdaptiveIntegrator's).
 double slider_first_step_scale(const SliderScene& scene);
 
 /// run_slider_members on `device`: members `plan_indices` (ascending) in chunks of one size and speed,
 /// each chunk's members to `finished` at once (series on the scene's timeline), their separations'
-/// tables built by `build_table` on the control's threads; progress after each chunk, stopped()
-/// checked between chunks. Returns whether stopped() left members out.
+/// tables (with SliderScene::forces also the four at shifted tracks) built by `build_table` on the
+/// control's threads; progress after each chunk, stopped() checked between chunks. Returns whether
+/// stopped() left members out.
 bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                                  const SliderScanControl& control,
                                  const std::function<void(std::vector<SliderMember>&&)>& finished,

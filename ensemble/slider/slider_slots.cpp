@@ -22,6 +22,10 @@ SliderSlotSchedule slider_slot_schedule(const SliderScene& scene, std::size_t sp
   schedule.first_step_scale = first_step_scale;
   schedule.stops = grid.stops.size();
   for (std::size_t s = 0; s < grid.stops.size(); ++s) schedule.boundaries += grid.boundary(s) ? 1 : 0;
+  schedule.rotor_sums = scene.energies || scene.field || scene.sublattices;
+  schedule.forces = scene.forces;
+  schedule.angles = scene.angles;
+  schedule.torques = scene.torques;
   return schedule;
 }
 
@@ -34,10 +38,14 @@ SliderSlotChunk::SliderSlotChunk(const SliderScene& scene, std::size_t speed,
       capacity_(capacity),
       stops_(grid_.stops) {
   for (std::size_t s = 0; s < grid_.stops.size(); ++s) boundary_.push_back(grid_.boundary(s) ? 1 : 0);
+  const std::size_t per_rotor = capacity * schedule_.stops * schedule_.grid.rotors();
   parameters_.resize(capacity);
+  gradients_.resize(schedule_.forces ? 4 * capacity : 0);
   y0_.resize(capacity * dimension());
-  samples_.resize(capacity * schedule_.stops * slider_sample_values);
+  samples_.resize(capacity * schedule_.stops * schedule_.sample_values());
   boundary_values_.resize(capacity * schedule_.boundaries * slider_boundary_values);
+  angles_.resize(schedule_.angles ? per_rotor : 0);
+  torques_.resize(schedule_.torques ? per_rotor : 0);
   status_.resize(capacity);
   steps_.resize(2 * capacity);
 }
@@ -47,14 +55,16 @@ std::size_t SliderSlotChunk::dimension() const {
 }
 
 void SliderSlotChunk::fill(const std::vector<std::size_t>& plan_indices,
-                           const std::vector<kernels::SubstrateTableView>& tables) {
+                           const std::vector<SliderTableViews>& tables) {
   plan_indices_ = plan_indices;
   const std::size_t dim = dimension();
   std::fill(y0_.begin(), y0_.end(), 0.0);
   for (std::size_t k = 0; k < plan_indices.size(); ++k) {
     const SliderMember m = slider_plan_member(scene_, plan_indices[k]);
+    const SliderTableViews& views = tables[m.index.separation];
     parameters_[k] =
-        slider_parameters(slider_variant(scene_, m.index.speed, m.index.damping), tables[m.index.separation]);
+        slider_parameters(slider_variant(scene_, m.index.speed, m.index.damping), views.substrate);
+    if (schedule_.forces) std::copy(views.gradient.begin(), views.gradient.end(), gradients_.begin() + 4 * k);
     const std::vector<double> theta = slider_start(scene_, m.index);
     std::copy(theta.begin(), theta.end(), y0_.begin() + std::ptrdiff_t(k * dim));
   }
@@ -67,13 +77,27 @@ SliderMember SliderSlotChunk::member(std::size_t k) const {
   m.steps_accepted = steps_[2 * k];
   m.steps_rejected = steps_[2 * k + 1];
   const SliderUnits units(scene_);
-  const std::size_t stops = schedule_.stops;
-  for (auto* series : {&m.friction_series, &m.order_x_series, &m.order_y_series, &m.energy_series})
-    series->assign(stops, 0.0);
+  const std::size_t stops = schedule_.stops, rotors = schedule_.grid.rotors();
+  size_slider_series(m, scene_, stops);
   for (std::size_t s = 0; s < stops; ++s) {
-    const double* v = samples_.data() + (k * stops + s) * slider_sample_values;
+    const double* v = samples_.data() + (k * stops + s) * schedule_.sample_values();
     record_slider_sample(m, s, {v[0], v[1], v[2], v[3]}, units);
+    if (schedule_.rotor_sums) {
+      const double* r = v + schedule_.rotor_sums_at();
+      record_slider_rotor_sums(m, s, {r[0], r[1], r[2], r[3], {r[4], r[5]}, {r[6], r[7]}, {r[8], r[9]}},
+                               scene_);
+    }
+    if (schedule_.forces) {
+      const double* f = v + schedule_.forces_at();
+      record_slider_forces(m, s, {f[0], f[1], f[2]}, units);
+    }
   }
+  const std::size_t first = k * stops * rotors;
+  if (schedule_.angles)
+    std::copy(angles_.begin() + std::ptrdiff_t(first),
+              angles_.begin() + std::ptrdiff_t(first + stops * rotors), m.angles.begin());
+  if (schedule_.torques)
+    for (std::size_t i = 0; i < stops * rotors; ++i) m.torques[i] = torques_[first + i] * units.energy;
   SliderBoundaries at;
   for (std::size_t b = 0; b < schedule_.boundaries; ++b) {
     const double* v = boundary_values_.data() + (k * schedule_.boundaries + b) * slider_boundary_values;
@@ -96,24 +120,30 @@ SliderSlotViews SliderSlotChunk::views() {
 std::vector<SliderSlotChunk::Buffer> SliderSlotChunk::buffers() {
   const auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
   return {{parameters_.data(), bytes(parameters_), true},
+          {gradients_.data(), bytes(gradients_), true},
           {y0_.data(), bytes(y0_), true},
           {stops_.data(), bytes(stops_), true},
           {boundary_.data(), bytes(boundary_), true},
           {samples_.data(), bytes(samples_), false},
           {boundary_values_.data(), bytes(boundary_values_), false},
+          {angles_.data(), bytes(angles_), false},
+          {torques_.data(), bytes(torques_), false},
           {status_.data(), bytes(status_), false},
           {steps_.data(), bytes(steps_), false}};
 }
 
 SliderSlotViews slider_slot_views(void* const* p) {
   return {static_cast<const kernels::SliderParameters*>(p[0]),
-          static_cast<const double*>(p[1]),
+          static_cast<const kernels::SubstrateTableView*>(p[1]),
           static_cast<const double*>(p[2]),
-          static_cast<const std::uint8_t*>(p[3]),
-          static_cast<double*>(p[4]),
+          static_cast<const double*>(p[3]),
+          static_cast<const std::uint8_t*>(p[4]),
           static_cast<double*>(p[5]),
-          static_cast<std::uint8_t*>(p[6]),
-          static_cast<double*>(p[7])};
+          static_cast<double*>(p[6]),
+          static_cast<double*>(p[7]),
+          static_cast<double*>(p[8]),
+          static_cast<std::uint8_t*>(p[9]),
+          static_cast<double*>(p[10])};
 }
 
 }  // namespace rotorsweep::ensemble

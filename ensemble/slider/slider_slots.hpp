@@ -3,6 +3,7 @@
 // and start, the speed's sample grid — and the slots its samples and period boundaries go to.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -12,12 +13,14 @@
 #include "ensemble/slider/slider_sample_grid.hpp"
 #include "ensemble/slider/slider_scene.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
+#include "kernels/lanes/host_device.hpp"
 #include "kernels/models/slider/slider_model.hpp"
 
 namespace rotorsweep::ensemble {
 
 /// What every member of a chunk shares: the rotor grid and its placement, the tolerances and step
-/// limits of the CPU's lanes (SliderProblem), and the speed's sample grid's size.
+/// limits of the CPU's lanes (SliderProblem), the speed's sample grid's size and the series the scene
+/// asks for beyond friction, order parameters and energy.
 struct SliderSlotSchedule {
   kernels::SliderGrid grid;
   kernels::SliderPlacement placement;
@@ -25,6 +28,16 @@ struct SliderSlotSchedule {
   double first_step_scale = 0;  ///< the stepper's (kernels::AdaptiveIntegrator), computed on the host
   std::size_t stops = 0;        ///< samples (SliderSampleGrid::stops)
   std::size_t boundaries = 0;   ///< period boundaries among them (periods + 1)
+  bool rotor_sums = false;      ///< SliderScene::energies, field or sublattices: SliderRotorSums per sample
+  bool forces = false;          ///< SliderScene::forces: F per sample (and gradient tables per member)
+  bool angles = false, torques = false;  ///< every rotor's angle, substrate torque per sample
+
+  /// Values a slot keeps per sample: the SliderSample (force, order along x, across y, energy), then
+  /// with rotor_sums the SliderRotorSums (substrate, pairs, field_axis, field_z, moment_axis even/odd,
+  /// moment_z even/odd, torque even/odd), then with forces F_x, F_y, F_z; all scaled.
+  ROTORSWEEP_HD std::size_t sample_values() const { return 4 + (rotor_sums ? 10 : 0) + (forces ? 3 : 0); }
+  ROTORSWEEP_HD std::size_t rotor_sums_at() const { return 4; }
+  ROTORSWEEP_HD std::size_t forces_at() const { return rotor_sums ? 14 : 4; }
 };
 
 /// The schedule of the members of `scene` at speed `speed` with rotor grid `size`; first_step_scale:
@@ -32,18 +45,27 @@ struct SliderSlotSchedule {
 SliderSlotSchedule slider_slot_schedule(const SliderScene& scene, std::size_t speed, SliderSize size,
                                         double first_step_scale);
 
-/// Values a slot keeps per sample (SliderSample: force, order along x, across y, energy) and per period
-/// boundary (impulse, dissipation, energy), all scaled.
-inline constexpr std::size_t slider_sample_values = 4, slider_boundary_values = 3;
+/// Values a slot keeps per period boundary (impulse, dissipation, energy), scaled.
+inline constexpr std::size_t slider_boundary_values = 3;
+
+/// Where a member reads one separation's tables: the field, and with forces the four tables at
+/// shifted tracks (SliderModel::GradientTable order).
+struct SliderTableViews {
+  kernels::SubstrateTableView substrate;
+  std::array<kernels::SubstrateTableView, 4> gradient{};
+};
 
 /// Device-visible views of a chunk (k: the chunk position; inputs, then outputs).
 struct SliderSlotViews {
-  const kernels::SliderParameters* parameters = nullptr;  ///< [k]: its table where the device reads it
-  const double* y0 = nullptr;                             ///< [k · dimension + i]
-  const double* stops = nullptr;                          ///< [s] the grid's stops (scaled time)
-  const std::uint8_t* boundary = nullptr;                 ///< [s] whether stop s is a period boundary
-  double* samples = nullptr;                              ///< [(k · stops + s) · slider_sample_values + c]
+  const kernels::SliderParameters* parameters = nullptr;   ///< [k]: its table where the device reads it
+  const kernels::SubstrateTableView* gradients = nullptr;  ///< [4k + g] with forces
+  const double* y0 = nullptr;                              ///< [k · dimension + i]
+  const double* stops = nullptr;                           ///< [s] the grid's stops (scaled time)
+  const std::uint8_t* boundary = nullptr;                  ///< [s] whether stop s is a period boundary
+  double* samples = nullptr;                               ///< [(k · stops + s) · sample_values() + c]
   double* boundary_values = nullptr;  ///< [(k · boundaries + b) · slider_boundary_values + c]
+  double* angles = nullptr;           ///< [(k · stops + s) · rotors + r] with angles
+  double* torques = nullptr;          ///< [(k · stops + s) · rotors + r] with torques (scaled, E0)
   std::uint8_t* status = nullptr;     ///< [k] kernels::LaneStatus
   double* steps = nullptr;            ///< [2k] accepted, [2k + 1] rejected
 };
@@ -57,10 +79,9 @@ class SliderSlotChunk {
   SliderSlotChunk(const SliderScene& scene, std::size_t speed, const SliderSlotSchedule& schedule,
                   std::size_t capacity);
 
-  /// Fills members `plan_indices` (at most capacity, all of this size and speed); tables[s] is the view
-  /// of separation s's table where the members read it.
-  void fill(const std::vector<std::size_t>& plan_indices,
-            const std::vector<kernels::SubstrateTableView>& tables);
+  /// Fills members `plan_indices` (at most capacity, all of this size and speed); tables[s]: where the
+  /// members read separation s's tables.
+  void fill(const std::vector<std::size_t>& plan_indices, const std::vector<SliderTableViews>& tables);
   /// Chunk member k's results from the outputs: series in SI on the scene's timeline, summaries.
   SliderMember member(std::size_t k) const;
 
@@ -83,7 +104,8 @@ class SliderSlotChunk {
   std::size_t capacity_;
   std::vector<std::size_t> plan_indices_;
   std::vector<kernels::SliderParameters> parameters_;
-  std::vector<double> y0_, stops_, samples_, boundary_values_, steps_;
+  std::vector<kernels::SubstrateTableView> gradients_;
+  std::vector<double> y0_, stops_, samples_, boundary_values_, angles_, torques_, steps_;
   std::vector<std::uint8_t> boundary_, status_;
 };
 

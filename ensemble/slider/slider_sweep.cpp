@@ -127,10 +127,11 @@ bool run_slider_members(const SliderScene& scene, const std::vector<std::size_t>
                         const SliderScanControl& control,
                         const std::function<void(std::vector<SliderMember>&&)>& finished) {
   if (scene.device == Device::gpu)
-    return run_gpu_slider_members(scene, plan_indices, control, finished,
-                                  [](const SliderScene& variant, SliderSize size, double separation) {
-                                    return substrate_table<V>(variant, size, separation);
-                                  });
+    return run_gpu_slider_members(
+        scene, plan_indices, control, finished,
+        [](const SliderScene& variant, SliderSize size, double separation, double dy, double ddepth) {
+          return substrate_table<V>(variant, size, separation, dy, ddepth);
+        });
   std::vector<SliderSampleGrid> grids;
   for (std::size_t v = 0; v < scene.speeds.size(); ++v) grids.emplace_back(slider_variant(scene, v, 0));
   // the members of each size in turn (a lane scheduler's loop has one grid of rotors)

@@ -3,6 +3,7 @@
 // sums.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -18,8 +19,9 @@ namespace rotorsweep::ensemble {
 /// Runs slider members on a team with Integrator (TeamIntegrator over TeamRosenbrock on
 /// SliderModel<double, Inertial>): the member steps to each stop of its grid as SliderProblem's lane
 /// does (the same step control, stops and budget), is sampled there — F, the order parameters and the
-/// energy from the ranks' sums — and keeps its impulse, dissipation and energy at period boundaries. A
-/// member that fails keeps its frozen state's samples; the summaries are the host's (SliderSlotChunk).
+/// energy, and the rotor sums and the force where asked, from the ranks' sums; angles and torques
+/// rotor by rotor — and keeps its impulse, dissipation and energy at period boundaries. A member that
+/// fails keeps its frozen state's samples; the summaries are the host's (SliderSlotChunk).
 template <class Team, class Integrator>
 struct SliderTeamMember {
   using Model = typename Integrator::Model;
@@ -39,6 +41,11 @@ struct SliderTeamMember {
     team.sync();
     Model& model = parts.model;
     model.set_lane(0, slots.parameters[k]);
+    if (s.forces) {
+      std::array<kernels::SubstrateTableView, 4> gradient;
+      for (std::size_t g = 0; g < 4; ++g) gradient[g] = slots.gradients[4 * k + g];
+      model.set_gradient_tables(0, gradient);
+    }
     const std::size_t dim = model.dimension();
     kernels::TeamMemberState state;
     state.y = parts.y;
@@ -50,19 +57,16 @@ struct SliderTeamMember {
     for (std::size_t stop = 0; stop < s.stops; ++stop) {
       state.t_stop = slots.stops[stop];
       parts.integrator.advance(team, model, state);  // nothing once the member has failed: it stays frozen
-      const SliderSample sample = sampled(team, model, parts, state);
+      const std::size_t at = k * s.stops + stop;
+      double* v = slots.samples + at * s.sample_values();
+      const double energy = sample(team, model, parts, state, s, slots, v, at);
       const bool at_boundary = slots.boundary[stop] != 0;
       team.one([&] {
-        double* v = slots.samples + (k * s.stops + stop) * slider_sample_values;
-        v[0] = sample.force;
-        v[1] = sample.order_x;
-        v[2] = sample.order_y;
-        v[3] = sample.energy;
         if (at_boundary) {
           double* b = slots.boundary_values + (k * s.boundaries + boundary) * slider_boundary_values;
           b[0] = state.quad[Model::impulse_index];
           b[1] = state.quad[Model::dissipation_index];
-          b[2] = sample.energy;
+          b[2] = energy;
         }
       });
       if (at_boundary) ++boundary;
@@ -75,13 +79,17 @@ struct SliderTeamMember {
   }
 
  private:
+  /// Values each rank adds to a sample: F, E, Σ θ̇², the two alignments, then the rotor observables'
+  /// ten sums and the force's three components.
+  static constexpr std::size_t sums_per_rank = 18;
+
   /// What a member builds over the team's scratch (storage_size counts the same).
   struct Parts {
     Model model;
     Integrator integrator;
     typename Model::Workspace work;  ///< the samples' evaluation
     double* y;                       ///< the state θ (and ω)
-    double* partial;                 ///< each rank's parts of a sample's sums (5 values per rank)
+    double* partial;                 ///< each rank's parts of a sample's sums (sums_per_rank values each)
 
     ROTORSWEEP_HD Parts(const SliderSlotSchedule& s, std::size_t ranks, kernels::LaneArena<double>& arena)
         : model(s.grid, s.placement, arena),
@@ -89,23 +97,27 @@ struct SliderTeamMember {
                      s.first_step_scale, arena),
           work(model.dimension(), arena),
           y(arena.take(model.dimension())),
-          partial(arena.take(5 * ranks)) {}
+          partial(arena.take(sums_per_rank * ranks)) {}
   };
 
-  /// The sample at the member's state: each rank its rotors' field and torques, then its parts of F, E,
-  /// Σ θ̇² and the alignments' sums; the team adds them.
-  ROTORSWEEP_HD static SliderSample sampled(Team& team, const Model& model, Parts& parts,
-                                            const kernels::TeamMemberState& state) {
+  /// Samples the member's state into `values` (the slot's sample_values(): F, the order parameters,
+  /// the energy, then the rotor sums and the force where the schedule asks for them), its angles and
+  /// torques into sample `at` of those slots; returns the energy. Each rank takes its rotors' field and
+  /// torques, then its parts of the sums; the team adds them.
+  ROTORSWEEP_HD static double sample(Team& team, const Model& model, Parts& parts,
+                                     const kernels::TeamMemberState& state, const SliderSlotSchedule& s,
+                                     const SliderSlotViews& slots, double* values, std::size_t at) {
     const std::size_t n = model.rotors();
     const auto each_rank = [&](auto&& part) {
       team.each([&](std::size_t r) {
         const kernels::TeamRows rotors = kernels::team_rows(n, team.size(), r);
-        part(rotors.begin, rotors.end, parts.partial + 5 * r);
+        part(rotors.begin, rotors.end, parts.partial + sums_per_rank * r);
       });
     };
     each_rank([&](std::size_t begin, std::size_t end, double*) {
       model.prepare_range(parts.work, state.y, state.t, false, begin, end);
     });
+    double* torques = s.torques ? slots.torques + at * n : nullptr;
     each_rank([&](std::size_t begin, std::size_t end, double* mine) {
       model.torque_range(parts.work, begin, end);
       mine[0] = model.force_range(parts.work, begin, end);
@@ -113,17 +125,44 @@ struct SliderTeamMember {
       mine[2] = model.velocity_squares(state.y, begin, end);
       mine[3] = mine[4] = 0.0;
       model.alignment_range(state.y, begin, end, mine[3], mine[4]);
+      if (s.rotor_sums || s.torques) {
+        typename Model::RotorObservables sums;
+        model.rotor_observables_range(parts.work, begin, end, sums, torques);
+        const double own[10] = {sums.substrate,      sums.pairs,          sums.field_axis,  sums.field_z,
+                                sums.moment_axis[0], sums.moment_axis[1], sums.moment_z[0], sums.moment_z[1],
+                                sums.torque[0],      sums.torque[1]};
+        for (std::size_t c = 0; c < 10; ++c) mine[5 + c] = own[c];
+      }
+      if (s.forces) {
+        mine[15] = mine[16] = mine[17] = 0.0;
+        model.forces_range(parts.work, state.t, begin, end, mine[15], mine[16], mine[17]);
+      }
+      if (s.angles)
+        for (std::size_t r = begin; r < end; ++r) slots.angles[at * n + r] = state.y[r];
     });
     const auto total = [&](std::size_t c) {
-      return team.sum([&](std::size_t r) { return parts.partial[5 * r + c]; });
+      return team.sum([&](std::size_t r) { return parts.partial[sums_per_rank * r + c]; });
     };
-    SliderSample sample;
-    sample.force = total(0);
-    sample.energy = total(1) + model.kinetic_energy_of(total(2));
-    sample.order_x = total(3);
-    sample.order_y = total(4);
-    model.mean_alignment(sample.order_x, sample.order_y);
-    return sample;
+    double order_x = total(3), order_y = total(4);
+    model.mean_alignment(order_x, order_y);
+    const double energy = total(1) + model.kinetic_energy_of(total(2));
+    const double force = total(0);
+    double rotor_sums[10] = {}, force_sums[3] = {};
+    if (s.rotor_sums)
+      for (std::size_t c = 0; c < 10; ++c) rotor_sums[c] = total(5 + c);
+    if (s.forces)
+      for (std::size_t c = 0; c < 3; ++c) force_sums[c] = total(15 + c);
+    team.one([&] {
+      values[0] = force;
+      values[1] = order_x;
+      values[2] = order_y;
+      values[3] = energy;
+      if (s.rotor_sums)
+        for (std::size_t c = 0; c < 10; ++c) values[s.rotor_sums_at() + c] = rotor_sums[c];
+      if (s.forces)
+        for (std::size_t c = 0; c < 3; ++c) values[s.forces_at() + c] = force_sums[c];
+    });
+    return energy;
   }
 };
 

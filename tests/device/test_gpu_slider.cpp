@@ -1,6 +1,6 @@
 // The slider on a GPU (ctest label gpu; skipped where none is present): a member per warp team gives a
-// host team's bits (tests/support/slider_slot_runs.hpp) at every team size, in both dynamics and on the
-// experiment's 7 × 7 slider, and a member that fails is flagged as on the CPU.
+// host team's bits (tests/support/slider_slot_runs.hpp) at every team size, in both dynamics, with every
+// optional series and on the experiment's 7 × 7 slider, and a member that fails is flagged as on the CPU.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -32,8 +32,16 @@ void check_same_members(const std::vector<SliderMember>& gpu, const std::vector<
     CHECK(same_bits({gpu[k].friction, gpu[k].order_x, gpu[k].order_y, gpu[k].steps_accepted},
                     {host[k].friction, host[k].order_x, host[k].order_y, host[k].steps_accepted}));
     CHECK(same_bits(gpu[k].period_balance, host[k].period_balance));
-    for (const auto series : {&SliderMember::friction_series, &SliderMember::order_x_series,
-                              &SliderMember::order_y_series, &SliderMember::energy_series})
+    CHECK(same_bits(gpu[k].period_force_y, host[k].period_force_y));
+    for (const auto series :
+         {&SliderMember::friction_series, &SliderMember::order_x_series, &SliderMember::order_y_series,
+          &SliderMember::energy_series, &SliderMember::angles, &SliderMember::torques,
+          &SliderMember::substrate_energy_series, &SliderMember::pair_energy_series,
+          &SliderMember::field_axis_series, &SliderMember::field_z_series,
+          &SliderMember::moment_axis_even_series, &SliderMember::moment_z_even_series,
+          &SliderMember::torque_even_series, &SliderMember::moment_axis_odd_series,
+          &SliderMember::moment_z_odd_series, &SliderMember::torque_odd_series, &SliderMember::force_x_series,
+          &SliderMember::force_y_series, &SliderMember::force_z_series})
       CHECK(same_bits(gpu[k].*series, host[k].*series));
   }
 }
@@ -42,12 +50,14 @@ std::vector<SliderMember> on_gpu(const ensemble::SliderScene& scene) {
   return ensemble::run_slider_scan(scene).members;
 }
 
+/// A 3 × 2 slider at two speeds, dampings and separations, two replicas, every optional series.
 ensemble::SliderScene small_scene(const std::string& extra) {
   return io::parse_slider_scene_text(
       "[slider]\ncolumns = 3\nrows = 2\ndamping = [2.5e-6, 1e-5]\n" + extra +
           "[substrate]\ncolumns = 11\nrows = 11\n[drive]\nrest = 0.5\nperiods = 2\nspeed = [8e-3, 16e-3]\n"
           "[sweep]\nseparation = [7e-3, 9e-3]\n[initial]\nreplicas = 2\n[observables]\nsamples_per_period = "
-          "20\n"
+          "20\nangles = true\nenergies = true\nfield = true\nsublattices = true\ntorques = true\nforces = "
+          "true\n"
           "[numerics]\ndevice = \"gpu\"\n",
       "gpu-slider");
 }

@@ -57,8 +57,9 @@ inline std::vector<ensemble::SliderMember> slider_on_host_teams(const ensemble::
   const auto finished = [&](std::vector<ensemble::SliderMember>&& block) {
     for (auto& m : block) members[m.plan_index] = std::move(m);
   };
-  const auto build_table = [](const ensemble::SliderScene& variant, ensemble::SliderSize size, double h) {
-    return ensemble::substrate_table<double>(variant, size, h);
+  const auto build_table = [](const ensemble::SliderScene& variant, ensemble::SliderSize size, double h,
+                              double dy, double ddepth) {
+    return ensemble::substrate_table<double>(variant, size, h, dy, ddepth);
   };
   if (scene.overdamped) {
     HostTeamSliderDevice<false> device(ranks, chunk);

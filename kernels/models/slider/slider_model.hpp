@@ -302,6 +302,9 @@ class SliderModel {
   /// error (δ/h)² ~ 1e-9, its rounding 1e-16/δ ~ 1e-11).
   static constexpr double gradient_step = 1e-5;
   enum GradientTable : std::size_t { y_plus, y_minus, z_plus, z_minus };
+  /// Each gradient table's shift (along y, in depth; units of a), in GradientTable order.
+  static constexpr std::array<std::array<double, 2>, 4> gradient_shifts{
+      {{gradient_step, 0.0}, {-gradient_step, 0.0}, {0.0, gradient_step}, {0.0, -gradient_step}}};
 
   /// Lane `lane`'s four tables of the field at shifted tracks (GradientTable order), for forces().
   ROTORSWEEP_HD void set_gradient_tables(std::size_t lane, const std::array<SubstrateTableView, 4>& tables) {
@@ -312,11 +315,16 @@ class SliderModel {
   /// x-derivatives (−F, the drive's force), F_y and F_z by central differences of the gradient tables.
   ROTORSWEEP_HD void forces(Workspace& w, const V* y, V t, V& fx, V& fy, V& fz) const {
     prepare(w, y, t, false);
-    const V xi = displacement(t), scale = mu_ * V(0.5 / gradient_step);
     fx = V(0.0);
     fy = V(0.0);
     fz = V(0.0);
-    for (std::size_t r = 0; r < n_; ++r) {
+    forces_range(w, t, 0, n_, fx, fy, fz);
+  }
+  /// Adds the force's parts from rotors [begin, end) at time t to fx, fy, fz, after their prepare_range.
+  ROTORSWEEP_HD void forces_range(const Workspace& w, V t, std::size_t begin, std::size_t end, V& fx, V& fy,
+                                  V& fz) const {
+    const V xi = displacement(t), scale = mu_ * V(0.5 / gradient_step);
+    for (std::size_t r = begin; r < end; ++r) {
       fx += field_work(w, r);
       const std::size_t track = turned_ ? r : row(r);
       const V x = xi + start_x_[r];
@@ -389,6 +397,31 @@ class SliderModel {
   /// The part of rotor r in −F, the drive's force (∂(m_r·B)/∂x), after its prepare_range.
   ROTORSWEEP_HD V field_work(const Workspace& w, std::size_t r) const {
     return w.dbx[r] * w.cos[r] - w.dbz[r] * w.sin[r];
+  }
+  /// A sample's sums over rotors for the rotor observables: the substrate energy −Σ μB·m, the pairs'
+  /// ½ Σ (c P c + s Q s), Σ μB_∥ and Σ μB_z, and per row parity ([0]: rows j = 0, 2, …) Σ cos θ,
+  /// Σ −sin θ and the substrate torques Σ −μ(B_∥ sin θ + B_z cos θ).
+  struct RotorObservables {
+    V substrate = V(0.0), pairs = V(0.0), field_axis = V(0.0), field_z = V(0.0);
+    V moment_axis[2] = {V(0.0), V(0.0)}, moment_z[2] = {V(0.0), V(0.0)}, torque[2] = {V(0.0), V(0.0)};
+  };
+  /// Adds rotors [begin, end) to `sums`, after their torque_range; each one's substrate torque into
+  /// torques[r] where given.
+  ROTORSWEEP_HD void rotor_observables_range(const Workspace& w, std::size_t begin, std::size_t end,
+                                             RotorObservables& sums, V* torques) const {
+    for (std::size_t r = begin; r < end; ++r) {
+      const V c = w.cos[r], s = w.sin[r], bx = w.bx[r], bz = w.bz[r];
+      const V tau = lane_neg(bx * s + bz * c);  // the substrate's part of τ_r
+      sums.substrate -= bx * c - bz * s;
+      sums.pairs += V(0.5) * (c * w.p_cos[r] + s * w.q_sin[r]);
+      sums.field_axis += bx;
+      sums.field_z += bz;
+      const std::size_t parity = row(r) % 2;
+      sums.moment_axis[parity] += c;
+      sums.moment_z[parity] -= s;
+      sums.torque[parity] += tau;
+      if (torques) torques[r] = tau;
+    }
   }
   /// The drive's force from rotors [begin, end), after their prepare_range.
   ROTORSWEEP_HD V force_range(const Workspace& w, std::size_t begin, std::size_t end) const {
