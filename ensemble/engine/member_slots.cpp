@@ -153,33 +153,28 @@ double SlotChunk::deliver(const Scene& scene, int threads, const ResultSink& sin
   return attempts;
 }
 
-SlotViews SlotChunk::views() {
-  std::vector<void*> pointers;
-  for (const Buffer& b : buffers()) pointers.push_back(b.data);
-  return slot_views(pointers.data());
-}
+SlotViews SlotChunk::views() { return slot_views(slot_pointers(buffers()).data()); }
 
 std::vector<SlotChunk::Buffer> SlotChunk::buffers() {
-  const auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
-  return {{A_.data(), bytes(A_), true},
-          {g_.data(), bytes(g_), true},
-          {strict_fm_.data(), bytes(strict_fm_), true},
-          {y0_.data(), bytes(y0_), true},
-          {tolerance_scale_.data(), bytes(tolerance_scale_), true},
-          {A_rows_.data(), bytes(A_rows_), true},
-          {anisotropy_rows_.data(), bytes(anisotropy_rows_), true},
-          {coupling_rows_.data(), bytes(coupling_rows_), true},
-          {noise_key_.data(), bytes(noise_key_), true},
-          {table_b_.data(), bytes(table_b_), true},
-          {table_c_.data(), bytes(table_c_), true},
-          {status_.data(), bytes(status_), false},
-          {settled_.data(), bytes(settled_), false},
-          {periods_.data(), bytes(periods_), false},
-          {steps_.data(), bytes(steps_), false},
-          {theta_.data(), bytes(theta_), false},
-          {records_.data(), bytes(records_), false},
-          {end_states_.data(), bytes(end_states_), false},
-          {profiles_.data(), bytes(profiles_), false}};
+  return {slot_buffer(A_, true),
+          slot_buffer(g_, true),
+          slot_buffer(strict_fm_, true),
+          slot_buffer(y0_, true),
+          slot_buffer(tolerance_scale_, true),
+          slot_buffer(A_rows_, true),
+          slot_buffer(anisotropy_rows_, true),
+          slot_buffer(coupling_rows_, true),
+          slot_buffer(noise_key_, true),
+          slot_buffer(table_b_, true),
+          slot_buffer(table_c_, true),
+          slot_buffer(status_, false),
+          slot_buffer(settled_, false),
+          slot_buffer(periods_, false),
+          slot_buffer(steps_, false),
+          slot_buffer(theta_, false),
+          slot_buffer(records_, false),
+          slot_buffer(end_states_, false),
+          slot_buffer(profiles_, false)};
 }
 
 }  // namespace rotorsweep::ensemble

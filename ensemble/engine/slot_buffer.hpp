@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 namespace rotorsweep::ensemble {
 
@@ -12,5 +13,18 @@ struct SlotBuffer {
   std::size_t bytes;
   bool input;
 };
+
+/// The buffer of a vector's values.
+template <class T>
+SlotBuffer slot_buffer(std::vector<T>& values, bool input) {
+  return {values.data(), values.size() * sizeof(T), input};
+}
+
+/// Each buffer's data, in order: what a chunk's views are made of.
+inline std::vector<void*> slot_pointers(const std::vector<SlotBuffer>& buffers) {
+  std::vector<void*> pointers;
+  for (const SlotBuffer& b : buffers) pointers.push_back(b.data);
+  return pointers;
+}
 
 }  // namespace rotorsweep::ensemble

@@ -299,7 +299,6 @@ SweepOutcome run_teams(const Scene& scene, const VariantRange& range, unsigned t
   using Team = typename TeamIntegrator::TeamType;
   constexpr bool block_team = std::is_same_v<std::remove_const_t<Team>, kernels::BlockTeam>;
   using Driver = TeamMember<Team, TeamIntegrator>;
-  available_gpu();
   const Member variant = range.source->at(range.begin);
   const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
   if (!Driver::team_schedule_fits(schedule)) throw std::logic_error("a team cannot run this schedule");

@@ -1,6 +1,5 @@
 // The slider on the GPU (docs/architecture.md "Teams"): SliderTeamMember with rodas5p on warp teams,
 // inertial or overdamped; the substrate tables copied to device memory once per size and speed.
-#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -46,7 +45,7 @@ class GpuSliderDevice final : public SliderSlotDevice {
         continue;
       }
       kernels::SubstrateTableView view = table->view();
-      const std::size_t bytes = view.tracks * view.intervals * 12 * sizeof(double);
+      const std::size_t bytes = view.coefficient_count() * sizeof(double);
       tables_.push_back(std::make_unique<DeviceBuffer>(bytes, "allocating a substrate table"));
       check(cudaMemcpy(tables_.back()->data(), view.coefficients, bytes, cudaMemcpyHostToDevice),
             "copying a substrate table");

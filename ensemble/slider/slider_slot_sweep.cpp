@@ -13,6 +13,45 @@
 
 namespace rotorsweep::ensemble {
 
+namespace {
+
+/// The tables of a group's separations (`used`; none for the others), built on `threads`: per
+/// separation its table and, with forces, the four at shifted tracks (SliderModel::GradientTable), the
+/// first over the speed's path and the others over the scene's, as the CPU's lanes build them (the same
+/// path, their bits).
+std::vector<std::optional<kernels::SubstrateTable>> group_tables(const SliderScene& scene, std::size_t speed,
+                                                                 SliderSize size,
+                                                                 const std::vector<bool>& used, int threads,
+                                                                 const SliderTableBuilder& build_table) {
+  using Model = kernels::SliderModel<double, true>;
+  const SliderScene variant = slider_variant(scene, speed, 0);
+  const std::size_t per = scene.forces ? 5 : 1;
+  std::vector<std::optional<kernels::SubstrateTable>> tables(used.size() * per);
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const std::size_t s = i / per, g = i % per;
+    if (!used[s]) continue;
+    const double dy = g ? Model::gradient_shifts[g - 1][0] : 0.0,
+                 ddepth = g ? Model::gradient_shifts[g - 1][1] : 0.0;
+    tables[i].emplace(build_table(g ? scene : variant, size, scene.separations[s], dy, ddepth));
+  }
+  return tables;
+}
+
+/// group_tables' views, placed, per separation.
+std::vector<SliderTableViews> per_separation(const std::vector<kernels::SubstrateTableView>& placed,
+                                             bool forces) {
+  const std::size_t per = forces ? 5 : 1;
+  std::vector<SliderTableViews> views(placed.size() / per);
+  for (std::size_t s = 0; s < views.size(); ++s) {
+    views[s].substrate = placed[s * per];
+    for (std::size_t g = 1; g < per; ++g) views[s].gradient[g - 1] = placed[s * per + g];
+  }
+  return views;
+}
+
+}  // namespace
+
 double slider_first_step_scale(const SliderScene& scene) {
   using Model = kernels::SliderModel<double, true>;
   return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
@@ -40,29 +79,11 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
     }
     if (control.stopped && control.stopped()) return true;
 
-    const SliderScene variant = slider_variant(scene, first.speed, 0);
     const SliderSize size = scene.sizes[first.size];
-    // per separation its table, then with forces the four at shifted tracks (SliderModel::GradientTable),
-    // over the variant's path and the scene's as the CPU's lanes build them (the same path, their bits)
-    using Model = kernels::SliderModel<double, true>;
-    const std::size_t per = scene.forces ? 5 : 1;
-    std::vector<std::optional<kernels::SubstrateTable>> tables(used.size() * per);
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
-    for (std::size_t i = 0; i < tables.size(); ++i) {
-      const std::size_t s = i / per, g = i % per;
-      if (!used[s]) continue;
-      const double dy = g ? Model::gradient_shifts[g - 1][0] : 0.0,
-                   ddepth = g ? Model::gradient_shifts[g - 1][1] : 0.0;
-      tables[i].emplace(build_table(g ? scene : variant, size, scene.separations[s], dy, ddepth));
-    }
+    const auto tables = group_tables(scene, first.speed, size, used, threads, build_table);
     std::vector<const kernels::SubstrateTable*> placed;
     for (const auto& t : tables) placed.push_back(t ? &*t : nullptr);
-    const std::vector<kernels::SubstrateTableView> placed_views = device.place_tables(placed);
-    std::vector<SliderTableViews> views(used.size());
-    for (std::size_t s = 0; s < used.size(); ++s) {
-      views[s].substrate = placed_views[s * per];
-      for (std::size_t g = 1; g < per; ++g) views[s].gradient[g - 1] = placed_views[s * per + g];
-    }
+    const std::vector<SliderTableViews> views = per_separation(device.place_tables(placed), scene.forces);
 
     const SliderSlotSchedule schedule = slider_slot_schedule(scene, first.speed, size, first_step_scale);
     const std::size_t capacity = std::max<std::size_t>(1, device.chunk_members(schedule));

@@ -110,26 +110,20 @@ SliderMember SliderSlotChunk::member(std::size_t k) const {
   return m;
 }
 
-SliderSlotViews SliderSlotChunk::views() {
-  auto buffers = this->buffers();
-  std::vector<void*> pointers;
-  for (const auto& b : buffers) pointers.push_back(b.data);
-  return slider_slot_views(pointers.data());
-}
+SliderSlotViews SliderSlotChunk::views() { return slider_slot_views(slot_pointers(buffers()).data()); }
 
 std::vector<SliderSlotChunk::Buffer> SliderSlotChunk::buffers() {
-  const auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
-  return {{parameters_.data(), bytes(parameters_), true},
-          {gradients_.data(), bytes(gradients_), true},
-          {y0_.data(), bytes(y0_), true},
-          {stops_.data(), bytes(stops_), true},
-          {boundary_.data(), bytes(boundary_), true},
-          {samples_.data(), bytes(samples_), false},
-          {boundary_values_.data(), bytes(boundary_values_), false},
-          {angles_.data(), bytes(angles_), false},
-          {torques_.data(), bytes(torques_), false},
-          {status_.data(), bytes(status_), false},
-          {steps_.data(), bytes(steps_), false}};
+  return {slot_buffer(parameters_, true),
+          slot_buffer(gradients_, true),
+          slot_buffer(y0_, true),
+          slot_buffer(stops_, true),
+          slot_buffer(boundary_, true),
+          slot_buffer(samples_, false),
+          slot_buffer(boundary_values_, false),
+          slot_buffer(angles_, false),
+          slot_buffer(torques_, false),
+          slot_buffer(status_, false),
+          slot_buffer(steps_, false)};
 }
 
 SliderSlotViews slider_slot_views(void* const* p) {

@@ -34,6 +34,9 @@ struct SubstrateTableView {
   double x_begin = 0.0;
   double inv_dx = 1.0;
 
+  /// How many coefficients the table holds (twelve per interval and track).
+  ROTORSWEEP_HD std::size_t coefficient_count() const { return tracks * intervals * 12; }
+
   /// The coefficients of the interval holding x on `track`, and x's local coordinate s there.
   ROTORSWEEP_HD const double* interval(std::size_t track, double x, double& s) const {
     const double u = (x - x_begin) * inv_dx;
