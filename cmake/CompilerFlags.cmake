@@ -12,7 +12,7 @@ add_compile_options($<$<COMPILE_LANGUAGE:CXX>:-Wall> $<$<COMPILE_LANGUAGE:CXX>:-
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
   add_compile_options($<$<COMPILE_LANGUAGE:CXX>:-Wno-maybe-uninitialized> $<$<COMPILE_LANGUAGE:CXX>:-Wno-uninitialized>)
 endif()
-# Everything is compiled for the baseline x86-64 except the SIMD sweeps, the command line, the
+# Everything is compiled for the baseline x86-64 except the SIMD sweeps, `bench kernels`, the
 # tests and the Python module, which get their set's -march (-march=native in a native build;
 # ensemble/, apps/, tests/, python/ CMakeLists): code without lanes (Eigen's solvers in the
 # landscape) then gives the same bits, free of fused multiply-adds, in native and portable builds.
@@ -20,5 +20,6 @@ endif()
 # that a GPU thread gives the CPU lanes' bits; constexpr host functions (std::array) callable on it.
 set(CMAKE_CUDA_STANDARD 20)
 set(CMAKE_CUDA_STANDARD_REQUIRED ON)
-set(ROTORSWEEP_CUDA_FLAGS --fmad=false --expt-relaxed-constexpr -Xcompiler=-ffp-contract=off
+# Every nvcc warning is an error (a host function called from device code is only a warning).
+set(ROTORSWEEP_CUDA_FLAGS --fmad=false --expt-relaxed-constexpr -Xcompiler=-ffp-contract=off -Werror all-warnings
                           -diag-suppress=186)  # "pointless comparison" in loops over no quadratures
