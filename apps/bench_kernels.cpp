@@ -115,14 +115,14 @@ double step_rate(kernels::StepperId id, std::size_t rows, int repeats, bool diso
   kernels::LaneArena<V> model_arena(model_storage.data(), model_storage.size());
   const Model model(rows, model_arena, bench_integrals,
                     BenchDisorder(rows, disordered).parameters<typename Model::Parameters>());
-  return kernels::with_stepper<Model>(id, [&]<class Stepper>() {
+  return kernels::with_stepper<Model>(id, [&]<class Stepper>(const typename Stepper::Method& method) {
     using Integrator = kernels::AdaptiveIntegrator<Model, Stepper>;
     lane_vector<V> storage(kernels::counted_storage<V>([&](kernels::LaneArena<V>& counter) {
-      const Integrator integrator(model, {1e-6, 1e-9}, {}, counter);
+      const Integrator integrator(model, method, {1e-6, 1e-9}, {}, counter);
       const kernels::LaneState<V> state(rows, Model::max_quadratures, counter);
     }));
     kernels::LaneArena<V> arena(storage.data(), storage.size());
-    Integrator integrator(model, {1e-6, 1e-9}, {}, arena);
+    Integrator integrator(model, method, {1e-6, 1e-9}, {}, arena);
     kernels::LaneState<V> state(rows, Model::max_quadratures, arena);
     const auto theta = afm_angles<V>(rows);
     std::copy(theta.begin(), theta.end(), state.y);
@@ -156,7 +156,7 @@ int run_bench_kernels(const BenchKernelOptions& options) {
     const double s = step_rate<double>(k, rows, options.repeats);
     const double v = step_rate<simd_lane>(k, rows, options.repeats);
     const int evaluations = kernels::with_stepper<BenchModel<simd_lane>>(
-        k, []<class Stepper>() { return Stepper::evaluations(); });
+        k, []<class Stepper>(const typename Stepper::Method& method) { return method.stages; });
     std::printf(
         "  steps %-8s scalar %10.4g /s   SIMD %10.4g member-steps/s (%.1fx; %.2f of the bound for %d RHS)\n",
         kernels::stepper_names[k].data(), s, v, v / s, v * evaluations / bound, evaluations);

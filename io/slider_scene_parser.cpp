@@ -230,11 +230,15 @@ SliderScene read_slider_scene(const toml::table& root) {
 
 void check_slider_device(const ensemble::SliderScene& scene) {
   if (scene.device != ensemble::Device::gpu) return;
-  const std::string stepper(ensemble::default_slider_stepper_name);
-  if (scene.stepper != *kernels::parse_stepper(stepper))
-    fail("numerics.stepper", "must be \"" + stepper +
-                                 "\" with numerics.device = \"gpu\" (the slider's GPU kernels; other "
-                                 "steppers run with numerics.device = \"cpu\")");
+  if (kernels::stepper_family(scene.stepper) == kernels::StepperFamily::rosenbrock) return;
+  std::string allowed;
+  for (kernels::StepperId id = 0; id < kernels::stepper_names.size(); ++id)
+    if (kernels::stepper_family(id) == kernels::StepperFamily::rosenbrock)
+      allowed += (allowed.empty() ? "" : ", ") + std::string(kernels::stepper_names[id]);
+  fail("numerics.stepper", "must be a linearly implicit stepper (" + allowed +
+                               ") with numerics.device = \"gpu\" (the slider's GPU kernels); \"" +
+                               std::string(kernels::stepper_names[scene.stepper]) +
+                               "\" runs with numerics.device = \"cpu\"");
 }
 
 ensemble::SliderScene parse_slider_scene_text(std::string_view text, std::string_view source) {

@@ -16,8 +16,8 @@ ensemble::SliderScene parse_slider_scene_file(const std::string& path);
 /// Parses and validates slider scene text; `source` names it in messages.
 ensemble::SliderScene parse_slider_scene_text(std::string_view text, std::string_view source);
 
-/// With numerics.device = "gpu": a SceneError where the scene names a stepper other than the slider's
-/// default, the one the GPU's slider runs; nothing on the CPU.
+/// With numerics.device = "gpu": a SceneError where the scene names an explicit stepper, which the
+/// GPU's slider (linearly implicit steppers on teams) does not run; nothing on the CPU.
 void check_slider_device(const ensemble::SliderScene& scene);
 
 }  // namespace rotorsweep::io

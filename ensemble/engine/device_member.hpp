@@ -128,7 +128,9 @@ struct DeviceMember {
     if constexpr (stochastic)
       return {s.temperature, s.steps_per_period, s.step_fraction};
     else
-      return {{s.rtol, s.atol}, {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller}};
+      return {kernels::stepper_method<typename Integrator::Method>(s.stepper),
+              {s.rtol, s.atol},
+              {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller}};
   }
 
   ROTORSWEEP_HD static Integrator make_integrator(const Model& model, const SlotSchedule& s,
@@ -137,7 +139,7 @@ struct DeviceMember {
     if constexpr (stochastic)
       return Integrator(model, settings, arena);
     else
-      return Integrator(model, settings.tolerances, settings.limits, s.first_step_scale, arena);
+      return Integrator(model, settings.method, settings.tolerances, settings.limits, s.first_step_scale, arena);
   }
 
   /// IntegrationLoop::next_period on the one lane.

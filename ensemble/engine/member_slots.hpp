@@ -15,6 +15,7 @@
 #include "ensemble/rows/scene.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "kernels/lanes/host_device.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -26,6 +27,7 @@ struct SlotSchedule {
   bool slips = false;          ///< the slip counter is on
   bool slip_energies = false;  ///< it records each slip's energy (observables.slip_kinds)
   double slip_rate = 0;
+  kernels::StepperId stepper = 0;  ///< the scene's: its tableau is the integrator's (stepper_method)
   double rtol = 0, atol = 0, h_max = 0, max_steps = 0;
   double error_rtol = 0;  ///< rtol × the stepper's swing_error_factor (channel dissipation_error)
   kernels::StepController controller = kernels::StepController::integral;

@@ -3,6 +3,8 @@
 // and a stepper's team form (docs/architecture.md "Teams").
 #pragma once
 
+#include <type_traits>
+
 #include "ensemble/engine/device_member.hpp"
 #include "ensemble/rows/scene.hpp"
 #include "kernels/models/rows/coupled_rows.hpp"
@@ -14,21 +16,15 @@
 
 namespace rotorsweep::ensemble {
 
-/// The adaptive integrator of stepper `id` on Model.
-template <kernels::StepperId id, class Model>
-using DeviceAdaptiveIntegrator =
-    kernels::AdaptiveIntegrator<Model, typename kernels::stepper_at<id>::type::template type<Model>>;
+/// The adaptive integrator of the steppers of `family` on Model.
+template <kernels::StepperFamily family, class Model>
+using DeviceAdaptiveIntegrator = kernels::AdaptiveIntegrator<Model, kernels::family_stepper<family, Model>>;
 
-template <class Team, const kernels::RosenbrockTableau& Table, class Model>
-kernels::TeamRosenbrock<Team, Table, Model> team_stepper_of(const kernels::RosenbrockTableau&);
-template <class Team, const kernels::ExplicitTableau& Table, class Model>
-void team_stepper_of(const kernels::ExplicitTableau&);
-
-/// Stepper `id` on a team of Model (TeamRosenbrock), or void for the explicit stepper, which has no
-/// team form.
-template <kernels::StepperId id, class Team, class Model>
-using DeviceTeamStepper = decltype(team_stepper_of<Team, kernels::stepper_at<id>::type::tableau, Model>(
-    kernels::stepper_at<id>::type::tableau));
+/// The steppers of `family` on a team of Model (TeamRosenbrock), or void for the explicit family, which
+/// has no team form.
+template <kernels::StepperFamily family, class Team, class Model>
+using DeviceTeamStepper =
+    std::conditional_t<family == kernels::StepperFamily::rosenbrock, kernels::TeamRosenbrock<Team, Model>, void>;
 
 /// Calls f.template operator()<Model>() with the scene's row model on the double lane, as
 /// with_row_model picks it for the CPU: NearestNeighbourRows, or CoupledRows for a coupling table
@@ -46,8 +42,8 @@ template <class F>
 decltype(auto) with_device_driver(const Scene& scene, F&& f) {
   return with_device_model(scene, [&]<class Model>() {
     if (scene.thermal.on()) return f.template operator()<Model, kernels::LeimkuhlerMatthews<Model>>();
-    return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-      return f.template operator()<Model, DeviceAdaptiveIntegrator<id, Model>>();
+    return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
+      return f.template operator()<Model, DeviceAdaptiveIntegrator<family, Model>>();
     });
   });
 }
@@ -55,11 +51,12 @@ decltype(auto) with_device_driver(const Scene& scene, F&& f) {
 /// The first-step scale a variant's schedule carries (computed on the host: a GPU's pow may round
 /// differently); 0 for the Langevin stepper, which has none.
 template <class Integrator>
-double device_first_step_scale(const Member& variant) {
+double device_first_step_scale(const Scene& scene, const Member& variant) {
   if constexpr (Integrator::stochastic)
     return 0.0;
   else
-    return Integrator::first_step_scale({variant.rtol, variant.atol});
+    return Integrator::first_step_scale(
+        {variant.rtol, variant.atol}, kernels::stepper_method<typename Integrator::Method>(scene.stepper));
 }
 
 }  // namespace rotorsweep::ensemble

@@ -1,5 +1,5 @@
 // The GPU backend's entry points in a CUDA build: the device probe and the dispatch from the
-// scene's stepper to its translation unit (gpu_sweep_stepper.cu.in), or at T > 0 to the Langevin one.
+// scene's stepper to its family's translation unit (gpu_sweep_family.cu.in), or at T > 0 to the Langevin one.
 #include <cuda_runtime.h>
 
 #include <stdexcept>
@@ -10,8 +10,8 @@
 namespace rotorsweep::ensemble {
 
 namespace gpu {
-template <kernels::StepperId id>
-SweepOutcome run_stepper(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
+template <kernels::StepperFamily family>
+SweepOutcome run_stepper_family(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
 SweepOutcome run_langevin(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
 }  // namespace gpu
 
@@ -46,8 +46,8 @@ const GpuInfo& gpu_info() {
 SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, int host_threads,
                                const SweepControl& control, const ResultSink& sink) {
   if (scene.thermal.on()) return gpu::run_langevin(scene, range, host_threads, control, sink);
-  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-    return gpu::run_stepper<id>(scene, range, host_threads, control, sink);
+  return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
+    return gpu::run_stepper_family<family>(scene, range, host_threads, control, sink);
   });
 }
 

@@ -54,8 +54,8 @@ GpuLaunch gpu_launch() {
 
 bool gpu_teams_fit(const Scene& scene) {
   if (scene.thermal.on()) return true;  // the Langevin stepper, whatever numerics.stepper says
-  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-    return !std::is_void_v<DeviceTeamStepper<id, kernels::HostTeam, kernels::NearestNeighbourRows<double>>>;
+  return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
+    return !std::is_void_v<DeviceTeamStepper<family, kernels::HostTeam, kernels::NearestNeighbourRows<double>>>;
   });
 }
 

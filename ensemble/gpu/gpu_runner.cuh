@@ -227,7 +227,7 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
   using Driver = DeviceMember<Model, Integrator>;
   available_gpu();
   const Member variant = range.source->at(range.begin);
-  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
+  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
   if (Driver::storage_size(schedule) > gpu_thread_scratch)
     throw std::runtime_error("model.rows = " + std::to_string(variant.rows) +
                              " is more than the GPU backend holds (" + std::to_string(gpu_max_rows(scene)) +
@@ -300,7 +300,7 @@ SweepOutcome run_teams(const Scene& scene, const VariantRange& range, unsigned t
   constexpr bool block_team = std::is_same_v<std::remove_const_t<Team>, kernels::BlockTeam>;
   using Driver = TeamMember<Team, TeamIntegrator>;
   const Member variant = range.source->at(range.begin);
-  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(variant));
+  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
   if (!Driver::team_schedule_fits(schedule)) throw std::logic_error("a team cannot run this schedule");
 
   const auto kernel = sweep_slots_on_teams<TeamMember, TeamIntegrator, SlotSchedule, SlotViews>;

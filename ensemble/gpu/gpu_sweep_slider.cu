@@ -1,4 +1,4 @@
-// The slider on the GPU (docs/architecture.md "Teams"): SliderTeamMember with rodas5p on warp teams,
+// The slider on the GPU (docs/architecture.md "Teams"): SliderTeamMember with a Rosenbrock stepper on warp teams,
 // inertial or overdamped; the substrate tables copied to device memory once per size and speed.
 #include <memory>
 #include <vector>
@@ -13,12 +13,10 @@ namespace rotorsweep::ensemble {
 
 namespace gpu {
 
-/// The slider's team integrator: the slider's default stepper (rodas5p) on a warp team.
+/// The slider's team integrator: a linearly implicit stepper (its tableau the scene's) on a warp team.
 template <bool Inertial>
-using SliderTeamIntegrator =
-    kernels::TeamIntegrator<const kernels::WarpTeam,
-                            kernels::TeamRosenbrock<const kernels::WarpTeam, kernels::rodas5p_tableau,
-                                                    kernels::SliderModel<double, Inertial>>>;
+using SliderTeamIntegrator = kernels::TeamIntegrator<
+    const kernels::WarpTeam, kernels::TeamRosenbrock<const kernels::WarpTeam, kernels::SliderModel<double, Inertial>>>;
 
 /// Chunks of slider slots on the GPU, a member per team of a warp's threads (gpu_slider_team_size of
 /// the chunk's size).

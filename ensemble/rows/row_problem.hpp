@@ -40,14 +40,15 @@ auto quadrature_observers(const Scene& scene, const Member& variant, kernels::In
                         kernels::stepper_swing_error_factors[scene.stepper] * variant.rtol, variant.atol));
 }
 
-/// The integrator settings of a variant: tolerances and step limits for the adaptive integrators,
+/// The integrator settings of a variant: the stepper's tableau, tolerances and step limits for the adaptive integrators,
 /// temperature and steps per period for the Langevin stepper.
 template <class Integrator>
 typename Integrator::Settings integrator_settings(const Scene& scene, const Member& variant) {
   if constexpr (Integrator::stochastic)
     return {scene.thermal.temperature, scene.thermal.steps_per_period, scene.thermal.step_fraction};
   else
-    return {{variant.rtol, variant.atol},
+    return {kernels::stepper_method<typename Integrator::Method>(scene.stepper),
+            {variant.rtol, variant.atol},
             {.h_max = scene.h_max, .max_steps = scene.max_steps, .controller = scene.controller}};
 }
 

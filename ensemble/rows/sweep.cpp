@@ -1,5 +1,5 @@
-// run_sweep: variant by variant, dispatch from the scene's stepper to its instantiation (one
-// generated translation unit per entry of kernels::steppers), or to the Langevin stepper at T > 0;
+// run_sweep: variant by variant, dispatch from the scene's stepper to its family's instantiation (one
+// generated translation unit per family of kernels::steppers), or to the Langevin stepper at T > 0;
 // on the GPU, members whose averaged periods slip get their shadow runs in a second pass (docs/numerics.md).
 #include "ensemble/rows/sweep.hpp"
 
@@ -15,13 +15,10 @@
 
 namespace rotorsweep::ensemble {
 
-template <kernels::StepperId id>
+template <kernels::StepperFamily family>
 SweepOutcome run_row_sweep(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
 SweepOutcome run_thermal_row_sweep(const Scene&, const VariantRange&, int, const SweepControl&,
                                    const ResultSink&);
-
-static_assert(ROTORSWEEP_STEPPER_COUNT == kernels::steppers::size,
-              "the build generated one translation unit per entry of kernels::steppers");
 
 void SweepOutcome::append(SweepOutcome&& part) {
   for (auto& r : part.results) results.push_back(std::move(r));
@@ -41,8 +38,8 @@ SweepOutcome run_range(const Scene& scene, const VariantRange& range, int thread
                        const SweepControl& control, const ResultSink& sink) {
   if (scene.device == Device::gpu) return run_gpu_row_sweep(scene, range, threads, control, sink);
   if (scene.thermal.on()) return run_thermal_row_sweep(scene, range, threads, control, sink);
-  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-    return run_row_sweep<id>(scene, range, threads, control, sink);
+  return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
+    return run_row_sweep<family>(scene, range, threads, control, sink);
   });
 }
 

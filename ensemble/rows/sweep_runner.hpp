@@ -95,12 +95,13 @@ decltype(auto) with_row_model(const Scene& scene, F&& f) {
   });
 }
 
-/// One variant's members with stepper `id` on the row model.
-template <kernels::StepperId id>
+/// One variant's members on the row model with the scene's stepper, of family `family` (its tableau
+/// is data: RowProblem's integrator settings).
+template <kernels::StepperFamily family>
 SweepOutcome run_row_sweep(const Scene& scene, const VariantRange& range, int threads,
                            const SweepControl& control, const ResultSink& sink) {
   return with_row_model(scene, [&]<class Model>() {
-    using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
+    using Stepper = kernels::family_stepper<family, Model>;
     return run_lane_schedulers<Model, kernels::AdaptiveIntegrator<Model, Stepper>>(
         scene, range, RowSetup<Model>(&scene), threads, control, sink);
   });

@@ -14,15 +14,15 @@ namespace rotorsweep::ensemble {
 
 double lane_block_bytes(const Scene& scene) {
   const std::size_t rows = scene.max_rows();
-  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
+  return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
     return with_row_model(scene, [&]<class Model>() {
-      using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
-      using Loop = IntegrationLoop<Model, kernels::AdaptiveIntegrator<Model, Stepper>>;
+      using Integrator = kernels::AdaptiveIntegrator<Model, kernels::family_stepper<family, Model>>;
+      using Loop = IntegrationLoop<Model, Integrator>;
       const RowSetup<Model> setup(&scene);
+      typename Loop::Settings settings{};
+      settings.method = kernels::stepper_method<typename Integrator::Method>(scene.stepper);
       const std::size_t values = std::apply(
-          [&](const auto&... arguments) {
-            return Loop::storage_size(rows, typename Loop::Settings{}, arguments...);
-          },
+          [&](const auto&... arguments) { return Loop::storage_size(rows, settings, arguments...); },
           setup.model_arguments());
       return double(values) * double(sizeof(typename Model::lane_type));
     });

@@ -54,9 +54,8 @@ std::vector<SliderTableViews> per_separation(const std::vector<kernels::Substrat
 
 double slider_first_step_scale(const SliderScene& scene) {
   using Model = kernels::SliderModel<double, true>;
-  return kernels::with_stepper_id(scene.stepper, [&]<kernels::StepperId id>() {
-    using Stepper = typename kernels::stepper_at<id>::type::template type<Model>;
-    return kernels::AdaptiveIntegrator<Model, Stepper>::first_step_scale({scene.rtol, scene.atol});
+  return kernels::with_stepper<Model>(scene.stepper, [&]<class Stepper>(const auto& method) {
+    return kernels::AdaptiveIntegrator<Model, Stepper>::first_step_scale({scene.rtol, scene.atol}, method);
   });
 }
 

@@ -24,6 +24,7 @@ namespace rotorsweep::ensemble {
 struct SliderSlotSchedule {
   kernels::SliderGrid grid;
   kernels::SliderPlacement placement;
+  kernels::StepperId stepper = 0;  ///< the scene's (a linearly implicit one: its tableau is the team's)
   double rtol = 0, atol = 0, h_max = 0, max_steps = 0;
   double first_step_scale = 0;  ///< the stepper's (kernels::AdaptiveIntegrator), computed on the host
   std::size_t stops = 0;        ///< samples (SliderSampleGrid::stops)

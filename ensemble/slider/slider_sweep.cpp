@@ -45,7 +45,7 @@ bool run_sizes(const SliderScene& scene, const std::vector<SliderSampleGrid>& gr
     if (!stopped && control.stopped && control.stopped()) stopped = true;
     return stopped || failed;
   };
-  kernels::with_stepper<kernels::SliderModel<V, Inertial>>(scene.stepper, [&]<class Stepper>() {
+  kernels::with_stepper<kernels::SliderModel<V, Inertial>>(scene.stepper, [&]<class Stepper>(const auto&) {
 #pragma omp parallel num_threads(threads)
     try {
       for (std::size_t s = 0; s < sizes.size() && !stop(); ++s) {

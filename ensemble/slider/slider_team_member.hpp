@@ -93,8 +93,8 @@ struct SliderTeamMember {
 
     ROTORSWEEP_HD Parts(const SliderSlotSchedule& s, std::size_t ranks, kernels::LaneArena<double>& arena)
         : model(s.grid, s.placement, arena),
-          integrator(model, ranks, {s.rtol, s.atol}, {.h_max = s.h_max, .max_steps = s.max_steps},
-                     s.first_step_scale, arena),
+          integrator(model, ranks, kernels::stepper_method<typename Integrator::Method>(s.stepper),
+                     {s.rtol, s.atol}, {.h_max = s.h_max, .max_steps = s.max_steps}, s.first_step_scale, arena),
           work(model.dimension(), arena),
           y(arena.take(model.dimension())),
           partial(arena.take(sums_per_rank * ranks)) {}

@@ -19,7 +19,7 @@ inline constexpr double displaced_sincos_reach = 0.0625;
 /// with sin δ to δ⁹ and cos δ − 1 to δ¹⁰ (a NaN δ gives NaN). Lanes with |δ| > 1/16 take
 /// lane_sincos(x + δ); each lane's choice and bits depend on its own x and δ alone.
 template <class V>
-ROTORSWEEP_HD inline void lane_sincos_displaced(const V& x, const V& delta, const V& sin_x, const V& cos_x,
+ROTORSWEEP_HD ROTORSWEEP_INLINE void lane_sincos_displaced(const V& x, const V& delta, const V& sin_x, const V& cos_x,
                                                 V& s, V& c) {
   constexpr std::array<double, 4> sin_k{-1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880};
   constexpr std::array<double, 5> cos_k{-1.0 / 2, 1.0 / 24, -1.0 / 720, 1.0 / 40320, -1.0 / 3628800};

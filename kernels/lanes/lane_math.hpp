@@ -68,7 +68,7 @@ ROTORSWEEP_HD inline void far_sincos(double x, double& s, double& c) {
 /// up to 20π with a three-part π/2, up to 2^19 π with the compensated
 /// three-part reduction, beyond that by the platform's functions.
 template <class V>
-ROTORSWEEP_HD inline void lane_sincos(const V& self, V& s, V& c) {
+ROTORSWEEP_HD ROTORSWEEP_INLINE void lane_sincos(const V& self, V& s, V& c) {
   using namespace lane_math_detail;
   const V x = lane_abs(self);
   V n = lane_round(x * V(two_over_pi));

@@ -24,37 +24,43 @@ class AdaptiveIntegrator {
   static constexpr std::size_t nq = System::max_quadratures;  ///< storage; the model's carried ones step
 
   static constexpr bool stochastic = false;
+  using Method = typename Stepper::Method;  ///< the stepper's tableau
 
-  /// What a driver configures: tolerances and step limits.
+  /// What a driver configures: the stepper's tableau, tolerances and step limits.
   struct Settings {
+    Method method;
     Tolerances tolerances;
     StepLimits limits;
   };
 
-  /// The scale of the first step, 0.01 (atol + rtol)^(1/(p+1)) (see propose_first_steps). A device
-  /// driver computes it on the host and passes it in, since a GPU's pow may round differently.
-  ROTORSWEEP_HD static double first_step_scale(const Tolerances& tol) {
-    return 0.01 * std::pow(tol.atol + tol.rtol, 1.0 / (Stepper::order() + 1));
+  /// The scale of the first step, 0.01 (atol + rtol)^(1/(p+1)) for a method of order p (see
+  /// propose_first_steps). A device driver computes it on the host and passes it in, since a GPU's
+  /// pow may round differently.
+  ROTORSWEEP_HD static double first_step_scale(const Tolerances& tol, const Method& method) {
+    return 0.01 * std::pow(tol.atol + tol.rtol, 1.0 / (method.order + 1));
   }
 
-  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Settings settings, LaneArena<V>& arena)
-      : AdaptiveIntegrator(system, settings.tolerances, settings.limits, arena) {}
+  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, const Settings& settings, LaneArena<V>& arena)
+      : AdaptiveIntegrator(system, settings.method, settings.tolerances, settings.limits, arena) {}
 
-  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Tolerances tol, StepLimits limits,
+  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, const Method& method, Tolerances tol, StepLimits limits,
                                    LaneArena<V>& arena)
-      : AdaptiveIntegrator(system, tol, limits, first_step_scale(tol), arena) {}
+      : AdaptiveIntegrator(system, method, tol, limits, first_step_scale(tol, method), arena) {}
 
-  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, Tolerances tol, StepLimits limits,
+  ROTORSWEEP_HD AdaptiveIntegrator(const System& system, const Method& method, Tolerances tol, StepLimits limits,
                                    double first_step_scale, LaneArena<V>& arena)
       : tol_(tol),
         limits_(limits),
         first_step_scale_(first_step_scale),
-        stepper_(system, arena),
+        stepper_(system, method, arena),
         work_(system.dimension(), arena),
         y_new_(arena.take(system.dimension())),
         y_error_(arena.take(system.dimension())),
         q_new_(arena.take(nq + 1)),
         q_error_(arena.take(nq + 1)) {}
+
+  /// The stepper (its order, tableau name, evaluations per attempt).
+  ROTORSWEEP_HD const Stepper& stepper() const { return stepper_; }
 
   /// The step that lanes without a step to take (idle, failed, or at their t_stop) compute with,
   /// results discarded: short enough that their stage displacements stay within the reach of the
@@ -90,7 +96,7 @@ class AdaptiveIntegrator {
     for (std::size_t p = 0; p < carried; ++p) s.quad[p] = lane_select(accept, q_new_[p], s.quad[p]);
     s.t = lane_select(accept, lane_select(clipped, s.t_stop, s.t + h), s.t);
 
-    V h_next = h * step_factor(limits_, Stepper::embedded_order(),
+    V h_next = h * step_factor(limits_, stepper_.embedded_order(),
                                lane_select(finite, err, err + V(INFINITY)), error_previous_, accept);
     error_previous_ = lane_select(accept, lane_max(err, V(pi_error_floor)), error_previous_);
     h_next = lane_select(accept & clipped, lane_max(h_next, s.h), h_next);

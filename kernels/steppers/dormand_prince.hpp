@@ -18,9 +18,10 @@ template <LaneModel System>
 class DormandPrince5 {
  public:
   using V = typename System::lane_type;
+  using Method = ExplicitTableau;  ///< its one tableau, dormand_prince5_tableau (the list's entry)
   static constexpr std::size_t nq = System::max_quadratures;  ///< storage; quadratures_ are carried
 
-  ROTORSWEEP_HD DormandPrince5(const System& system, LaneArena<V>& arena)
+  ROTORSWEEP_HD DormandPrince5(const System& system, const ExplicitTableau&, LaneArena<V>& arena)
       : n_(system.dimension()),
         quadratures_(system.quadrature_count()),
         work_(n_, arena),
@@ -28,7 +29,7 @@ class DormandPrince5 {
         slopes_(arena.take(std::size_t(dormand_prince5_tableau.stages) * n_)),
         quad_slopes_(arena.take(std::size_t(dormand_prince5_tableau.stages) * nq + 1)) {}
 
-  static constexpr const char* name() { return dormand_prince5_tableau.name; }
+  ROTORSWEEP_HD static constexpr const char* name() { return dormand_prince5_tableau.name; }
   ROTORSWEEP_HD static constexpr int order() { return dormand_prince5_tableau.order; }
   ROTORSWEEP_HD static constexpr int embedded_order() { return dormand_prince5_tableau.embedded_order; }
   /// Right-hand side evaluations per attempt: one per stage.

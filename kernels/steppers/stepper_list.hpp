@@ -9,18 +9,21 @@
 #include <type_traits>
 #include <utility>
 
+#include "kernels/lanes/host_device.hpp"
 #include "kernels/steppers/dormand_prince.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
 
 namespace rotorsweep::kernels {
 
-/// The stepper family a tableau's type selects: linearly implicit or explicit.
-template <LaneModel System, const RosenbrockTableau& T>
-RosenbrockStepper<System, T> stepper_family_of(const RosenbrockTableau&);
-template <LaneModel System, const ExplicitTableau& T>
+/// The stepper family a tableau's type selects: linearly implicit or explicit. A family is one
+/// type that takes its tableau (its Method) at run time.
+template <LaneModel System>
+RosenbrockStepper<System> stepper_family_of(const RosenbrockTableau&);
+template <LaneModel System>
 DormandPrince5<System> stepper_family_of(const ExplicitTableau&);
 
-/// One entry of the list: `type<System>` is the stepper on a model. `swing_error_factor` κ is how
+/// One entry of the list: `type<System>` is the stepper on a model, built with `tableau`.
+/// `swing_error_factor` κ is how
 /// many times rtol · max_t |R(t)| the error of a period's dissipation reaches with this stepper
 /// (the channel dissipation_error, docs/numerics.md "The error of D", measured by
 /// scripts/bench/error_calibration.py, with R held to rtol / 8): 1/8 for rodas4p2, 1/4 for rodas4,
@@ -31,7 +34,7 @@ struct StepperEntry {
   static constexpr const auto& tableau = Tableau;
   static constexpr double swing_error_factor = SwingErrorFactor;
   template <class System>
-  using type = decltype(stepper_family_of<System, Tableau>(Tableau));
+  using type = decltype(stepper_family_of<System>(Tableau));
 };
 
 template <class... Entries>
@@ -90,11 +93,56 @@ decltype(auto) with_stepper_id(StepperId id, F&& f) {
   return with_stepper_id(id, std::forward<F>(f), std::make_index_sequence<steppers::size>());
 }
 
-/// Calls f.template operator()<Stepper>() with the stepper type of `id` on `System`.
+/// The families of the list, by the type of their tableaus: one stepper type each.
+enum class StepperFamily { rosenbrock, explicit_runge_kutta };
+template <StepperFamily family, class System>
+using family_stepper = std::conditional_t<family == StepperFamily::rosenbrock, RosenbrockStepper<System>,
+                                          DormandPrince5<System>>;
+
+/// The family of stepper `id`.
+inline StepperFamily stepper_family(StepperId id) {
+  StepperFamily family = StepperFamily::rosenbrock;
+  with_stepper_id(id, [&]<StepperId i>() {
+    if constexpr (std::is_same_v<std::remove_cvref_t<decltype(stepper_at<i>::type::tableau)>, ExplicitTableau>)
+      family = StepperFamily::explicit_runge_kutta;
+  });
+  return family;
+}
+
+/// Calls f.template operator()<family>() with stepper `id`'s family as a compile-time constant.
+template <class F>
+decltype(auto) with_stepper_family(StepperId id, F&& f) {
+  if (stepper_family(id) == StepperFamily::explicit_runge_kutta)
+    return f.template operator()<StepperFamily::explicit_runge_kutta>();
+  return f.template operator()<StepperFamily::rosenbrock>();
+}
+
+/// The tableau (Method) of stepper `id`, which belongs to a family whose tableaus are of type Method;
+/// callable on a device (each tableau a constant there).
+template <class Method, std::size_t... ids>
+ROTORSWEEP_HD Method stepper_method(StepperId id, std::index_sequence<ids...>) {
+  Method method{};
+  const auto take = [&]<std::size_t i>() {
+    if constexpr (std::is_same_v<std::remove_cvref_t<decltype(stepper_at<i>::type::tableau)>, Method>) {
+      constexpr Method entry = stepper_at<i>::type::tableau;
+      method = entry;
+    }
+  };
+  ((id == ids ? (take.template operator()<ids>(), true) : false) || ...);
+  return method;
+}
+template <class Method>
+ROTORSWEEP_HD Method stepper_method(StepperId id) {
+  return stepper_method<Method>(id, std::make_index_sequence<steppers::size>());
+}
+
+/// Calls f.template operator()<Stepper>(method) with the stepper type of `id` on `System` (its family's)
+/// and the tableau it runs.
 template <class System, class F>
 decltype(auto) with_stepper(StepperId id, F&& f) {
-  return with_stepper_id(id, [&]<StepperId i>() {
-    return f.template operator()<typename stepper_at<i>::type::template type<System>>();
+  return with_stepper_family(id, [&]<StepperFamily family>() {
+    using Stepper = family_stepper<family, System>;
+    return f.template operator()<Stepper>(stepper_method<typename Stepper::Method>(id));
   });
 }
 

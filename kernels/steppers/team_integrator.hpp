@@ -26,6 +26,33 @@ struct TeamMemberState {
   ROTORSWEEP_HD bool stepping() const { return status == LaneStatus::ok && t < t_stop; }
 };
 
+/// AdaptiveIntegrator::attempt's decision for one member whose step of size h (clipped: to land on
+/// s.t_stop) has the error norm `err`: whether it is accepted (finite err and `checksum`, the sum of the
+/// new state and quadratures; every unstable direction resolved; err ≤ 1), then s's time, next step
+/// size, counts and failure status, and `error_previous` for the PI controller. The caller takes the
+/// new state where it returns true. Every member driver that decides alike on all its threads (a team,
+/// a member in registers) takes its decisions here.
+template <class State>
+ROTORSWEEP_HD bool control_member_step(const StepLimits& limits, int embedded_order, double err, double checksum,
+                                       bool resolved, double h, bool clipped, double& error_previous, State& s) {
+  const bool finite = std::isfinite(err) && std::isfinite(checksum);
+  const bool accept = finite && resolved && err <= 1.0;
+  if (accept) s.t = clipped ? s.t_stop : s.t + h;
+  double h_next = h * step_factor(limits, embedded_order, finite ? err : err + INFINITY, error_previous, accept);
+  if (accept) error_previous = err > pi_error_floor ? err : pi_error_floor;
+  if (accept && clipped && s.h > h_next) h_next = s.h;
+  if (!resolved) h_next = h * limits.shrink_min;
+  s.h = h_next < limits.h_max ? h_next : limits.h_max;
+  (accept ? s.steps_accepted : s.steps_rejected) += 1.0;
+
+  const double h_floor = 16.0 * 0x1p-52 * (std::fabs(s.t) > 1.0 ? std::fabs(s.t) : 1.0);
+  if (s.steps_accepted + s.steps_rejected >= limits.max_steps)
+    s.status = LaneStatus::step_budget;
+  else if (s.h < h_floor)
+    s.status = finite ? LaneStatus::step_underflow : LaneStatus::non_finite;
+  return accept;
+}
+
 /// AdaptiveIntegrator::attempt for one member on a team with a team stepper (TeamRosenbrock): the
 /// same proposal of the first step, error norm (its state part a team sum), acceptance, step-size
 /// control and failure flags, decided alike on every rank from team sums.
@@ -36,14 +63,16 @@ class TeamIntegrator {
   using TeamType = Team;
   static constexpr bool stochastic = false;
 
-  ROTORSWEEP_HD TeamIntegrator(const Model& model, std::size_t ranks, Tolerances tol, StepLimits limits,
-                               double first_step_scale, LaneArena<double>& arena)
+  using Method = typename Stepper::Method;  ///< the stepper's tableau
+
+  ROTORSWEEP_HD TeamIntegrator(const Model& model, std::size_t ranks, const Method& method, Tolerances tol,
+                               StepLimits limits, double first_step_scale, LaneArena<double>& arena)
       : n_(model.dimension()),
         ranks_(ranks),
         tol_(tol),
         limits_(limits),
         first_step_scale_(first_step_scale),
-        stepper_(model, ranks, arena),
+        stepper_(model, ranks, method, arena),
         y_new_(arena.take(n_)),
         y_error_(arena.take(n_)) {}
 
@@ -72,30 +101,15 @@ class TeamIntegrator {
       return sum;
     });
     for (std::size_t p = 0; p < carried; ++p) checksum += q_new[p];
-    const bool finite = std::isfinite(err) && std::isfinite(checksum);
-    const bool accept = finite && resolved && err <= 1.0;
-
+    const bool accept = control_member_step(limits_, stepper_.embedded_order(), err, checksum, resolved, h,
+                                            clipped, error_previous_, s);
     if (accept) {
       team.each([&](std::size_t r) {
         const TeamRows rows = team_rows(n_, ranks_, r);
         for (std::size_t k = rows.begin; k < rows.end; ++k) s.y[k] = y_new_[k];
       });
       for (std::size_t p = 0; p < carried; ++p) s.quad[p] = q_new[p];
-      s.t = clipped ? s.t_stop : s.t + h;
     }
-    double h_next = h * step_factor(limits_, Stepper::embedded_order(), finite ? err : err + INFINITY,
-                                    error_previous_, accept);
-    if (accept) error_previous_ = err > pi_error_floor ? err : pi_error_floor;
-    if (accept && clipped && s.h > h_next) h_next = s.h;
-    if (!resolved) h_next = h * limits_.shrink_min;
-    s.h = h_next < limits_.h_max ? h_next : limits_.h_max;
-    (accept ? s.steps_accepted : s.steps_rejected) += 1.0;
-
-    const double h_floor = 16.0 * 0x1p-52 * (std::fabs(s.t) > 1.0 ? std::fabs(s.t) : 1.0);
-    if (s.steps_accepted + s.steps_rejected >= limits_.max_steps)
-      s.status = LaneStatus::step_budget;
-    else if (s.h < h_floor)
-      s.status = finite ? LaneStatus::step_underflow : LaneStatus::non_finite;
     return accept;
   }
 

@@ -3,13 +3,13 @@
 #pragma once
 
 #include <cstddef>
-#include <utility>
 
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
+#include "kernels/steppers/stage_combination.hpp"
 #include "kernels/steppers/team_evaluation.hpp"
 #include "kernels/steppers/team_linearization.hpp"
 
@@ -21,18 +21,21 @@ namespace rotorsweep::kernels {
 /// (TeamCyclicTridiagonal, TeamDenseSymmetric, TeamSecondOrderJacobian), and the quadratures' stage
 /// values come from team sums (identical on every rank, so each may keep its own copy); every
 /// quadrature the model carries (R, W, S, ρ̄, H, the moments; the slider's impulse and dissipation).
-/// With the sums over the team in butterfly order (and for nearest neighbours without
-/// evaluate_displaced), its bits differ from the lanes' at rounding level (docs/numerics.md "The stage
-/// solve on a team").
-template <class Team, const RosenbrockTableau& Table, class TeamModel = NearestNeighbourRows<double>>
+/// The tableau is data, as RosenbrockStepper's (combine_stages over each rank's rows). With the sums
+/// over the team in butterfly order (and for nearest neighbours without evaluate_displaced), its bits
+/// differ from the lanes' at rounding level (docs/numerics.md "The stage solve on a team").
+template <class Team, class TeamModel = NearestNeighbourRows<double>>
 class TeamRosenbrock {
  public:
   using Model = TeamModel;
-  static constexpr int stages = Table.stages;
+  using Method = RosenbrockTableau;
+  static constexpr int max_stages = RosenbrockTableau::max_stages;
   static constexpr std::size_t quadratures = Integrals::max_count;  ///< at most
 
-  ROTORSWEEP_HD TeamRosenbrock(const Model& model, std::size_t ranks, LaneArena<double>& arena)
-      : n_(model.dimension()),
+  ROTORSWEEP_HD TeamRosenbrock(const Model& model, std::size_t ranks, const RosenbrockTableau& table,
+                               LaneArena<double>& arena)
+      : table_(table),
+        n_(model.dimension()),
         ranks_(ranks),
         carried_(model.quadrature_count()),
         work_(n_, arena),
@@ -40,13 +43,13 @@ class TeamRosenbrock {
         f_(arena.take(n_)),
         df_dt_(arena.take(n_)),
         argument_(arena.take(n_)),
-        stages_(arena.take(std::size_t(stages) * n_)),
+        stages_(arena.take(std::size_t(table.stages) * n_)),
         dq_dy_(arena.take(carried_ * n_)),
         scratch_(arena.take(n_)),
         partial_(arena.take(quadratures * ranks)) {}
 
-  ROTORSWEEP_HD static constexpr int order() { return Table.order; }
-  ROTORSWEEP_HD static constexpr int embedded_order() { return Table.embedded_order; }
+  ROTORSWEEP_HD int order() const { return table_.order; }
+  ROTORSWEEP_HD int embedded_order() const { return table_.embedded_order; }
   ROTORSWEEP_HD std::size_t quadrature_count() const { return carried_; }
 
   /// One step of size h from (t, y, q) into y_new, q_new and the error estimates; returns whether it
@@ -55,13 +58,12 @@ class TeamRosenbrock {
                              const double* q, double* y_new, double* q_new, double* y_error,
                              double* q_error) {
     linearize(team, model, y, t);
-    const Step step{t, h, h * Table.gamma, 1.0 / h};
+    const Step step{t, h, h * table_.gamma, 1.0 / h};
     if constexpr (requires { model.strict_fm(0); }) jacobian_.keep_constant_solutions(model.strict_fm(0));
     jacobian_.factor(team, 1.0 / step.h_gamma);
-    double quad_stages[stages][quadratures] = {};
-    run_stages(team, model, step, y, quad_stages, std::make_integer_sequence<int, stages>{});
-    combine(team, y, q, quad_stages, y_new, q_new, y_error, q_error,
-            std::make_integer_sequence<int, stages>{});
+    double quad_stages[max_stages][quadratures] = {};
+    for (int i = 0; i < table_.stages; ++i) run_stage(team, model, step, y, quad_stages, i);
+    combine(team, y, q, quad_stages, y_new, q_new, y_error, q_error);
     return jacobian_.positive_definite();
   }
 
@@ -76,50 +78,38 @@ class TeamRosenbrock {
   ROTORSWEEP_HD const double* rate() const { return f_; }
 
  private:
-  // The stages unrolled at compile time, as RosenbrockStepper's: every coefficient is a literal (a
-  // device reads no table), zero ones cost nothing, and the additions come in the same order.
+  using Terms = StageTerms<double, max_stages>;
   struct Step {
     double t, h, h_gamma, inv_h;
   };
 
-  template <int... I>
-  ROTORSWEEP_HD void run_stages(Team& team, const Model& model, const Step& s, const double* y,
-                                double (&quad_stages)[stages][quadratures],
-                                std::integer_sequence<int, I...>) {
-    (run_stage<I>(team, model, s, y, quad_stages, std::make_integer_sequence<int, I>{}), ...);
-  }
-
-  /// Stage I: f at y + Σ a_IJ U_J, its right-hand side over each rank's rows, the team solve, and
-  /// the quadratures' stage values from team sums.
-  template <int I, int... J>
-  ROTORSWEEP_HD void run_stage(Team& team, const Model& model, const Step& s, const double* y,
-                               double (&quad_stages)[stages][quadratures], std::integer_sequence<int, J...>) {
-    if constexpr (I > 0) {
-      team.each([&](std::size_t r) {
-        const TeamRows rows = team_rows(n_, ranks_, r);
-        for (std::size_t k = rows.begin; k < rows.end; ++k) {
-          double sum = y[k];
-          ((sum = add_term<Table.a[I][J]>(sum, stages_[std::size_t(J) * n_ + k])), ...);
-          argument_[k] = sum;
-        }
-      });
-      constexpr double alpha = Table.alpha[I];
-      evaluate(team, model, argument_, s.t + alpha * s.h, qdot_);
-    }
-    constexpr double gamma_sum = Table.gamma_sum[I];
-    const double time_weight = gamma_sum * s.h;
-    [[maybe_unused]] const double weight[sizeof...(J) + 1] = {Table.c[I][J] * s.inv_h..., 0.0};
-    double* u = stages_ + std::size_t(I) * n_;
+  /// combine_stages over each rank's rows.
+  template <class Base>
+  ROTORSWEEP_HD void each_combination(Team& team, const Terms& terms, Base&& base, double* out) const {
     team.each([&](std::size_t r) {
       const TeamRows rows = team_rows(n_, ranks_, r);
-      for (std::size_t k = rows.begin; k < rows.end; ++k) {
-        double sum = f_[k] + time_weight * df_dt_[k];
-        ((sum += weight[J] * stages_[std::size_t(J) * n_ + k]), ...);
-        u[k] = sum;
-      }
+      combine_stages(terms, base, out, rows.begin, rows.end);
     });
+  }
+
+  /// Stage i: f at y + Σ a_ij U_j, its right-hand side over each rank's rows, the team solve, and
+  /// the quadratures' stage values from team sums.
+  ROTORSWEEP_HD void run_stage(Team& team, const Model& model, const Step& s, const double* y,
+                               double (&quad_stages)[max_stages][quadratures], int i) {
+    if (i > 0) {
+      Terms arguments;
+      for (int j = 0; j < i; ++j)
+        if (table_.a[i][j] != 0.0) arguments.add(table_.a[i][j], stage(j));
+      each_combination(team, arguments, [&](std::size_t k) { return y[k]; }, argument_);
+      evaluate(team, model, argument_, s.t + table_.alpha[i] * s.h, qdot_);
+    }
+    const double time_weight = table_.gamma_sum[i] * s.h;
+    Terms earlier;  // c_ij / h U_j for every j < i
+    for (int j = 0; j < i; ++j) earlier.add(table_.c[i][j] * s.inv_h, stage(j));
+    double* u = stage(i);
+    each_combination(team, earlier, [&](std::size_t k) { return f_[k] + time_weight * df_dt_[k]; }, u);
     jacobian_.solve(team, u);
-    const double* integrands = I == 0 ? start_qdot_ : qdot_;
+    const double* integrands = i == 0 ? start_qdot_ : qdot_;
     for (std::size_t p = 0; p < quadrature_count(); ++p) {
       const double* gradient = dq_dy_ + p * n_;
       const double dot = team.sum([&](std::size_t r) {
@@ -129,41 +119,31 @@ class TeamRosenbrock {
         return partial;
       });
       double sum = integrands[p] + time_weight * dq_dt_[p] + dot;
-      ((sum += weight[J] * quad_stages[J][p]), ...);
-      quad_stages[I][p] = s.h_gamma * sum;
+      for (int j = 0; j < i; ++j) sum += earlier.weight[j] * quad_stages[j][p];
+      quad_stages[i][p] = s.h_gamma * sum;
     }
   }
 
-  /// sum + c·u, or sum where c = 0.
-  template <double c>
-  ROTORSWEEP_HD static double add_term(double sum, double u) {
-    if constexpr (c == 0.0)
-      return sum;
-    else
-      return sum + c * u;
-  }
+  ROTORSWEEP_HD double* stage(int i) const { return stages_ + std::size_t(i) * n_; }
 
-  /// y_new = y + Σ m_I U_I and y_error = Σ e_I U_I over each rank's rows; the quadratures' alike.
-  template <int... I>
+  /// y_new = y + Σ m_i U_i and y_error = Σ e_i U_i over each rank's rows (nonzero weights, in stage
+  /// order); the quadratures' alike.
   ROTORSWEEP_HD void combine(Team& team, const double* y, const double* q,
-                             const double (&quad_stages)[stages][quadratures], double* y_new, double* q_new,
-                             double* y_error, double* q_error, std::integer_sequence<int, I...>) {
-    team.each([&](std::size_t r) {
-      const TeamRows rows = team_rows(n_, ranks_, r);
-      for (std::size_t k = rows.begin; k < rows.end; ++k) {
-        double sum = y[k], error = 0.0;
-        ((sum = add_term<Table.m[I]>(sum, stages_[std::size_t(I) * n_ + k]),
-          error = add_term<Table.e[I]>(error, stages_[std::size_t(I) * n_ + k])),
-         ...);
-        y_new[k] = sum;
-        y_error[k] = error;
-      }
-    });
+                             const double (&quad_stages)[max_stages][quadratures], double* y_new, double* q_new,
+                             double* y_error, double* q_error) const {
+    Terms solution, estimate;
+    for (int i = 0; i < table_.stages; ++i) {
+      if (table_.m[i] != 0.0) solution.add(table_.m[i], stage(i));
+      if (table_.e[i] != 0.0) estimate.add(table_.e[i], stage(i));
+    }
+    each_combination(team, solution, [&](std::size_t k) { return y[k]; }, y_new);
+    each_combination(team, estimate, [](std::size_t) { return 0.0; }, y_error);
     for (std::size_t p = 0; p < quadrature_count(); ++p) {
       double sum = q[p], error = 0.0;
-      ((sum = add_term<Table.m[I]>(sum, quad_stages[I][p]),
-        error = add_term<Table.e[I]>(error, quad_stages[I][p])),
-       ...);
+      for (int i = 0; i < table_.stages; ++i) {
+        if (table_.m[i] != 0.0) sum = sum + table_.m[i] * quad_stages[i][p];
+        if (table_.e[i] != 0.0) error = error + table_.e[i] * quad_stages[i][p];
+      }
       q_new[p] = sum;
       q_error[p] = error;
     }
@@ -179,6 +159,7 @@ class TeamRosenbrock {
     model.team_time_derivatives(time_sums, t, start_qdot_, dq_dt_);
   }
 
+  RosenbrockTableau table_;
   std::size_t n_, ranks_;
   std::size_t carried_;  ///< the model's quadratures
   typename Model::Workspace work_;

@@ -77,7 +77,7 @@ TEST_CASE("slider refuses bad scenes with exit code 2 and writes nothing", "[app
   expect_refusal("slider", "[slider]\ntilt = -3.5\n[sweep]\nseparation = [8e-3]\n", "slider.tilt");
   expect_refusal("slider", "[sweep]\nseparation = [8e-3]\n[observables]\nseries = false\nforces = true\n",
                  "observables.forces");
-  expect_refusal("slider", one_h + "[numerics]\ndevice = \"gpu\"\nstepper = \"rodas4\"\n",
+  expect_refusal("slider", one_h + "[numerics]\ndevice = \"gpu\"\nstepper = \"dopri5\"\n",
                  "numerics.stepper");
   if (!rotorsweep::ensemble::gpu_info().available)
     expect_refusal("slider --device gpu", small_slider, "run with --device cpu");

@@ -23,12 +23,13 @@ using namespace rotorsweep::kernels;
 using Model = NearestNeighbourRows<double>;
 
 template <class Stepper>
-__global__ void advance_members(double* storage, std::size_t per_thread, std::size_t rows, const double* A,
-                                const double* g, double* dissipation) {
+__global__ void advance_members(StepperId id, double* storage, std::size_t per_thread, std::size_t rows,
+                                const double* A, const double* g, double* dissipation) {
   const std::size_t member = blockIdx.x * blockDim.x + threadIdx.x;
   LaneArena<double> arena(storage + member * per_thread, per_thread);
   const Model model(rows, arena, all_integrals, {A[member], g[member], false});
-  AdaptiveIntegrator<Model, Stepper> integrator(model, {1e-6, 1e-9}, {}, arena);
+  AdaptiveIntegrator<Model, Stepper> integrator(model, stepper_method<typename Stepper::Method>(id), {1e-6, 1e-9},
+                                                {}, arena);
   LaneState<double> state(rows, Model::max_quadratures, arena);
   for (std::size_t j = 0; j < rows; ++j) state.y[j] = 3.14159 * double(j % 2) + 0.01 * double(j);
   state.t_stop = two_pi;
@@ -38,12 +39,10 @@ __global__ void advance_members(double* storage, std::size_t per_thread, std::si
   dissipation[member] = state.quad[0] + 0.0 * s * c;
 }
 
-template __global__ void advance_members<stepper_at<0>::type::type<Model>>(double*, std::size_t, std::size_t,
-                                                                           const double*, const double*,
-                                                                           double*);
-template __global__ void advance_members<stepper_at<2>::type::type<Model>>(double*, std::size_t, std::size_t,
-                                                                           const double*, const double*,
-                                                                           double*);
+template __global__ void advance_members<RosenbrockStepper<Model>>(StepperId, double*, std::size_t, std::size_t,
+                                                                   const double*, const double*, double*);
+template __global__ void advance_members<DormandPrince5<Model>>(StepperId, double*, std::size_t, std::size_t,
+                                                                const double*, const double*, double*);
 
 /// The stage solves on a warp team: each team of `team_size` threads factors and solves one member's
 /// ring (kernels/linear/team_cyclic_tridiagonal.hpp), its dense coupled rows (team_dense_symmetric.hpp)
@@ -82,12 +81,13 @@ __global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_
 /// A member of the nearest-neighbour rows integrated by a warp team over one period (team_integrator.hpp).
 __global__ void advance_on_teams(double* storage, std::size_t per_team, std::size_t rows, unsigned team_size,
                                  const double* A, double* theta, double* drive) {
-  using Stepper = TeamRosenbrock<const WarpTeam, rodas4p2_tableau>;
+  using Stepper = TeamRosenbrock<const WarpTeam>;
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
   LaneArena<double> arena(storage + team * per_team, per_team);
   const Model model(rows, arena, Integrals{true, false, false, true, false, false}, {A[team], 0.0011, false});
-  TeamIntegrator<const WarpTeam, Stepper> integrator(model, team_size, {1e-6, 1e-9}, {}, 1e-3, arena);
+  TeamIntegrator<const WarpTeam, Stepper> integrator(model, team_size, stepper_method<RosenbrockTableau>(3),
+                                                     {1e-6, 1e-9}, {}, 1e-3, arena);
   crew.sync();
   TeamMemberState state;
   state.y = theta + team * rows;
@@ -102,7 +102,7 @@ __global__ void advance_on_teams(double* storage, std::size_t per_team, std::siz
 __global__ void run_slider_members_on_teams(rotorsweep::ensemble::SliderSlotSchedule schedule,
                                             rotorsweep::ensemble::SliderSlotViews slots, double* storage,
                                             std::size_t per_team, unsigned team_size) {
-  using Stepper = TeamRosenbrock<const WarpTeam, rodas5p_tableau, SliderModel<double, true>>;
+  using Stepper = TeamRosenbrock<const WarpTeam, SliderModel<double, true>>;
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
   rotorsweep::ensemble::SliderTeamMember<const WarpTeam, TeamIntegrator<const WarpTeam, Stepper>>::run(
@@ -115,7 +115,7 @@ template <class Rows>
 __global__ void run_members_on_teams(rotorsweep::ensemble::SlotSchedule schedule,
                                      rotorsweep::ensemble::SlotViews slots, double* storage,
                                      std::size_t per_team, unsigned team_size) {
-  using Stepper = TeamRosenbrock<const WarpTeam, rodas4p2_tableau, Rows>;
+  using Stepper = TeamRosenbrock<const WarpTeam, Rows>;
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
   rotorsweep::ensemble::TeamMember<const WarpTeam, TeamIntegrator<const WarpTeam, Stepper>>::run(
@@ -144,7 +144,7 @@ __global__ void run_members_on_blocks(rotorsweep::ensemble::SlotSchedule schedul
                                       rotorsweep::ensemble::SlotViews slots, double* storage,
                                       std::size_t per_team) {
   extern __shared__ double exchange[];
-  using Stepper = TeamRosenbrock<const BlockTeam, rodas4p2_tableau>;
+  using Stepper = TeamRosenbrock<const BlockTeam>;
   const BlockTeam crew(exchange);
   rotorsweep::ensemble::TeamMember<const BlockTeam, TeamIntegrator<const BlockTeam, Stepper>>::run(
       crew, schedule, slots, blockIdx.x, storage + blockIdx.x * per_team, per_team);

@@ -142,7 +142,7 @@ TEST_CASE(
     for (const int team : {2, 4, 8, 16, 32}) {
       const ScopedVariable mapping("ROTORSWEEP_GPU_TEAM", std::to_string(team));
       const auto gpu = run_on(scene, ensemble::Device::gpu, members);
-      const auto host = testing::on_host_team<id>(scene, std::size_t(team));
+      const auto host = testing::on_host_team(scene, std::size_t(team));
       std::string first;
       INFO(kernels::stepper_names[id] << ", team " << team);
       CHECK(testing::count_differences(host, gpu, first) == 0);
@@ -190,7 +190,7 @@ TEST_CASE(
   for (const int team : {64, 128}) {  // teams of several warps (BlockTeam)
     const ScopedVariable mapping("ROTORSWEEP_GPU_TEAM", std::to_string(team));
     const auto gpu = run_on(wide, ensemble::Device::gpu, ensemble::plan_members(wide));
-    const auto host = testing::on_host_team<*kernels::parse_stepper("rodas4p2")>(wide, std::size_t(team));
+    const auto host = testing::on_host_team(wide, std::size_t(team));
     std::string first;
     INFO("N = 128, team " << team);
     CHECK(testing::count_differences(host, gpu, first) == 0);

@@ -49,9 +49,11 @@ Jacobian jacobian(std::size_t n) {
   return Jacobian(n, arena);
 }
 
+/// An adaptive integrator of `model` with `method` (its stepper's tableau).
 template <class Integrator, class Model>
-Integrator integrator(const Model& model, kernels::Tolerances tolerances, kernels::StepLimits limits = {}) {
-  return built<Integrator, typename Model::lane_type>(model, tolerances, limits);
+Integrator integrator(const Model& model, const typename Integrator::Method& method, kernels::Tolerances tolerances,
+                      kernels::StepLimits limits = {}) {
+  return built<Integrator, typename Model::lane_type>(model, method, tolerances, limits);
 }
 
 template <class V>

@@ -15,15 +15,14 @@
 
 namespace rotorsweep::testing {
 
-/// Chunks of slider slots on a host team of `ranks` with rodas5p (the GPU's slider stepper), at most
+/// Chunks of slider slots on a host team of `ranks` with the scene's stepper (as the GPU's slider), at most
 /// `chunk` members at a time; tables stay where they are.
 template <bool Inertial>
 class HostTeamSliderDevice final : public ensemble::SliderSlotDevice {
  public:
   using Integrator =
       kernels::TeamIntegrator<kernels::HostTeam,
-                              kernels::TeamRosenbrock<kernels::HostTeam, kernels::rodas5p_tableau,
-                                                      kernels::SliderModel<double, Inertial>>>;
+                              kernels::TeamRosenbrock<kernels::HostTeam, kernels::SliderModel<double, Inertial>>>;
   using Driver = ensemble::SliderTeamMember<kernels::HostTeam, Integrator>;
 
   HostTeamSliderDevice(std::size_t ranks, std::size_t chunk) : ranks_(ranks), chunk_(chunk) {}

@@ -25,7 +25,7 @@ std::vector<ensemble::MemberResult> through_slots(const ensemble::Scene& scene, 
   for (std::size_t i = 0; i < plan.size(); ++i) members.push_back(plan[i]);
   const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
   const auto schedule = ensemble::slot_schedule(
-      scene, members.front(), ensemble::device_first_step_scale<Integrator>(members.front()));
+      scene, members.front(), ensemble::device_first_step_scale<Integrator>(scene, members.front()));
   ensemble::SlotChunk chunk(schedule, members.size());
   chunk.fill(scene, {&source, 0, members.size()}, 0, members.size());
   const ensemble::SlotViews views = chunk.views();
@@ -51,13 +51,14 @@ std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& scene, s
       });
 }
 
-/// on_host_team with stepper `id` of the list, which the scene names, on the scene's row model.
-template <kernels::StepperId id>
-std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& scene, std::size_t ranks) {
-  if (scene.stepper != id) throw std::logic_error("on_host_team: the scene has another stepper");
+/// on_host_team with the scene's (linearly implicit) stepper on the scene's row model.
+inline std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& scene, std::size_t ranks) {
+  if (kernels::stepper_family(scene.stepper) != kernels::StepperFamily::rosenbrock)
+    throw std::logic_error("on_host_team: a team runs linearly implicit steppers");
+  constexpr auto family = kernels::StepperFamily::rosenbrock;
   return ensemble::with_device_model(scene, [&]<class Model>() {
-    using Stepper = ensemble::DeviceTeamStepper<id, kernels::HostTeam, Model>;
-    return on_host_team<ensemble::DeviceAdaptiveIntegrator<id, Model>,
+    using Stepper = ensemble::DeviceTeamStepper<family, kernels::HostTeam, Model>;
+    return on_host_team<ensemble::DeviceAdaptiveIntegrator<family, Model>,
                         kernels::TeamIntegrator<kernels::HostTeam, Stepper>>(scene, ranks);
   });
 }

@@ -30,7 +30,7 @@ std::vector<ensemble::MemberResult> run_through_slots(const ensemble::Scene& sce
     using Driver = ensemble::DeviceMember<Model, Integrator>;
     const ensemble::Member variant = source.at(0);
     const auto schedule =
-        ensemble::slot_schedule(scene, variant, ensemble::device_first_step_scale<Integrator>(variant));
+        ensemble::slot_schedule(scene, variant, ensemble::device_first_step_scale<Integrator>(scene, variant));
     ensemble::SlotChunk chunk(schedule, source.count);
     chunk.fill(scene, {&source, 0, source.count}, 0, source.count);
     std::vector<double> storage(Driver::storage_size(schedule));

@@ -11,6 +11,7 @@
 #include "kernels/models/single_rotor.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 using namespace rotorsweep;
 using ensemble::Channel;
@@ -45,7 +46,7 @@ std::vector<ensemble::MemberResult> run(const ensemble::Scene& scene,
                                         const std::vector<double>& psi0) {
   using Model = kernels::SingleRotor<V>;
   using Problem =
-      ensemble::RowProblem<Model, kernels::AdaptiveIntegrator<Model, kernels::Rodas4<Model>>, RotorSetup<V>>;
+      ensemble::RowProblem<Model, kernels::AdaptiveIntegrator<Model, kernels::RosenbrockStepper<Model>>, RotorSetup<V>>;
   ensemble::LaneScheduler<Problem> scheduler(scene, members.front(), RotorSetup<V>{psi0});
   std::vector<ensemble::MemberResult> results(members.size());
   std::size_t next = 0;
@@ -64,6 +65,7 @@ TEST_CASE("a second model through the same scheduler: the single rotor's closed 
   static_assert(kernels::LaneModel<kernels::SingleRotor<double>>);
   static_assert(kernels::LaneModel<kernels::SingleRotor<kernels::simd_lane>>);
   ensemble::Scene scene;
+  scene.stepper = *kernels::parse_stepper("rodas4");
   scene.relax_periods = 0;
   scene.average_periods = 3;
   scene.period_series = true;

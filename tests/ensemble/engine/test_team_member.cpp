@@ -30,13 +30,11 @@ using Coupled = kernels::CoupledRows<double>;
 
 namespace {
 
-/// rodas4p2 on Rows, on one lane and on a host team.
+/// The scene's Rosenbrock stepper on Rows, on one lane and on a host team.
 template <class Rows>
-using Lanes = kernels::AdaptiveIntegrator<Rows, kernels::Rodas4P2<Rows>>;
+using Lanes = kernels::AdaptiveIntegrator<Rows, kernels::RosenbrockStepper<Rows>>;
 template <class Rows>
-using TeamLanes =
-    kernels::TeamIntegrator<kernels::HostTeam,
-                            kernels::TeamRosenbrock<kernels::HostTeam, kernels::rodas4p2_tableau, Rows>>;
+using TeamLanes = kernels::TeamIntegrator<kernels::HostTeam, kernels::TeamRosenbrock<kernels::HostTeam, Rows>>;
 
 /// A team's members against one thread's: the same labels, D and the other means within 1e-8 (1e-10
 /// outside CP). Where rounding decides CP (`cp_rounding`: uniform rows, whose symmetry only rounding
@@ -162,7 +160,7 @@ TEST_CASE("a team of eight gives the CPU lanes' labels on the examples but where
     auto scene = io::parse_scene_file(path);
     scene.replicas = replicas;
     const auto lanes = ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {}).results;
-    const auto team = testing::on_host_team<*kernels::parse_stepper("rodas4p2")>(scene, 8);
+    const auto team = testing::on_host_team(scene, 8);
     REQUIRE(team.size() == lanes.size());
     for (std::size_t k = 0; k < lanes.size(); ++k) {
       INFO("member " << k << ": " << lanes[k].final_state.attractor);

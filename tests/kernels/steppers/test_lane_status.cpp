@@ -34,9 +34,9 @@ TEST_CASE("a non-finite lane is frozen and flagged; the others are untouched", "
       rows, dissipation_only, lane_from<simd_lane>([](std::size_t l) { return 1.0 + double(l); }),
       simd_lane(0.01));
   auto clean_run =
-      rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-7, 1e-10});
+      rotorsweep::testing::integrator<AdaptiveIntegrator<Model, RosenbrockStepper<Model>>>(model, rodas4_tableau, {1e-7, 1e-10});
   auto poisoned_run =
-      rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-7, 1e-10});
+      rotorsweep::testing::integrator<AdaptiveIntegrator<Model, RosenbrockStepper<Model>>>(model, rodas4_tableau, {1e-7, 1e-10});
   auto clean = make_state(false), poisoned = make_state(true);
   clean_run.advance(model, clean);
   poisoned_run.advance(model, poisoned);
@@ -59,7 +59,7 @@ TEST_CASE("an exhausted step budget is flagged and stops the lane", "[kernels][s
   StepLimits limits;
   limits.max_steps = 40;
   auto integrator =
-      rotorsweep::testing::integrator<AdaptiveIntegrator<Model, Rodas4<Model>>>(model, {1e-8, 1e-11}, limits);
+      rotorsweep::testing::integrator<AdaptiveIntegrator<Model, RosenbrockStepper<Model>>>(model, rodas4_tableau, {1e-8, 1e-11}, limits);
   auto s = make_state(false);
   integrator.advance(model, s);
   for (std::size_t l = 0; l < W; ++l) {

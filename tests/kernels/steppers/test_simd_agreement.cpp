@@ -49,17 +49,17 @@ void check_close(double simd, double scalar, double tol) {
   CHECK(std::fabs(simd - scalar) <= tol * std::max(1.0, std::fabs(scalar)));
 }
 
-template <template <class> class Stepper>
-void check_one_step() {
+template <template <class> class Stepper, class Method>
+void check_one_step(const Method& method) {
   const Simd vm = simd_model();
-  auto vs = rotorsweep::testing::built<Stepper<Simd>, simd_lane>(vm);
+  auto vs = rotorsweep::testing::built<Stepper<Simd>, simd_lane>(vm, method);
   auto theta = gather_theta();
   lane_vector<simd_lane> q(nq, simd_lane(0.1)), y_new(rows), q_new(nq), y_err(rows), q_err(nq);
   const simd_lane t = lane_from<simd_lane>(lane_t), h(0.05);
   vs.attempt(vm, t, h, theta.data(), q.data(), y_new.data(), q_new.data(), y_err.data(), q_err.data());
   for (std::size_t l = 0; l < W; ++l) {
     const auto sm = rotorsweep::testing::model<Scalar>(rows, every, lane_A(l), lane_g(l));
-    auto ss = rotorsweep::testing::built<Stepper<Scalar>, double>(sm);
+    auto ss = rotorsweep::testing::built<Stepper<Scalar>, double>(sm, method);
     auto y = lane_theta(l);
     std::vector<double> sq(nq, 0.1), sy_new(rows), sq_new(nq), sy_err(rows), sq_err(nq);
     ss.attempt(sm, lane_t(l), 0.05, y.data(), sq.data(), sy_new.data(), sq_new.data(), sy_err.data(),
@@ -104,15 +104,16 @@ TEST_CASE("SIMD right-hand side and Jacobian equal the scalar ones lane by lane"
 }
 
 TEST_CASE("one SIMD step equals one scalar step for every stepper", "[kernels][simd]") {
-  check_one_step<Rodas4>();
-  check_one_step<Rodas4P2>();
-  check_one_step<Ros2>();
-  check_one_step<DormandPrince5>();
+  check_one_step<RosenbrockStepper>(rodas4_tableau);
+  check_one_step<RosenbrockStepper>(rodas4p2_tableau);
+  check_one_step<RosenbrockStepper>(ros2_tableau);
+  check_one_step<DormandPrince5>(dormand_prince5_tableau);
 }
 
 TEST_CASE("adaptive SIMD runs reproduce scalar runs member by member", "[kernels][simd]") {
   const Simd vm = simd_model();
-  auto vi = rotorsweep::testing::integrator<AdaptiveIntegrator<Simd, Rodas4<Simd>>>(vm, {1e-7, 1e-10});
+  auto vi = rotorsweep::testing::integrator<AdaptiveIntegrator<Simd, RosenbrockStepper<Simd>>>(vm, rodas4_tableau,
+                                                                                               {1e-7, 1e-10});
   auto vs = rotorsweep::testing::lane_state<simd_lane>(rows, nq);
   const auto theta = gather_theta();
   std::copy(theta.begin(), theta.end(), vs.y);
@@ -120,7 +121,8 @@ TEST_CASE("adaptive SIMD runs reproduce scalar runs member by member", "[kernels
   vi.advance(vm, vs);
   for (std::size_t l = 0; l < W; ++l) {
     const auto sm = rotorsweep::testing::model<Scalar>(rows, every, lane_A(l), lane_g(l));
-    auto si = rotorsweep::testing::integrator<AdaptiveIntegrator<Scalar, Rodas4<Scalar>>>(sm, {1e-7, 1e-10});
+    auto si = rotorsweep::testing::integrator<AdaptiveIntegrator<Scalar, RosenbrockStepper<Scalar>>>(
+        sm, rodas4_tableau, {1e-7, 1e-10});
     auto ss = rotorsweep::testing::lane_state<double>(rows, nq);
     const auto y = lane_theta(l);
     for (std::size_t j = 0; j < rows; ++j) ss.y[j] = y[j];

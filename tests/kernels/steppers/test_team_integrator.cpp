@@ -18,7 +18,8 @@
 
 using namespace rotorsweep::kernels;
 using Model = NearestNeighbourRows<double>;
-using TeamStepper = TeamRosenbrock<HostTeam, rodas4p2_tableau>;
+using TeamStepper = TeamRosenbrock<HostTeam>;
+using Lanes = AdaptiveIntegrator<Model, RosenbrockStepper<Model>>;
 using Team = TeamIntegrator<HostTeam, TeamStepper>;
 
 namespace {
@@ -41,8 +42,7 @@ struct Run {
 };
 
 Run on_lanes(const Model& model, std::size_t n) {
-  auto integrator = rotorsweep::testing::built<AdaptiveIntegrator<Model, Rodas4P2<Model>>, double>(
-      model, tight, StepLimits{});
+  auto integrator = rotorsweep::testing::built<Lanes, double>(model, rodas4p2_tableau, tight, StepLimits{});
   auto state = rotorsweep::testing::built<LaneState<double>, double>(n, Model::max_quadratures);
   const auto theta = start(n);
   for (std::size_t j = 0; j < n; ++j) state.y[j] = theta[j];
@@ -53,12 +53,12 @@ Run on_lanes(const Model& model, std::size_t n) {
 }
 
 Run on_team(const Model& model, std::size_t n, std::size_t ranks) {
-  const double scale = AdaptiveIntegrator<Model, Rodas4P2<Model>>::first_step_scale(tight);
+  const double scale = Lanes::first_step_scale(tight, rodas4p2_tableau);
   std::vector<double> storage(counted_storage<double>([&](LaneArena<double>& arena) {
-    const Team counted(model, ranks, tight, StepLimits{}, scale, arena);
+    const Team counted(model, ranks, rodas4p2_tableau, tight, StepLimits{}, scale, arena);
   }));
   LaneArena<double> arena(storage.data(), storage.size());
-  Team integrator(model, ranks, tight, StepLimits{}, scale, arena);
+  Team integrator(model, ranks, rodas4p2_tableau, tight, StepLimits{}, scale, arena);
   std::vector<double> theta = start(n);
   TeamMemberState state;
   state.y = theta.data();

@@ -276,21 +276,22 @@ namespace {
 template <class Model>
 void check_team_follows(const Model& m, const std::vector<double>& y0) {
   const Tolerances tight{1e-10, 1e-10};
-  using Lanes = AdaptiveIntegrator<Model, Rodas4P2<Model>>;
-  auto integrator = rotorsweep::testing::integrator<Lanes>(m, tight);
+  using Lanes = AdaptiveIntegrator<Model, RosenbrockStepper<Model>>;
+  auto integrator = rotorsweep::testing::integrator<Lanes>(m, rodas4p2_tableau, tight);
   auto s = rotorsweep::testing::lane_state<double>(m.dimension(), Model::max_quadratures);
   std::copy(y0.begin(), y0.end(), s.y);
   s.t_stop = two_pi;
   integrator.advance(m, s);
   REQUIRE(s.status[0] == LaneStatus::ok);
-  using Team = TeamIntegrator<HostTeam, TeamRosenbrock<HostTeam, rodas4p2_tableau, Model>>;
+  using Team = TeamIntegrator<HostTeam, TeamRosenbrock<HostTeam, Model>>;
+  const double scale = Lanes::first_step_scale(tight, rodas4p2_tableau);
   for (std::size_t ranks : {1u, 2u, 3u, 8u}) {
     INFO(m.rotors() << " rotors, ranks " << ranks << ", impulse " << s.quad[0]);
     std::vector<double> storage(counted_storage<double>([&](LaneArena<double>& arena) {
-      const Team counted(m, ranks, tight, StepLimits{}, Lanes::first_step_scale(tight), arena);
+      const Team counted(m, ranks, rodas4p2_tableau, tight, StepLimits{}, scale, arena);
     }));
     LaneArena<double> arena(storage.data(), storage.size());
-    Team team_integrator(m, ranks, tight, StepLimits{}, Lanes::first_step_scale(tight), arena);
+    Team team_integrator(m, ranks, rodas4p2_tableau, tight, StepLimits{}, scale, arena);
     std::vector<double> y = y0;
     TeamMemberState state;
     state.y = y.data();
@@ -341,8 +342,8 @@ struct Run {
 
 template <class Model>
 Run<Model> integrate(const Model& m, std::vector<double> y0, double t0, double t1, double tol) {
-  using Integrator = AdaptiveIntegrator<Model, Rodas4<Model>>;
-  auto integrator = rotorsweep::testing::integrator<Integrator>(m, Tolerances{tol, tol});
+  using Integrator = AdaptiveIntegrator<Model, RosenbrockStepper<Model>>;
+  auto integrator = rotorsweep::testing::integrator<Integrator>(m, rodas4_tableau, Tolerances{tol, tol});
   auto s = rotorsweep::testing::lane_state<double>(m.dimension(), Model::max_quadratures);
   for (std::size_t k = 0; k < y0.size(); ++k) s.y[k] = y0[k];
   s.t = t0;
@@ -522,8 +523,8 @@ TEST_CASE("slider: SIMD lanes equal scalar ones bit for bit", "[kernels][slider]
   auto arena = scratch<simd_lane>(Simd::storage_size(grid));
   Simd vm(grid, SliderPlacement{}, arena);
   for (std::size_t l = 0; l < W; ++l) vm.set_lane(l, parameters<Simd>(substrates[l], 0.3));
-  using Integrator = AdaptiveIntegrator<Simd, Rodas4<Simd>>;
-  auto vi = rotorsweep::testing::integrator<Integrator>(vm, Tolerances{1e-7, 1e-7});
+  using Integrator = AdaptiveIntegrator<Simd, RosenbrockStepper<Simd>>;
+  auto vi = rotorsweep::testing::integrator<Integrator>(vm, rodas4_tableau, Tolerances{1e-7, 1e-7});
   auto vs = rotorsweep::testing::lane_state<simd_lane>(vm.dimension(), 2);
   const auto y0 = alternating_start(grid, true, 14);
   for (std::size_t k = 0; k < y0.size(); ++k) vs.y[k] = simd_lane(y0[k]);
