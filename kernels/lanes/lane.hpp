@@ -167,9 +167,13 @@ template <class V>
 ROTORSWEEP_HD inline std::array<double, lane_width<V>> lane_values(const V& v) {
   if constexpr (lane_width<V> == 1) {
     return {v};
-  } else {
+  } else if constexpr (requires { typename V::arch_type; }) {
     alignas(V::arch_type::alignment()) std::array<double, lane_width<V>> values;
     v.store_aligned(values.data());
+    return values;
+  } else {
+    std::array<double, lane_width<V>> values;
+    for (std::size_t l = 0; l < lane_width<V>; ++l) values[l] = lane_get(v, l);
     return values;
   }
 }
@@ -179,10 +183,14 @@ template <class V, class F>
 ROTORSWEEP_HD inline V lane_from(F&& f) {
   if constexpr (lane_width<V> == 1) {
     return V(f(std::size_t(0)));
-  } else {
+  } else if constexpr (requires { typename V::arch_type; }) {
     alignas(V::arch_type::alignment()) std::array<double, lane_width<V>> values;
     for (std::size_t l = 0; l < lane_width<V>; ++l) values[l] = f(l);
     return V::load_aligned(values.data());
+  } else {
+    V v;
+    for (std::size_t l = 0; l < lane_width<V>; ++l) lane_set(v, l, f(l));
+    return v;
   }
 }
 

@@ -2,13 +2,14 @@
 // a host team: against a dense Eigen LU for rings of 2 … 1024 rows and teams of 1 … 32 ranks (chains of
 // every length, empty ones included), its positive-definiteness against M's eigenvalues, and the
 // strict-FM closed form; and the host team's blocks and butterfly sums (kernels/lanes/team.hpp).
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <catch2/catch.hpp>
 #include <random>
 #include <vector>
 
 #include "kernels/lanes/team.hpp"
 #include "kernels/linear/team_cyclic_tridiagonal.hpp"
+#include "support/dense_reference.hpp"
 
 using rotorsweep::kernels::HostTeam;
 using rotorsweep::kernels::LaneArena;
@@ -90,7 +91,7 @@ TEST_CASE("the team solve matches a dense LU for every ring and team size", "[ke
         const Eigen::MatrixXd M = draw(J, n, shift, rng);
         Eigen::VectorXd r{Eigen::Index(n)};
         for (auto& x : r) x = u(rng);
-        const Eigen::VectorXd expected = M.partialPivLu().solve(r);
+        const Eigen::VectorXd expected = rotorsweep::testing::dense_solve(M, r);
         HostTeam team(ranks);
         J.factor(team, shift);
         std::vector<double> x(r.data(), r.data() + n);
@@ -116,7 +117,7 @@ TEST_CASE("the team's positive definiteness is M's, by its eigenvalues", "[kerne
         const Eigen::MatrixXd M = draw(built.solver, n, shift, rng);
         HostTeam team(ranks);
         built.solver.factor(team, shift);
-        const bool definite = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(M).eigenvalues().minCoeff() > 0;
+        const bool definite = rotorsweep::testing::symmetric_eigenvalues(M).minCoeff() > 0;
         INFO("n = " << n << ", ranks = " << ranks << ", trial " << trial);
         CHECK(built.solver.positive_definite() == definite);
         indefinite += !definite;

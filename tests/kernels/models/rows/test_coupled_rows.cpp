@@ -3,7 +3,7 @@
 // tables, periodic and open; f = −∇H/g; the nearest-neighbour table against NearestNeighbourRows;
 // the dense LDLᵀ solve and its inertia against Eigen; SIMD lanes equal to scalar ones; the range
 // forms a team uses, over any split of the rows, give the whole-row bits.
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -15,6 +15,7 @@
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "support/kernel_scratch.hpp"
 #include "support/linearization_check.hpp"
+#include "support/dense_reference.hpp"
 
 using namespace rotorsweep::kernels;
 using Catch::Detail::Approx;
@@ -134,7 +135,7 @@ TEST_CASE("dense LDLT solve and inertia agree with Eigen", "[kernels][couplings]
       J.entry(j, k) = J.entry(k, j) = values[j * n + k];
       dense(Eigen::Index(j), Eigen::Index(k)) = dense(Eigen::Index(k), Eigen::Index(j)) = values[j * n + k];
     }
-  const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense).eigenvalues();
+  const Eigen::VectorXd eigenvalues = rotorsweep::testing::symmetric_eigenvalues(dense);
   for (double shift : {-3.0, 0.1, 0.7, 5.0}) {
     J.factor(shift);
     const bool stable = (eigenvalues.array() < shift).all();
