@@ -81,7 +81,7 @@ print("finished", flush=True)
 """
 
 
-def test_sigint_stops_a_slider_scan_and_writes_nothing(tmp_path):
+def test_sigint_stops_a_slider_scan_keeping_its_finished_members(tmp_path):
     output = tmp_path / "long.h5"
     process = subprocess.Popen([sys.executable, "-c", SCRIPT, str(output)], stdout=subprocess.PIPE, text=True,
                                env=os.environ.copy())
@@ -93,7 +93,11 @@ def test_sigint_stops_a_slider_scan_and_writes_nothing(tmp_path):
     assert time.monotonic() - sent < 30  # the running lane block finishes first
     assert process.returncode == 130
     assert out.strip() == "interrupted"
-    assert list(tmp_path.iterdir()) == []
+    # as `rotorsweep slider`: the finished members in the partial file, no temporary or lock file
+    assert list(tmp_path.iterdir()) == [tmp_path / "long.h5.partial"]
+    with h5py.File(tmp_path / "long.h5.partial", "r") as f:
+        assert not f.attrs["complete"]
+        assert f.attrs["members_done"] == f["members/done"][:].sum() < 64
 
 
 MU0_4PI = 1e-7
