@@ -70,8 +70,14 @@ hsize_t MemberTableFile::check_table(const Hdf5Location& file, const std::string
                              std::to_string(plan_members) + " members");
   const auto shard = shard_label(file);
   const hsize_t rows = shard ? (plan_members + shard->count - shard->index) / shard->count : plan_members;
-  std::vector<TableColumn<>> table{{"done", ColumnType::flag}};
-  if (shard) table.push_back({"plan_index", ColumnType::int64});
+  const auto column = [](std::string name, ColumnType type) {
+    TableColumn<> c;
+    c.name = std::move(name);
+    c.type = type;
+    return c;
+  };
+  std::vector<TableColumn<>> table{column("done", ColumnType::flag)};
+  if (shard) table.push_back(column("plan_index", ColumnType::int64));
   check_table_columns(file.open_group("members"), table, rows, file.path(), "/members/");
   return rows;
 }

@@ -10,13 +10,13 @@
 
 namespace rotorsweep::python {
 
-void refuse_earlier_partial(const io::OutputTarget& target, bool force) {
-  if (!force && std::filesystem::exists(target.temporary()))
-    throw io::OutputPathError(
-        target.temporary() +
-        " holds the finished members of an earlier run that stopped early: continue it "
-        "with `rotorsweep run` or `rotorsweep slider` and --resume, or start afresh with "
-        "force=True");
+void refuse_earlier_partial(io::OutputTarget& target, bool force) {
+  if (force || !std::filesystem::exists(target.temporary())) return;
+  target.keep();  // it stays as it is
+  throw io::OutputPathError(target.temporary() +
+                            " holds the finished members of an earlier run that stopped early: continue it "
+                            "with `rotorsweep run` or `rotorsweep slider` and --resume, or start afresh with "
+                            "force=True");
 }
 
 SweepJob::SweepJob(ensemble::Scene scene, int threads, const std::string& output, bool force,

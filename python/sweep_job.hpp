@@ -21,8 +21,9 @@
 namespace rotorsweep::python {
 
 /// As `rotorsweep run` and `slider` refuse without --force: throws io::OutputPathError where `target`'s
-/// partial file holds the members of an earlier run that stopped early, unless `force`.
-void refuse_earlier_partial(const io::OutputTarget& target, bool force);
+/// partial file holds the members of an earlier run that stopped early, unless `force`; the partial
+/// file is then kept as it is.
+void refuse_earlier_partial(io::OutputTarget& target, bool force);
 
 class SweepJob {
  public:
