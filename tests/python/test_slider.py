@@ -59,6 +59,14 @@ def test_output_writes_the_command_lines_file(tmp_path):
     with pytest.raises(ValueError, match="exists"):
         (tmp_path / "not_hdf5.h5").write_text("text")
         rotorsweep.slider(SMALL, progress=False, output=tmp_path / "not_hdf5.h5")
+    # a stopped scan's partial file is refused and kept as it is, unless force=True, as `rotorsweep slider` does
+    partial = tmp_path / "again.h5.partial"
+    partial.write_bytes(b"members of an earlier scan")
+    with pytest.raises(ValueError, match="stopped early"):
+        rotorsweep.slider(SMALL, progress=False, output=tmp_path / "again.h5")
+    assert partial.read_bytes() == b"members of an earlier scan"
+    rotorsweep.slider(SMALL, progress=False, output=tmp_path / "again.h5", force=True)
+    assert not partial.exists()
 
 
 def test_a_bad_key_is_a_value_error_naming_it():
