@@ -18,6 +18,7 @@ struct TableOptions {
   int replicas = 8;               ///< noise draws of each CP entry for its spread (1: none)
   std::uint64_t seed = 1;         ///< their seed
   std::string output;             ///< CSV path; empty: stdout only
+  bool force = false;             ///< replace an existing file that is not a table CSV of this command
   /// "triangular": the paper's window, every period [τ, τ + 2π] with τ in [4π, 6π] averaged
   /// (docs/model.md §3); "uniform": the plain mean of periods 3 and 4
   std::string window = "triangular";
@@ -82,6 +83,7 @@ struct CouplingsOptions {
   std::size_t range = 1;                ///< rows u = 1 .. range
   std::string row_length = "infinite";  ///< rotors per row, or "infinite"
   std::string output;                   ///< CSV path; empty: stdout only
+  bool force = false;                   ///< replace an existing file that is not a couplings CSV
 };
 int run_couplings(const CouplingsOptions& options);
 

@@ -10,9 +10,11 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "commands.hpp"
+#include "csv_output.hpp"
 #include "ensemble/engine/replica_statistics.hpp"
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/member_plan.hpp"
@@ -28,6 +30,10 @@ namespace rotorsweep::apps {
 namespace {
 
 namespace paper = ensemble::paper_table;
+
+/// The CSV file's first line; an existing file that starts as it does is replaced without --force.
+constexpr std::string_view csv_header =
+    "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S";
 
 /// The paper's scene as a sweep of the scalar lane with the W, S, R estimators, their moments and
 /// every period's record (for the triangular window).
@@ -138,24 +144,19 @@ void print_cp_draws(kernels::StepperId stepper, double rtol, int replicas, std::
 int run_table(const TableOptions& options) {
   const auto stepper = kernels::parse_stepper(options.stepper).value();
   const bool triangular = options.window == "triangular";
+  RemoveOnSignal on_start;  // a signal before the file exists ends the command at once
   std::optional<io::OutputTarget> target;
+  std::optional<RemoveOnSignal> on_signal;
   std::ofstream csv;
-  if (!options.output.empty()) {
-    try {
-      target.emplace(options.output, std::vector<std::string>{}, io::Replaceable::any, false);
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << " (-o)\n";
-      return 2;
-    }
+  if (!take_csv_output(options.output, csv_header, options.force, target, on_signal)) return 2;
+  if (target) {
     csv.open(target->temporary());
     if (!csv) {
       std::cerr << "error: cannot write " << options.output << ": " << std::strerror(errno) << "\n";
       return 2;
     }
-    csv << "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S\n";
+    csv << csv_header << "\n";
   }
-  std::optional<RemoveOnSignal> on_signal;
-  if (target) on_signal.emplace(*target);
   std::printf("%5s %4s %14s %14s %14s %14s %10s %8s %14s %14s\n", "A", "IC", "W (work)", "S (Stokes)",
               "R (drive)", "paper R", "R/paper-1", "steps/T", "paper W", "paper S");
   const auto start = std::chrono::steady_clock::now();
@@ -194,6 +195,7 @@ int run_table(const TableOptions& options) {
       return 1;
     }
     on_signal.reset();
+    target->claim_temporary();
     target->commit();
     std::printf(", table written to %s%s", options.output.c_str(), target->replaced() ? " (replaced)" : "");
   }

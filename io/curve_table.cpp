@@ -130,6 +130,12 @@ void for_each_block(const Hdf5Location& file, const ensemble::Scene& scene, cons
 
 }  // namespace
 
+double curves_data_bytes(const ensemble::Scene& scene, std::size_t labels, std::size_t label_length) {
+  return double(ensemble::MemberPlan(scene).point_count()) *
+             double(8 * curve_columns(scene).size() + 4 * 8 * labels) +
+         double(labels * label_length);
+}
+
 void write_curves_from_members(const Hdf5Location& file, const ensemble::Scene& scene,
                                const std::function<void(double bytes)>& reserve) {
   const ensemble::MemberPlan plan(scene);
@@ -146,8 +152,7 @@ void write_curves_from_members(const Hdf5Location& file, const ensemble::Scene& 
   for (const auto& l : labels) label_length = std::max(label_length, l.size());
 
   const auto columns = curve_columns(scene);
-  reserve(double(points) * double(8 * columns.size() + 4 * 8 * labels.size()) +
-          double(labels.size() * label_length));
+  reserve(curves_data_bytes(scene, labels.size(), label_length));
   const auto group = file.create_group("curves");
   for (const auto& column : columns)
     group.create_column(column.name, column.type, {points, 0, kind_length()}, column.description,

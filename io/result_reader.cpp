@@ -38,6 +38,11 @@ Matrix read_matrix(const Hdf5Location& group, const std::string& name, std::size
 
 }  // namespace
 
+bool is_rotorsweep_file(const Hdf5Location& file) {
+  return file.has_attribute("version") && file.has_attribute("complete") &&
+         (file.has_attribute("kind") || (file.has_attribute("scene") && file.has("members")));
+}
+
 std::string written_by(const Hdf5Location& file) {
   return file.attribute_string("version") + " (revision " + file.attribute_string("revision") + ")";
 }

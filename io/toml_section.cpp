@@ -2,7 +2,9 @@
 // { from, to, count, spacing }, the section check and reading the file (README "Scene files").
 #include "io/toml_section.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -40,10 +42,28 @@ std::string describe(const toml::node& node) {
   return shortened(out.str());
 }
 
-/// A number, a list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a
-/// `fallback`, the fallback when the key is absent.
-std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
-                         bool (*valid)(double), const std::vector<double>& fallback) {
+std::string number_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
+}
+
+namespace {
+
+/// The values of axis `key`, refused when one of them comes twice: each value is a point of the plan,
+/// and two points with one coordinate would be one point twice.
+std::vector<double> distinct(std::vector<double> values, const std::string& key) {
+  std::vector<double> sorted(values);
+  std::sort(sorted.begin(), sorted.end());
+  if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end()); twice != sorted.end())
+    fail(key, "has the value " + number_text(*twice) +
+                  " more than once; the values of a sweep axis must differ (each is a point of the plan)");
+  return values;
+}
+
+/// The grid's values before the check that they differ.
+std::vector<double> grid_values(const Section& section, std::string_view k, const std::string& what,
+                                bool (*valid)(double), const std::vector<double>& fallback) {
   const std::string key = section.key(k);
   const std::string shape =
       "a number, a list of numbers " + what + ", or { from, to, count, spacing = \"linear\"|\"log\" }";
@@ -69,7 +89,7 @@ std::vector<double> grid(const Section& section, std::string_view k, const std::
   const long long count = r.integer("count", 1, "an integer from 1 to 10000000",
                                     [](long long c) { return c >= 1 && c <= 10000000; });
   const bool log = r.choice("spacing", "linear", {"linear", "log"}) == "log";
-  if (to < from) fail(r.key("to"), "must be >= from (" + std::to_string(from) + ")");
+  if (to < from) fail(r.key("to"), "must be >= from (" + number_text(from) + ")");
   if (log && from <= 0) fail(r.key("from"), "must be > 0 with spacing = \"log\"");
   for (long long i = 0; i < count; ++i) {
     const double s = count == 1 ? 0.0 : double(i) / double(count - 1);
@@ -78,6 +98,13 @@ std::vector<double> grid(const Section& section, std::string_view k, const std::
   }
   values.back() = to;
   return values;
+}
+
+}  // namespace
+
+std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
+                         bool (*valid)(double), const std::vector<double>& fallback) {
+  return distinct(grid_values(section, k, what, valid, fallback), section.key(k));
 }
 
 void check_sections(const toml::table& root,

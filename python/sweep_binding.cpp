@@ -138,6 +138,14 @@ void bind_sweep(py::module_& m) {
       .def_property_readonly("done", &SweepJob::done)
       .def_property_readonly("total", &SweepJob::total)
       .def("cancel", &SweepJob::cancel)
+      .def_property_readonly(
+          "kept",
+          [](const SweepJob& job) -> py::object {
+            const auto kept = job.kept();
+            return kept ? py::object(py::int_(*kept)) : py::object(py::none());
+          },
+          "After a cancelled sweep with an output path: the members kept in OUTPUT.partial (None: no file "
+          "kept).")
       .def(
           "take_image",
           [](SweepJob& job) {

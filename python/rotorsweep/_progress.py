@@ -1,5 +1,6 @@
 """The progress line of rotorsweep.run on sys.stderr: members done / total, rate, time left; redrawn
-in place on a terminal, one line every 10 s otherwise (like the command line's); and its last line."""
+in place on a terminal, one line every 10 s otherwise (like the command line's); its last line, or the
+line that says where a stopped run keeps its members."""
 
 import sys
 import time
@@ -63,3 +64,19 @@ def report(h5file, path):
             flagged = sum(1 for k, v in zip(ok, values) if k and (v == 0 if column == "dissipation_resolved" else v != 0))
             if flagged:
                 sys.stderr.write(f"warning: {flagged} members {text}; see /members/{column}\n")
+    if "slip_jumps" in members:
+        regime = [r.decode() if isinstance(r, bytes) else str(r) for r in members["regime"][:]]
+        untold = sum(1 for k, r, j in zip(ok, regime, members["slip_jumps"][:]) if k and r == "CP" and j != j)
+        if untold:
+            sys.stderr.write(f"warning: {untold} CP members whose slips could not be told jumps or smooth (their "
+                             "slower rerun at g/10 did not finish): slip_jumps and slip_smooth are NaN; see "
+                             "/members/slip_jumps\n")
+
+
+def report_kept(kept, total, path, command):
+    """The line `rotorsweep run` (`command`: "run" or "slider") prints when it stops early: the finished
+    members kept in the partial file (kept None: none kept)."""
+    if kept is None:
+        return
+    sys.stderr.write(f"\nstopped: {kept} of {total} members done, kept in {path}.partial (not a result: "
+                     f"complete = FALSE); continue with `rotorsweep {command} SCENE -o {path} --resume`\n")

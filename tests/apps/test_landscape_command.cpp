@@ -91,6 +91,21 @@ TEST_CASE("landscape rejects bad options with exit code 2", "[apps][landscape]")
   CHECK(!std::filesystem::exists(dir / "x.h5"));
 }
 
+TEST_CASE("landscape refuses a raster or grid that would not fit in memory, saying what it needs",
+          "[apps][landscape]") {
+  const auto dir = scratch_directory("landscape-memory");
+  const auto out = " -o '" + (dir / "x.h5").string() + "'";
+  const auto refused = [&](const std::string& command, const std::string& option) {
+    const auto run = run_cli(command + out, dir, "ulimit -v 2000000; ");
+    INFO(run.output);
+    CHECK(run.exit_code == 2);
+    CHECK_THAT(run.output, Catch::Contains("GiB") && Catch::Contains(option) && Catch::Contains("ulimit -v"));
+  };
+  refused("landscape chambers -q --A-cells 100000 --tau-cells 100000", "--A-cells");
+  refused("landscape jump-friction -q --count 100000000", "--count");
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 1);
+}
+
 TEST_CASE("landscape on a full disk: a clear error and no file", "[apps][landscape][files]") {
   const auto dir = scratch_directory("landscape-full-disk");
   const auto run =
@@ -234,4 +249,14 @@ TEST_CASE(
     if (t[0] == 6 || t[0] == 8) largest = std::max(largest, std::fabs(t[1] / t[3] - 1));
   CHECK(largest > 1e-4);
   CHECK(run_cli("table --window trapezoid", dir).exit_code == 2);
+}
+
+TEST_CASE("table refuses a seed outside 0 … 2⁶³ − 1 instead of wrapping or rounding it", "[apps][table]") {
+  const auto dir = scratch_directory("table-seed");
+  for (const char* bad : {"-1", "18446744073709551616", "9223372036854775808", "1e23", "2.5", "+3", ""}) {
+    const auto run = run_cli("table --replicas 2 --seed '" + std::string(bad) + "'", dir);
+    INFO(bad << ": " << run.output);
+    CHECK(run.exit_code == 2);
+    CHECK_THAT(run.output, Catch::Contains("--seed"));
+  }
 }

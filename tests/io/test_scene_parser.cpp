@@ -309,3 +309,28 @@ TEST_CASE("slip_kinds needs the regime rule, no temperature and the CPU, each re
              Catch::Contains("'numerics.device'") && Catch::Contains("slip_kinds"));
   CHECK_THAT(error_of(minimal + "[observables]\nslip_kinds = 1\n"), Catch::Contains("'observables.slip_kinds'"));
 }
+
+TEST_CASE("at T > 0 what needs a deterministic member is refused, naming its key", "[io][scene]") {
+  const std::string hot = "[thermal]\ntemperature = 0.1\n";
+  // the moments carry W and S: the Stokes estimator diverges with noise, as estimators does
+  CHECK_THAT(error_of(minimal + hot + "[observables]\nmoments = true\n"),
+             Catch::Contains("'observables.moments'") && Catch::Contains("Stokes estimator diverges"));
+  CHECK(error_of(minimal + "[observables]\nmoments = true\n") == "");
+  // shadow runs are a T = 0 error estimate: asked for at T > 0 they are refused, not dropped
+  CHECK_THAT(error_of(minimal + hot + "[numerics]\nglobal_error = \"shadow\"\n"),
+             Catch::Contains("'numerics.global_error'") && Catch::Contains("\"local\""));
+  CHECK(error_of(minimal + hot + "[numerics]\nglobal_error = \"local\"\n") == "");
+  CHECK(error_of(minimal + hot) == "");  // the default
+}
+
+TEST_CASE("an axis that gives a value twice is refused, naming it", "[io][scene]") {
+  const std::string start = "[model]\nrows = 4\n";
+  CHECK_THAT(error_of(start + "[drive]\ng = 0.01\n[sweep]\nA = [1, 2, 1]\n"),
+             Catch::Contains("'sweep.A': has the value 1 more than once"));
+  CHECK_THAT(error_of(start + "[drive]\ng = [0.01, 0.01]\n[sweep]\nA = 1\n"), Catch::Contains("'drive.g'"));
+  CHECK_THAT(error_of(start + "[drive]\ng = { from = 0.01, to = 0.01, count = 3 }\n[sweep]\nA = 1\n"),
+             Catch::Contains("'drive.g'"));
+  CHECK_THAT(error_of(minimal + "[initial]\nnoise = [0.1, 0.1]\n"), Catch::Contains("'initial.noise'"));
+  CHECK_THAT(error_of(minimal + "[initial]\noffset = [0, 0.0]\n"), Catch::Contains("'initial.offset'"));
+  CHECK(error_of(start + "[drive]\ng = { from = 0.01, to = 0.02, count = 3 }\n[sweep]\nA = [0, 1]\n") == "");
+}

@@ -107,7 +107,8 @@ def test_the_paper_members_through_the_module():
 
 def test_thread_counts_outside_1_to_4096_raise_value_error(monkeypatch):
     scene = {"model": {"rows": 4}, "drive": {"g": 0.01}, "sweep": {"A": 1}}
-    for bad in (-1, 5000, 100000):
+    # also what Python would quietly turn into a count: 0 and False (every core), 2.5 (2), "2", 2**80
+    for bad in (-1, 5000, 100000, 0, "0", "2", False, True, 2.5, 2**80):
         with pytest.raises(ValueError, match="threads"):
             rotorsweep.run(scene, threads=bad, progress=False)
         with pytest.raises(ValueError, match="threads"):
@@ -142,8 +143,22 @@ def test_open_names_a_file_that_is_not_a_result(tmp_path):
     with h5py.File(path, "w") as f:
         f.attrs["complete"] = True
         f.create_group("members").create_dataset("A", data=[1.0])
-    with pytest.raises(ValueError, match="no scene attribute"):
+    with pytest.raises(ValueError, match="not a rotorsweep file"):
         rotorsweep.open(path)
+    # HDF5 files rotorsweep did not write, or that lack a dataset its files have: ValueError, never KeyError
+    with h5py.File(tmp_path / "empty.h5", "w"):
+        pass
+    with h5py.File(tmp_path / "complete.h5", "w") as f:
+        f.attrs["complete"] = True
+    with h5py.File(tmp_path / "slider.h5", "w") as f:
+        f.attrs.update({"complete": True, "kind": "slider", "version": "x", "scene": ""})
+    for foreign in ("empty.h5", "complete.h5", "slider.h5"):
+        with pytest.raises(ValueError, match="not a rotorsweep file"):
+            rotorsweep.open(tmp_path / foreign)
+    with h5py.File(tmp_path / "slider.h5", "a") as f:
+        f.create_group("members")
+    with pytest.raises(ValueError, match="is missing"):
+        rotorsweep.open(tmp_path / "slider.h5")
 
 
 def test_run_prints_the_command_lines_first_and_last_lines_unless_quiet(small_scene, capsys):
