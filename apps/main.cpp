@@ -72,6 +72,15 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   table_cmd
       ->add_option(
+          "--disorder", table.disorder,
+          "sigma_A of a quenched disorder of the rows' substrate strength, A_j = A (1 + sigma xi_j): "
+          "a physical symmetry breaking, so that the CP entries' errors are bounds (0: none)")
+      ->check(finite & CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  table_cmd->add_option("--disorder-seed", table.disorder_seed, "Seed of the disorder's realizations")
+      ->capture_default_str();
+  table_cmd
+      ->add_option(
           "--replicas", table.replicas,
           "Noise draws of each CP entry for its spread, global error and symmetry-limited count (1: none)")
       ->check(CLI::Range(1, 10000))
