@@ -62,7 +62,7 @@ def run(scene, threads=None, progress=True, output=None, force=False, quiet=Fals
     line = _progress.ProgressLine(job.total, progress and not quiet)
     try:
         while not job.wait(_POLL_SECONDS):
-            line.update(job.done)
+            line.update(job.done, job.periods)
     except BaseException:
         job.cancel()
         job.wait(-1)
