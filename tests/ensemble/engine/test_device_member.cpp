@@ -150,9 +150,8 @@ TEST_CASE("the GPU's second pass of shadow runs gives the CPU lanes' errors and 
   // into the strict-FM set; the GPU runs the primaries, then their shadows from where their averaged
   // periods began, and completes each as ShadowedRange (ensemble/rows/sweep.cpp) does
   const auto scene = io::parse_scene_text(
-      "[model]\nrows = 6\n[drive]\ng = [0.002]\n[sweep]\nA = [6.0, 8.1, 9.3]\n[initial]\nkinds = "
-      "[\"random\", "
-      "\"AFM\"]\nreplicas = 3\n[numerics]\nrtol = 1e-7\natol = 1e-10\n",
+      "[model]\nrows = 6\n[drive]\ng = [0.002]\n[sweep]\nA = [6.0, 8.1, 9.3]\n"
+      "[initial]\nkinds = [\"random\", \"AFM\"]\nreplicas = 3\n[numerics]\nrtol = 1e-7\natol = 1e-10\n",
       "device-member-shadow-pass");
   const auto members = ensemble::plan_members(scene);
   const auto cpu = ensemble::run_sweep(scene, members, 2, {}).results;
