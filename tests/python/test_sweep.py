@@ -204,3 +204,13 @@ def test_a_sweep_job_counts_the_periods_its_members_close(small_scene):
         shadows = int(np.isfinite(f["members/dissipation_shadow"][:]).sum())
     assert shadows > 0  # the CP members at A = 6 run their 2 averaged periods again
     assert job.periods == 12 * 3 + 2 * shadows  # relax 1 + average 2 each
+
+
+def test_the_last_lines_count_symmetry_limited_members_apart(small_scene, capsys):
+    """A = 6 without disorder: 4 CP members whose D the integration error decides, none merely unresolved."""
+    ds = rotorsweep.run(small_scene, progress=False)
+    err = capsys.readouterr().err
+    limited = int(ds.symmetry_limited.sum())
+    assert limited == 4 and int(ds.dissipation_resolved.where(ds.symmetry_limited == 1).sum()) == 0
+    assert f"warning: {limited} members whose D the integration error decides" in err
+    assert "not resolved" not in err and "tighten" not in err
