@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "io/hdf5_file.hpp"
@@ -199,6 +201,46 @@ TEST_CASE("table prints W and S that agree with R outside CP, beside the paper's
   // each CP entry over noise draws, with its spread and its flags: none resolved, all symmetry-limited
   CHECK_THAT(run.output,
              Catch::Contains("CP entries over 8 noise draws (seed 1") && Catch::Contains("0 / 8 / 0 of 8"));
+}
+
+TEST_CASE("table --disorder: the CP entries' errors become bounds, their values the disorder's",
+          "[apps][table]") {
+  const auto dir = scratch_directory("table-disorder");
+  const auto csv = dir / "table.csv";
+  const auto run = run_cli(
+      "table --disorder 1e-5 --rtol 1e-7 --estimator-rtol 1e-7 --replicas 1 -o '" + csv.string() + "'", dir);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("disorder sigma_A = 1e-05 (realization 0 of seed 1)"));
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::map<std::string, std::array<double, 3>> cp;  // A and start: R, its error, the paper's R
+  while (std::getline(in, line)) {
+    double A = 0, W = 0, S = 0, R = 0, paper_R = 0, deviation = 0, steps = 0, paper_W = 0, paper_S = 0,
+           error = 0;
+    char ic[8] = {}, kind[24] = {};
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%7[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%23s", &A, ic, &W, &S,
+                        &R, &paper_R, &deviation, &steps, &paper_W, &paper_S, &error, kind) == 12);
+    INFO(line);
+    CHECK(std::string(kind) == "resolved");  // every entry, CP included: the disorder breaks the symmetry
+    if (A == 6 || A == 8) cp[std::to_string(int(A)) + ic] = {R, error, paper_R};
+  }
+  REQUIRE(cp.size() == 4);
+  for (const char* A : {"6", "8"}) {
+    INFO("A = " << A);
+    const auto fm = cp[std::string(A) + "FM"], afm = cp[std::string(A) + "AFM"];
+    CHECK(std::fabs(fm[0] - afm[0]) <= fm[1] + afm[1]);  // both starts reach the disorder's one orbit
+    CHECK(fm[0] < 0.9 * fm[2]);  // 12 % (A = 6) and 38 % (A = 8) below the paper's symmetric value
+  }
+  // bad values: one message naming the option, exit code 2
+  for (const std::string bad :
+       {"--disorder 2", "--disorder -1", "--disorder nan", "--disorder-seed -1", "--disorder-seed 1.5"}) {
+    const auto refused = run_cli("table " + bad, dir);
+    INFO(bad << ": " << refused.output);
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.output, Catch::Contains(bad.substr(0, bad.find(' '))));
+  }
 }
 
 TEST_CASE(
