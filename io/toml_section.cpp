@@ -24,23 +24,6 @@ std::string shortened(const std::string& s, std::size_t limit) {
   return s.substr(0, cut) + "… (" + std::to_string(s.size()) + " bytes)";
 }
 
-[[noreturn]] void fail(const std::string& key, const std::string& message) {
-  throw SceneError("scene key '" + shortened(key) + "': " + message);
-}
-
-std::string describe(const toml::node& node) {
-  std::ostringstream out;
-  if (node.is_string())
-    out << '"' << node.value<std::string>().value_or("") << '"';
-  else if (node.is_table())
-    out << "a table";
-  else if (node.is_array())
-    out << "an array";
-  else
-    node.visit([&](const auto& value) { out << value; });
-  return shortened(out.str());
-}
-
 namespace {
 
 /// a·b as an unevaluated sum p + e, exactly (Dekker's product with Veltkamp's split; no fused
@@ -77,6 +60,23 @@ double linear_point(double from, double to, long long i, long long m) {
 }
 
 }  // namespace
+
+[[noreturn]] void fail(const std::string& key, const std::string& message) {
+  throw SceneError("scene key '" + shortened(key) + "': " + message);
+}
+
+std::string describe(const toml::node& node) {
+  std::ostringstream out;
+  if (node.is_string())
+    out << '"' << node.value<std::string>().value_or("") << '"';
+  else if (node.is_table())
+    out << "a table";
+  else if (node.is_array())
+    out << "an array";
+  else
+    node.visit([&](const auto& value) { out << value; });
+  return shortened(out.str());
+}
 
 /// A number, a list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a
 /// `fallback`, the fallback when the key is absent.
