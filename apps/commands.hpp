@@ -15,6 +15,8 @@ struct TableOptions {
   std::string stepper = std::string(kernels::default_stepper_name);
   double rtol = 1e-9;
   double estimator_rtol = 1e-12;  ///< W and S come from a run at this tolerance
+  double disorder = 0;            ///< σ_A of a quenched disorder of the rows' substrate strength (0: none)
+  std::uint64_t disorder_seed = 1;  ///< the seed of its realizations (draw r takes realization r)
   int replicas = 8;               ///< noise draws of each CP entry for its spread (1: none)
   std::uint64_t seed = 1;         ///< their seed
   std::string output;             ///< CSV path; empty: stdout only

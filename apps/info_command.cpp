@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "io/hdf5_file.hpp"
 #include "io/result_reader.hpp"
+#include "io/member_flags.hpp"
 #include "progress_line.hpp"
 
 namespace rotorsweep::apps {
@@ -176,21 +177,20 @@ int run_info(const InfoOptions& options) {
                     *std::max_element(per_row.begin(), per_row.end()));
     }
     if (members.has("dissipation_resolved")) {
-      const auto resolved = kept(members.read_integers("dissipation_resolved"));
-      const auto status = kept(members.read_strings("status"));
-      std::size_t unresolved = 0;
-      for (std::size_t i = 0; i < resolved.size(); ++i) unresolved += status[i] == "ok" && !resolved[i];
-      if (unresolved > 0)
+      const auto counts = io::count_member_flags(members, done);
+      if (counts.unresolved > 0)
         std::printf("%-12s %zu members whose D is not resolved (dissipation_error >= 0.1 |D|)\n", "warning",
-                    unresolved);
-      if (members.has("symmetry_limited")) {
-        const auto symmetry = kept(members.read_integers("symmetry_limited"));
-        std::size_t limited = 0;
-        for (std::size_t i = 0; i < symmetry.size(); ++i) limited += status[i] == "ok" && symmetry[i] != 0;
-        if (limited > 0)
-          std::printf("%-12s %zu members whose D the integration error decides (symmetry_limited)\n",
-                      "warning", limited);
-      }
+                    counts.unresolved);
+      if (counts.symmetry_limited > 0)
+        std::printf(
+            "%-12s %zu members whose D the integration error decides (symmetry_limited; no error "
+            "bounds it, not counted as resolved)\n",
+            "warning", counts.symmetry_limited);
+      if (counts.shadow_departed > 0)
+        std::printf(
+            "%-12s %zu members whose shadow run reached another attractor (shadow_departed; no "
+            "error estimate)\n",
+            "warning", counts.shadow_departed);
     }
     std::printf("%-12s /members:", "datasets");
     for (const auto& name : members.members()) std::printf(" %s", name.c_str());

@@ -95,6 +95,16 @@ int main(int argc, char** argv) {
                    "uniform: the mean of periods 3 and 4")
       ->check(CLI::IsMember({"triangular", "uniform"}))
       ->capture_default_str();
+  table_cmd
+      ->add_option(
+          "--disorder", table.disorder,
+          "sigma_A of a quenched disorder of the rows' substrate strength, A_j = A (1 + sigma xi_j): "
+          "a physical symmetry breaking, so that the CP entries' errors are bounds (0: none)")
+      ->check(finite & CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  table_cmd->add_option("--disorder-seed", table.disorder_seed, "Seed of the disorder's realizations")
+      ->check(seed_value)
+      ->capture_default_str();
   table_cmd->add_option("-o,--output", table.output, "Write the table as CSV to this file");
   table_cmd->add_flag("--force", table.force,
                       "Replace an existing file that is not a table this command wrote");

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <optional>
 
 #include "build_info.hpp"
@@ -19,6 +18,7 @@
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "ensemble/rows/working_set.hpp"
+#include "io/member_flags.hpp"
 #include "io/member_stream.hpp"
 #include "io/output_target.hpp"
 #include "io/result_file.hpp"
@@ -67,57 +67,44 @@ std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t p
   return io::ShardLabel{index, count, plan_members};
 }
 
-/// Members that did not finish, by status, and finished members whose D is not resolved, read from
-/// the written file a block at a time.
+/// Members that did not finish, by status, and finished members whose D is not resolved, for each
+/// reason apart, read from the written file a block at a time.
 void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene) {
-  const auto members = file.open_group("members");
-  const std::size_t rows = members.shape("status").first, block = 1 << 16;
-  const bool dissipation = members.has("dissipation_resolved"), shadows = members.has("symmetry_limited"),
-             kinds = members.has("slip_jumps");
-  std::map<std::string, std::size_t> failures;
-  std::size_t unresolved = 0, limited = 0, untold = 0;
-  for (std::size_t first = 0; first < rows; first += block) {
-    const std::size_t count = std::min(block, rows - first);
-    const auto status = members.read_rows_strings("status", first, count);
-    const auto resolved = dissipation ? members.read_rows_integers("dissipation_resolved", first, count)
-                                      : std::vector<std::int64_t>(count, 1);
-    const auto symmetry = shadows ? members.read_rows_integers("symmetry_limited", first, count)
-                                  : std::vector<std::int64_t>(count, 0);
-    const auto regime =
-        kinds ? members.read_rows_strings("regime", first, count) : std::vector<std::string>{};
-    const auto jumps = kinds ? members.read_rows_doubles("slip_jumps", first, count) : std::vector<double>{};
-    for (std::size_t i = 0; i < count; ++i) {
-      if (status[i] != "ok") ++failures[status[i]];
-      unresolved += status[i] == "ok" && resolved[i] == 0;
-      limited += status[i] == "ok" && symmetry[i] != 0;
-      untold += kinds && status[i] == "ok" && regime[i] == "CP" && std::isnan(jumps[i]);
-    }
-  }
-  if (!failures.empty()) {
+  const auto counts = io::count_member_flags(file.open_group("members"));
+  if (!counts.failures.empty()) {
     std::fprintf(stderr, "warning: members that did not finish (their observables are NaN):");
-    for (const auto& [name, count] : failures) std::fprintf(stderr, " %s %zu", name.c_str(), count);
+    for (const auto& [name, count] : counts.failures) std::fprintf(stderr, " %s %zu", name.c_str(), count);
     std::fprintf(stderr, "; see /members/status\n");
   }
-  if (unresolved > 0)
+  if (counts.unresolved > 0)
     std::fprintf(stderr,
                  "warning: %zu members whose D is not resolved (dissipation_error >= 0.1 |D|); %s; see "
                  "/members/dissipation_resolved\n",
-                 unresolved,
+                 counts.unresolved,
                  scene.thermal.on() ? "at T > 0 this is the statistical error: average more periods"
                                     : "tighten numerics.rtol and atol");
-  if (limited > 0)
+  if (counts.symmetry_limited > 0)
     std::fprintf(
         stderr,
         "warning: %zu members whose D the integration error decides (symmetry-limited: they slip and no "
-        "disorder or temperature exceeds rtol, so D depends on rtol itself); give the scene disorder or "
-        "temperature above rtol (README: regime rule); see /members/symmetry_limited\n",
-        limited);
-  if (untold > 0)
+        "disorder or temperature exceeds rtol, so D depends on rtol itself and no error bounds it; not "
+        "counted as resolved); a tighter rtol does not help: give the scene disorder (e.g. [disorder] "
+        "A = 1e-6) or a temperature above rtol (README: regime rule); see /members/symmetry_limited\n",
+        counts.symmetry_limited);
+  if (counts.shadow_departed > 0)
+    std::fprintf(
+        stderr,
+        "warning: %zu members whose shadow run reached another attractor (another regime, slips per period "
+        "or domain walls), so it estimates no error (dissipation_error infinite); a tighter rtol does not "
+        "help: break the symmetry physically with disorder (e.g. [disorder] A = 1e-6) or a temperature "
+        "above rtol; see /members/shadow_departed\n",
+        counts.shadow_departed);
+  if (counts.untold > 0)
     std::fprintf(
         stderr,
         "warning: %zu CP members whose slips could not be told jumps or smooth (their slower rerun at "
         "g/10 did not finish): slip_jumps and slip_smooth are NaN; see /members/slip_jumps\n",
-        untold);
+        counts.untold);
 }
 
 std::vector<char> check_partial(const std::string& partial, const std::string& scene_text,

@@ -48,7 +48,8 @@ bool open_resumable_target(const SceneCommandOptions& options, bool resume, cons
 /// The command line that resumes a run: "rotorsweep COMMAND SCENE [-o OUT] [--shard I/N] --resume".
 std::string resume_command(const std::string& command, const SceneCommandOptions& options,
                            const std::string& shard);
-/// Members that did not finish, by status, and unresolved D, read from a written file (stderr).
+/// Members that did not finish, by status, and, each reason apart, those whose D is not resolved, read
+/// from a written file (stderr).
 void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene);
 /// Whether `needed` bytes fit on the disk of `partial` (95 % of its free space); says how much `what`
 /// (plural: "the results ... need") needs, and `advice`, when not.

@@ -92,10 +92,11 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
   std::vector<std::string> regime;
   if (scene.classifies_regimes()) regime = group.read_rows_strings("regime", first, count);
   std::vector<double> shadow;
-  std::vector<std::int64_t> limited;
+  std::vector<std::int64_t> limited, departed;
   if (scene.runs_shadows()) {
     shadow = group.read_rows_doubles("dissipation_shadow", first, count);
     limited = integers("symmetry_limited");
+    if (group.has("shadow_departed")) departed = integers("shadow_departed");  // files before it have none
   }
   std::optional<Matrix> row_dissipation, link_alignment;
   if (scene.row_profiles) {
@@ -126,6 +127,7 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
     if (!shadow.empty()) {
       r.dissipation_shadow = shadow[m];
       r.symmetry_limited = limited[m] != 0;
+      r.shadow_departed = !departed.empty() && departed[m] != 0;
     }
     if (row_dissipation) {
       const std::size_t rows = plan[r.index].rows, links = scene.couplings.open ? rows - 1 : rows;

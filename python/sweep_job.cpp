@@ -44,7 +44,7 @@ void SweepJob::run(int threads) {
   try {
     const auto outcome = ensemble::run_sweep(
         scene_, members_, threads, [this](std::size_t done) { done_.store(done, std::memory_order_relaxed); },
-        &stop_);
+        &stop_, &periods_);
     if (!outcome.interrupted) {
       done_.store(members_.size(), std::memory_order_relaxed);
       file_->write_sweep(members_, outcome);

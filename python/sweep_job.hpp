@@ -1,5 +1,5 @@
 // A sweep running on its own thread for the Python module: the caller polls wait() with the GIL
-// released, reads done() for its progress line, and cancel() stops it within one step (Ctrl-C).
+// released, reads done() and periods() for its progress line, and cancel() stops it within one step (Ctrl-C).
 #pragma once
 
 #include <atomic>
@@ -41,6 +41,8 @@ class SweepJob {
   /// Waits up to `seconds` (forever when negative); true once the sweep has ended.
   bool wait(double seconds);
   std::size_t done() const { return done_.load(std::memory_order_relaxed); }
+  /// Periods the members have closed so far (the command line's "periods closed").
+  std::size_t periods() const { return periods_.load(std::memory_order_relaxed); }
   std::size_t total() const { return members_.size(); }
   /// Stops taking members and abandons those in lanes; with an output path the finished members are
   /// kept in OUTPUT.partial (kept()), else nothing is written.
@@ -63,6 +65,7 @@ class SweepJob {
   std::optional<io::ResultFile> file_;
   std::atomic<bool> stop_{false};
   std::atomic<std::size_t> done_{0};
+  std::atomic<std::size_t> periods_{0};
   std::mutex lock_;
   std::condition_variable ended_;
   bool finished_ = false;

@@ -69,7 +69,7 @@ def run(scene, threads=None, progress=True, output=None, force=False, quiet=Fals
     try:
         with _stop_on_sigterm():
             while not job.wait(_POLL_SECONDS):
-                line.update(job.done)
+                line.update(job.done, job.periods)
     except BaseException:
         job.cancel()
         job.wait(-1)

@@ -28,6 +28,26 @@ TEST_CASE("info summarises a finished run", "[apps][info]") {
   CHECK_THAT(info.output, !Catch::Contains("INCOMPLETE"));
 }
 
+TEST_CASE("info counts symmetry-limited members apart from unresolved ones", "[apps][info]") {
+  const auto dir = scratch_directory("info-flags");
+  write_text(dir / "s.toml",
+             "[model]\nrows = 4\n[drive]\ng = [0.01]\n[sweep]\nA = [1, 6]\n[initial]\nkinds = [\"AFM\"]\n"
+             "replicas = 2\n");
+  const auto run =
+      run_cli("run '" + (dir / "s.toml").string() + "' -o '" + (dir / "s.h5").string() + "'", dir);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const auto info = run_cli("info '" + (dir / "s.h5").string() + "'", dir);
+  INFO(info.output);
+  CHECK(info.exit_code == 0);
+  // A = 6 is CP: its D is decided by the integration error, which is no bound, but not "not resolved"
+  CHECK_THAT(info.output, Catch::Contains("regime       AFM 2 CP 2"));
+  CHECK_THAT(info.output, Catch::Contains("warning      2 members whose D the integration error decides"));
+  CHECK_THAT(info.output, !Catch::Contains("not resolved"));
+  CHECK_THAT(run.output, Catch::Contains("warning: 2 members whose D the integration error decides") &&
+                             !Catch::Contains("not resolved") && !Catch::Contains("tighten"));
+}
+
 TEST_CASE("info flags incomplete files and rejects others", "[apps][info]") {
   const auto dir = scratch_directory("info-incomplete");
   const auto scene =

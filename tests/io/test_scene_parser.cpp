@@ -78,6 +78,26 @@ TEST_CASE("grids are lists or ranges with linear or log spacing", "[io][scene]")
   CHECK(scene.A_values.back() == 14.0);
 }
 
+TEST_CASE("a range's points are the nearest doubles to its exact points, its ends exactly from and to",
+          "[io][scene]") {
+  const auto scene = parse_scene_text(
+      "[model]\nrows = 4\n[drive]\ng = { from = 1e-6, to = 10.0, count = 8, spacing = \"log\" }\n"
+      "[sweep]\nA = { from = 0.25, to = 11.0, count = 44 }\n",
+      "test.toml");
+  // 0.25 + k/4: the grid meets 3.75, 6, 7.25 and 8 (each came out one bit off as from + k/43 · 10.75)
+  REQUIRE(scene.A_values.size() == 44);
+  CHECK(scene.A_values[14] == 3.75);
+  CHECK(scene.A_values[23] == 6.0);
+  CHECK(scene.A_values[28] == 7.25);
+  CHECK(scene.A_values[31] == 8.0);
+  for (std::size_t i = 0; i < 44; ++i) CHECK(scene.A_values[i] == Approx(0.25 + double(i) / 4));
+  CHECK(scene.g_values.front() == 1e-6);  // exp(log(1e-6)) is 1.0000000000000004e-6
+  CHECK(scene.g_values.back() == 10.0);
+  const auto offsets =
+      parse_scene_text(minimal + "[initial]\noffset = { from = -3.0, to = 3.0, count = 7 }\n", "test.toml");
+  CHECK(offsets.offset_values == std::vector<double>{-3, -2, -1, 0, 1, 2, 3});
+}
+
 TEST_CASE("every option is read from its key", "[io][scene]") {
   const auto scene =
       parse_scene_text(minimal +
