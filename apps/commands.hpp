@@ -15,9 +15,12 @@ struct TableOptions {
   std::string stepper = std::string(kernels::default_stepper_name);
   double rtol = 1e-9;
   double estimator_rtol = 1e-12;  ///< W and S come from a run at this tolerance
+  double disorder = 0;            ///< σ_A of a quenched disorder of the rows' substrate strength (0: none)
+  std::uint64_t disorder_seed = 1;  ///< the seed of its realizations (draw r takes realization r)
   int replicas = 8;               ///< noise draws of each CP entry for its spread (1: none)
   std::uint64_t seed = 1;         ///< their seed
   std::string output;             ///< CSV path; empty: stdout only
+  bool force = false;             ///< replace an existing file that is not a table CSV of this command
   /// "triangular": the paper's window, every period [τ, τ + 2π] with τ in [4π, 6π] averaged
   /// (docs/model.md §3); "uniform": the plain mean of periods 3 and 4
   std::string window = "triangular";
@@ -82,6 +85,7 @@ struct CouplingsOptions {
   std::size_t range = 1;                ///< rows u = 1 .. range
   std::string row_length = "infinite";  ///< rotors per row, or "infinite"
   std::string output;                   ///< CSV path; empty: stdout only
+  bool force = false;                   ///< replace an existing file that is not a couplings CSV
 };
 int run_couplings(const CouplingsOptions& options);
 

@@ -11,6 +11,8 @@
 
 #include "commands.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/result_reader.hpp"
+#include "io/member_flags.hpp"
 #include "progress_line.hpp"
 
 namespace rotorsweep::apps {
@@ -47,24 +49,38 @@ void print_landscape(const io::Hdf5Location& file) {
   std::printf("\n");
 }
 
-/// A file of `rotorsweep slider`: the scan, the status counts, the friction's range and peak.
-void print_slider(const io::Hdf5Location& file) {
+/// A file of `rotorsweep slider`: the scan, the status counts, the friction's range and peak; of a scan
+/// that stopped early only the rows marked done (the others hold nothing yet), and how many they are.
+void print_slider(const io::Hdf5Location& file, bool complete) {
   const auto members = file.open_group("members");
-  const auto separation = members.read_doubles("separation");
-  std::printf("%-12s %zu\n", "members", separation.size());
+  const auto all = members.read_doubles("separation");
+  std::vector<signed char> done(all.size(), 1);
+  if (members.has("done")) done = members.read_flags("done");
+  const auto kept = [&](auto values) {
+    decltype(values) out;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (done[i]) out.push_back(values[i]);
+    return out;
+  };
+  const auto separation = kept(all);
+  std::printf("%-12s %zu\n", "members", all.size());
+  if (!complete)
+    std::printf(
+        "%-12s %zu of %zu members done by a scan that stopped early (continue it with slider --resume)\n",
+        "partial", separation.size(), all.size());
   // the speed and damping axes (files before them have neither column)
   for (const auto& [column, label, scale] :
        {std::tuple{"speed", "v (mm/s)", 1e3}, std::tuple{"damping", "damping", 1.0}})
     if (members.has(column)) {
-      std::vector<double> values = members.read_doubles(column);
+      std::vector<double> values = kept(members.read_doubles(column));
       for (double& v : values) v *= scale;
       print_range(label, values);
     }
   std::vector<double> millimetres;
   for (double h : separation) millimetres.push_back(h * 1e3);
   print_range("h (mm)", millimetres);
-  print_counts("status", members.read_strings("status"));
-  const auto friction = members.read_doubles("friction");
+  print_counts("status", kept(members.read_strings("status")));
+  const auto friction = kept(members.read_doubles("friction"));
   std::size_t peak = friction.size();
   for (std::size_t i = 0; i < friction.size(); ++i)
     if (std::isfinite(friction[i]) && (peak == friction.size() || friction[i] > friction[peak])) peak = i;
@@ -82,6 +98,9 @@ void print_slider(const io::Hdf5Location& file) {
 int run_info(const InfoOptions& options) {
   try {
     const auto file = io::Hdf5Location::open_file(options.file);
+    if (!io::is_rotorsweep_file(file))
+      throw std::runtime_error("'" + options.file + "' is not a rotorsweep file (" +
+                               io::rotorsweep_file_shape + ")");
     const bool complete = file.has_attribute("complete") && file.attribute_flag("complete");
     std::printf("%-12s %s%s\n", "file", options.file.c_str(),
                 complete ? "" : "  (INCOMPLETE: the run did not finish; do not trust it)");
@@ -96,7 +115,7 @@ int run_info(const InfoOptions& options) {
                   file.attribute_string("isa").c_str());
     if (file.has_attribute("kind")) {
       print_landscape(file);
-      if (file.attribute_string("kind") == "slider") print_slider(file);
+      if (file.attribute_string("kind") == "slider") print_slider(file, complete);
       if (options.scene && file.has_attribute("scene"))  // slider files store their scene too
         std::printf("\n# scene\n%s\n", file.attribute_string("scene").c_str());
       return complete ? 0 : 1;
@@ -158,21 +177,20 @@ int run_info(const InfoOptions& options) {
                     *std::max_element(per_row.begin(), per_row.end()));
     }
     if (members.has("dissipation_resolved")) {
-      const auto resolved = kept(members.read_integers("dissipation_resolved"));
-      const auto status = kept(members.read_strings("status"));
-      std::size_t unresolved = 0;
-      for (std::size_t i = 0; i < resolved.size(); ++i) unresolved += status[i] == "ok" && !resolved[i];
-      if (unresolved > 0)
+      const auto counts = io::count_member_flags(members, done);
+      if (counts.unresolved > 0)
         std::printf("%-12s %zu members whose D is not resolved (dissipation_error >= 0.1 |D|)\n", "warning",
-                    unresolved);
-      if (members.has("symmetry_limited")) {
-        const auto symmetry = kept(members.read_integers("symmetry_limited"));
-        std::size_t limited = 0;
-        for (std::size_t i = 0; i < symmetry.size(); ++i) limited += status[i] == "ok" && symmetry[i] != 0;
-        if (limited > 0)
-          std::printf("%-12s %zu members whose D the integration error decides (symmetry_limited)\n",
-                      "warning", limited);
-      }
+                    counts.unresolved);
+      if (counts.symmetry_limited > 0)
+        std::printf(
+            "%-12s %zu members whose D the integration error decides (symmetry_limited; no error "
+            "bounds it, not counted as resolved)\n",
+            "warning", counts.symmetry_limited);
+      if (counts.shadow_departed > 0)
+        std::printf(
+            "%-12s %zu members whose shadow run reached another attractor (shadow_departed; no "
+            "error estimate)\n",
+            "warning", counts.shadow_departed);
     }
     std::printf("%-12s /members:", "datasets");
     for (const auto& name : members.members()) std::printf(" %s", name.c_str());

@@ -18,6 +18,7 @@
 #include "landscape/quasi_static_cycle.hpp"
 #include "progress_line.hpp"
 #include "remove_on_signal.hpp"
+#include "usable_memory.hpp"
 
 namespace rotorsweep::apps {
 
@@ -31,10 +32,13 @@ using Clock = std::chrono::steady_clock;
 int write_landscape_file(const std::string& path, bool force, const std::string& kind,
                          const std::function<void(const io::Hdf5Location&)>& fill) {
   std::optional<io::OutputTarget> target;
+  std::optional<RemoveOnSignal> on_signal;
   std::optional<io::Hdf5Location> file;
   try {
     target.emplace(path, std::vector<std::string>{}, io::Replaceable::hdf5, force);
+    on_signal.emplace(*target);
     file = io::Hdf5Location::create_file(target->temporary());
+    target->claim_temporary();
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << " (-o)\n";
     return 2;
@@ -46,7 +50,6 @@ int write_landscape_file(const std::string& path, bool force, const std::string&
     file->set_attribute("revision", std::string(revision));
     file->flush();
     const auto start = Clock::now();
-    std::optional<RemoveOnSignal> on_signal(std::in_place, *target);
     fill(*file);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     file->set_attribute("wall_seconds", wall);
@@ -112,6 +115,15 @@ int run_landscape_chambers(const LandscapeOptions& o) {
               << ")\n";
     return 2;
   }
+  // per cell: its counts, zone and chamber, the labelling's scratch, and the counts and a field written
+  const double cell_bytes =
+      sizeof(landscape::ChamberCell) + 5 * sizeof(std::int32_t) + 10 * sizeof(std::int64_t);
+  if (!fits_in_memory(
+          double(o.A_cells) * double(o.tau_cells) * cell_bytes, "landscape chambers",
+          " for its " + std::to_string(o.A_cells) + " × " + std::to_string(o.tau_cells) + " cells",
+          "use fewer --A-cells or --tau-cells"))
+    return 2;
+  const RemoveOnSignal on_start;  // a long coupling table comes first
   const landscape::ChamberGrid grid{o.A_min, o.A_max, o.A_cells, o.tau_cells, coefficients(o)};
   const std::size_t cells = std::size_t(grid.A_cells) * grid.tau_cells;
   const int min_cells =
@@ -165,6 +177,12 @@ int run_landscape_chambers(const LandscapeOptions& o) {
 }
 
 int run_landscape_curves(const LandscapeOptions& o) {
+  // a curve at a time: its points and the three columns written
+  const double point_bytes = sizeof(landscape::BifurcationPoint) + 3 * sizeof(double);
+  if (!fits_in_memory(double(o.samples) * point_bytes, "landscape curves",
+                      " for " + std::to_string(o.samples) + " samples per curve", "use fewer --samples"))
+    return 2;
+  const RemoveOnSignal on_start;
   return write_landscape_file(o.output, o.force, "curves", [&](const io::Hdf5Location& file) {
     for (auto curve : landscape::all_curves) {
       const auto points = landscape::sample_curve(curve, o.samples, o.A_max, coefficients(o));
@@ -184,6 +202,11 @@ int run_landscape_curves(const LandscapeOptions& o) {
 }
 
 int run_landscape_jump_friction(const LandscapeOptions& o) {
+  // the eleven columns written, one value per A
+  if (!fits_in_memory(double(o.count) * 11 * sizeof(double), "landscape jump-friction",
+                      " for " + std::to_string(o.count) + " A values", "use a smaller --count"))
+    return 2;
+  const RemoveOnSignal on_start;  // a long coupling table comes first
   const auto k = coefficients(o);
   const bool cp_grid = o.J_A_min == 0 && o.J_A_max == 0;
   const double lo = cp_grid ? landscape::A_minus(k) : o.J_A_min,

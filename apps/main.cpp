@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 
@@ -76,14 +77,37 @@ int main(int argc, char** argv) {
           "Noise draws of each CP entry for its spread, global error and symmetry-limited count (1: none)")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
-  table_cmd->add_option("--seed", table.seed, "Seed of those draws")->capture_default_str();
+  const CLI::Validator seed_value(
+      [](const std::string& text) {  // as a scene's seeds: 0 … 2⁶³ − 1, no sign, exponent or rounding
+        const bool digits =
+            !text.empty() && text.size() <= 19 && text.find_first_not_of("0123456789") == std::string::npos;
+        return digits && std::stoull(text) <= std::uint64_t(INT64_MAX)
+                   ? std::string()
+                   : "must be an integer from 0 to 9223372036854775807";
+      },
+      "SEED");
+  table_cmd->add_option("--seed", table.seed, "Seed of those draws")
+      ->check(seed_value)
+      ->capture_default_str();
   table_cmd
       ->add_option("--window", table.window,
                    "triangular: the paper's average over periods [tau, tau + 2 pi], tau in [4 pi, 6 pi]; "
                    "uniform: the mean of periods 3 and 4")
       ->check(CLI::IsMember({"triangular", "uniform"}))
       ->capture_default_str();
+  table_cmd
+      ->add_option(
+          "--disorder", table.disorder,
+          "sigma_A of a quenched disorder of the rows' substrate strength, A_j = A (1 + sigma xi_j): "
+          "a physical symmetry breaking, so that the CP entries' errors are bounds (0: none)")
+      ->check(finite & CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  table_cmd->add_option("--disorder-seed", table.disorder_seed, "Seed of the disorder's realizations")
+      ->check(seed_value)
+      ->capture_default_str();
   table_cmd->add_option("-o,--output", table.output, "Write the table as CSV to this file");
+  table_cmd->add_flag("--force", table.force,
+                      "Replace an existing file that is not a table this command wrote");
 
   // the scene, -o, --threads, -q and --force of a command that runs a scene file
   const auto add_scene_options = [](CLI::App* cmd, SceneCommandOptions& options, const char* scene_help,
@@ -222,6 +246,8 @@ int main(int argc, char** argv) {
       ->check(row_length)
       ->capture_default_str();
   couplings_cmd->add_option("-o,--output", couplings.output, "Also write the table as CSV to this file");
+  couplings_cmd->add_flag("--force", couplings.force,
+                          "Replace an existing file that is not a table this command wrote");
 
   auto* bench_cmd = app.add_subcommand("bench", "Measure speed");
   bench_cmd->require_subcommand(1);

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
+#include "io/member_columns.hpp"
 #include "io/output_target.hpp"
 #include "io/result_file.hpp"
 #include "io/result_reader.hpp"
@@ -19,6 +20,8 @@
 #include "io/slider_result_file.hpp"
 #include "io/slider_scene_parser.hpp"
 #include "remove_on_signal.hpp"
+#include "run_support.hpp"
+#include "usable_memory.hpp"
 
 namespace rotorsweep::apps {
 
@@ -27,7 +30,7 @@ namespace {
 /// A shard's identity as its attributes state it.
 struct ShardFile {
   std::string path, scene_text, scene_path, version, device, isa;
-  std::size_t index = 0, count = 0, plan_members = 0;
+  std::size_t index = 0, count = 0;
   bool slider = false;  ///< a slider scan's shard (`rotorsweep slider --shard`)
   double wall_seconds = 0, threads = 1, lane_width = 1, lane_occupancy = 0;
 };
@@ -44,13 +47,13 @@ ShardFile describe(const std::string& path, const io::Hdf5Location& file) {
   shard.device = file.has_attribute("device") ? file.attribute_string("device") : "cpu";
   shard.isa = file.has_attribute("isa") ? file.attribute_string("isa") : "unknown";
   shard.version = io::written_by(file);
-  shard.index = std::size_t(file.attribute_double("shard_index"));
-  shard.count = std::size_t(file.attribute_double("shard_count"));
-  shard.plan_members = std::size_t(file.attribute_double("plan_members"));
+  const auto label = io::MemberTableFile::shard_label(file).value();
+  shard.index = label.index;
+  shard.count = label.count;
   shard.slider = file.has_attribute("kind") && file.attribute_string("kind") == "slider";
   shard.wall_seconds = file.attribute_double("wall_seconds");
   shard.threads = file.attribute_double("threads");
-  if (!shard.slider) {  // the slider's lanes are not counted
+  if (!shard.slider && file.has_attribute("lane_width")) {  // the slider's lanes are not counted
     shard.lane_width = file.attribute_double("lane_width");
     shard.lane_occupancy = file.attribute_double("lane_occupancy");
   }
@@ -79,6 +82,7 @@ int run_merge(const MergeOptions& options) {
   std::optional<ShardFile> first;
   std::set<std::string> isas;  // shards run by different binaries give the same bits; all are named
   ensemble::SweepStatistics stats;
+  double row_bytes = 0;  // of the output's /members
   try {
     std::map<std::size_t, std::string> seen;  // shard index → file
     std::vector<char> covered;
@@ -93,18 +97,27 @@ int run_merge(const MergeOptions& options) {
         else
           scene = io::parse_scene_text(shard.scene_text, shard.scene_path);
         const std::size_t plan_members = shard.slider ? slider.member_count() : scene.member_count();
-        if (plan_members != shard.plan_members)
-          throw std::runtime_error("'" + path + "': its plan size does not match its scene");
         if (shard.version != program_identity())
           throw std::runtime_error("'" + path + "' was written by rotorsweep " + shard.version +
                                    ", this is " + program_identity() +
                                    ": merge with the program that ran the shards");
+        row_bytes =
+            shard.slider
+                ? 1 + io::table_row_bytes(io::slider_columns(slider, ensemble::slider_timeline(slider)))
+                : io::member_row_bytes(io::member_columns(scene));
+        // the plan's coverage mask, and a block of rows read and one written
+        if (!fits_in_memory(double(plan_members) + 2 * double(block_members) * row_bytes, "merge",
+                            " for a plan of " + std::to_string(plan_members) + " members",
+                            "merge on a larger machine"))
+          return 2;
         covered.assign(plan_members, 0);
       }
       check_same_plan(*first, shard);
-      if (shard.index < 1 || shard.index > shard.count)
-        throw std::runtime_error("'" + path + "': shard index " + std::to_string(shard.index) +
-                                 " is outside 1 … " + std::to_string(shard.count) + " (its shard_count)");
+      // its kind, plan size and every dataset's shape and type, against the scene
+      if (first->slider)
+        io::SliderResultFile::check_file(file, slider);
+      else
+        io::ResultFile::check_file(file, scene);
       isas.insert(shard.isa);
       if (const auto [at, fresh] = seen.emplace(shard.index, path); !fresh)
         throw std::runtime_error("'" + path + "' and '" + at->second + "' are both shard " +
@@ -155,6 +168,13 @@ int run_merge(const MergeOptions& options) {
     std::cerr << "error: " << e.what() << " (-o)\n";
     return 2;
   }
+  const std::size_t plan_members = first->slider ? slider.member_count() : scene.member_count();
+  if (!fits_on_disk(double(plan_members) * row_bytes +
+                        (first->slider ? io::SliderResultFile::finishing_bytes(slider, false)
+                                       : io::ResultFile::finishing_bytes(scene, false)),
+                    "the merged file's " + std::to_string(plan_members) + " members and its curves",
+                    target->temporary(), "Free some space there, or merge elsewhere"))
+    return 2;
   // second pass: the shards' rows, a block at a time, into their plan rows of the output
   std::size_t members = 0;
   try {
@@ -163,6 +183,7 @@ int run_merge(const MergeOptions& options) {
                                     launcher::joined({isas.begin(), isas.end()})};
     if (first->slider) {
       io::SliderResultFile out(target->temporary(), slider, provenance);
+      target->claim_temporary();
       for (const auto& path : options.shards) out.copy_done_rows(io::Hdf5Location::open_file(path));
       out.finish(stats.wall_seconds, stats.threads);
       out.close();
@@ -170,6 +191,7 @@ int run_merge(const MergeOptions& options) {
     } else {
       const ensemble::MemberPlan plan(scene);
       io::ResultFile out(target->temporary(), scene, provenance);
+      target->claim_temporary();
       for (const auto& path : options.shards) {
         const auto file = io::Hdf5Location::open_file(path);
         const std::size_t rows = io::member_rows(file);

@@ -108,7 +108,7 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
   std::string partial;
   if (const int status = prepare_mpi_output(
           mpi, options, options.resume, options.shard, path, target, partial,
-          [&](const std::string& at) { return fits_on_disk(scene, scene.member_count(), at); });
+          [&](const std::string& at) { return fits_on_disk(scene, scene.member_count(), false, at); });
       status != 0)
     return status;
 
@@ -181,6 +181,7 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
     std::vector<std::size_t> per_rank(std::size_t(mpi.size()), 0);
     try {
       io::ResultFile out(partial, scene, provenance);
+      target->claim_temporary();
       const std::size_t joined = join_rank_files(out, scene, plan, partial, mpi.size(), per_rank);
       std::string shares;
       for (std::size_t r = 0; r < per_rank.size(); ++r)

@@ -27,7 +27,9 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
           prepare_mpi_output(mpi, options, options.resume, options.shard, path, target, partial,
                              [&](const std::string& at) {
                                const double members = double(scene.member_count());
-                               return fits_on_disk(2 * members * row_bytes, members, at,
+                               return fits_on_disk(2 * members * row_bytes +
+                                                       io::SliderResultFile::finishing_bytes(scene, false),
+                                                   "the results of the ranks' files and the joined file", at,
                                                    "Split the scan (fewer separations or replicas)");
                              });
       status != 0)
@@ -76,6 +78,7 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
   if (root) {
     try {
       io::SliderResultFile out(partial, scene, provenance);
+      target->claim_temporary();
       std::size_t joined = 0;
       for (int r = 0; r < mpi.size(); ++r) {
         const std::string from = rank_file(partial, r);

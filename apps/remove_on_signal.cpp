@@ -11,9 +11,10 @@ namespace rotorsweep::apps {
 
 namespace {
 
-constexpr std::size_t path_bytes = 4096, most_directories = 16;
+constexpr std::size_t path_bytes = 4096, most_directories = 16, most_locks = 8;
 char temporary_path[path_bytes];
-char lock_path[path_bytes];
+char lock_paths[most_locks][path_bytes];
+std::size_t lock_count = 0;
 char directories[most_directories][path_bytes];
 std::size_t directory_count = 0;
 
@@ -26,7 +27,7 @@ bool copy_path(const std::string& path, char* buffer) {
 
 extern "C" void remove_and_exit(int number) {
   if (temporary_path[0]) ::unlink(temporary_path);
-  if (lock_path[0]) ::unlink(lock_path);  // the lock itself goes with the process
+  for (std::size_t i = 0; i < lock_count; ++i) ::unlink(lock_paths[i]);     // the locks go with the process
   for (std::size_t i = directory_count; i-- > 0;) ::rmdir(directories[i]);  // innermost first
   const char* message =
       number == SIGTERM ? "stopped by SIGTERM: nothing written\n" : "stopped by SIGINT: nothing written\n";
@@ -36,10 +37,16 @@ extern "C" void remove_and_exit(int number) {
 
 }  // namespace
 
+RemoveOnSignal::RemoveOnSignal() {
+  previous_int_ = std::signal(SIGINT, &remove_and_exit);
+  previous_term_ = std::signal(SIGTERM, &remove_and_exit);
+}
+
 RemoveOnSignal::RemoveOnSignal(const io::OutputTarget& target) {
+  // the handler may run while the paths are being copied: it sees a count only once its paths are there
   if (!copy_path(target.temporary(), temporary_path)) temporary_path[0] = '\0';
-  if (!copy_path(target.lock_file(), lock_path)) lock_path[0] = '\0';
-  directory_count = 0;
+  for (const auto& lock : target.lock_files())
+    if (lock_count < most_locks && copy_path(lock, lock_paths[lock_count])) ++lock_count;
   for (const auto& directory : target.created_directories())
     if (directory_count < most_directories && copy_path(directory.string(), directories[directory_count]))
       ++directory_count;
@@ -50,6 +57,9 @@ RemoveOnSignal::RemoveOnSignal(const io::OutputTarget& target) {
 RemoveOnSignal::~RemoveOnSignal() {
   std::signal(SIGINT, previous_int_);
   std::signal(SIGTERM, previous_term_);
+  temporary_path[0] = '\0';
+  lock_count = 0;
+  directory_count = 0;
 }
 
 }  // namespace rotorsweep::apps

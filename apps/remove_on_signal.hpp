@@ -7,11 +7,14 @@
 namespace rotorsweep::apps {
 
 /// While an instance lives, SIGINT and SIGTERM end the process at once (the computations these
-/// commands run have no stopping points): the handler unlinks `target`'s temporary file, removes
-/// the directories made for it, says so on stderr and exits with 128 + the signal's number (130,
-/// 143). The previous handlers come back after it.
+/// commands run have no stopping points), also where the process was started ignoring them: the
+/// handler unlinks `target`'s temporary file and lock files, removes the directories made for it,
+/// says so on stderr and exits with 128 + the signal's number (130, 143). Without a target (the
+/// computation before the file exists) there is nothing to remove. The previous handlers come back
+/// after it, and an instance nested in another leaves the outer one nothing to remove.
 class RemoveOnSignal {
  public:
+  RemoveOnSignal();
   explicit RemoveOnSignal(const io::OutputTarget& target);
   ~RemoveOnSignal();
   RemoveOnSignal(const RemoveOnSignal&) = delete;

@@ -2,11 +2,11 @@
 // streaming finished members into OUT.h5.partial, and put the complete file in place at the end.
 
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <optional>
 
 #include "build_info.hpp"
@@ -14,9 +14,11 @@
 #include "ensemble/engine/instruction_set.hpp"
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_launch.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "ensemble/rows/working_set.hpp"
+#include "io/member_flags.hpp"
 #include "io/member_stream.hpp"
 #include "io/output_target.hpp"
 #include "io/result_file.hpp"
@@ -49,58 +51,65 @@ std::string output_path(const SceneCommandOptions& options, const std::string& s
 
 std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t plan_members) {
   if (text.empty()) return std::nullopt;
-  std::size_t index = 0, count = 0;
-  int used = 0;
-  if (std::sscanf(text.c_str(), "%zu/%zu%n", &index, &count, &used) != 2 || used != int(text.size()) ||
-      index < 1 || index > count)
-    throw std::invalid_argument("--shard '" + text + "': must be I/N with 1 <= I <= N (e.g. 2/8)");
+  // digits only (no sign, space or exponent), each part at most max_shards
+  constexpr std::size_t max_shards = 1000000000;
+  const auto part = [&](std::size_t begin, std::size_t end) -> std::size_t {
+    if (begin == end || end - begin > 10 || text.find_first_not_of("0123456789", begin) < end) return 0;
+    const std::size_t value = std::stoull(text.substr(begin, end - begin));
+    return value <= max_shards ? value : 0;
+  };
+  const std::size_t slash = text.find('/');
+  const std::size_t index = slash == std::string::npos ? 0 : part(0, slash),
+                    count = slash == std::string::npos ? 0 : part(slash + 1, text.size());
+  if (index < 1 || count < 1 || index > count)
+    throw std::invalid_argument("--shard '" + text + "': must be I/N with 1 <= I <= N <= " +
+                                std::to_string(max_shards) + " (e.g. 2/8)");
   return io::ShardLabel{index, count, plan_members};
 }
 
-/// Members that did not finish, by status, and finished members whose D is not resolved, read from
-/// the written file a block at a time.
+/// Members that did not finish, by status, and finished members whose D is not resolved, for each
+/// reason apart, read from the written file a block at a time.
 void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene) {
-  const auto members = file.open_group("members");
-  const std::size_t rows = members.shape("status").first, block = 1 << 16;
-  const bool dissipation = members.has("dissipation_resolved"), shadows = members.has("symmetry_limited");
-  std::map<std::string, std::size_t> failures;
-  std::size_t unresolved = 0, limited = 0;
-  for (std::size_t first = 0; first < rows; first += block) {
-    const std::size_t count = std::min(block, rows - first);
-    const auto status = members.read_rows_strings("status", first, count);
-    const auto resolved = dissipation ? members.read_rows_integers("dissipation_resolved", first, count)
-                                      : std::vector<std::int64_t>(count, 1);
-    const auto symmetry = shadows ? members.read_rows_integers("symmetry_limited", first, count)
-                                  : std::vector<std::int64_t>(count, 0);
-    for (std::size_t i = 0; i < count; ++i) {
-      if (status[i] != "ok") ++failures[status[i]];
-      unresolved += status[i] == "ok" && resolved[i] == 0;
-      limited += status[i] == "ok" && symmetry[i] != 0;
-    }
-  }
-  if (!failures.empty()) {
+  const auto counts = io::count_member_flags(file.open_group("members"));
+  if (!counts.failures.empty()) {
     std::fprintf(stderr, "warning: members that did not finish (their observables are NaN):");
-    for (const auto& [name, count] : failures) std::fprintf(stderr, " %s %zu", name.c_str(), count);
+    for (const auto& [name, count] : counts.failures) std::fprintf(stderr, " %s %zu", name.c_str(), count);
     std::fprintf(stderr, "; see /members/status\n");
   }
-  if (unresolved > 0)
+  if (counts.unresolved > 0)
     std::fprintf(stderr,
                  "warning: %zu members whose D is not resolved (dissipation_error >= 0.1 |D|); %s; see "
                  "/members/dissipation_resolved\n",
-                 unresolved,
+                 counts.unresolved,
                  scene.thermal.on() ? "at T > 0 this is the statistical error: average more periods"
                                     : "tighten numerics.rtol and atol");
-  if (limited > 0)
+  if (counts.symmetry_limited > 0)
     std::fprintf(
         stderr,
         "warning: %zu members whose D the integration error decides (symmetry-limited: they slip and no "
-        "disorder or temperature exceeds rtol, so D depends on rtol itself); give the scene disorder or "
-        "temperature above rtol (README: regime rule); see /members/symmetry_limited\n",
-        limited);
+        "disorder or temperature exceeds rtol, so D depends on rtol itself and no error bounds it; not "
+        "counted as resolved); a tighter rtol does not help: give the scene disorder (e.g. [disorder] "
+        "A = 1e-6) or a temperature above rtol (README: regime rule); see /members/symmetry_limited\n",
+        counts.symmetry_limited);
+  if (counts.shadow_departed > 0)
+    std::fprintf(
+        stderr,
+        "warning: %zu members whose shadow run reached another attractor (another regime, slips per period "
+        "or domain walls), so it estimates no error (dissipation_error infinite); a tighter rtol does not "
+        "help: break the symmetry physically with disorder (e.g. [disorder] A = 1e-6) or a temperature "
+        "above rtol; see /members/shadow_departed\n",
+        counts.shadow_departed);
+  if (counts.untold > 0)
+    std::fprintf(
+        stderr,
+        "warning: %zu CP members whose slips could not be told jumps or smooth (their slower rerun at "
+        "g/10 did not finish): slip_jumps and slip_smooth are NaN; see /members/slip_jumps\n",
+        counts.untold);
 }
 
 std::vector<char> check_partial(const std::string& partial, const std::string& scene_text,
-                                const std::optional<io::ShardLabel>& shard, double& earlier_seconds) {
+                                const std::optional<io::ShardLabel>& shard, double& earlier_seconds,
+                                const std::function<void(const io::Hdf5Location&)>& check_file) {
   if (!std::filesystem::exists(partial))
     throw std::runtime_error("--resume: there is no '" + partial +
                              "' to resume (a run that stops early leaves it)");
@@ -113,13 +122,16 @@ std::vector<char> check_partial(const std::string& partial, const std::string& s
   if (io::written_by(file) != program_identity())
     throw std::runtime_error("--resume: '" + partial + "' was written by rotorsweep " + io::written_by(file) +
                              ", this is " + program_identity());
+  try {
+    check_file(file);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("--resume: " + std::string(e.what()) + " (edited?); start afresh with --force");
+  }
   const auto part = [](std::size_t index, std::size_t count) {
     return std::to_string(index) + "/" + std::to_string(count);
   };
-  const std::string theirs = file.has_attribute("shard_index")
-                                 ? part(std::size_t(file.attribute_double("shard_index")),
-                                        std::size_t(file.attribute_double("shard_count")))
-                                 : "";
+  const auto stated = io::MemberTableFile::shard_label(file);
+  const std::string theirs = stated ? part(stated->index, stated->count) : "";
   const std::string ours = shard ? part(shard->index, shard->count) : "";
   if (theirs != ours)
     throw std::runtime_error("--resume: '" + partial + "' holds " +
@@ -129,38 +141,46 @@ std::vector<char> check_partial(const std::string& partial, const std::string& s
   return io::read_done(file);
 }
 
-bool fits_on_disk(double needed, double members, const std::string& partial, const std::string& advice) {
+bool fits_on_disk(double needed, const std::string& what, const std::string& partial,
+                  const std::string& advice) {
   std::error_code error;
   auto directory = std::filesystem::absolute(partial, error).parent_path();
   const auto space = std::filesystem::space(directory, error);
   if (error || needed <= 0.95 * double(space.available)) return true;
-  std::fprintf(
-      stderr,
-      "error: the plan's %.3g members need about %.3g GiB on disk for their results; %s has %.3g GiB "
-      "free. %s.\n",
-      members, needed / 0x1p30, directory.c_str(), double(space.available) / 0x1p30, advice.c_str());
+  const auto amount = [](double bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, bytes < 0x1p27 ? "%.3g MiB" : "%.3g GiB",
+                  bytes < 0x1p27 ? bytes / 0x1p20 : bytes / 0x1p30);
+    return std::string(text);
+  };
+  std::fprintf(stderr, "error: %s need about %s on disk; %s has %s free. %s.\n", what.c_str(),
+               amount(needed).c_str(), directory.c_str(), amount(double(space.available)).c_str(),
+               advice.c_str());
   return false;
 }
 
-bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, const std::string& partial) {
-  return fits_on_disk(double(rows) * io::member_row_bytes(io::member_columns(scene)), double(rows), partial,
+bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, bool shard, const std::string& partial) {
+  char what[96];
+  std::snprintf(what, sizeof what, "the results of the plan's %.3g members and the curves written at the end",
+                double(rows));
+  return fits_on_disk(double(rows) * io::member_row_bytes(io::member_columns(scene)) +
+                          io::ResultFile::finishing_bytes(scene, shard),
+                      what, partial,
                       std::string("Split the sweep (fewer A, g, replicas per scene, or --shard)") +
                           (scene.period_series ? " or switch off observables.period_series" : ""));
 }
 
 bool fits_in_memory(const ensemble::Scene& scene, int threads) {
   if (scene.device == ensemble::Device::gpu) return true;  // the GPU's scratch is checked by the parser
-  const double block = ensemble::lane_block_bytes(scene), needed = double(threads) * block;
-  const double usable = usable_memory_bytes();
-  if (needed <= 0.8 * usable) return true;
-  std::fprintf(
-      stderr,
-      "error: the sweep needs about %.3g GiB to work in (%d threads × %.3g GiB, one lane block each at "
-      "N = %zu), more than 80 %% of the %.3g GiB this process may use (the machine's memory, ulimit -v "
-      "or its cgroup's limit); use fewer --threads or rows%s\n",
-      needed / 0x1p30, threads, block / 0x1p30, scene.max_rows(), usable / 0x1p30,
-      scene.couplings.nearest_neighbour() ? "" : " (a dense coupling table grows as N²: a shorter range)");
-  return false;
+  const double block = ensemble::lane_block_bytes(scene);
+  char how[160];
+  std::snprintf(how, sizeof how, " to work in (%d threads × %.3g GiB, one lane block each at N = %zu)",
+                threads, block / 0x1p30, scene.max_rows());
+  return fits_in_memory(
+      double(threads) * block, "the sweep", how,
+      std::string("use fewer --threads or rows") +
+          (scene.couplings.nearest_neighbour() ? ""
+                                               : " (a dense coupling table grows as N²: a shorter range)"));
 }
 
 /// The description of the run on stderr.
@@ -197,13 +217,24 @@ std::string resume_command(const std::string& command, const SceneCommandOptions
   return line + " --resume";
 }
 
+bool partial_lost(const io::OutputTarget& target, std::size_t done) {
+  if (target.temporary_is_ours()) return false;
+  std::fprintf(stderr,
+               "error: %s is no longer the file this run wrote (another process replaced or removed it): the "
+               "%zu members done are lost\n",
+               target.temporary().c_str(), done);
+  return true;
+}
+
 int keep_failed_run(io::OutputTarget& target, const std::string& what, std::size_t done, std::size_t rows,
                     const std::string& resume) {
   target.keep();  // the rows marked done are on disk: keep them for --resume, and say so
+  std::fprintf(stderr, "error: %s\n", what.c_str());
+  if (partial_lost(target, done)) return 1;
   std::fprintf(stderr,
-               "error: %s\n%zu of %zu members are kept in %s (not a result: complete = FALSE); once the "
-               "cause is fixed, resume with: %s\n",
-               what.c_str(), done, rows, target.temporary().c_str(), resume.c_str());
+               "%zu of %zu members are kept in %s (not a result: complete = FALSE); once the cause is fixed, "
+               "resume with: %s\n",
+               done, rows, target.temporary().c_str(), resume.c_str());
   return 1;
 }
 
@@ -217,6 +248,7 @@ int keep_stopped_run(io::OutputTarget& target, const std::function<void()>& keep
               << "\n";
   }
   target.keep();
+  if (partial_lost(target, done)) return 128 + (signal_number ? signal_number : SIGINT);
   std::fprintf(stderr,
                "\nstopped by %s: %zu of %zu members done, kept in %s (not a result: complete = FALSE).\n"
                "resume with: %s\n",
@@ -233,6 +265,9 @@ int run_sweep_command(const RunOptions& options) {
       io::check_device(scene);
     }
   } catch (const io::SceneError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const ensemble::GpuLaunchError& e) {  // the GPU's launch from the environment, read by the check
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
@@ -261,6 +296,7 @@ int run_sweep_command(const RunOptions& options) {
   }
   const std::string path = output_path(options, scene.output_path, shard);
   std::optional<io::OutputTarget> target;
+  const StopOnSignals signals;  // from here on: a signal during the set-up stops the run before it starts
   if (!open_resumable_target(options, options.resume, path, target)) return 2;
   const std::string partial = target->temporary();
 
@@ -268,8 +304,14 @@ int run_sweep_command(const RunOptions& options) {
       !fits_on_disk(
           scene,
           shard ? (scene.member_count() + shard->count - shard->index) / shard->count : scene.member_count(),
-          partial))
+          shard.has_value(), partial))
     return 2;
+  if (options.resume &&
+      !fits_on_disk(io::ResultFile::finishing_bytes(scene, shard.has_value()),
+                    "the curves written at the end", partial, "Free some space there first")) {
+    target->keep();  // the partial file stays as it is
+    return 2;
+  }
 
   // the members to run, as plan indices: all of the plan or the shard, less those done before
   const ensemble::MemberPlan plan(scene);
@@ -282,8 +324,11 @@ int run_sweep_command(const RunOptions& options) {
   double earlier_seconds = 0;
   if (options.resume) {
     try {
-      const auto done = check_partial(partial, scene.text, shard, earlier_seconds);
+      const auto done =
+          check_partial(partial, scene.text, shard, earlier_seconds,
+                        [&](const io::Hdf5Location& f) { io::ResultFile::check_file(f, scene); });
       file.emplace(io::ResultFile::reopen(partial, scene));
+      target->claim_temporary();
       file->add_writer_isa(ensemble::instruction_set().name);
       for (std::size_t row = 0; row < done.size(); ++row)
         if (done[row])
@@ -301,6 +346,7 @@ int run_sweep_command(const RunOptions& options) {
                    io::Provenance{options.scene, version, revision, ensemble::device_label(scene),
                                   ensemble::instruction_set().name},
                    shard);
+      target->claim_temporary();
     } catch (const std::exception& e) {
       std::cerr << "error: creating " << partial << " failed: " << e.what() << "; "
                 << (target->replaced() ? "the previous file is unchanged" : "no file was written") << "\n";
@@ -322,7 +368,6 @@ int run_sweep_command(const RunOptions& options) {
   int signal_number = 0;
   std::string write_error, sweep_error;
   {
-    const StopOnSignals signals;
     io::MemberStream stream(*file, plan, {options.flush_seconds, options.flush_members},
                             [&signals] { signals.stop(); });
     try {
@@ -370,8 +415,10 @@ int run_sweep_command(const RunOptions& options) {
     target->commit();
   } catch (const std::exception& e) {
     target->keep();
-    std::cerr << "error: finishing " << path << " failed: " << e.what() << "; the members are kept in "
-              << partial << " (complete = FALSE); resume with: " << resume << "\n";
+    std::cerr << "error: finishing " << path << " failed: " << e.what() << "\n";
+    if (!partial_lost(*target, rows))
+      std::cerr << "the members are kept in " << partial << " (complete = FALSE); resume with: " << resume
+                << "\n";
     return 1;
   }
   std::fprintf(stderr, "wrote %s%s: %zu members in %s (%s, lane occupancy %.1f %%)\n", path.c_str(),

@@ -24,10 +24,15 @@ std::string output_path(const SceneCommandOptions& options, const std::string& s
                         const std::optional<io::ShardLabel>& shard);
 /// "I/N" with 1 ≤ I ≤ N; nothing for an empty text; throws std::invalid_argument otherwise.
 std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t plan_members);
-/// Checks that `partial` is an unfinished file of this scene (its text), shard and program, and
-/// returns its done mask and the wall time spent on it so far; throws std::runtime_error saying why not.
+/// Checks that `partial` is an unfinished file of this scene (its text), program, kind and shape
+/// (`check_file`: the kind's check of its attributes and datasets) and shard, and returns its done mask
+/// and the wall time spent on it so far; throws std::runtime_error saying why not.
 std::vector<char> check_partial(const std::string& partial, const std::string& scene_text,
-                                const std::optional<io::ShardLabel>& shard, double& earlier_seconds);
+                                const std::optional<io::ShardLabel>& shard, double& earlier_seconds,
+                                const std::function<void(const io::Hdf5Location&)>& check_file);
+/// Says so and returns true when the partial file is no longer the one this run wrote (another process
+/// replaced or removed it), so that its `done` members are lost.
+bool partial_lost(const io::OutputTarget& target, std::size_t done);
 /// A streamed run that failed (`what`): its rows marked done stay in the partial file for --resume;
 /// says so and how to resume, and returns exit code 1.
 int keep_failed_run(io::OutputTarget& target, const std::string& what, std::size_t done, std::size_t rows,
@@ -43,13 +48,15 @@ bool open_resumable_target(const SceneCommandOptions& options, bool resume, cons
 /// The command line that resumes a run: "rotorsweep COMMAND SCENE [-o OUT] [--shard I/N] --resume".
 std::string resume_command(const std::string& command, const SceneCommandOptions& options,
                            const std::string& shard);
-/// Members that did not finish, by status, and unresolved D, read from a written file (stderr).
+/// Members that did not finish, by status, and, each reason apart, those whose D is not resolved, read
+/// from a written file (stderr).
 void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene);
-/// Whether `needed` bytes for `members` members' results fit on the disk of `partial`; says how much
-/// they need, and `advice`, when not.
-bool fits_on_disk(double needed, double members, const std::string& partial, const std::string& advice);
-/// fits_on_disk for `rows` members of a row sweep.
-bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, const std::string& partial);
+/// Whether `needed` bytes fit on the disk of `partial` (95 % of its free space); says how much `what`
+/// (plural: "the results ... need") needs, and `advice`, when not.
+bool fits_on_disk(double needed, const std::string& what, const std::string& partial,
+                  const std::string& advice);
+/// fits_on_disk for `rows` members of a row sweep and the file's finishing writes (none in a shard).
+bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, bool shard, const std::string& partial);
 /// Whether every thread's lane block fits in 80 % of the memory this process may use; says how much
 /// it needs when not.
 bool fits_in_memory(const ensemble::Scene& scene, int threads);

@@ -24,6 +24,7 @@
 #include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
 #include "run_support.hpp"
+#include "usable_memory.hpp"
 
 namespace rotorsweep::apps {
 
@@ -67,6 +68,22 @@ void print_slider_header(const SliderOptions& options, const ensemble::SliderSce
 
 namespace {
 
+/// Whether a CPU scan's threads fit in memory: each thread's lane block and substrate tables, and its
+/// lanes' members' series (`row_bytes` each, and two more on their way into the file); says how much it
+/// needs when not.
+bool scan_fits_in_memory(const ensemble::SliderScene& scene, int threads, double row_bytes) {
+  if (scene.device == ensemble::Device::gpu) return true;  // the GPU's members live on the GPU
+  const double lanes = double(ensemble::instruction_set().lanes);
+  const double thread = ensemble::slider_thread_bytes(scene) + lanes * row_bytes;
+  char how[160];
+  std::snprintf(
+      how, sizeof how,
+      " to work in (%d threads × %.3g GiB: a lane block, substrate tables and %g members' series each)",
+      threads, thread / 0x1p30, lanes);
+  return fits_in_memory(double(threads) * thread + 2 * row_bytes, "the scan", how,
+                        "use fewer --threads, a smaller slider, fewer samples or series, or fewer periods");
+}
+
 /// Members that did not finish, by status, and the mean step attempts, read from the written file.
 void report_slider_outcome(const io::Hdf5Location& file, std::string& steps) {
   const auto members = file.open_group("members");
@@ -81,7 +98,7 @@ void report_slider_outcome(const io::Hdf5Location& file, std::string& steps) {
   }
   char text[64];
   std::snprintf(text, sizeof text, "%.0f step attempts per member", attempts / double(status.size()));
-  steps = text;
+  steps = status.empty() ? "no members run" : text;
   if (failures.empty()) return;
   std::fprintf(stderr, "warning: members that stopped early (their friction is NaN):");
   for (const auto& [name, count] : failures) std::fprintf(stderr, " %s %zu", name.c_str(), count);
@@ -98,7 +115,11 @@ int run_slider(const SliderOptions& options) {
       scene.device = options.device == "gpu" ? ensemble::Device::gpu : ensemble::Device::cpu;
       io::check_slider_device(scene);
     }
+    if (scene.device == ensemble::Device::gpu) ensemble::slider_device_label(scene);  // reads the launch
   } catch (const io::SceneError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const ensemble::GpuLaunchError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
@@ -116,22 +137,34 @@ int run_slider(const SliderOptions& options) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
+  const double row_bytes = io::table_row_bytes(io::slider_columns(scene, ensemble::slider_timeline(scene)));
+  if (!scan_fits_in_memory(scene, threads, row_bytes)) return 2;
 #if ROTORSWEEP_HAVE_MPI
   if (launched_by_mpi()) return run_slider_mpi(options, scene, threads);
 #endif
   const std::string path = output_path(options, scene.output_path, shard);
+  const StopOnSignals signals;  // from here on: a signal during the set-up stops the scan before it starts
   std::optional<io::OutputTarget> target;
   if (!open_resumable_target(options, options.resume, path, target)) return 2;
   const std::string partial = target->temporary();
   const std::size_t shard_members =
       shard ? (scene.member_count() + shard->count - shard->index) / shard->count : scene.member_count();
+  char what[96];
+  std::snprintf(what, sizeof what, "the results of the plan's %zu members and the curve written at the end",
+                shard_members);
   if (!options.resume &&
-      !fits_on_disk(double(shard_members) * (1 + io::table_row_bytes(io::slider_columns(
-                                                     scene, ensemble::slider_timeline(scene)))),
-                    double(shard_members), partial,
+      !fits_on_disk(double(shard_members) * (1 + row_bytes) +
+                        io::SliderResultFile::finishing_bytes(scene, shard.has_value()),
+                    what, partial,
                     "Split the scan (fewer separations or replicas per scene, or --shard) or switch off "
                     "observables.series"))
     return 2;
+  if (options.resume &&
+      !fits_on_disk(io::SliderResultFile::finishing_bytes(scene, shard.has_value()),
+                    "the curve written at the end", partial, "Free some space there first")) {
+    target->keep();  // the partial file stays as it is
+    return 2;
+  }
 
   std::optional<io::SliderResultFile> file;
   std::vector<std::size_t> to_run;  // plan indices
@@ -139,8 +172,11 @@ int run_slider(const SliderOptions& options) {
   double earlier_seconds = 0;
   try {
     if (options.resume) {
-      const auto done = check_partial(partial, scene.text, shard, earlier_seconds);
+      const auto done =
+          check_partial(partial, scene.text, shard, earlier_seconds,
+                        [&](const io::Hdf5Location& f) { io::SliderResultFile::check_file(f, scene); });
       file.emplace(io::SliderResultFile::reopen(partial, scene));
+      target->claim_temporary();
       file->add_writer_isa(ensemble::instruction_set().name);
       for (std::size_t row = 0; row < done.size(); ++row)
         if (done[row])
@@ -152,6 +188,7 @@ int run_slider(const SliderOptions& options) {
                    io::Provenance{options.scene, version, revision, ensemble::slider_device_label(scene),
                                   ensemble::instruction_set().name},
                    shard);
+      target->claim_temporary();
       for (std::size_t row = 0; row < file->rows(); ++row) to_run.push_back(file->plan_index_of(row));
     }
   } catch (const std::exception& e) {
@@ -170,7 +207,6 @@ int run_slider(const SliderOptions& options) {
   std::string sweep_error;
   int signal_number = 0;
   {
-    const StopOnSignals signals;
     try {
       outcome = io::stream_slider_scan(*file, scene, to_run,
                                        {threads, [&](std::size_t done) { progress.update(done); },
@@ -209,8 +245,10 @@ int run_slider(const SliderOptions& options) {
     target->commit();
   } catch (const std::exception& e) {
     target->keep();
-    std::cerr << "error: finishing " << path << " failed: " << e.what() << "; the members are kept in "
-              << partial << " (complete = FALSE); resume with: " << resume << "\n";
+    std::cerr << "error: finishing " << path << " failed: " << e.what() << "\n";
+    if (!partial_lost(*target, rows))
+      std::cerr << "the members are kept in " << partial << " (complete = FALSE); resume with: " << resume
+                << "\n";
     return 1;
   }
   std::fprintf(stderr, "wrote %s%s: %zu members in %s (%s)\n", path.c_str(),

@@ -1,6 +1,6 @@
 // `rotorsweep table`: integrates the paper's reference members (N = 20, g = 0.0011, FM and AFM
 // starts, periods 3 and 4 in the paper's triangular window, docs/model.md §3) and prints W, S, R
-// beside the paper's W, S, R.
+// beside the paper's W, S, R, with R's error and what it is (docs/numerics.md "The global error of D").
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -10,9 +10,11 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "commands.hpp"
+#include "csv_output.hpp"
 #include "ensemble/engine/replica_statistics.hpp"
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/member_plan.hpp"
@@ -29,9 +31,13 @@ namespace {
 
 namespace paper = ensemble::paper_table;
 
+/// The CSV file's first line; an existing file that starts as it does is replaced without --force.
+constexpr std::string_view csv_header =
+    "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,R_error_kind";
+
 /// The paper's scene as a sweep of the scalar lane with the W, S, R estimators, their moments and
-/// every period's record (for the triangular window).
-ensemble::Scene paper_scene(kernels::StepperId stepper, double rtol) {
+/// every period's record (for the triangular window); with a quenched disorder σ_A where given.
+ensemble::Scene paper_scene(kernels::StepperId stepper, double rtol, const ensemble::Disorder& disorder) {
   ensemble::Scene scene;
   scene.row_counts = {paper::rows};
   scene.rtol_values = {rtol};
@@ -46,7 +52,31 @@ ensemble::Scene paper_scene(kernels::StepperId stepper, double rtol) {
   scene.period_series = true;
   scene.stepper = stepper;
   scene.lanes = ensemble::LaneKind::scalar;
+  scene.disorder = disorder;
   return scene;
+}
+
+/// The paper's scene with slips counted, so that members whose averaged periods slip get their shadow
+/// runs: R's global error and its flags (ensemble/engine/shadow_run.hpp). Counting slips changes no bit.
+ensemble::Scene paper_scene_with_errors(kernels::StepperId stepper, double rtol,
+                                        const ensemble::Disorder& disorder) {
+  auto scene = paper_scene(stepper, rtol, disorder);
+  scene.observables.set(ensemble::Observable::slips, true);
+  return scene;
+}
+
+/// Half a unit of the last of the 7 significant digits the paper prints of `value`: its rounding.
+double paper_rounding(double value) {
+  return 0.5 * std::pow(10.0, std::floor(std::log10(std::fabs(value))) - 6);
+}
+
+/// What R's error is: a bound (resolved, or too large: unresolved), or none (symmetry-limited: the
+/// integration error decides R; shadow departed: no estimate), or the member failed.
+std::string error_flag(const ensemble::MemberResult& result) {
+  if (result.status != kernels::LaneStatus::ok) return std::string(kernels::status_name(result.status));
+  if (result.symmetry_limited) return "symmetry-limited";
+  if (result.shadow_departed) return "shadow-departed";
+  return result.dissipation_resolved() ? "resolved" : "unresolved";
 }
 
 /// A member's value of estimator `channel` (whose moment channel is `moment`) over the averaged
@@ -81,20 +111,22 @@ ensemble::Member paper_member(std::size_t index, const paper::Entry& entry, doub
   return m;
 }
 
-/// The paper's members; every member draws stream 0 of seed 1, whatever its place in the table.
-ensemble::SweepOutcome integrate(kernels::StepperId stepper, double rtol) {
+/// The paper's members in `scene`; every member draws stream 0 of seed 1 (and realization 0 of the
+/// disorder), whatever its place in the table.
+ensemble::SweepOutcome integrate(const ensemble::Scene& scene) {
+  const double rtol = scene.rtol_values.front();
   std::vector<ensemble::Member> members;
   for (const auto& entry : paper::entries) members.push_back(paper_member(members.size(), entry, rtol, 0));
-  return ensemble::run_sweep(paper_scene(stepper, rtol), members, 1, {});
+  return ensemble::run_sweep(scene, members, 1, {});
 }
 
-/// The CP entries over `replicas` noise draws of `seed`, with slips counted, so that each gets its
-/// global error and its symmetry-limited flag (ensemble/engine/shadow_run.hpp); then a line per entry.
-void print_cp_draws(kernels::StepperId stepper, double rtol, int replicas, std::uint64_t seed,
-                    bool triangular) {
-  auto scene = paper_scene(stepper, rtol);
+/// The CP entries over `replicas` noise draws of `seed` (draw r with the disorder's realization r), with
+/// slips counted, so that each gets its global error and its flags (ensemble/engine/shadow_run.hpp);
+/// then a line per entry.
+void print_cp_draws(kernels::StepperId stepper, double rtol, const ensemble::Disorder& disorder, int replicas,
+                    std::uint64_t seed, bool triangular) {
+  auto scene = paper_scene_with_errors(stepper, rtol, disorder);
   scene.seed = seed;
-  scene.observables.set(ensemble::Observable::slips, true);
   std::vector<ensemble::Member> members;
   std::vector<const paper::Entry*> entries;
   for (const auto& entry : paper::entries) {
@@ -108,7 +140,7 @@ void print_cp_draws(kernels::StepperId stepper, double rtol, int replicas, std::
       "\nCP entries over %d noise draws (seed %llu; the table's draw is draw 0):\n%5s %4s %14s %11s %11s "
       "%12s %11s %s\n",
       replicas, static_cast<unsigned long long>(seed), "A", "IC", "mean R", "sd", "sem", "(paper-mean)/sd",
-      "error/R", "symmetry-limited");
+      "error/R", "resolved / symmetry-limited / shadow departed");
   for (std::size_t e = 0; e < entries.size(); ++e) {
     const std::size_t first = e * std::size_t(replicas);
     const auto ok = [&](std::size_t k) {
@@ -120,17 +152,22 @@ void print_cp_draws(kernels::StepperId stepper, double rtol, int replicas, std::
     const auto error = ensemble::replica_statistics(
         std::size_t(replicas), [&](std::size_t k) { return outcome.results[first + k].dissipation_error(); },
         ok);
-    std::size_t limited = 0;
-    for (std::size_t k = 0; k < std::size_t(replicas); ++k)
-      limited += outcome.results[first + k].symmetry_limited;
+    std::size_t resolved = 0, limited = 0, departed = 0;
+    for (std::size_t k = 0; k < std::size_t(replicas); ++k) {
+      const auto& result = outcome.results[first + k];
+      resolved += result.dissipation_resolved();
+      limited += result.symmetry_limited;
+      departed += result.shadow_departed;
+    }
     const double sample_sd = D.count > 1 ? D.std * std::sqrt(double(D.count) / double(D.count - 1)) : NAN;
-    std::printf("%5.0f %4s %14.7e %11.3e %11.3e %12.2f %11.2e %zu of %zu\n", entries[e]->A,
+    std::printf("%5.0f %4s %14.7e %11.3e %11.3e %12.2f %11.2e %zu / %zu / %zu of %zu\n", entries[e]->A,
                 ensemble::kind_name(entries[e]->kind).data(), D.mean, sample_sd, D.sem,
-                (entries[e]->paper_R - D.mean) / sample_sd, error.mean / D.mean, limited, D.count);
+                (entries[e]->paper_R - D.mean) / sample_sd, error.mean / D.mean, resolved, limited, departed,
+                D.count);
   }
   std::printf(
-      "error/R: the mean global error estimate; symmetry-limited members' D depends on the tolerance "
-      "itself (README, \"Regimes and slips\")\n");
+      "error/R: the draws' mean error estimate of R; symmetry-limited members' R depends on the tolerance "
+      "itself and no error bounds it (README, \"Regimes and slips\")\n");
 }
 
 }  // namespace
@@ -138,29 +175,26 @@ void print_cp_draws(kernels::StepperId stepper, double rtol, int replicas, std::
 int run_table(const TableOptions& options) {
   const auto stepper = kernels::parse_stepper(options.stepper).value();
   const bool triangular = options.window == "triangular";
+  RemoveOnSignal on_start;  // a signal before the file exists ends the command at once
   std::optional<io::OutputTarget> target;
+  std::optional<RemoveOnSignal> on_signal;
   std::ofstream csv;
-  if (!options.output.empty()) {
-    try {
-      target.emplace(options.output, std::vector<std::string>{}, io::Replaceable::any, false);
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << " (-o)\n";
-      return 2;
-    }
+  if (!take_csv_output(options.output, csv_header, options.force, target, on_signal)) return 2;
+  if (target) {
     csv.open(target->temporary());
     if (!csv) {
       std::cerr << "error: cannot write " << options.output << ": " << std::strerror(errno) << "\n";
       return 2;
     }
-    csv << "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S\n";
+    csv << csv_header << "\n";
   }
-  std::optional<RemoveOnSignal> on_signal;
-  if (target) on_signal.emplace(*target);
-  std::printf("%5s %4s %14s %14s %14s %14s %10s %8s %14s %14s\n", "A", "IC", "W (work)", "S (Stokes)",
-              "R (drive)", "paper R", "R/paper-1", "steps/T", "paper W", "paper S");
+  std::printf("%5s %4s %14s %14s %14s %14s %10s %8s %14s %14s %10s %8s %s\n", "A", "IC", "W (work)",
+              "S (Stokes)", "R (drive)", "paper R", "R/paper-1", "steps/T", "paper W", "paper S", "R error",
+              "dev/unc", "R error is");
   const auto start = std::chrono::steady_clock::now();
-  const auto outcome = integrate(stepper, options.rtol);
-  const auto estimators = integrate(stepper, options.estimator_rtol);
+  const ensemble::Disorder disorder{.A = options.disorder, .seed = options.disorder_seed};
+  const auto outcome = integrate(paper_scene_with_errors(stepper, options.rtol, disorder));
+  const auto estimators = integrate(paper_scene(stepper, options.estimator_rtol, disorder));
   for (std::size_t i = 0; i < paper::entries.size(); ++i) {
     const auto& ref = paper::entries[i];
     const auto& result = outcome.results[i];
@@ -171,21 +205,31 @@ int run_table(const TableOptions& options) {
     const double R = windowed_R(result, triangular);
     const double steps_per_period = result.steps_accepted / (paper::relax_periods + paper::average_periods);
     const double deviation = R / ref.paper_R - 1;
+    const double error = result.dissipation_error();
+    const std::string flag = error_flag(result);
     const auto ic = ensemble::kind_name(ref.kind);
-    std::printf("%5.0f %4s %14.7e %14.7e %14.7e %14.7e %10.2e %8.0f %14.7e %14.7e\n", ref.A, ic.data(), W, S,
-                R, ref.paper_R, deviation, steps_per_period, ref.paper_W, ref.paper_S);
+    std::printf("%5.0f %4s %14.7e %14.7e %14.7e %14.7e %10.2e %8.0f %14.7e %14.7e %10.2e %8.2f %s\n", ref.A,
+                ic.data(), W, S, R, ref.paper_R, deviation, steps_per_period, ref.paper_W, ref.paper_S, error,
+                std::fabs(R - ref.paper_R) / (error + paper_rounding(ref.paper_R)), flag.c_str());
     if (csv) {
-      char line[256];
-      std::snprintf(line, sizeof line, "%g,%s,%.10e,%.10e,%.10e,%.7e,%.3e,%.1f,%.7e,%.7e\n", ref.A, ic.data(),
-                    W, S, R, ref.paper_R, deviation, steps_per_period, ref.paper_W, ref.paper_S);
+      char line[320];
+      std::snprintf(line, sizeof line, "%g,%s,%.10e,%.10e,%.10e,%.7e,%.3e,%.1f,%.7e,%.7e,%.3e,%s\n", ref.A,
+                    ic.data(), W, S, R, ref.paper_R, deviation, steps_per_period, ref.paper_W, ref.paper_S,
+                    error, flag.c_str());
       csv << line;
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf(
       "stepper %s, rtol %g, %s window over periods 3 and 4 (W and S outside CP at rtol %g, where they "
-      "converge, in CP from R's run; the paper's W at A = 11 lies 9e-5 below its R, ours equals R): %.2f s",
-      options.stepper.c_str(), options.rtol, options.window.c_str(), options.estimator_rtol, seconds);
+      "converge, in CP from R's run; the paper's W at A = 11 lies 9e-5 below its R, ours equals R); R error: "
+      "the estimate for the mean of periods 3 and 4 (a shadow run's where they slip); dev/unc: |R - paper R| "
+      "over R error plus half a unit of the paper's 7th digit",
+      options.stepper.c_str(), options.rtol, options.window.c_str(), options.estimator_rtol);
+  if (options.disorder > 0)
+    std::printf("; disorder sigma_A = %g (realization 0 of seed %llu)", options.disorder,
+                static_cast<unsigned long long>(options.disorder_seed));
+  std::printf(": %.2f s", seconds);
   if (target) {
     csv.close();
     if (!csv) {
@@ -194,11 +238,13 @@ int run_table(const TableOptions& options) {
       return 1;
     }
     on_signal.reset();
+    target->claim_temporary();
     target->commit();
     std::printf(", table written to %s%s", options.output.c_str(), target->replaced() ? " (replaced)" : "");
   }
   std::printf("\n");
-  if (options.replicas > 1) print_cp_draws(stepper, options.rtol, options.replicas, options.seed, triangular);
+  if (options.replicas > 1)
+    print_cp_draws(stepper, options.rtol, disorder, options.replicas, options.seed, triangular);
   return 0;
 }
 

@@ -1,10 +1,12 @@
-// usable_memory_bytes from sysconf, getrlimit and the cgroup files (absent or "max": no limit).
+// usable_memory_bytes from sysconf, getrlimit and the cgroup files (absent or "max": no limit), and the
+// check every command makes before it allocates.
 #include "usable_memory.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -34,6 +36,17 @@ double usable_memory_bytes() {
   for (const char* file : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"})
     if (const double limit = limit_in_file(file); limit > 0) usable = std::min(usable, limit);
   return usable;
+}
+
+bool fits_in_memory(double bytes, const std::string& what, const std::string& how,
+                    const std::string& advice) {
+  const double usable = usable_memory_bytes();
+  if (bytes <= 0.8 * usable) return true;
+  std::fprintf(stderr,
+               "error: %s needs about %.3g GiB%s, more than 80 %% of the %.3g GiB this process may use (the "
+               "machine's memory, ulimit -v or its cgroup's limit); %s\n",
+               what.c_str(), bytes / 0x1p30, how.c_str(), usable / 0x1p30, advice.c_str());
+  return false;
 }
 
 }  // namespace rotorsweep::apps

@@ -70,28 +70,37 @@ std::vector<CurveColumn> curve_columns(const ensemble::Scene& scene) {
   c.push_back(integer("count", "members with status ok (the statistics use these)",
                       [](auto& p) { return double(p.count); }));
   if (scene.has(ensemble::Observable::dissipation)) {
-    c.push_back(real("dissipation_mean", "mean of D", [](auto& p) { return p.dissipation_mean; }));
-    c.push_back(real("dissipation_std", "population spread of D over replicas",
-                     [](auto& p) { return p.dissipation_std; }));
-    c.push_back(real("dissipation_min", "smallest D", [](auto& p) { return p.dissipation_min; }));
-    c.push_back(real("dissipation_max", "largest D", [](auto& p) { return p.dissipation_max; }));
+    const std::string over = " over the point's `count` members (status ok), whatever their regime and flags";
+    c.push_back(real("dissipation_mean", "mean of D" + over, [](auto& p) { return p.dissipation_mean; }));
     c.push_back(
-        real("dissipation_sem",
-             "standard error of dissipation_mean over the replicas (sample spread / √count; NaN for one)",
-             [](auto& p) { return p.dissipation_sem; }));
-    c.push_back(integer("unresolved", "members of count whose D is not resolved (dissipation_resolved)",
+        real("dissipation_std", "population spread of D" + over, [](auto& p) { return p.dissipation_std; }));
+    c.push_back(real("dissipation_min", "smallest D" + over, [](auto& p) { return p.dissipation_min; }));
+    c.push_back(real("dissipation_max", "largest D" + over, [](auto& p) { return p.dissipation_max; }));
+    c.push_back(real("dissipation_sem",
+                     "standard error of dissipation_mean (sample spread / √count; NaN for one)" + over,
+                     [](auto& p) { return p.dissipation_sem; }));
+    c.push_back(integer("unresolved",
+                        "members of count whose D is not resolved (dissipation_resolved = 0: the error is "
+                        "above 0.1 |D|, or no bound: symmetry_limited, shadow_departed)",
                         [](auto& p) { return double(p.unresolved); }));
     c.push_back(
         real("dissipation_bias",
-             "bound on the integration's bias of dissipation_mean: the mean of the members' "
-             "dissipation_error; the mean is limited by the tolerance where it exceeds dissipation_sem",
+             "the mean of dissipation_error" + over +
+                 ": a bound on the integration's bias of dissipation_mean unless symmetry_limited > 0 "
+                 "(infinite where a member's shadow departed or failed); the mean is limited by the "
+                 "tolerance where it exceeds dissipation_sem",
              [](auto& p) { return p.dissipation_bias; }));
   }
-  if (scene.runs_shadows())
+  if (scene.runs_shadows()) {
     c.push_back(
         integer("symmetry_limited",
                 "members of count whose D the integration error decides (symmetry_limited in /members)",
                 [](auto& p) { return double(p.symmetry_limited); }));
+    c.push_back(integer("shadow_departed",
+                        "members of count whose shadow run reached another attractor (shadow_departed in "
+                        "/members)",
+                        [](auto& p) { return double(p.shadow_departed); }));
+  }
   if (scene.classifies_regimes())
     for (auto regime : ensemble::all_regimes) {
       if (regime == ensemble::Regime::sa && !scene.slip_kinds) continue;
@@ -130,6 +139,12 @@ void for_each_block(const Hdf5Location& file, const ensemble::Scene& scene, cons
 
 }  // namespace
 
+double curves_data_bytes(const ensemble::Scene& scene, std::size_t labels, std::size_t label_length) {
+  return double(ensemble::MemberPlan(scene).point_count()) *
+             double(8 * curve_columns(scene).size() + 4 * 8 * labels) +
+         double(labels * label_length);
+}
+
 void write_curves_from_members(const Hdf5Location& file, const ensemble::Scene& scene,
                                const std::function<void(double bytes)>& reserve) {
   const ensemble::MemberPlan plan(scene);
@@ -146,8 +161,7 @@ void write_curves_from_members(const Hdf5Location& file, const ensemble::Scene& 
   for (const auto& l : labels) label_length = std::max(label_length, l.size());
 
   const auto columns = curve_columns(scene);
-  reserve(double(points) * double(8 * columns.size() + 4 * 8 * labels.size()) +
-          double(labels.size() * label_length));
+  reserve(curves_data_bytes(scene, labels.size(), label_length));
   const auto group = file.create_group("curves");
   for (const auto& column : columns)
     group.create_column(column.name, column.type, {points, 0, kind_length()}, column.description,

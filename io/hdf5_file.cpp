@@ -2,7 +2,11 @@
 // same results give the same bytes), UTF-8 strings, h5py-style booleans, row-wise table I/O.
 #include "io/hdf5_file.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -37,6 +41,14 @@ std::string innermost_error() {
     text = text.substr(begin, text.find('\'', begin) - begin);
   }
   return text.empty() ? "" : ": " + text;
+}
+
+/// Throws the OS reason where the file at `path` cannot be accessed as `mode` (R_OK, W_OK) asks (a
+/// permission, a directory on the way), else `otherwise` (the file is no HDF5 file).
+[[noreturn]] void unopenable(const std::string& path, int mode, const std::string& otherwise) {
+  if (::access(path.c_str(), mode) != 0)
+    throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
+  throw std::runtime_error(otherwise);
 }
 
 Hdf5Handle string_type() {
@@ -137,14 +149,14 @@ Hdf5Location Hdf5Location::open_file(const std::string& path) {
   prepare_hdf5();
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0 && !std::filesystem::exists(path)) throw std::runtime_error("'" + path + "' does not exist");
-  if (id < 0) throw std::runtime_error("cannot open '" + path + "' as an HDF5 file");
+  if (id < 0) unopenable(path, R_OK, "cannot open '" + path + "' as an HDF5 file");
   return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
 }
 
 Hdf5Location Hdf5Location::open_file_for_writing(const std::string& path) {
   prepare_hdf5();
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  if (id < 0) throw std::runtime_error("cannot open '" + path + "' for writing" + innermost_error());
+  if (id < 0) unopenable(path, R_OK | W_OK, "cannot open '" + path + "' for writing" + innermost_error());
   return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
 }
 
@@ -332,6 +344,40 @@ void Hdf5Location::write_rows(const std::string& name, const std::vector<hsize_t
     std::copy(data[i].begin(), data[i].end(), packed.begin() + std::ptrdiff_t(i * length));
   }
   write_selected_rows(name, rows, type.id(), packed.data());
+}
+
+std::string Hdf5Location::column_mismatch(const std::string& name, ColumnType type,
+                                          const ColumnShape& shape) const {
+  if (!has(name)) return "is missing";
+  const auto set = open_dataset(name);
+  const Hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
+  std::vector<hsize_t> expected{shape.rows};
+  if (shape.width > 0) expected.push_back(shape.width);
+  if (shape.width > 0 && shape.depth > 0) expected.push_back(shape.depth);
+  const int rank = H5Sget_simple_extent_ndims(space.id());
+  std::vector<hsize_t> dims(std::size_t(std::max(rank, 0)));
+  if (rank > 0) H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr);
+  const auto text = [](const std::vector<hsize_t>& d) {
+    std::string out = "(";
+    for (std::size_t i = 0; i < d.size(); ++i) out += (i ? ", " : "") + std::to_string(d[i]);
+    return out + (d.size() == 1 ? ",)" : ")");
+  };
+  if (dims != expected) return "has shape " + text(dims) + " where its scene gives " + text(expected);
+  const Hdf5Handle file_type(H5Dget_type(set.id()), H5Tclose);
+  const H5T_class_t kind = H5Tget_class(file_type.id());
+  const std::size_t size = H5Tget_size(file_type.id());
+  const auto is = [&](H5T_class_t k, std::size_t bytes) { return kind == k && size == bytes; };
+  const bool matches =
+      type == ColumnType::float64 ? is(H5T_FLOAT, 8)
+      : type == ColumnType::int64 ? is(H5T_INTEGER, 8) && H5Tget_sign(file_type.id()) == H5T_SGN_2
+      : type == ColumnType::flag  ? is(H5T_ENUM, 1)
+                                  : is(H5T_STRING, std::max<std::size_t>(shape.text_length, 1)) &&
+                                       H5Tis_variable_str(file_type.id()) == 0;
+  if (matches) return "";
+  static constexpr const char* names[] = {"64-bit floats", "64-bit integers", "TRUE/FALSE flags",
+                                          "fixed-length text"};
+  return "does not hold " + std::string(names[int(type)]) + " of " + std::to_string(expected.size()) +
+         " dimension" + (expected.size() == 1 ? "" : "s") + " as its scene gives";
 }
 
 std::pair<hsize_t, hsize_t> Hdf5Location::shape(const std::string& name) const {

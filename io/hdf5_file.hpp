@@ -99,6 +99,9 @@ class Hdf5Location {
   std::vector<std::string> read_rows_strings(const std::string& name, hsize_t first, hsize_t count) const;
   /// A flag column as 0 / 1.
   std::vector<signed char> read_flags(const std::string& name) const;
+  /// "" when dataset `name` is what create_column(name, type, shape, …) makes (its dimensions and
+  /// element type), else what differs ("is missing", "has shape (32, 5) where its scene gives (32, 51)").
+  std::string column_mismatch(const std::string& name, ColumnType type, const ColumnShape& shape) const;
   /// The number of rows and the values per row (1 for a 1-D dataset).
   std::pair<hsize_t, hsize_t> shape(const std::string& name) const;
 

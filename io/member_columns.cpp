@@ -86,9 +86,11 @@ void add_outcome(std::vector<MemberColumn>& columns, const ensemble::Scene& scen
   });
   if (scene.classifies_regimes())
     columns.push_back(MemberColumn::text_valued(
-        "regime", longest({"FM", "AFM", "CP", "SA", "unsettled"}),
-        scene.slip_kinds ? "FM, AFM, CP, SA (smooth alternation) or unsettled (README: regime rule)"
-                         : "FM, AFM, CP or unsettled (README: regime rule)",
+        "regime", longest({"FM", "AFM", "CP", "SA", "DW", "unsettled"}),
+        scene.slip_kinds
+            ? "FM, AFM, CP, DW (slipping across domain walls), SA (smooth alternation) or unsettled (README: "
+              "regime rule)"
+            : "FM, AFM, CP, DW (slipping across domain walls) or unsettled (README: regime rule)",
         [](auto&, auto& r) { return std::string(ensemble::regime_name(r.regime)); }));
   if (scene.slip_kinds) {
     columns.push_back(MemberColumn::real_valued("slip_jumps",
@@ -108,7 +110,9 @@ void add_outcome(std::vector<MemberColumn>& columns, const ensemble::Scene& scen
                                 [](auto&, auto& r) { return std::string(kernels::status_name(r.status)); }));
   if (scene.has(ensemble::Observable::dissipation))
     columns.push_back(MemberColumn::integer_valued(
-        "dissipation_resolved", "1 when D is resolved: status ok and dissipation_error < 0.1 |D|",
+        "dissipation_resolved",
+        "1 when dissipation_error is a bound one can quote and below 0.1 |D|: status ok, not "
+        "symmetry_limited, no shadow_departed",
         [](auto&, auto& r) { return std::int64_t(r.dissipation_resolved()); }));
   if (scene.runs_shadows()) {
     columns.push_back(MemberColumn::real_valued(
@@ -124,6 +128,12 @@ void add_outcome(std::vector<MemberColumn>& columns, const ensemble::Scene& scen
         "1 when D is set by the integration error: the member slips and no disorder or temperature of the "
         "scene exceeds rtol (README: regime rule)",
         [](auto&, auto& r) { return std::int64_t(r.symmetry_limited); }));
+    columns.push_back(MemberColumn::integer_valued(
+        "shadow_departed",
+        "1 when the shadow run reached another attractor than the member (another regime, slips per "
+        "period, domain walls or detached rows): it estimates no error, dissipation_error is infinite "
+        "(docs/numerics.md \"The global error of D\")",
+        [](auto&, auto& r) { return std::int64_t(r.shadow_departed); }));
   }
   columns.push_back(MemberColumn::integer_valued(
       "settled", "1 when the schedule ended as planned (steady_tol reached, or fixed schedule)",

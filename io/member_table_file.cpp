@@ -8,11 +8,23 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <numeric>
 #include <stdexcept>
 
+#include "io/table_columns.hpp"
+
 namespace rotorsweep::io {
+
+namespace {
+
+/// Bytes reserved for the metadata of the finishing writes' groups and datasets (object headers,
+/// attributes, B-tree nodes).
+constexpr double metadata_reserve = 1 << 20;
+
+}  // namespace
 
 void write_provenance(const Hdf5Location& file, const std::string& scene_text, const Provenance& provenance) {
   file.set_attribute("scene", scene_text);
@@ -23,6 +35,8 @@ void write_provenance(const Hdf5Location& file, const std::string& scene_text, c
   file.set_attribute("isa", provenance.isa);
 }
 
+double reserved_bytes(double data_bytes) { return 2 * data_bytes + metadata_reserve; }
+
 MemberTableFile::MemberTableFile(Hdf5Location file, std::size_t plan_members, std::optional<ShardLabel> shard)
     : file_(std::move(file)), shard_(shard) {
   rows_ = shard ? (plan_members + shard->count - shard->index) / shard->count : plan_members;
@@ -30,15 +44,42 @@ MemberTableFile::MemberTableFile(Hdf5Location file, std::size_t plan_members, st
 
 std::optional<ShardLabel> MemberTableFile::shard_label(const Hdf5Location& file) {
   if (!file.has_attribute("shard_index")) return std::nullopt;
-  return ShardLabel{std::size_t(file.attribute_double("shard_index")),
-                    std::size_t(file.attribute_double("shard_count")),
-                    std::size_t(file.attribute_double("plan_members"))};
+  const double index = file.attribute_double("shard_index"),
+               count = file.has_attribute("shard_count") ? file.attribute_double("shard_count") : 0;
+  if (!(index >= 1 && index <= count && count <= 1e9) || index != std::floor(index) ||
+      count != std::floor(count)) {
+    char stated[96];
+    std::snprintf(stated, sizeof stated, "shard_index %g and shard_count %g", index, count);
+    throw std::runtime_error("'" + file.path() + "': its " + stated +
+                             " do not name a shard I/N with 1 <= I <= N <= 1e9");
+  }
+  return ShardLabel{
+      std::size_t(index), std::size_t(count),
+      file.has_attribute("plan_members") ? std::size_t(file.attribute_double("plan_members")) : 0};
 }
 
-void MemberTableFile::check_reopened() const {
-  if (file_.open_group("members").shape("done").first != rows_)
-    throw std::runtime_error("'" + file_.path() +
-                             "' does not have a row for every member of its scene's plan");
+hsize_t MemberTableFile::check_table(const Hdf5Location& file, const std::string& kind,
+                                     std::size_t plan_members) {
+  const std::string path = "'" + file.path() + "'";
+  const std::string stated = file.has_attribute("kind") ? file.attribute_string("kind") : std::string();
+  if (stated != kind)
+    throw std::runtime_error(path + " says kind = '" + stated + "', not " +
+                             (kind.empty() ? "a row sweep's file (no kind)" : "'" + kind + "'"));
+  if (!file.has_attribute("plan_members") || file.attribute_double("plan_members") != double(plan_members))
+    throw std::runtime_error(path + ": its attribute plan_members is not its scene's " +
+                             std::to_string(plan_members) + " members");
+  const auto shard = shard_label(file);
+  const hsize_t rows = shard ? (plan_members + shard->count - shard->index) / shard->count : plan_members;
+  const auto column = [](std::string name, ColumnType type) {
+    TableColumn<> c;
+    c.name = std::move(name);
+    c.type = type;
+    return c;
+  };
+  std::vector<TableColumn<>> table{column("done", ColumnType::flag)};
+  if (shard) table.push_back(column("plan_index", ColumnType::int64));
+  check_table_columns(file.open_group("members"), table, rows, file.path(), "/members/");
+  return rows;
 }
 
 hsize_t MemberTableFile::row_of(std::size_t plan_index) const {
@@ -97,9 +138,17 @@ void MemberTableFile::settle_on_disk(const std::string& path) {
   on_disk_ = true;
 }
 
+void MemberTableFile::adopt_reopened() {
+  on_disk_ = true;
+  const auto marked = done();
+  rows_done_ = std::size_t(std::count(marked.begin(), marked.end(), 1));
+}
+
 void MemberTableFile::mark_done(const std::vector<hsize_t>& rows) const {
   file_.flush();
   file_.open_group("members").write_rows("done", rows, std::vector<signed char>(rows.size(), 1).data());
+  rows_done_ += rows.size();
+  set_members_done(rows_done_);  // in place: a killed run's file says what it holds
   file_.flush();
 }
 
@@ -119,14 +168,13 @@ void MemberTableFile::reserve(double bytes, const std::string& what) const {
   if (fd < 0) return;
   struct stat status {};
   ::fstat(fd, &status);
-  // twice the data and 1 MiB for the groups' metadata, beyond the file's end, the length unchanged
-  const int failed =
-      ::fallocate(fd, FALLOC_FL_KEEP_SIZE, status.st_size, off_t(2 * bytes) + (off_t(1) << 20));
+  // beyond the file's end, the length unchanged
+  const int failed = ::fallocate(fd, FALLOC_FL_KEEP_SIZE, status.st_size, off_t(reserved_bytes(bytes)));
   const int error = errno;
   ::close(fd);
   if (failed != 0 && error != EOPNOTSUPP)
-    throw std::runtime_error("cannot reserve " + std::to_string(long(bytes / 1e6) + 1) + " MB for " + what +
-                             " in " + file_.path() + ": " + std::strerror(error));
+    throw std::runtime_error("cannot reserve " + std::to_string(long(reserved_bytes(bytes) / 1e3) + 1) +
+                             " kB for " + what + " in " + file_.path() + ": " + std::strerror(error));
 }
 
 }  // namespace rotorsweep::io

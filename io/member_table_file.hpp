@@ -23,6 +23,10 @@ struct Provenance {
 /// revision, device, isa).
 void write_provenance(const Hdf5Location& file, const std::string& scene_text, const Provenance& provenance);
 
+/// Disk bytes that finishing writes of `data_bytes` (the curves) take: the data twice over and room for
+/// their groups' metadata. reserve() asks for them before those writes; the checks before a run count them.
+double reserved_bytes(double data_bytes);
+
 /// Which part of a plan a shard file holds: plan members index - 1, index - 1 + count, ...
 /// (ensemble::shard_members).
 struct ShardLabel {
@@ -47,6 +51,10 @@ class MemberTableFile {
   /// between names) when it is not there: a run resumed by another binary.
   void add_writer_isa(const std::string& isa) const;
 
+  /// The shard label a file states (none for a whole plan); throws std::runtime_error where its
+  /// shard_index and shard_count do not name a part I/N with 1 <= I <= N <= 10⁹.
+  static std::optional<ShardLabel> shard_label(const Hdf5Location& file);
+
   /// Closes the file; throws when its last buffers cannot be written.
   void close() { file_.close(); }
   /// The file's bytes (for a file in memory).
@@ -54,10 +62,10 @@ class MemberTableFile {
 
  protected:
   MemberTableFile(Hdf5Location file, std::size_t plan_members, std::optional<ShardLabel> shard);
-  /// The shard label a file states (none for a whole plan).
-  static std::optional<ShardLabel> shard_label(const Hdf5Location& file);
-  /// Throws unless a reopened file has a done flag for each of its rows.
-  void check_reopened() const;
+  /// Checks what every kind of file states of its table against its scene: the attribute kind (none
+  /// for row files), plan_members, a shard label within its plan, and /members/done and, in a shard,
+  /// /members/plan_index of its rows; returns those rows. Throws std::runtime_error naming what differs.
+  static hsize_t check_table(const Hdf5Location& file, const std::string& kind, std::size_t plan_members);
 
   /// Writes complete = FALSE, the scene and provenance, plan_members, members_done = 0,
   /// /members/done (all FALSE) and, in a shard, /members/plan_index; returns /members.
@@ -65,7 +73,10 @@ class MemberTableFile {
   /// Closes the file just created at `path` and opens it for writing: its length is then all it
   /// allocated, and nothing is allocated until the kind's finishing writes.
   void settle_on_disk(const std::string& path);
-  /// After the rows' values: flushes, marks `rows` done, flushes again.
+  /// A reopened file: on disk, with the rows its /members/done marks.
+  void adopt_reopened();
+  /// After the rows' values: flushes, marks `rows` (not yet done) done and counts them in members_done,
+  /// flushes again.
   void mark_done(const std::vector<hsize_t>& rows) const;
   /// members_done (a stopped run's count, or every row).
   void set_members_done(std::size_t count) const;
@@ -78,6 +89,7 @@ class MemberTableFile {
   Hdf5Location file_;
   std::optional<ShardLabel> shard_;
   std::size_t rows_ = 0;
+  mutable std::size_t rows_done_ = 0;  ///< rows marked done (writing rows changes the file, not the object)
   bool on_disk_ = false;
 };
 

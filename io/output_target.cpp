@@ -21,7 +21,48 @@ namespace {
 
 std::string in_quotes(const std::string& path) { return "'" + path + "'"; }
 
+bool ends_with(const std::string& text, const std::string& end) {
+  return text.size() > end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+/// `path` through its symbolic links (also dangling ones) to the file they finally name; `name` is
+/// the path as given, for messages.
+fs::path through_links(fs::path path, const std::string& name) {
+  std::error_code error;
+  for (int hops = 0; fs::is_symlink(fs::symlink_status(path, error)); ++hops) {
+    if (hops == 40) throw OutputPathError("output path " + name + ": too many levels of symbolic links");
+    const fs::path next = fs::read_symlink(path, error);
+    if (error) throw OutputPathError("output path " + name + ": " + error.message());
+    path = (next.is_absolute() ? next : path.parent_path() / next).lexically_normal();
+  }
+  return path;
+}
+
+/// Whether the file at `path` starts with `text`.
+bool starts_with_text(const fs::path& path, const std::string& text) {
+  std::ifstream in(path, std::ios::binary);
+  std::string start(text.size(), '\0');
+  return in.read(start.data(), std::streamsize(start.size())) && start == text;
+}
+
 }  // namespace
+
+std::string covering_output(const std::string& name) {
+  if (ends_with(name, ".partial")) return name.substr(0, name.size() - 8);
+  if (const auto rank = name.rfind(".partial.rank-");
+      rank != std::string::npos && rank > 0 && rank + 14 < name.size() &&
+      name.find_first_not_of("0123456789", rank + 14) == std::string::npos)
+    return name.substr(0, rank);
+  if (name.size() < 2 || name.front() != '.') return "";
+  if (ends_with(name, ".lock")) return name.substr(1, name.size() - 6);
+  if (!ends_with(name, ".part")) return "";
+  const std::string stem = name.substr(1, name.size() - 6);  // "X.PID"
+  const auto dot = stem.rfind('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == stem.size() ||
+      stem.find_first_not_of("0123456789", dot + 1) != std::string::npos)
+    return "";
+  return stem.substr(0, dot);
+}
 
 bool is_hdf5_file(const fs::path& path) {
   static constexpr std::array<char, 8> signature{'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
@@ -39,7 +80,7 @@ bool is_hdf5_file(const fs::path& path) {
 }
 
 OutputTarget::OutputTarget(const std::string& path, const std::vector<std::string>& inputs,
-                           Replaceable replaceable, bool force, bool resumable)
+                           const Replaceable& replaceable, bool force, bool resumable)
     : path_(path) {
   if (path.empty()) throw OutputPathError("the output path is empty");
   if (path.find('\0') != std::string::npos)
@@ -56,15 +97,9 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
   if (path.back() == '/' || fs::path(path).filename() == "." || fs::path(path).filename() == "..")
     throw OutputPathError("output path " + name + " names a directory; give a file name");
   std::error_code error;
-  target_ = fs::path(path);
   // through symbolic links (also dangling ones, whose target is then created): write beside the
   // final target and replace that file, so the links stay links
-  for (int hops = 0; fs::is_symlink(fs::symlink_status(target_, error)); ++hops) {
-    if (hops == 40) throw OutputPathError("output path " + name + ": too many levels of symbolic links");
-    const fs::path next = fs::read_symlink(target_, error);
-    if (error) throw OutputPathError("output path " + name + ": " + error.message());
-    target_ = (next.is_absolute() ? next : target_.parent_path() / next).lexically_normal();
-  }
+  target_ = through_links(fs::path(path), name);
   const fs::file_status status = fs::status(target_, error);
   const bool exists = fs::exists(status);
   if (exists && fs::is_directory(status)) throw OutputPathError("output path " + name + " is a directory");
@@ -74,10 +109,17 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
     if (exists && fs::equivalent(target_, input, error))
       throw OutputPathError("output path " + name + " is the input file " + in_quotes(input) +
                             "; writing it would destroy it");
-  if (exists && replaceable == Replaceable::hdf5 && !force && !is_hdf5_file(target_))
+  if (exists && !force && replaceable.text_signature.empty() && !is_hdf5_file(target_))
     throw OutputPathError(
         "output path " + name +
         " exists and is not an HDF5 file; refusing to replace it (use --force to replace it)");
+  if (exists && !force && !replaceable.text_signature.empty() &&
+      !starts_with_text(target_, replaceable.text_signature))
+    throw OutputPathError("output path " + name +
+                          " exists and is not a table this command wrote (its first line does not start "
+                          "with '" +
+                          replaceable.text_signature +
+                          "'); refusing to replace it (use --force to replace it)");
   replaced_ = exists;
 
   // missing parent directories, created outermost first and removed again on failure
@@ -101,7 +143,23 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
     throw OutputPathError("output path " + name + ": " + in_quotes(parent.string()) + " is not a directory");
   if (::access(parent.empty() ? "." : parent.c_str(), W_OK) != 0)
     throw OutputPathError("output path " + name + ": cannot write in its directory: " + std::strerror(errno));
-  lock(parent, name);
+  try {
+    lock(target_, name, "output path " + name + " is being written by another process");
+    // the partial, temporary or lock file of another output: its writer's lock covers this one too
+    for (fs::path at = target_;;) {
+      const std::string owner = covering_output(at.filename().string());
+      if (owner.empty()) break;
+      at = through_links(at.parent_path() / owner, in_quotes((at.parent_path() / owner).string()));
+      if (!lock(at, name,
+                "output path " + name + " belongs to the output " + in_quotes(at.string()) +
+                    " (its partial, temporary or lock file), which is being written by another process"))
+        break;  // a link back to an output already locked
+    }
+  } catch (...) {
+    unlock();
+    for (auto d = created_directories_.rbegin(); d != created_directories_.rend(); ++d) fs::remove(*d, error);
+    throw;
+  }
   if (resumable) {
     temporary_ = target_;
     temporary_ += ".partial";
@@ -115,49 +173,71 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
   temporary_ = parent / hidden_name;
 }
 
-void OutputTarget::lock(const fs::path& parent, const std::string& name) {
+bool OutputTarget::lock(const fs::path& output, const std::string& name, const std::string& refusal) {
   std::string lock_name(1, '.');
-  lock_name.append(target_.filename().string()).append(".lock");
-  lock_path_ = parent / lock_name;
+  lock_name.append(output.filename().string()).append(".lock");
+  const fs::path lock_path = output.parent_path() / lock_name;
+  for (const auto& held : locks_)
+    if (held.path == lock_path) return false;
   for (int attempt = 0; attempt < 16; ++attempt) {
-    const int fd = ::open(lock_path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd < 0)
-      throw OutputPathError("output path " + name + ": cannot create its lock file " +
-                            in_quotes(lock_path_.string()) + ": " + std::strerror(errno));
+      throw OutputPathError("output path " + name + ": cannot create the lock file " +
+                            in_quotes(lock_path.string()) + ": " + std::strerror(errno));
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       std::array<char, 32> pid{};
       const ssize_t n = ::pread(fd, pid.data(), pid.size() - 1, 0);
       ::close(fd);
       std::string holder(pid.data(), std::size_t(std::max<ssize_t>(n, 0)));
       while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' ')) holder.pop_back();
-      throw OutputPathError("output path " + name + " is being written by another process" +
-                            (holder.empty() ? std::string() : " (PID " + holder + ")") +
+      throw OutputPathError(refusal + (holder.empty() ? std::string() : " (PID " + holder + ")") +
                             "; wait for it to finish, or stop it and resume, or choose another output");
     }
     // the holder may have removed the file between our open and our lock: then take the new one
     struct stat held {
     }, named{};
-    if (::fstat(fd, &held) == 0 && ::stat(lock_path_.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
+    if (::fstat(fd, &held) == 0 && ::stat(lock_path.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
         held.st_dev == named.st_dev) {
       const std::string text = std::to_string(::getpid()) + "\n";
       // the PID only makes another process's message more helpful: a failed write is no error
       [[maybe_unused]] const bool written =
           ::ftruncate(fd, 0) == 0 && ::pwrite(fd, text.data(), text.size(), 0) == ssize_t(text.size());
-      lock_fd_ = fd;
-      return;
+      locks_.push_back({lock_path, fd});
+      return true;
     }
     ::close(fd);
   }
-  throw OutputPathError("output path " + name + ": its lock file " + in_quotes(lock_path_.string()) +
+  throw OutputPathError("output path " + name + ": the lock file " + in_quotes(lock_path.string()) +
                         " keeps changing; another process is writing there");
 }
 
 void OutputTarget::unlock() {
-  if (lock_fd_ < 0) return;
   std::error_code error;
-  fs::remove(lock_path_, error);  // before closing: nobody else can hold it meanwhile
-  ::close(lock_fd_);
-  lock_fd_ = -1;
+  for (auto held = locks_.rbegin(); held != locks_.rend(); ++held) {
+    fs::remove(held->path, error);  // before closing: nobody else can hold it meanwhile
+    ::close(held->fd);
+  }
+  locks_.clear();
+}
+
+std::vector<std::string> OutputTarget::lock_files() const {
+  std::vector<std::string> paths;
+  for (const auto& held : locks_) paths.push_back(held.path.string());
+  return paths;
+}
+
+void OutputTarget::claim_temporary() {
+  struct stat status {};
+  if (::stat(temporary_.c_str(), &status) != 0)
+    throw std::runtime_error("cannot find the file just written, " + in_quotes(temporary_.string()) + ": " +
+                             std::strerror(errno));
+  claimed_ = std::pair{status.st_dev, status.st_ino};
+}
+
+bool OutputTarget::temporary_is_ours() const {
+  struct stat status {};
+  return claimed_ && ::stat(temporary_.c_str(), &status) == 0 &&
+         std::pair{status.st_dev, status.st_ino} == *claimed_;
 }
 
 OutputTarget::~OutputTarget() {
@@ -169,6 +249,12 @@ OutputTarget::~OutputTarget() {
 }
 
 void OutputTarget::commit() {
+  if (!claimed_) throw std::logic_error("OutputTarget::commit() before claim_temporary()");
+  if (!temporary_is_ours())
+    throw std::runtime_error(in_quotes(temporary_.string()) +
+                             " is no longer the file this process wrote (another process replaced or removed "
+                             "it): it is not moved into place as " +
+                             in_quotes(path_));
   std::error_code error;
   fs::rename(temporary_, target_, error);
   if (error)

@@ -2,7 +2,10 @@
 // temporary file beside it, and put in place by rename only when complete, so nothing is lost.
 #pragma once
 
+#include <sys/types.h>
+
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,32 +19,45 @@ class OutputPathError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// What an existing file at the target may be, to be replaced without --force.
-enum class Replaceable { hdf5, any };
+/// What an existing file at the target may be, to be replaced without --force: an HDF5 file (what the
+/// HDF5 writers write), or a text file that starts with `text_signature` (what a CSV writer writes itself).
+struct Replaceable {
+  std::string text_signature;  ///< empty: an HDF5 file
+  static const Replaceable hdf5;
+  static Replaceable text_starting_with(std::string signature) { return {std::move(signature)}; }
+};
+inline const Replaceable Replaceable::hdf5{};
+
+/// The output whose writer also writes the file named `name` beside it, and so holds the lock that
+/// covers it: X for X.partial, X.partial.rank-R, .X.PID.part and .X.lock; empty for any other name.
+std::string covering_output(const std::string& name);
 
 /// The file at `path` is written as a temporary file in the same directory, which commit()
 /// renames over `path` (atomically: a reader sees the old file or the new one). Until then an
 /// existing file at `path` is untouched; without commit() (an error, an exception) the temporary
 /// file and the directories created for it are removed. For its whole life it holds a lock on the
 /// path (flock on ".NAME.lock" beside it, which holds its PID), so that a second process writing
-/// there is refused before it touches anything; the system drops the lock of a process that dies.
+/// there is refused before it touches anything; the system drops the lock of a process that dies. A
+/// path that another output's writer writes too (its partial or temporary file, its lock file) also
+/// takes that output's lock (covering_output), so neither can destroy the other's file.
 class OutputTarget {
  public:
   /// Checks the path and creates missing parent directories. Throws OutputPathError when the path
   /// is empty or names a directory, is the same file as one of `inputs` (also through a link),
   /// is an existing file that is not `replaceable` (unless `force`), or another process holds its
-  /// lock (the message names its PID).
+  /// lock or the lock of the output it belongs to (the message names its PID).
   /// With `resumable` the temporary file is path + ".partial", which keep() leaves in place.
-  OutputTarget(const std::string& path, const std::vector<std::string>& inputs, Replaceable replaceable,
-               bool force, bool resumable = false);
+  OutputTarget(const std::string& path, const std::vector<std::string>& inputs,
+               const Replaceable& replaceable, bool force, bool resumable = false);
   OutputTarget(const OutputTarget&) = delete;
   OutputTarget& operator=(const OutputTarget&) = delete;
   ~OutputTarget();
 
   /// Where to write until commit().
   std::string temporary() const { return temporary_.string(); }
-  /// The lock file beside the target (removed with the target's lock).
-  std::string lock_file() const { return lock_path_.string(); }
+  /// The lock files this target holds: the target's own, then those of the outputs it belongs to
+  /// (each removed with its lock).
+  std::vector<std::string> lock_files() const;
   /// The final path as the user gave it.
   const std::string& path() const { return path_; }
   /// Whether commit() replaced an existing file.
@@ -49,7 +65,14 @@ class OutputTarget {
   /// The directories the constructor created for the path, innermost last.
   const std::vector<std::filesystem::path>& created_directories() const { return created_directories_; }
 
-  /// Renames the temporary file over the target. Throws std::runtime_error with the OS reason.
+  /// Records which file the temporary is (device and inode), once the writer has created or reopened
+  /// it: commit() and temporary_is_ours() compare with it.
+  void claim_temporary();
+  /// Whether the file at temporary() is still the one claim_temporary() recorded (nobody replaced or
+  /// removed it).
+  bool temporary_is_ours() const;
+  /// Renames the temporary file over the target, after checking that it is still the file this
+  /// writer claimed. Throws std::runtime_error saying why not, or with the OS reason.
   void commit();
   /// Leaves the temporary file where it is (an unfinished run to resume).
   void keep() { committed_ = true; }
@@ -61,10 +84,17 @@ class OutputTarget {
   std::vector<std::filesystem::path> created_directories_;  ///< innermost last
   bool replaced_ = false;
   bool committed_ = false;
-  std::filesystem::path lock_path_;  ///< ".NAME.lock" beside target_
-  int lock_fd_ = -1;                 ///< holds the flock
+  struct HeldLock {
+    std::filesystem::path path;  ///< ".NAME.lock" beside the output it covers
+    int fd = -1;                 ///< holds the flock
+  };
+  std::vector<HeldLock> locks_;                     ///< the target's own, then its covering outputs'
+  std::optional<std::pair<dev_t, ino_t>> claimed_;  ///< the temporary file's identity
 
-  void lock(const std::filesystem::path& parent, const std::string& name);
+  /// Takes the lock of the output `output` (a path; `name`: the target as given, in quotes); false when
+  /// this target holds it already. Throws OutputPathError beginning with `refusal` when another process
+  /// holds it.
+  bool lock(const std::filesystem::path& output, const std::string& name, const std::string& refusal);
   void unlock();
 };
 

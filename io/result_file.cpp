@@ -23,11 +23,21 @@ ResultFile ResultFile::in_memory(const ensemble::Scene& scene, const Provenance&
 
 ResultFile ResultFile::reopen(const std::string& path, const ensemble::Scene& scene) {
   auto location = Hdf5Location::open_file_for_writing(path);
+  check_file(location, scene);
   auto shard = shard_label(location);
   ResultFile file(std::move(location), scene, shard);
-  file.on_disk_ = true;
-  file.check_reopened();
+  file.adopt_reopened();
   return file;
+}
+
+void ResultFile::check_file(const Hdf5Location& file, const ensemble::Scene& scene) {
+  const hsize_t rows = check_table(file, "", scene.member_count());
+  check_table_columns(file.open_group("members"), member_columns(scene), rows, file.path(), "/members/");
+}
+
+double ResultFile::finishing_bytes(const ensemble::Scene& scene, bool shard) {
+  return shard ? 0.0
+               : reserved_bytes(curves_data_bytes(scene, assumed_attractor_labels, assumed_label_length));
 }
 
 ResultFile::ResultFile(Hdf5Location file, const ensemble::Scene& scene, std::optional<ShardLabel> shard)

@@ -30,6 +30,14 @@ class ResultFile : public MemberTableFile {
   /// A file this class created (and did not finish), to write more rows into; `scene` is its scene.
   static ResultFile reopen(const std::string& path, const ensemble::Scene& scene);
 
+  /// Throws std::runtime_error naming what differs where `file` (a partial or shard file) is not what this
+  /// class writes for `scene`: its attributes kind, plan_members and shard label, and every /members
+  /// dataset's shape and type (MemberTableFile::check_table, check_table_columns).
+  static void check_file(const Hdf5Location& file, const ensemble::Scene& scene);
+  /// Disk bytes the finishing writes of a file of `scene` need (its /curves, none in a shard), counted
+  /// before a run starts or resumes (the attractor labels estimated).
+  static double finishing_bytes(const ensemble::Scene& scene, bool shard);
+
   /// Writes each result (in any order) into the row of its member (`plan` gives the members),
   /// flushes, then marks the rows done and flushes again.
   void write_results(const ensemble::MemberPlan& plan, std::vector<ensemble::MemberResult> results) const;

@@ -38,6 +38,11 @@ Matrix read_matrix(const Hdf5Location& group, const std::string& name, std::size
 
 }  // namespace
 
+bool is_rotorsweep_file(const Hdf5Location& file) {
+  return file.has_attribute("version") && file.has_attribute("complete") &&
+         (file.has_attribute("kind") || (file.has_attribute("scene") && file.has("members")));
+}
+
 std::string written_by(const Hdf5Location& file) {
   return file.attribute_string("version") + " (revision " + file.attribute_string("revision") + ")";
 }
@@ -87,10 +92,11 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
   std::vector<std::string> regime;
   if (scene.classifies_regimes()) regime = group.read_rows_strings("regime", first, count);
   std::vector<double> shadow;
-  std::vector<std::int64_t> limited;
+  std::vector<std::int64_t> limited, departed;
   if (scene.runs_shadows()) {
     shadow = group.read_rows_doubles("dissipation_shadow", first, count);
     limited = integers("symmetry_limited");
+    if (group.has("shadow_departed")) departed = integers("shadow_departed");  // files before it have none
   }
   std::optional<Matrix> row_dissipation, link_alignment;
   if (scene.row_profiles) {
@@ -121,6 +127,7 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
     if (!shadow.empty()) {
       r.dissipation_shadow = shadow[m];
       r.symmetry_limited = limited[m] != 0;
+      r.shadow_departed = !departed.empty() && departed[m] != 0;
     }
     if (row_dissipation) {
       const std::size_t rows = plan[r.index].rows, links = scene.couplings.open ? rows - 1 : rows;

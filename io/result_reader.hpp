@@ -13,6 +13,12 @@
 
 namespace rotorsweep::io {
 
+/// What every file rotorsweep writes has, for the message that refuses another HDF5 file.
+inline constexpr const char* rotorsweep_file_shape =
+    "its files have the attributes version and complete, and a kind, or a scene and /members";
+/// Whether `file` has what every file rotorsweep writes has (rotorsweep_file_shape).
+bool is_rotorsweep_file(const Hdf5Location& file);
+
 /// "<version> (revision <revision>)" of the program that wrote `file`.
 std::string written_by(const Hdf5Location& file);
 

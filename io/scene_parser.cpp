@@ -296,10 +296,13 @@ Scene read_scene(const toml::table& root) {
   if (scene.steady_tol > 0 && !scene.has(ensemble::Observable::dissipation))
     fail(schedule.key("steady_tol"),
          "needs observables.dissipation = true (it compares D of successive periods)");
-  if (scene.thermal.on() && scene.has(ensemble::Observable::estimators))
-    fail(observables.key("estimators"),
-         "must be false when thermal.temperature > 0: with noise θ̇ does not exist, so the Stokes estimator "
-         "diverges (D is the drive's work R; see docs/model.md §7)");
+  for (const auto& [observable, also] : {std::pair{ensemble::Observable::estimators, ""},
+                                         {ensemble::Observable::moments, " (the moments carry it along)"}})
+    if (scene.thermal.on() && scene.has(observable))
+      fail(observables.key(ensemble::declaration(observable).key),
+           std::string("must be false when thermal.temperature > 0: with noise θ̇ does not exist, so the "
+                       "Stokes estimator diverges") +
+               also + " (D is the drive's work R; see docs/model.md §7)");
 
   const Section numerics = section(root, "numerics");
   scene.stepper = read_stepper(numerics);
@@ -324,6 +327,10 @@ Scene read_scene(const toml::table& root) {
 
   scene.wrap_angles = numerics.boolean("wrap_angles", scene.wrap_angles);
   scene.shadow_runs = numerics.choice("global_error", "shadow", {"shadow", "local"}) == "shadow";
+  if (scene.thermal.on() && scene.shadow_runs && numerics.find("global_error"))
+    fail(numerics.key("global_error"),
+         "must be \"local\" (or left out) when thermal.temperature > 0: shadow runs need a deterministic "
+         "member, and at T > 0 D's error is its standard error over the averaged periods");
   scene.device = numerics.choice("device", "cpu", {"cpu", "gpu"}) == "gpu" ? ensemble::Device::gpu
                                                                            : ensemble::Device::cpu;
   if (scene.slip_kinds && scene.device == ensemble::Device::gpu)

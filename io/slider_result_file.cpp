@@ -261,11 +261,16 @@ SliderResultFile::SliderResultFile(const std::string& path, const ensemble::Slid
 
 SliderResultFile SliderResultFile::reopen(const std::string& path, const ensemble::SliderScene& scene) {
   auto location = Hdf5Location::open_file_for_writing(path);
+  check_file(location, scene);
   auto shard = shard_label(location);
   SliderResultFile file(std::move(location), scene, shard);
-  file.on_disk_ = true;
-  file.check_reopened();
+  file.adopt_reopened();
   return file;
+}
+
+void SliderResultFile::check_file(const Hdf5Location& file, const ensemble::SliderScene& scene) {
+  const hsize_t rows = check_table(file, "slider", scene.member_count());
+  check_table_columns(file, slider_columns(scene, ensemble::slider_timeline(scene)), rows, file.path(), "/");
 }
 
 SliderResultFile::SliderResultFile(Hdf5Location file, const ensemble::SliderScene& scene,
@@ -376,9 +381,22 @@ void SliderResultFile::keep_partial(std::size_t members_done, double wall_second
   file_.flush();
 }
 
+namespace {
+
+/// Bytes of /curve's data: 16 columns of 8 bytes per point (size, speed, damping, separation).
+double curve_data_bytes(const ensemble::SliderScene& scene) {
+  return double(scene.member_count() / scene.replicas) * 16 * 8;
+}
+
+}  // namespace
+
+double SliderResultFile::finishing_bytes(const ensemble::SliderScene& scene, bool shard) {
+  return shard ? 0.0 : reserved_bytes(curve_data_bytes(scene));
+}
+
 void SliderResultFile::finish(double wall_seconds, int threads) const {
   if (!shard_) {
-    reserve(double(scene_.member_count() / scene_.replicas) * 16 * 8, "/curve");
+    reserve(curve_data_bytes(scene_), "/curve");
     write_curve(file_, scene_);
   }
   set_members_done(rows_);

@@ -31,6 +31,13 @@ class SliderResultFile : public MemberTableFile {
   /// A file this class created (and did not finish), to write more members into.
   static SliderResultFile reopen(const std::string& path, const ensemble::SliderScene& scene);
 
+  /// Throws std::runtime_error naming what differs where `file` (a partial or shard file) is not what this
+  /// class writes for `scene`: its attributes kind, plan_members and shard label, and every /members and
+  /// /series dataset's shape and type.
+  static void check_file(const Hdf5Location& file, const ensemble::SliderScene& scene);
+  /// Disk bytes the finishing writes of a file of `scene` need (its /curve, none in a shard).
+  static double finishing_bytes(const ensemble::SliderScene& scene, bool shard);
+
   /// Writes the members (of any rows of the file) and marks their rows done.
   void write_members(const std::vector<ensemble::SliderMember>& members) const;
   /// Copies the rows marked done in `source`, a file of the same scene (a shard, or a whole plan's

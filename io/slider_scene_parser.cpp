@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -28,6 +29,10 @@ const std::map<std::string, std::set<std::string>> slider_keys{
     {"numerics", {"stepper", "rtol", "atol", "max_steps", "device"}},
     {"output", {"path"}},
 };
+
+/// The most members a slider plan may have, and the most sample points of its series over the speeds.
+constexpr std::size_t max_slider_members = 10000000;
+constexpr double max_sample_points = 1e7;
 
 bool positive(double x) { return x > 0; }
 bool within_pi(double x) { return std::fabs(x) <= 3.141592653589793; }
@@ -131,10 +136,53 @@ void read_run_length(const Section& drive, SliderScene& scene) {
   scene.end = drive.number("end", scene.end, "a number > 0 (s)", positive);
   const double period = scene.spacing / scene.speed;
   if (scene.end - scene.rest < period * (1 - 1e-9))
-    fail(drive.key("end"), "must leave at least one substrate period a/v = " + std::to_string(period) +
+    fail(drive.key("end"), "must leave at least one substrate period a/v = " + number_text(period) +
                                " s of sliding after drive.rest (the friction is a mean over whole periods)");
   if (scene.end - scene.rest > 1e4 * scene.spacing / scene.speed)
     fail(drive.key("end"), "gives more than 10000 substrate periods of sliding");
+}
+
+/// The rest and the sample points a member's series hold: at most 10⁴ substrate periods of rest at the
+/// fastest speed (as of sliding), and at most 10⁷ points over the speeds (the series' columns × speeds).
+void check_samples(const SliderScene& scene) {
+  const double fastest = *std::max_element(scene.speeds.begin(), scene.speeds.end());
+  const double rest_periods = scene.rest * fastest / scene.spacing;
+  if (rest_periods > 1e4)
+    fail("drive.rest", "is " + number_text(rest_periods) + " substrate periods a/v at drive.speed " +
+                           number_text(fastest) + " m/s (slider.spacing " + number_text(scene.spacing) +
+                           " m); at most 10000 are allowed");
+  double points = 0;  // stops per member: the rest's and the sliding's, and the start
+  for (const double v : scene.speeds) {
+    const double period = scene.spacing / v;
+    const double sliding = scene.periods > 0 ? double(scene.periods) : (scene.end - scene.rest) / period;
+    points = std::max(points, (scene.rest / period + sliding) * double(scene.samples_per_period) + 2);
+  }
+  if (points * double(scene.speeds.size()) > max_sample_points)
+    fail("observables.samples_per_period",
+         "gives " + number_text(points) + " sample points per member" +
+             (scene.speeds.size() > 1 ? " at each of " + std::to_string(scene.speeds.size()) + " speeds"
+                                      : "") +
+             " (drive.rest and the periods slid, at " + std::to_string(scene.samples_per_period) +
+             " per period); at most " + number_text(max_sample_points) + " are allowed");
+}
+
+/// The plan is too large: names the axis with the most values, and every axis's size.
+[[noreturn]] void fail_too_many_members(const SliderScene& scene) {
+  const std::pair<const char*, std::size_t> axes[] = {{"slider.columns", scene.sizes.size()},
+                                                      {"drive.speed", scene.speeds.size()},
+                                                      {"slider.damping", scene.dampings.size()},
+                                                      {"sweep.separation", scene.separations.size()},
+                                                      {"initial.replicas", scene.replicas}};
+  std::size_t largest = 0;
+  double count = 1;
+  std::string product;
+  for (std::size_t i = 0; i < std::size(axes); ++i) {
+    if (axes[i].second > axes[largest].second) largest = i;
+    count *= double(axes[i].second);
+    product += (i ? " × " : "") + std::string(axes[i].first) + " " + std::to_string(axes[i].second);
+  }
+  fail(axes[largest].first, "the plan has " + number_text(count) + " members (" + product + "); at most " +
+                                std::to_string(max_slider_members) + " are allowed");
 }
 
 SliderScene read_slider_scene(const toml::table& root) {
@@ -159,6 +207,11 @@ SliderScene read_slider_scene(const toml::table& root) {
   const Section substrate = section(root, "substrate");
   scene.substrate_columns = count(substrate, "columns", scene.substrate_columns, false);
   scene.substrate_rows = count(substrate, "rows", scene.substrate_rows, false);
+  if (scene.substrate_columns * scene.substrate_rows > 1000000)
+    fail(substrate.key("columns"), "and substrate.rows give " +
+                                       std::to_string(scene.substrate_columns * scene.substrate_rows) +
+                                       " magnets; at most 1000000 are allowed (every node of a substrate "
+                                       "table sums over all of them)");
   scene.substrate_moment =
       substrate.number("moment", scene.substrate_moment, "a number > 0 (A m²)", positive);
   scene.nodes_per_depth = substrate.number("nodes_per_depth", scene.nodes_per_depth,
@@ -177,7 +230,7 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.separations = grid(section(root, "sweep"), "separation", "> 0 (layer separation h, m)", positive);
   for (const double h : scene.separations)
     if (h < 0.05 * scene.spacing)
-      fail("sweep.separation", "must be at least 0.05 a = " + std::to_string(0.05 * scene.spacing) +
+      fail("sweep.separation", "must be at least 0.05 a = " + number_text(0.05 * scene.spacing) +
                                    " m (closer, the point dipoles are no model of magnets)");
 
   const Section initial = section(root, "initial");
@@ -221,7 +274,11 @@ SliderScene read_slider_scene(const toml::table& root) {
 
   const Section output = section(root, "output");
   scene.output_path = output.text("path", scene.output_path);
-  if (scene.member_count() > 10000000) fail("initial.replicas", "gives more than 10000000 members");
+  if (double(scene.sizes.size()) * double(scene.speeds.size()) * double(scene.dampings.size()) *
+          double(scene.separations.size()) * double(scene.replicas) >
+      double(max_slider_members))
+    fail_too_many_members(scene);
+  check_samples(scene);
   check_slider_device(scene);
   return scene;
 }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,20 @@ void create_table_columns(const Hdf5Location& at, const std::vector<TableColumn<
     at.create_column(column.name, column.type, {rows, column.width, column.text_length, column.depth},
                      column.description, column.units);
   }
+}
+
+/// Throws std::runtime_error naming the first of `columns` whose dataset below `at` (in the file at
+/// `path`, the columns' location `where`, e.g. "/members/") is missing or is not what
+/// create_table_columns makes for `rows` rows: a file written for another scene, or edited.
+template <class... Row>
+void check_table_columns(const Hdf5Location& at, const std::vector<TableColumn<Row...>>& columns,
+                         hsize_t rows, const std::string& path, const std::string& where) {
+  for (const auto& column : columns)
+    if (const std::string mismatch = at.column_mismatch(
+            column.name, column.type, {rows, column.width, column.text_length, column.depth});
+        !mismatch.empty())
+      throw std::runtime_error("'" + path + "': dataset " + where + column.name + " " + mismatch +
+                               ": the file does not hold its scene's results");
 }
 
 /// Writes member i (values[i]... of each Row) into row rows[i] of every column (rows ascending).

@@ -2,11 +2,14 @@
 // { from, to, count, spacing }, the section check and reading the file (README "Scene files").
 #include "io/toml_section.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 namespace rotorsweep::io {
 
@@ -22,6 +25,43 @@ std::string shortened(const std::string& s, std::size_t limit) {
   while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;  // UTF-8 continuation
   return s.substr(0, cut) + "… (" + std::to_string(s.size()) + " bytes)";
 }
+
+namespace {
+
+/// a·b as an unevaluated sum p + e, exactly (Dekker's product with Veltkamp's split; no fused
+/// multiply-add, which the build does not contract to).
+std::pair<double, double> exact_product(double a, double b) {
+  const auto split = [](double x) {
+    const double c = 134217729.0 * x;  // 2^27 + 1
+    const double high = c - (c - x);
+    return std::pair{high, x - high};
+  };
+  const double p = a * b;
+  const auto [ah, al] = split(a);
+  const auto [bh, bl] = split(b);
+  return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
+}
+
+/// a + b as an unevaluated sum s + e, exactly (Knuth's two-sum).
+std::pair<double, double> exact_sum(double a, double b) {
+  const double s = a + b, v = s - a;
+  return {s, (a - (s - v)) + (b - v)};
+}
+
+/// Point i of the m + 1 equally spaced points from `from` to `to`: the double nearest to
+/// (from (m − i) + to i) / m, its numerator summed exactly, so that a point the grid meets exactly
+/// (6 in from 0.25 to 11 in 44 points) is that number, and both ends are `from` and `to`.
+double linear_point(double from, double to, long long i, long long m) {
+  const auto [p, dp] = exact_product(from, double(m - i));
+  const auto [q, dq] = exact_product(to, double(i));
+  const auto [s, ds] = exact_sum(p, q);
+  const double low = dp + dq + ds;
+  const double quotient = s / double(m);
+  const auto [back, dback] = exact_product(quotient, double(m));
+  return quotient + (((s - back) - dback) + low) / double(m);
+}
+
+}  // namespace
 
 [[noreturn]] void fail(const std::string& key, const std::string& message) {
   throw SceneError("scene key '" + shortened(key) + "': " + message);
@@ -40,10 +80,28 @@ std::string describe(const toml::node& node) {
   return shortened(out.str());
 }
 
-/// A number, a list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a
-/// `fallback`, the fallback when the key is absent.
-std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
-                         bool (*valid)(double), const std::vector<double>& fallback) {
+std::string number_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
+}
+
+namespace {
+
+/// The values of axis `key`, refused when one of them comes twice: each value is a point of the plan,
+/// and two points with one coordinate would be one point twice.
+std::vector<double> distinct(std::vector<double> values, const std::string& key) {
+  std::vector<double> sorted(values);
+  std::sort(sorted.begin(), sorted.end());
+  if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end()); twice != sorted.end())
+    fail(key, "has the value " + number_text(*twice) +
+                  " more than once; the values of a sweep axis must differ (each is a point of the plan)");
+  return values;
+}
+
+/// The grid's values before the check that they differ.
+std::vector<double> grid_values(const Section& section, std::string_view k, const std::string& what,
+                                bool (*valid)(double), const std::vector<double>& fallback) {
   const std::string key = section.key(k);
   const std::string shape =
       "a number, a list of numbers " + what + ", or { from, to, count, spacing = \"linear\"|\"log\" }";
@@ -69,15 +127,27 @@ std::vector<double> grid(const Section& section, std::string_view k, const std::
   const long long count = r.integer("count", 1, "an integer from 1 to 10000000",
                                     [](long long c) { return c >= 1 && c <= 10000000; });
   const bool log = r.choice("spacing", "linear", {"linear", "log"}) == "log";
-  if (to < from) fail(r.key("to"), "must be >= from (" + std::to_string(from) + ")");
+  if (to < from) fail(r.key("to"), "must be >= from (" + number_text(from) + ")");
   if (log && from <= 0) fail(r.key("from"), "must be > 0 with spacing = \"log\"");
   for (long long i = 0; i < count; ++i) {
-    const double s = count == 1 ? 0.0 : double(i) / double(count - 1);
-    values.push_back(log ? std::exp(std::log(from) + s * (std::log(to) - std::log(from)))
-                         : from + s * (to - from));
+    if (count == 1)
+      values.push_back(from);
+    else if (log)
+      values.push_back(
+          std::exp(std::log(from) + double(i) / double(count - 1) * (std::log(to) - std::log(from))));
+    else
+      values.push_back(linear_point(from, to, i, count - 1));
   }
+  values.front() = from;  // exp(log(x)) need not give x back
   values.back() = to;
   return values;
+}
+
+}  // namespace
+
+std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
+                         bool (*valid)(double), const std::vector<double>& fallback) {
+  return distinct(grid_values(section, k, what, valid, fallback), section.key(k));
 }
 
 void check_sections(const toml::table& root,

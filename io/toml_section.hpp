@@ -26,6 +26,8 @@ std::string shortened(const std::string& s, std::size_t limit = 80);
 [[noreturn]] void fail(const std::string& key, const std::string& message);
 /// A value as the user wrote it, for messages.
 std::string describe(const toml::node& node);
+/// A number for messages, to 6 significant digits ("%g": 1.6e+301, not 301 digits).
+std::string number_text(double x);
 
 /// Typed access to one section of the scene, keys named "section.key" in messages.
 class Section {
@@ -134,8 +136,8 @@ inline Section section(const toml::table& root, const std::string& name) {
   return Section(root[name].as_table(), name);
 }
 
-/// A number, a list of numbers, or { from, to, count, spacing = "linear" | "log" }; with a
-/// `fallback`, the fallback when the key is absent.
+/// A number, a list of numbers, or { from, to, count, spacing = "linear" | "log" }, its values distinct
+/// (each is a point of the plan's axis); with a `fallback`, the fallback when the key is absent.
 std::vector<double> grid(const Section& section, std::string_view k, const std::string& what,
                          bool (*valid)(double), const std::vector<double>& fallback = {});
 

@@ -1,5 +1,5 @@
-// The extension module rotorsweep._core: bad scenes, unusable output paths and thread counts become
-// ValueError (the command line's exit code 2), everything else RuntimeError.
+// The extension module rotorsweep._core: bad scenes, unusable output paths, thread counts and GPU launch
+// settings become ValueError (the command line's exit code 2), everything else RuntimeError.
 #include <pybind11/pybind11.h>
 
 #include <string>
@@ -7,6 +7,7 @@
 #include "bindings.hpp"
 #include "build_info.hpp"
 #include "ensemble/engine/thread_count.hpp"
+#include "ensemble/gpu/gpu_launch.hpp"
 #include "io/output_target.hpp"
 #include "io/scene_parser.hpp"
 
@@ -25,6 +26,8 @@ PYBIND11_MODULE(_core, m) {
         message.replace(at, 7, "force=True");
       PyErr_SetString(PyExc_ValueError, message.c_str());
     } catch (const rotorsweep::ensemble::ThreadCountError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const rotorsweep::ensemble::GpuLaunchError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });

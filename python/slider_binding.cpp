@@ -17,6 +17,7 @@
 #include "io/output_target.hpp"
 #include "io/slider_result_file.hpp"
 #include "io/slider_scene_parser.hpp"
+#include "sweep_job.hpp"
 
 namespace py = pybind11;
 
@@ -30,18 +31,22 @@ ensemble::SliderScene parse(const std::string& scene, bool is_path) {
 
 /// Runs the slider scene into `output` (checked before the start: ValueError) and returns its member
 /// count; `progress(done, total)` is called about ten times a second, and a signal Python wants to
-/// raise (Ctrl-C) stops the scan within one step and is raised, with nothing written. The
-/// members stream into the temporary file as `rotorsweep slider` streams them.
+/// raise (Ctrl-C, or SIGTERM where Python handles it) stops the scan within one step and is raised. The
+/// members stream into the temporary file as `rotorsweep slider` streams them: with `keep` into
+/// OUTPUT.partial, which then keeps the finished members of a stopped scan (`stopped(kept, total)` is
+/// called before the signal is raised), else into a hidden temporary file, which goes.
 std::size_t run_slider(const std::string& scene_text, bool is_path, int threads, const std::string& output,
-                       bool force, const std::string& version, const std::string& revision,
-                       const py::object& progress) {
+                       bool force, bool keep, const std::string& version, const std::string& revision,
+                       const py::object& progress, const py::object& stopped) {
   const auto scene = parse(scene_text, is_path);
   threads = ensemble::thread_count(threads, "threads");
   const std::string source = is_path ? scene_text : std::string("<python>");
-  io::OutputTarget target(output, {source}, io::Replaceable::hdf5, force);
+  io::OutputTarget target(output, {source}, io::Replaceable::hdf5, force, keep);
+  if (keep) refuse_earlier_partial(target, force);
   io::SliderResultFile file(target.temporary(), scene,
                             io::Provenance{source, version, revision, ensemble::slider_device_label(scene),
                                            ensemble::instruction_set().name});
+  target.claim_temporary();
   std::atomic<bool> stop{false}, finished{false};
   std::atomic<std::size_t> done{0};
   io::SliderStreamOutcome outcome;
@@ -72,7 +77,16 @@ std::size_t run_slider(const std::string& scene_text, bool is_path, int threads,
     }
     worker.join();
   }
-  if (interrupted) throw py::error_already_set();
+  if (interrupted) {
+    if (keep && !error) {  // as `rotorsweep slider` keeps them, for --resume
+      file.keep_partial(outcome.written, outcome.seconds, threads);
+      file.close();
+      target.keep();
+      py::error_scope raised;  // the signal's exception waits while Python is told what was kept
+      if (!stopped.is_none()) stopped(outcome.written, scene.member_count());
+    }
+    throw py::error_already_set();
+  }
   if (error) std::rethrow_exception(error);
   if (!outcome.write_error.empty())
     throw std::runtime_error("writing " + output + " failed: " + outcome.write_error);
@@ -98,11 +112,12 @@ void bind_slider(py::module_& m) {
       py::arg("scene"), py::arg("is_path") = false,
       "The validated slider scene: its output.path ('' when not given) and member count.");
   m.def("run_slider", &run_slider, py::arg("scene"), py::arg("is_path"), py::arg("threads"),
-        py::arg("output"), py::arg("force"), py::arg("version"), py::arg("revision"),
-        py::arg("progress") = py::none(),
+        py::arg("output"), py::arg("force"), py::arg("keep"), py::arg("version"), py::arg("revision"),
+        py::arg("progress") = py::none(), py::arg("stopped") = py::none(),
         "Runs a slider scene (TOML text, or a path with is_path) into the HDF5 file `output`, as "
         "`rotorsweep slider -o output` writes it; returns the member count. Bad scenes and outputs "
-        "raise ValueError naming the key; Ctrl-C stops it and writes nothing.");
+        "raise ValueError naming the key; Ctrl-C stops it, keeping the finished members in "
+        "output.partial with `keep` (stopped(kept, total) is told), else writing nothing.");
 }
 
 }  // namespace rotorsweep::python

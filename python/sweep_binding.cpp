@@ -122,7 +122,7 @@ void bind_sweep(py::module_& m) {
   m.attr("steppers") = steppers;
 
   py::class_<SweepJob>(m, "SweepJob",
-                       "A sweep on its own thread; poll wait(), read done/total, cancel() to stop.")
+                       "A sweep on its own thread; poll wait(), read done/total/periods, cancel() to stop.")
       .def(py::init([](const std::string& scene, bool is_path, int threads, const std::string& output,
                        bool force, const std::string& version, const std::string& revision) {
              const std::string source = is_path ? scene : std::string("<python>");
@@ -137,7 +137,16 @@ void bind_sweep(py::module_& m) {
            "Waits up to `seconds` (forever when negative) with the GIL released; True once ended.")
       .def_property_readonly("done", &SweepJob::done)
       .def_property_readonly("total", &SweepJob::total)
+      .def_property_readonly("periods", &SweepJob::periods, "periods the members have closed so far")
       .def("cancel", &SweepJob::cancel)
+      .def_property_readonly(
+          "kept",
+          [](const SweepJob& job) -> py::object {
+            const auto kept = job.kept();
+            return kept ? py::object(py::int_(*kept)) : py::object(py::none());
+          },
+          "After a cancelled sweep with an output path: the members kept in OUTPUT.partial (None: no file "
+          "kept).")
       .def(
           "take_image",
           [](SweepJob& job) {

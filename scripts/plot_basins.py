@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Basin fractions against A: per curve point the fraction of members in each regime (FM, AFM,
-CP, SA where observables.slip_kinds is on, unsettled) and failed, stacked, with Wilson 95 % intervals as error bars on each fraction;
-one panel per initial noise value (docs/model.md §3, "Basin fractions").
+CP, DW, SA where observables.slip_kinds is on, unsettled) and failed, each as its own line with its
+Wilson 95 % interval drawn as an error bar at the fraction's own value; one panel per initial noise
+value, the legend beside the panels (docs/model.md §3, "Basin fractions").
 Usage: plot_basins.py RESULT.h5 OUT.png [--kind random]"""
 import argparse
 import sys
@@ -13,11 +14,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-CATEGORIES = [("AFM", "tab:blue"), ("CP", "tab:orange"), ("SA", "gold"), ("FM", "tab:red"),
-              ("unsettled", "tab:gray"), ("failed", "black")]
+CATEGORIES = [("AFM", "tab:blue"), ("CP", "tab:orange"), ("SA", "gold"), ("DW", "tab:purple"),
+              ("FM", "tab:red"), ("unsettled", "tab:gray"), ("failed", "black")]
 
 
-def main(h5_path, png_path, kind):
+def figure(h5_path, kind):
+    """The figure of a result file (main() saves it)."""
     with h5py.File(h5_path, "r") as f:
         if not f.attrs.get("complete", False):
             sys.exit(f"error: {h5_path} is incomplete (the run did not finish)")
@@ -34,29 +36,31 @@ def main(h5_path, png_path, kind):
                 if f"fraction_{name}" in c}  # SA: only with observables.slip_kinds
         members = int(c["members"][:][keep][0])
     noises = np.unique(noise)
-    fig, axes = plt.subplots(1, len(noises), figsize=(6.5 * len(noises), 4.5), squeeze=False)
+    fig, axes = plt.subplots(1, len(noises), figsize=(6.5 * len(noises) + 1.6, 4.5), squeeze=False)
     for ax, eta in zip(axes[0], noises):
         sel = noise == eta
         order = np.argsort(A[sel])
         a = A[sel][order]
-        bottom = np.zeros(len(a))
         for name, colour in CATEGORIES:
             if name not in data:
                 continue
             frac, low, high = (x[sel][order] for x in data[name])
             if not frac.any():
                 continue
-            ax.fill_between(a, bottom, bottom + frac, step="mid", color=colour, alpha=0.55, label=name)
-            ax.errorbar(a, bottom + frac / 2, yerr=[frac - low, high - frac], fmt="none", ecolor=colour, capsize=2)
-            bottom += frac
+            ax.errorbar(a, frac, yerr=[frac - low, high - frac], fmt="o-", ms=3, lw=1, color=colour, capsize=2,
+                        label=name)
         ax.set_xlabel("A")
         ax.set_ylabel("fraction of members")
-        ax.set_ylim(0, 1)
+        ax.set_ylim(-0.02, 1.02)
         noise_text = f", η = {eta:g}" if kind in ("FM", "AFM", "") else ""  # random and exact starts have no η
         ax.set_title(f"{kind or 'all'} starts{noise_text}, {members} per A (Wilson 95 %)")
-        ax.legend(loc="center right")
+    axes[0][-1].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
     fig.tight_layout()
-    fig.savefig(png_path, dpi=120)
+    return fig
+
+
+def main(h5_path, png_path, kind):
+    figure(h5_path, kind).savefig(png_path, dpi=120, bbox_inches="tight")
     print(f"wrote {png_path}")
 
 

@@ -1,8 +1,12 @@
 #!/usr/bin/python3
-"""Plots a sweep's friction curve: dissipation per period and row d = D/N against A, one coloured
-curve per (g, initial kind), members coloured by regime, with the small-A (AFM, dashed) and
-large-A (FM, dotted) limits of model.md §4 for each g in its curve's colour, and the quasi-static CP friction J(A) of the landscape
-(D/N → J as g → 0). Reads the file with the rotorsweep Python module (build/python).
+"""Plots a sweep's friction curve: dissipation per period and row d = D/N against A, members coloured
+by regime with their error bars (dissipation_error / N, where it is a bound), unresolved members hollow,
+symmetry-limited ones (D decided by the integration error: no bound) as triangles and members whose
+shadow run departed as crosses; one line per (g, initial kind) through the mean over its settled
+members (regime not unsettled, status ok); the small-A (AFM, dashed) and large-A (FM, dotted) limits
+of model.md §4 for each g in its line's colour, and the quasi-static CP friction J(A) of the landscape
+(D/N → J as g → 0). The legend stands beside the axes. Reads the file with the rotorsweep Python
+module (build/python).
 Usage: plot_friction.py RESULT.h5 OUT.png [--no-jump]"""
 import argparse
 import sys
@@ -17,9 +21,10 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "build" / "python"))
 import rotorsweep  # noqa: E402
 
-REGIME_COLOURS = {"AFM": "tab:blue", "CP": "tab:orange", "SA": "gold", "FM": "tab:red", "unsettled": "tab:gray"}
+REGIME_COLOURS = {"AFM": "tab:blue", "CP": "tab:orange", "SA": "gold", "DW": "tab:purple", "FM": "tab:red",
+                  "unsettled": "tab:gray"}
 #: one per (g, initial kind) curve, apart from the regimes' colours and J(A)'s green
-CURVE_COLOURS = ["tab:purple", "tab:brown", "tab:olive", "tab:cyan", "tab:pink", "k"]
+CURVE_COLOURS = ["tab:brown", "tab:olive", "tab:cyan", "tab:pink", "k", "tab:purple"]
 
 
 def small_A_limit(A, g):
@@ -43,33 +48,78 @@ def open_result(h5_path):
     return ds
 
 
-def main(h5_path, png_path, jump=True):
+def member_flags(m, count):
+    """Each member's flags: its error a bound (resolved or too large), symmetry-limited, shadow departed."""
+    def flag(name, absent):
+        return m[name].values != 0 if name in m else np.full(count, absent)
+    limited, departed = flag("symmetry_limited", False), flag("shadow_departed", False)
+    resolved = flag("dissipation_resolved", True) & ~limited & ~departed
+    return resolved, limited, departed
+
+
+def settled_means(A, d, curve, settled):
+    """Per curve and A, the mean of d over the settled members (NaN where none is settled)."""
+    means = {}
+    for key in sorted(set(curve)):
+        on = curve == key
+        values = np.unique(A[on])
+        mean = np.array([np.mean(d[on & (A == a) & settled]) if (on & (A == a) & settled).any() else np.nan
+                         for a in values])
+        means[key] = (values, mean)
+    return means
+
+
+def figure(h5_path, jump=True):
+    """The figure of a result file (main() saves it)."""
     ds = open_result(h5_path)
     m = rotorsweep.members(ds)
     A, g, rows = (np.broadcast_to(m[name].values, m.dissipation.shape) for name in ("A", "g", "rows"))
     d = m.dissipation.values / rows
+    error = (m.dissipation_error.values if "dissipation_error" in m else np.full(len(A), np.nan)) / rows
     regime = m.regime.values.astype(str) if "regime" in m else np.full(len(A), "unsettled")
     status = m.status.values.astype(str)
+    ic = np.broadcast_to(m.ic.values, m.dissipation.shape).astype(str)
+    ok = status == "ok"
+    resolved, limited, departed = member_flags(m, len(A))
+    bounded = ok & ~limited & ~departed & np.isfinite(error)
 
-    fig, ax = plt.subplots(figsize=(8, 5))
-    # the replica mean of each curve point (/curves), one line per (g, initial kind)
-    points = ds.curve_dissipation_mean / ds.rows
-    lines = [d for d in points.dims if d != "A"]
+    fig, ax = plt.subplots(figsize=(11, 5.5))
+    # one line per (g, initial kind): the mean over its settled members at each A
+    curve = np.array([f"{gv:g}|{k}" for gv, k in zip(g, ic)])
     palette = CURVE_COLOURS
     g_colour = {}  # the limit laws of a g take the colour of its first curve
-    for k, (_, line) in enumerate(points.stack(line=lines).groupby("line") if lines else [(None, points)]):
-        g_value, kind = np.atleast_1d(line.g.values)[0], np.atleast_1d(line.ic.values)[0]
+    for k, (key, (values, mean)) in enumerate(settled_means(A, d, curve, ok & (regime != "unsettled")).items()):
+        g_value, kind = key.split("|")
         colour = palette[k % len(palette)]
         g_colour.setdefault(float(g_value), colour)
-        ax.plot(line.A.values, np.ravel(line.values), color=colour, lw=1.0, alpha=0.8,
-                label=f"g = {g_value:g}, {kind} start")
+        ax.plot(values, mean, color=colour, lw=1.0, alpha=0.8,
+                label=f"g = {g_value}, {kind} start: mean over settled members")
+    # error bars where the error is a bound (drawn first, under the markers)
+    ax.errorbar(A[bounded], d[bounded], yerr=error[bounded], fmt="none", ecolor="0.45", elinewidth=0.8,
+                capsize=1.5, zorder=2, label="dissipation_error / N (a bound)")
     for name, colour in REGIME_COLOURS.items():
-        sel = (regime == name) & (status == "ok")
-        if sel.any():
-            ax.scatter(A[sel], d[sel], s=9, color=colour, label=f"{name} ({sel.sum()} members)", zorder=3)
-    failed = status != "ok"
+        sel = (regime == name) & ok
+        if not sel.any():
+            continue
+        ax.scatter(A[sel & resolved], d[sel & resolved], s=12, color=colour, zorder=3,
+                   label=f"{name} ({sel.sum()} members)")
+        ax.scatter(A[sel & ~resolved & ~limited & ~departed], d[sel & ~resolved & ~limited & ~departed], s=14,
+                   facecolors="none", edgecolors=colour, zorder=3)
+        ax.scatter(A[sel & limited & ~departed], d[sel & limited & ~departed], s=16, marker="^",
+                   facecolors="none", edgecolors=colour, zorder=3)
+        ax.scatter(A[sel & departed], d[sel & departed], s=18, marker="x", color=colour, zorder=4)
+    # what the marker shapes say, in grey
+    for count, marker, filled, text in (
+            ((ok & resolved).sum(), "o", True, "resolved"),
+            ((ok & ~resolved & ~limited & ~departed).sum(), "o", False, "not resolved (error >= 0.1 D)"),
+            ((ok & limited & ~departed).sum(), "^", False, "symmetry-limited: no error bound"),
+            ((ok & departed).sum(), "x", True, "shadow departed: no error estimate")):
+        if count:
+            ax.plot([], [], ls="none", marker=marker, ms=4, color="0.4", markerfacecolor="0.4" if filled else "none",
+                    label=f"{text} ({count})")
+    failed = ~ok
     if failed.any():
-        ax.scatter(A[failed], np.full(failed.sum(), np.nanmin(d)), marker="x", color="k",
+        ax.scatter(A[failed], np.full(failed.sum(), np.nanmin(d)), marker="X", color="k",
                    label=f"failed ({failed.sum()})", zorder=4)
 
     A_line = np.linspace(max(A.min(), 1e-3), A.max(), 400)
@@ -92,9 +142,13 @@ def main(h5_path, png_path, jump=True):
     ax.set_ylabel("dissipated energy per period and row  D/N  [ε]")
     ax.set_title(f"magnetic friction  ⟨F⟩ = −D ε / P,  N = {', '.join(str(n) for n in np.unique(rows))}")
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7, loc="lower right")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)  # beside the data
     fig.tight_layout()
-    fig.savefig(png_path, dpi=130)
+    return fig
+
+
+def main(h5_path, png_path, jump=True):
+    figure(h5_path, jump).savefig(png_path, dpi=130, bbox_inches="tight")
     print(f"wrote {png_path}")
 
 

@@ -53,6 +53,11 @@ def read_curve(f, h5_path):
     return f["curve"]
 
 
+def legend_below(ax, fontsize):
+    """The axis's legend under it, clear of its data (the figure is saved with bbox_inches="tight")."""
+    ax.legend(fontsize=fontsize, loc="upper center", bbox_to_anchor=(0.5, -0.14), borderaxespad=0)
+
+
 def order_axis(ax, xlabel, ylabel, title, fontsize):
     """Labels an axis of order parameters, from −1 (AFM) to +1 (FM)."""
     ax.axhline(0, color="gray", lw=0.5)
@@ -60,7 +65,7 @@ def order_axis(ax, xlabel, ylabel, title, fontsize):
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(f"{title} (+1 FM, −1 AFM)")
-    ax.legend(fontsize=fontsize)
+    legend_below(ax, fontsize)
 
 
 def velocity_plot(h5_path, png_path, separations_mm=None):
@@ -102,10 +107,10 @@ def velocity_plot(h5_path, png_path, separations_mm=None):
     left.set_xlabel("sliding speed v (mm/s)")
     left.set_ylabel("mean friction force (N)")
     left.set_title("friction against speed (slope 1: viscous; 0: speed-independent)")
-    left.legend(fontsize=7)
+    legend_below(left, 7)
     order_axis(right, "sliding speed v (mm/s)", "mean cos(θ_i − θ_j), y-neighbours", "order across y", 7)
     fig.tight_layout()
-    fig.savefig(png_path, dpi=120)
+    fig.savefig(png_path, dpi=120, bbox_inches="tight")
     print(f"wrote {png_path}")
 
 
@@ -153,7 +158,7 @@ def main(h5_path, png_path, rows_path=None):
     ax.set_xlabel("layer separation h (mm)")
     ax.set_ylabel("mean friction force (N)")
     ax.set_title("friction against separation")
-    ax.legend(fontsize=8)
+    legend_below(ax, 8)
     order_axis(axes[1], "layer separation h (mm)", "mean cos(θ_i − θ_j)", "order parameters", 8)
     ax = axes[2]
     if series is None:
@@ -171,9 +176,9 @@ def main(h5_path, png_path, rows_path=None):
         ax.set_xlabel("time (s)")
         ax.set_ylabel("friction force F(t) (N)")
         ax.set_title(f"time series, {columns} × {rows} (substrate period {period:g} s)")
-        ax.legend(fontsize=8)
+        legend_below(ax, 8)
     fig.tight_layout()
-    fig.savefig(png_path, dpi=120)
+    fig.savefig(png_path, dpi=120, bbox_inches="tight")
     print(f"wrote {png_path}")
 
 

@@ -37,7 +37,7 @@ def curve(model, boundary, threads):
         "initial": {"kinds": ["AFM"], "replicas": 4},
         "schedule": {"relax_periods": 4, "average_periods": 4},
     }
-    ds = rotorsweep.run(scene, threads=threads, progress=False)
+    ds = rotorsweep.run(scene, threads=threads or None, progress=False)  # 0: every core
     A = ds.A.values
     per_row = ds.curve_dissipation_mean.squeeze().values / ROWS
     cp = ds.curve_fraction_CP.squeeze().values >= 0.5

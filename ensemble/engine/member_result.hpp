@@ -86,8 +86,8 @@ ROTORSWEEP_HD void record_quadratures(const QuadratureChannels& channels, kernel
 }
 
 /// The regimes of docs/model.md §3; SA (smooth alternation: slips every period, none a jump) only
-/// with observables.slip_kinds.
-enum class Regime { fm, afm, cp, unsettled, sa };
+/// with observables.slip_kinds; DW: slips every period across domain walls.
+enum class Regime { fm, afm, cp, unsettled, sa, dw };
 
 constexpr std::string_view regime_name(Regime regime) {
   switch (regime) {
@@ -95,12 +95,14 @@ constexpr std::string_view regime_name(Regime regime) {
     case Regime::afm: return "AFM";
     case Regime::cp: return "CP";
     case Regime::sa: return "SA";
+    case Regime::dw: return "DW";
     case Regime::unsettled: break;
   }
   return "unsettled";
 }
 
-inline constexpr Regime all_regimes[] = {Regime::fm, Regime::afm, Regime::cp, Regime::unsettled, Regime::sa};
+inline constexpr Regime all_regimes[] = {Regime::fm,        Regime::afm, Regime::cp,
+                                         Regime::unsettled, Regime::sa,  Regime::dw};
 
 struct MemberResult {
   std::size_t index = 0;
@@ -118,10 +120,12 @@ struct MemberResult {
   /// j's share of D, and the time mean of cos²((θ_j − θ_{j+1})/2) for each link (docs/model.md §3).
   std::vector<double> row_dissipation, link_alignment;
   /// D of the member's shadow run at tighter tolerances (NaN where it had none:
-  /// ensemble/engine/shadow_run.hpp), and whether no physical perturbation of the scene exceeds the
-  /// tolerance, so that the integration error decides D (symmetry-limited).
+  /// ensemble/engine/shadow_run.hpp); whether no physical perturbation of the scene exceeds the
+  /// tolerance, so that the integration error decides D (symmetry-limited); and whether the shadow
+  /// reached another attractor, so that it estimates no error (shadow_departed).
   double dissipation_shadow = std::numeric_limits<double>::quiet_NaN();
   bool symmetry_limited = false;
+  bool shadow_departed = false;
   std::vector<double>
       averaging_start;  ///< θ where the averaged periods began (empty: θ(0)), a shadow's start
   /// With observables.slip_kinds: each averaged period's slips' energies, in order (NaN past the
@@ -137,9 +141,10 @@ struct MemberResult {
   double dissipation() const { return mean(Channel::dissipation); }
   double dissipation_std() const { return summary(Summary::spread, Channel::dissipation); }
   double dissipation_error() const { return mean(Channel::dissipation_error); }
-  /// Whether D is resolved: finished, and its estimated error below 10 % of |D| (docs/numerics.md).
+  /// Whether D is resolved: finished, its error a bound (neither symmetry-limited nor left without an
+  /// estimate by a departed shadow) and below 10 % of |D| (docs/numerics.md).
   bool dissipation_resolved() const {
-    return status == kernels::LaneStatus::ok &&
+    return status == kernels::LaneStatus::ok && !symmetry_limited && !shadow_departed &&
            dissipation_error() < resolved_fraction * std::fabs(dissipation());
   }
   static constexpr double resolved_fraction = 0.1;

@@ -16,6 +16,10 @@ inline constexpr double shadow_tolerance_scale = 0.1;
 /// The factor on the Richardson estimate |D − D'| / (1 − s), which matched the actual global error
 /// to within ±30 % where D converges (σ_A = 1e-6, docs/numerics.md), so that it bounds it.
 inline constexpr double shadow_safety = 2.0;
+/// The least a slipping member's error is given, in units of its local estimate: the slips amplify
+/// the local error (by 1.4–210, median 50–70, on the coverage sets of docs/numerics.md), and where
+/// the shadow agrees with its primary by chance its difference alone would miss that.
+inline constexpr double shadow_local_floor = 8.0;
 
 /// Whether a finished member needs a shadow run: some averaged period slipped, so its D passes
 /// through escapes from saddles that the integration error may seed (its slip count is recorded).
@@ -24,20 +28,23 @@ inline bool needs_shadow(const MemberResult& result) {
 }
 
 /// Gives `primary` the global error its shadow run `shadow` shows (its averaged periods again, from
-/// where they began, at tolerances × s): dissipation_error = max(local estimate, shadow_safety ·
-/// |D − D'| / (1 − s)), Richardson's estimate for a global error proportional to the tolerance, with
-/// a margin; infinite when the shadow failed. `symmetry_limited`: the scene has no physical
-/// perturbation above the tolerance, so the integration error decides D and no error bounds it.
-inline void take_shadow(MemberResult& primary, const MemberResult& shadow, bool symmetry_limited) {
-  primary.dissipation_shadow = shadow.status == kernels::LaneStatus::ok
-                                   ? shadow.dissipation()
-                                   : std::numeric_limits<double>::quiet_NaN();
-  const double global = shadow.status == kernels::LaneStatus::ok
+/// where they began, at tolerances × s): dissipation_error = max(shadow_local_floor · local estimate,
+/// shadow_safety · |D − D'| / (1 − s)), Richardson's estimate for a global error proportional to the
+/// tolerance, with a margin. A shadow that failed, or that did not reach the primary's attractor
+/// (`followed` false: then shadow_departed), measures no error of D: the error is infinite.
+/// `symmetry_limited`: the scene has no physical perturbation above the tolerance, so the integration
+/// error decides D and no error bounds it.
+inline void take_shadow(MemberResult& primary, const MemberResult& shadow, bool symmetry_limited,
+                        bool followed) {
+  const bool finished = shadow.status == kernels::LaneStatus::ok;
+  primary.dissipation_shadow = finished ? shadow.dissipation() : std::numeric_limits<double>::quiet_NaN();
+  primary.shadow_departed = finished && !followed;
+  const double global = finished && followed
                             ? shadow_safety * std::fabs(primary.dissipation() - shadow.dissipation()) /
                                   (1 - shadow_tolerance_scale)
                             : std::numeric_limits<double>::infinity();
   double& error = primary.summary(Summary::mean, Channel::dissipation_error);
-  error = std::max(error, global);
+  error = std::max(shadow_local_floor * error, global);
   primary.symmetry_limited = symmetry_limited;
 }
 

@@ -29,8 +29,10 @@ inline bool needs_slower_rerun(const MemberResult& result) {
 /// the rerun's period in the same place; a period whose slip count differs from the rerun's, or has
 /// more slips than are recorded (max_slip_energies), leaves its slips unmatched. slip_jumps and
 /// slip_smooth are per-period means; the regime becomes SA (smooth alternation) when every slip is
-/// matched and none is a jump. A failed rerun leaves the counts NaN and the regime CP.
-inline void take_slower_rerun(MemberResult& primary, const MemberResult& slower) {
+/// matched and none is a jump, where `smooth_alternation_possible` (the model's landscape allows it at
+/// the member's A). A failed rerun leaves the counts NaN and the regime CP.
+inline void take_slower_rerun(MemberResult& primary, const MemberResult& slower,
+                              bool smooth_alternation_possible) {
   primary.slip_jumps = primary.slip_smooth = NAN;
   if (slower.status != kernels::LaneStatus::ok) return;
   const auto& mine = primary.slip_energies;
@@ -51,10 +53,9 @@ inline void take_slower_rerun(MemberResult& primary, const MemberResult& slower)
   }
   primary.slip_jumps = jumps / double(mine.size());
   primary.slip_smooth = smooth / double(mine.size());
-  if (all_matched && jumps == 0 && smooth > 0) {
+  if (smooth_alternation_possible && all_matched && jumps == 0 && smooth > 0) {
     primary.regime = Regime::sa;
-    auto& label = primary.final_state.attractor;  // <regime>:<structure>:p<period>
-    label.replace(0, label.find(':'), regime_name(Regime::sa));
+    rename_attractor_regime(primary.final_state, std::string(regime_name(Regime::sa)));
   }
 }
 

@@ -44,8 +44,8 @@ std::size_t gpu_max_rows(const Scene& scene) {
 unsigned gpu_slider_team_size(SliderSize size, const GpuLaunch& launch) {
   if (launch.team) {
     if (launch.team < 2 || launch.team > 32)
-      throw std::runtime_error("ROTORSWEEP_GPU_TEAM = " + std::to_string(launch.team) +
-                               ": a slider member runs on a team of 2, 4, 8, 16 or 32 threads");
+      throw GpuLaunchError("ROTORSWEEP_GPU_TEAM = " + std::to_string(launch.team) +
+                           ": a slider member runs on a team of 2, 4, 8, 16 or 32 threads");
     return launch.team;
   }
   unsigned team = 2;

@@ -20,7 +20,7 @@ int positive_from_environment(const char* name, int fallback) {
   char* end = nullptr;
   const long value = std::strtol(text, &end, 10);
   if (*end != '\0' || value < 1 || value > (1 << 20))
-    throw std::runtime_error(std::string(name) + " = '" + text + "': must be a positive integer");
+    throw GpuLaunchError(std::string(name) + " = '" + text + "': must be a positive integer");
   return int(value);
 }
 
@@ -30,7 +30,7 @@ GpuScratch scratch_from_environment() {
   const std::string value = text;
   if (value == "shared") return GpuScratch::shared;
   if (value == "global") return GpuScratch::global;
-  throw std::runtime_error("ROTORSWEEP_GPU_SCRATCH = '" + value + "': allowed: shared, global");
+  throw GpuLaunchError("ROTORSWEEP_GPU_SCRATCH = '" + value + "': allowed: shared, global");
 }
 
 }  // namespace
@@ -39,14 +39,13 @@ GpuLaunch gpu_launch() {
   GpuLaunch launch;
   launch.threads_per_block = positive_from_environment("ROTORSWEEP_GPU_BLOCK", launch.threads_per_block);
   if (launch.threads_per_block > 1024 || launch.threads_per_block % 32 != 0)
-    throw std::runtime_error("ROTORSWEEP_GPU_BLOCK: must be a multiple of 32 from 32 to 1024");
+    throw GpuLaunchError("ROTORSWEEP_GPU_BLOCK: must be a multiple of 32 from 32 to 1024");
   launch.blocks = positive_from_environment("ROTORSWEEP_GPU_BLOCKS", 0);
   const int team = positive_from_environment("ROTORSWEEP_GPU_TEAM", 0);
   if (team > 1024 || (team & (team - 1)) != 0)
-    throw std::runtime_error(
-        "ROTORSWEEP_GPU_TEAM = " + std::to_string(team) +
-        ": allowed: a power of two up to 1024 (1: a member per thread, 2 … 32: a team of "
-        "a warp, 64 … 1024: a whole block)");
+    throw GpuLaunchError("ROTORSWEEP_GPU_TEAM = " + std::to_string(team) +
+                         ": allowed: a power of two up to 1024 (1: a member per thread, 2 … 32: a team of "
+                         "a warp, 64 … 1024: a whole block)");
   launch.team = unsigned(team);
   launch.scratch = scratch_from_environment();
   return launch;

@@ -3,10 +3,18 @@
 #pragma once
 
 #include <cstddef>
+#include <stdexcept>
 
 #include "ensemble/rows/scene.hpp"
 
 namespace rotorsweep::ensemble {
+
+/// A bad value of a ROTORSWEEP_GPU_* variable (the message names it and what is allowed): like a bad
+/// scene key, the command line's exit code 2.
+class GpuLaunchError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 /// Where a team keeps its member's vectors: the block's shared memory where its teams' fit, else global
 /// memory (automatic), or as asked.
@@ -25,7 +33,7 @@ struct GpuLaunch {
 /// The launch in use: the defaults, or from the environment ROTORSWEEP_GPU_BLOCK (a multiple of 32 up
 /// to 1024), ROTORSWEEP_GPU_BLOCKS, ROTORSWEEP_GPU_TEAM (a power of two up to 1024; above 32 a team is
 /// a whole block, whose size it sets) and
-/// ROTORSWEEP_GPU_SCRATCH (shared or global); a bad value throws std::runtime_error naming it.
+/// ROTORSWEEP_GPU_SCRATCH (shared or global); a bad value throws GpuLaunchError naming it.
 GpuLaunch gpu_launch();
 
 /// Whether the scene's members can run on a team (ensemble/engine/team_member.hpp): rows (nearest

@@ -28,6 +28,7 @@ struct CurvePoint {
   /// Bound on the integration's bias of dissipation_mean: the mean of the members' dissipation_error
   double dissipation_bias = 0;
   std::size_t symmetry_limited = 0;  ///< members of count whose D the integration error decides
+  std::size_t shadow_departed = 0;   ///< members of count whose shadow run reached another attractor
   /// Members of the point in each regime (all_regimes order; finished members only) and failed.
   std::array<std::size_t, std::size(all_regimes)> regime_count{};
   std::size_t failed = 0;

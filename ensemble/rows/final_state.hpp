@@ -24,6 +24,12 @@ inline constexpr double detached_angle = 0.785398163397448;  ///< π/4
 inline constexpr double orbit_tol = 1e-3;                    ///< end states equal to this (max over rows)
 inline constexpr double group_gap = 0.1;                     ///< angles farther apart start a new cluster
 
+/// Gives `state`'s attractor label the regime `regime` (a rule that renames a member's regime after
+/// its final state was classified).
+inline void rename_attractor_regime(FinalState& state, const std::string& regime) {
+  state.attractor.replace(0, state.attractor.find(':'), regime);
+}
+
 /// Classifies from the states at the ends of the last periods (oldest first, at least one; at a
 /// period end the drive phase is 0 mod 2π) and the member's regime name. The structure is "2SL"
 /// (two sublattices within two_sublattice_tol), else "walls<k>" when there are domain walls,

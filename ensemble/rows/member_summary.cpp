@@ -97,6 +97,14 @@ void average_profiles(const RetiredLane& lane, double period, MemberResult& resu
   for (double& rho : result.link_alignment) rho /= count * period;
 }
 
+/// A member that slips in every averaged period and ends with domain walls slips where its walls are,
+/// not by the two-sublattice jumps of the paper's CP window: its regime is DW (docs/model.md §3).
+void label_wall_slipping(MemberResult& result) {
+  if (result.regime != Regime::cp || result.final_state.domain_walls == 0) return;
+  result.regime = Regime::dw;
+  rename_attractor_regime(result.final_state, std::string(regime_name(Regime::dw)));
+}
+
 /// Each averaged period's slip energies, in order (ensemble/engine/slip_kinds.hpp).
 void keep_slip_energies(const std::vector<PeriodRecord>& history, int average_periods, MemberResult& result) {
   const std::size_t count = std::min(history.size(), std::size_t(average_periods));
@@ -122,9 +130,10 @@ MemberResult retired_member_result(RetiredLane&& lane, const SummaryRules& rules
     result.theta_final[k] = kernels::wrap_2pi(lane.theta[k]);
   const bool ok = result.status == kernels::LaneStatus::ok;
   summarize(ok ? lane.history : std::vector<PeriodRecord>{}, rules.average_periods, rules.classify, result);
-  if (ok && !lane.end_states.empty())
+  if (ok && !lane.end_states.empty()) {
     result.final_state = classify_final_state(lane.end_states, std::string(regime_name(result.regime)));
-  else
+    label_wall_slipping(result);
+  } else
     result.final_state.attractor = ok ? "unsettled:none:p0" : "failed";
   if (rules.statistical_error) {
     // D is a random quantity: its error is the standard error of the mean over the averaged periods

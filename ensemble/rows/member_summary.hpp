@@ -63,7 +63,8 @@ std::size_t end_state_capacity(int average_periods);
 void keep_end_states(RetiredLane& lane, std::vector<std::vector<double>> ends, int average_periods);
 
 /// The member's result: its counts, final angles in [0, 2π), summaries over the averaged periods
-/// (NaN when it failed), final state and row profiles. `history` is moved into result.periods
+/// (NaN when it failed), final state and row profiles; a CP member that ends with domain walls is
+/// DW (domain-wall slipping). `history` is moved into result.periods
 /// with period_series.
 MemberResult retired_member_result(RetiredLane&& lane, const SummaryRules& rules);
 

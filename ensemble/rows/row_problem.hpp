@@ -24,6 +24,8 @@
 #include "ensemble/rows/observables.hpp"
 #include "ensemble/rows/row_profile_observer.hpp"
 #include "ensemble/rows/scene.hpp"
+#include "ensemble/rows/shadow_attractor.hpp"
+#include "ensemble/rows/smooth_alternation_window.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -174,9 +176,9 @@ class RowProblem {
       const auto at = held_.find(member.index);
       Held& held = at->second;
       if (member.rerun == Rerun::shadow)
-        take_shadow(held.primary, result, symmetry_limited_);
+        complete_with_shadow(held.primary, result, symmetry_limited_);
       else
-        take_slower_rerun(held.primary, result);
+        take_slower_rerun(held.primary, result, smooth_alternation_possible(scene_, member.A));
       if (--held.pending > 0) return;
       MemberResult primary = std::move(held.primary);
       held_.erase(at);

@@ -11,6 +11,7 @@
 
 #include "ensemble/engine/shadow_run.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/rows/shadow_attractor.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -90,7 +91,7 @@ class ShadowedRange {
                          primary = std::move(at->second);
                          held_.erase(at);
                        }
-                       take_shadow(primary, shadow, limited_);
+                       complete_with_shadow(primary, shadow, limited_);
                        sink(std::move(primary));
                      });
   }
@@ -150,12 +151,13 @@ SweepOutcome run_members(const Scene& scene, const MemberSource& source, int thr
 }
 
 SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
-                       const ProgressCallback& progress, const std::atomic<bool>* stop) {
+                       const ProgressCallback& progress, const std::atomic<bool>* stop,
+                       std::atomic<std::size_t>* periods) {
   std::vector<MemberResult> results(members.size());
   std::vector<char> finished(members.size(), 0);
   const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
   auto outcome =
-      run_members(scene, source, threads, SweepControl{progress, stop}, [&](MemberResult&& result) {
+      run_members(scene, source, threads, SweepControl{progress, stop, periods}, [&](MemberResult&& result) {
         // members are in plan order (sorted by index): find the result's position
         const auto at = std::lower_bound(members.begin(), members.end(), result.index,
                                          [](const Member& m, std::size_t index) { return m.index < index; });

@@ -78,8 +78,10 @@ SweepOutcome run_members(const Scene& scene, const MemberSource& source, int thr
 
 /// Runs `members` (any subset of the scene's plan, in plan order) and returns their results in
 /// the same order; members of different variants run one variant after the other. Raising
-/// *stop returns early with outcome.interrupted set.
+/// *stop returns early with outcome.interrupted set; *periods (where given) counts the periods
+/// members close, as SweepControl::periods.
 SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
-                       const ProgressCallback& progress, const std::atomic<bool>* stop = nullptr);
+                       const ProgressCallback& progress, const std::atomic<bool>* stop = nullptr,
+                       std::atomic<std::size_t>* periods = nullptr);
 
 }  // namespace rotorsweep::ensemble

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -39,8 +40,11 @@ class SliderProblem {
   using Result = SliderMember;
   static constexpr std::size_t width = Loop::width;
 
-  SliderProblem(const SliderScene& scene, const std::vector<SliderSampleGrid>& grids, SliderSize size)
+  /// `stopped()`, where given, is asked while a substrate table is built (kernels::SubstrateTableStopped).
+  SliderProblem(const SliderScene& scene, const std::vector<SliderSampleGrid>& grids, SliderSize size,
+                std::function<bool()> stopped = {})
       : scene_(scene),
+        stopped_(std::move(stopped)),
         units_(scene),
         grids_(grids),
         size_(size),
@@ -153,7 +157,7 @@ class SliderProblem {
     const std::pair key{index.speed, index.separation};
     if (!last_table_ || last_table_key_ != key) {
       last_table_ = std::make_shared<const kernels::SubstrateTable>(
-          substrate_table<V>(variant, size_, scene_.separations[index.separation]));
+          substrate_table<V>(variant, size_, scene_.separations[index.separation], 0.0, 0.0, stopped_));
       last_table_key_ = key;
     }
     return last_table_;
@@ -164,8 +168,8 @@ class SliderProblem {
     Lane& lane = lanes_[l];
     const double h = lane.member.separation;
     for (std::size_t g = 0; g < 4; ++g)
-      lane.gradient[g] = std::make_shared<const kernels::SubstrateTable>(
-          substrate_table<V>(scene_, size_, h, Model::gradient_shifts[g][0], Model::gradient_shifts[g][1]));
+      lane.gradient[g] = std::make_shared<const kernels::SubstrateTable>(substrate_table<V>(
+          scene_, size_, h, Model::gradient_shifts[g][0], Model::gradient_shifts[g][1], stopped_));
     set_gradient_tables(l);
   }
   void set_gradient_tables(std::size_t l) {
@@ -224,6 +228,7 @@ class SliderProblem {
   }
 
   const SliderScene& scene_;
+  std::function<bool()> stopped_;
   SliderUnits units_;
   const std::vector<SliderSampleGrid>& grids_;
   SliderSize size_;

@@ -49,6 +49,27 @@ double final_displacement(const SliderScene& scene) {
   return std::max(0.0, scene.end - scene.rest) * scene.speed / scene.spacing;
 }
 
+SubstrateTableLayout substrate_table_layout(const SliderScene& scene, SliderSize size, double separation,
+                                            double dy, double ddepth) {
+  const kernels::SliderPlacement placement = slider_placement(scene);
+  const kernels::SliderGrid grid{size.columns, size.rows};
+  double first = placement.start_x(0, 0), last = first;
+  for (std::size_t j = 0; j < size.rows; ++j)
+    for (std::size_t i = 0; i < size.columns; ++i) {
+      first = std::min(first, placement.start_x(i, j));
+      last = std::max(last, placement.start_x(i, j));
+    }
+  SubstrateTableLayout at{substrate_lattice(scene, size, separation),
+                          placement.track_y(grid),
+                          first - 0.5,
+                          last + final_displacement(scene) + 0.5,
+                          separation / scene.spacing / scene.nodes_per_depth,
+                          placement.tilt};
+  at.lattice.depth += ddepth;
+  for (double& y : at.tracks) y += dy;
+  return at;
+}
+
 double paper_drive_amplitude(const SliderScene& scene, double separation) {
   return std::pow(scene.spacing / separation, 3) * scene.substrate_moment / scene.moment;
 }

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -139,28 +141,33 @@ double final_displacement(const SliderScene& scene);
 /// The scene's placement of the rotors over the substrate, in units of a.
 kernels::SliderPlacement slider_placement(const SliderScene& scene);
 
-/// The table of the substrate field over the whole path of a slider of `size` at separation h (m), its
-/// direct sums computed lane_width<V> nodes at a time (the same table for every V); with dy, ddepth
-/// (units of a) its tracks moved along y and the substrate farther by ddepth (SliderModel::forces).
+/// Where the table of the substrate field lies for a slider of `size` at separation h (m): the
+/// lattice, the tracks (y of each row, or of each rotor of a turned slider) and the span along x (units
+/// of a) of the whole path, with half a lattice constant beyond both ends so that no step's stage leaves
+/// it, and the node spacing; with dy, ddepth its tracks moved along y and the substrate farther by ddepth.
+struct SubstrateTableLayout {
+  kernels::SubstrateLattice lattice;
+  std::vector<double> tracks;
+  double x_begin = 0, x_end = 0, dx = 1, tilt = 0;
+  /// Bytes of the table's coefficients (12 per track and interval) and of the nodes it is fitted to.
+  double bytes() const {
+    const double intervals = std::ceil((x_end - x_begin) / dx) + 1;
+    return intervals * (double(tracks.size()) * 12 + 9) * sizeof(double);
+  }
+};
+SubstrateTableLayout substrate_table_layout(const SliderScene& scene, SliderSize size, double separation,
+                                            double dy = 0.0, double ddepth = 0.0);
+
+/// The table of the substrate field over that layout, its direct sums computed lane_width<V> nodes at a
+/// time (the same table for every V). `stopped()` is asked between blocks of nodes: once it is true the
+/// build ends with kernels::SubstrateTableStopped.
 template <class V>
 kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation,
-                                        double dy = 0.0, double ddepth = 0.0) {
-  const double depth = separation / scene.spacing;
-  const kernels::SliderPlacement placement = slider_placement(scene);
-  const kernels::SliderGrid grid{size.columns, size.rows};
-  double first = placement.start_x(0, 0), last = first;
-  for (std::size_t j = 0; j < size.rows; ++j)
-    for (std::size_t i = 0; i < size.columns; ++i) {
-      first = std::min(first, placement.start_x(i, j));
-      last = std::max(last, placement.start_x(i, j));
-    }
-  auto lattice = substrate_lattice(scene, size, separation);
-  lattice.depth += ddepth;
-  auto tracks = placement.track_y(grid);
-  for (double& y : tracks) y += dy;
-  // half a lattice constant beyond both ends of the path, so that no step's stage leaves the table
-  return kernels::SubstrateTable(lattice, tracks, first - 0.5, last + final_displacement(scene) + 0.5,
-                                 depth / scene.nodes_per_depth, placement.tilt, std::type_identity<V>{});
+                                        double dy = 0.0, double ddepth = 0.0,
+                                        const std::function<bool()>& stopped = {}) {
+  const SubstrateTableLayout at = substrate_table_layout(scene, size, separation, dy, ddepth);
+  return kernels::SubstrateTable(at.lattice, at.tracks, at.x_begin, at.x_end, at.dx, at.tilt,
+                                 std::type_identity<V>{}, stopped);
 }
 
 /// The row model's substrate strength A at separation h (docs/model.md §9 "Mapping onto the row model"):

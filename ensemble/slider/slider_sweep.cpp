@@ -51,7 +51,7 @@ bool run_sizes(const SliderScene& scene, const std::vector<SliderSampleGrid>& gr
       for (std::size_t s = 0; s < sizes.size() && !stop(); ++s) {
         const std::vector<std::size_t>& indices = sizes[s];
         LaneScheduler<SliderProblem<V, Inertial, Stepper>> scheduler(
-            scene, grids, slider_plan_member(scene, indices.front()).size);
+            scene, grids, slider_plan_member(scene, indices.front()).size, std::function<bool()>(stop));
         scheduler.run(
             [&]() -> std::optional<std::size_t> {
               if (stop()) return std::nullopt;
@@ -72,6 +72,8 @@ bool run_sizes(const SliderScene& scene, const std::vector<SliderSampleGrid>& gr
             },
             stop);
       }
+    } catch (const kernels::SubstrateTableStopped&) {
+      // a substrate table's build was stopped: this thread stops as the others do within a step
     } catch (...) {
 #pragma omp critical(slider_failure)
       if (!failure) failure = std::current_exception();
@@ -147,6 +149,33 @@ bool run_slider_members(const SliderScene& scene, const std::vector<std::size_t>
   const std::size_t samples = slider_timeline(scene).samples;
   return scene.overdamped ? run_sizes<false>(scene, grids, samples, sizes, control, finished)
                           : run_sizes<true>(scene, grids, samples, sizes, control, finished);
+}
+
+double slider_thread_bytes(const SliderScene& scene) {
+  const SliderSize largest =
+      *std::max_element(scene.sizes.begin(), scene.sizes.end(),
+                        [](SliderSize a, SliderSize b) { return a.rotors() < b.rotors(); });
+  const auto block = [&]<bool Inertial>() {
+    return kernels::with_stepper<kernels::SliderModel<V, Inertial>>(scene.stepper, [&]<class Stepper>(
+                                                                                const auto& method) {
+      using Loop = typename SliderProblem<V, Inertial, Stepper>::Loop;
+      const std::size_t dimension = Inertial ? 2 * largest.rotors() : largest.rotors();
+      return double(Loop::storage_size(dimension, typename Loop::Settings{.method = method},
+                                       kernels::SliderGrid{largest.columns, largest.rows},
+                                       slider_placement(scene))) *
+             double(sizeof(V));
+    });
+  };
+  // the longest path is the slowest speed's; the most nodes at the closest separation
+  double table = 0;
+  for (std::size_t v = 0; v < scene.speeds.size(); ++v)
+    table = std::max(
+        table, substrate_table_layout(slider_variant(scene, v, 0), largest,
+                                      *std::min_element(scene.separations.begin(), scene.separations.end()))
+                   .bytes());
+  const double tables_per_lane = scene.forces ? 5 : 1;
+  return (scene.overdamped ? block.template operator()<false>() : block.template operator()<true>()) +
+         (double(kernels::lane_width<V>) * tables_per_lane + 1) * table;
 }
 
 SliderResult run_slider_scan(const SliderScene& scene, const SliderScanControl& control) {

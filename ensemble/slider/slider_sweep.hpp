@@ -55,6 +55,12 @@ struct SliderTimeline {
 };
 SliderTimeline slider_timeline(const SliderScene& scene);
 
+/// Bytes one thread of a CPU scan works in besides its members' series: the lane block of the largest
+/// size (its integration loop's arena, dense in the rotors) and the substrate tables its lanes may hold
+/// (one each, four more with observables.forces, and the one being built) at the closest separation
+/// and the longest path.
+double slider_thread_bytes(const SliderScene& scene);
+
 /// How a scan runs: on `threads` threads (0: all); `progress(done)` after each member with the
 /// members finished so far; once `stopped()` is true no member starts and the running ones are
 /// abandoned within one step.

@@ -6,10 +6,14 @@ two-angle energy landscape (README "Python"; docs/architecture.md "Python module
     ds.dissipation.mean("replica")
 """
 
+import contextlib
 import io
-import sys
+import numbers
 import os
+import signal
+import sys
 import tempfile
+import threading
 
 import h5py
 import numpy as np
@@ -47,26 +51,31 @@ def run(scene, threads=None, progress=True, output=None, force=False, quiet=Fals
     force: replace an existing file at output that is not an HDF5 file.
 
     The sweep runs on its own thread without the GIL; Ctrl-C (KeyboardInterrupt) stops it within
-    one step, writes nothing, and is raised again.
+    one step and is raised again, and so does SIGTERM (as SystemExit(143)) where nothing else handles it.
+    Without output nothing is written; with output the finished members are kept in OUTPUT.partial, as
+    `rotorsweep run` keeps them (continue with `rotorsweep run SCENE -o OUTPUT --resume`).
     """
     text, is_path = _scene.resolve(scene)
+    count = _thread_count(threads)
     if output is True:
         output = _core.scene_info(text, is_path)["output_path"]
         if not output:
             raise ValueError("output=True: the scene has no output.path; give output a path")
     path = "" if output is None or output is False else _output_path(output)
-    job = _core.SweepJob(text, is_path, 0 if threads is None else int(threads), path, bool(force),
-                         _core.version, _core.revision)
+    job = _core.SweepJob(text, is_path, count, path, bool(force), _core.version, _core.revision)
     if not quiet:
-        sys.stderr.write(_core.run_description(text, is_path, 0 if threads is None else int(threads)))
+        sys.stderr.write(_core.run_description(text, is_path, count))
     line = _progress.ProgressLine(job.total, progress and not quiet)
     try:
-        while not job.wait(_POLL_SECONDS):
-            line.update(job.done)
+        with _stop_on_sigterm():
+            while not job.wait(_POLL_SECONDS):
+                line.update(job.done, job.periods)
     except BaseException:
         job.cancel()
         job.wait(-1)
         line.finish()
+        if path and not quiet:
+            _progress.report_kept(job.kept, job.total, path, "run")
         raise
     line.finish()
     image = job.take_image()
@@ -86,10 +95,12 @@ def slider(scene, threads=None, progress=True, output=None, force=False):
 
     Dimensions: size ("7x7", with coordinates columns and rows), separation (m), replica; period
     (the per-period values period_*) and time (the series series_friction, series_order_x,
-    series_order_y, series_energy). Ctrl-C stops the scan within one step, writes nothing, and is
-    raised again.
+    series_order_y, series_energy). Ctrl-C (and SIGTERM, as for run()) stops the scan within one step
+    and is raised again; with output the finished members are kept in OUTPUT.partial, as `rotorsweep
+    slider` keeps them.
     """
     text, is_path = _scene.resolve(scene)
+    count = _thread_count(threads)
     if output is True:
         output = _core.slider_scene_info(text, is_path)["output_path"]
         if not output:
@@ -100,22 +111,54 @@ def slider(scene, threads=None, progress=True, output=None, force=False):
         line.total = total
         line.update(done)
 
-    def run_into(path, replace):
+    def run_into(path, replace, keep):
         try:
-            _core.run_slider(text, is_path, 0 if threads is None else int(threads), path, replace, _core.version,
-                             _core.revision, report)
+            with _stop_on_sigterm():
+                _core.run_slider(text, is_path, count, path, replace, keep, _core.version, _core.revision, report,
+                                 lambda kept, total: _progress.report_kept(kept, total, path, "slider"))
         finally:
             line.finish()
 
     if output is not None and output is not False:
         path = _output_path(output)
-        run_into(path, bool(force))
+        run_into(path, bool(force), True)
         return open(path)
     with tempfile.TemporaryDirectory(prefix="rotorsweep-slider-") as scratch:
         path = os.path.join(scratch, "slider.h5")
-        run_into(path, True)
+        run_into(path, True, False)
         with h5py.File(path, "r") as h5file:
             return _slider.from_hdf5(h5file).load()
+
+
+def _thread_count(threads):
+    """threads= as the engine takes it: None (0: OMP_NUM_THREADS, else every core) or an integer from 1 to
+    4096; anything else (0, a bool, a float, a string) raises ValueError, as --threads is an exit code 2."""
+    if threads is None:
+        return 0
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral) or not 1 <= threads <= 4096:
+        raise ValueError(f"threads = {threads!r}: must be an integer from 1 to 4096 "
+                         "(or None: OMP_NUM_THREADS, else every core)")
+    return int(threads)
+
+
+@contextlib.contextmanager
+def _stop_on_sigterm():
+    """While a run or scan runs: SIGTERM raises SystemExit(143) (128 + SIGTERM, the command line's exit
+    code), so that it stops as on Ctrl-C: the finished members kept, temporary and lock files removed. Only
+    in the main thread, and only where SIGTERM would otherwise end the process at once."""
+    if threading.current_thread() is not threading.main_thread() or \
+            signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL:
+        yield
+        return
+
+    def stop(number, frame):
+        raise SystemExit(128 + number)
+
+    signal.signal(signal.SIGTERM, stop)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
 def _output_path(output):
@@ -141,9 +184,13 @@ def open(path, allow_incomplete=False):  # noqa: A001 (rotorsweep.open, like xar
     file (`rotorsweep slider`) gives slider()'s Dataset.
     """
     with h5py.File(os.fspath(path), "r") as h5file:
-        if h5file.attrs.get("kind") in ("slider", b"slider"):
-            return _slider.from_hdf5(h5file)
-        return _dataset.from_hdf5(h5file, allow_incomplete)
+        _dataset.check_result_file(h5file)
+        try:
+            if h5file.attrs.get("kind") in ("slider", b"slider"):
+                return _slider.from_hdf5(h5file)
+            return _dataset.from_hdf5(h5file, allow_incomplete)
+        except KeyError as missing:  # a dataset a result file has
+            raise ValueError(f"'{h5file.filename}' is not a rotorsweep result: {missing} is missing") from None
 
 
 def members(dataset):

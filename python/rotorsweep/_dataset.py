@@ -60,6 +60,20 @@ def _attributes(h5file):
     return attrs
 
 
+def check_result_file(h5file):
+    """ValueError unless the open file is a result of `rotorsweep run` or `rotorsweep slider`: the
+    attributes version, complete and scene, and /members (C++: io::is_rotorsweep_file)."""
+    name = h5file.filename
+    kind = h5file.attrs.get("kind", "")
+    kind = kind.decode() if isinstance(kind, bytes) else str(kind)
+    if kind.startswith("landscape"):
+        raise ValueError(f"'{name}' is a `rotorsweep {kind}` file, not a run or slider result: read it with h5py")
+    missing = [f"attribute {a}" for a in ("version", "complete", "scene") if a not in h5file.attrs]
+    missing += [] if "members" in h5file else ["/members"]
+    if missing:
+        raise ValueError(f"'{name}' is not a rotorsweep file (it has no {', '.join(missing)})")
+
+
 def from_hdf5(h5file, allow_incomplete=False):
     """The Dataset of an open h5py.File."""
     attrs = _attributes(h5file)

@@ -1,5 +1,7 @@
-"""The progress line of rotorsweep.run on sys.stderr: members done / total, rate, time left; redrawn
-in place on a terminal, one line every 10 s otherwise (like the command line's); and its last line."""
+"""The progress line of rotorsweep.run on sys.stderr: members done / total, rate, time left and the
+periods the members have closed (so that it moves while a few long members run); redrawn in place on a
+terminal, one line every 10 s otherwise (like the command line's); its last line, or the line that says
+where a stopped run keeps its members."""
 
 import sys
 import time
@@ -13,7 +15,7 @@ class ProgressLine:
         self.start = self.last = time.monotonic()
         self.width = 0
 
-    def update(self, done):
+    def update(self, done, periods=0):
         if not self.enabled:
             return
         now = time.monotonic()
@@ -24,6 +26,8 @@ class ProgressLine:
         rate = done / elapsed if elapsed > 0 else 0.0
         left = f", {(self.total - done) / rate:.0f} s left" if rate > 0 else ""
         text = f"{done}/{self.total} members ({100 * done / max(self.total, 1):.1f} %, {rate:.1f}/s{left})"
+        if periods > 0:
+            text += f"  ({periods} periods closed)"
         if self.terminal:
             sys.stderr.write("\r" + text.ljust(self.width))
             self.width = len(text)
@@ -39,7 +43,8 @@ class ProgressLine:
 
 def report(h5file, path):
     """The last lines `rotorsweep run` prints, from a finished result: members, time, rate and lane
-    occupancy, then the members that did not finish, are not resolved or are symmetry-limited."""
+    occupancy, then the members that did not finish, and, each reason apart, those whose D is not
+    resolved, is symmetry-limited or whose shadow departed."""
     attrs, members = h5file.attrs, h5file["members"]
     count = members["status"].shape[0]
     seconds = float(attrs["wall_seconds"])
@@ -56,10 +61,40 @@ def report(h5file, path):
     if failed:
         listed = " ".join(f"{name} {n}" for name, n in sorted(failed.items()))
         sys.stderr.write(f"warning: members that did not finish (their observables are NaN): {listed}\n")
-    for column, text in (("dissipation_resolved", "whose D is not resolved (dissipation_error >= 0.1 |D|)"),
-                         ("symmetry_limited", "whose D the integration error decides (symmetry-limited)")):
-        if column in members:
-            values = members[column][:]
-            flagged = sum(1 for k, v in zip(ok, values) if k and (v == 0 if column == "dissipation_resolved" else v != 0))
-            if flagged:
-                sys.stderr.write(f"warning: {flagged} members {text}; see /members/{column}\n")
+    flag = {name: members[name][:] != 0 if name in members else [False] * count
+            for name in ("symmetry_limited", "shadow_departed")}
+    resolved = members["dissipation_resolved"][:] != 0 if "dissipation_resolved" in members else [True] * count
+    # each reason apart, as `rotorsweep run` counts them: a symmetry-limited or departed member is not
+    # resolved, but is not counted among those whose error is merely too large
+    counts = {
+        "dissipation_resolved": sum(1 for k in range(count) if ok[k] and not resolved[k]
+                                    and not flag["symmetry_limited"][k] and not flag["shadow_departed"][k]),
+        "symmetry_limited": sum(1 for k in range(count) if ok[k] and flag["symmetry_limited"][k]),
+        "shadow_departed": sum(1 for k in range(count) if ok[k] and flag["shadow_departed"][k]),
+    }
+    texts = {
+        "dissipation_resolved": "whose D is not resolved (dissipation_error >= 0.1 |D|)",
+        "symmetry_limited": "whose D the integration error decides (symmetry-limited: no error bounds it, "
+                            "not counted as resolved; give the scene disorder or a temperature above rtol)",
+        "shadow_departed": "whose shadow run reached another attractor (no error estimate; give the scene "
+                           "disorder or a temperature above rtol)",
+    }
+    for column, flagged in counts.items():
+        if flagged:
+            sys.stderr.write(f"warning: {flagged} members {texts[column]}; see /members/{column}\n")
+    if "slip_jumps" in members:
+        regime = [r.decode() if isinstance(r, bytes) else str(r) for r in members["regime"][:]]
+        untold = sum(1 for k, r, j in zip(ok, regime, members["slip_jumps"][:]) if k and r == "CP" and j != j)
+        if untold:
+            sys.stderr.write(f"warning: {untold} CP members whose slips could not be told jumps or smooth (their "
+                             "slower rerun at g/10 did not finish): slip_jumps and slip_smooth are NaN; see "
+                             "/members/slip_jumps\n")
+
+
+def report_kept(kept, total, path, command):
+    """The line `rotorsweep run` (`command`: "run" or "slider") prints when it stops early: the finished
+    members kept in the partial file (kept None: none kept)."""
+    if kept is None:
+        return
+    sys.stderr.write(f"\nstopped: {kept} of {total} members done, kept in {path}.partial (not a result: "
+                     f"complete = FALSE); continue with `rotorsweep {command} SCENE -o {path} --resume`\n")

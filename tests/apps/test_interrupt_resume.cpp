@@ -45,6 +45,15 @@ std::size_t rows_done(const fs::path& path) {
   return count;
 }
 
+/// The start of a command that mounts a private tmpfs of `size` at `at` (unshare -rm sh -c "mount … && ",
+/// the commands that follow close the quote), or "" where this machine cannot mount one.
+std::string private_tmpfs(const fs::path& at, const std::string& size) {
+  fs::create_directories(at);
+  const std::string mount =
+      "unshare -rm sh -c \"mount -t tmpfs -o size=" + size + " tmpfs '" + at.string() + "' && ";
+  return std::system((mount + "true\" 2>/dev/null").c_str()) == 0 ? mount : "";
+}
+
 }  // namespace
 
 TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[apps][run][resume]") {
@@ -170,11 +179,9 @@ TEST_CASE("a disk that fills up mid-run keeps the finished members for --resume"
   const auto scene = dir / "long.toml";
   write_text(scene, long_scene);
   const auto small = dir / "small";
-  fs::create_directories(small);
   // a 4 MiB file system of our own (a private mount namespace), filled by another writer mid-run
-  const std::string mount =
-      "unshare -rm sh -c \"mount -t tmpfs -o size=4m tmpfs '" + small.string() + "' && ";
-  if (std::system((mount + "true\" 2>/dev/null").c_str()) != 0) {
+  const std::string mount = private_tmpfs(small, "4m");
+  if (mount.empty()) {
     WARN("skipped: no private tmpfs mount here (unshare -rm and mount -t tmpfs must work)");
     return;
   }
@@ -233,4 +240,108 @@ TEST_CASE("a second writer of a running run's output is refused and the first ru
   CHECK(file.attribute_flag("complete"));
   CHECK(rows_done(dir / "out.h5") == 2000);
   CHECK_FALSE(fs::exists(dir / ".out.h5.lock"));
+}
+
+TEST_CASE("no writer takes a running run's partial, temporary or lock file, and the run keeps its own file",
+          "[apps][run][lock]") {
+  const auto dir = scratch_directory("covered-writers");
+  const auto scene = dir / "long.toml";
+  // ten times the long scene: it runs while every other writer tries its files, then it is stopped
+  write_text(
+      scene,
+      std::string(long_scene).replace(std::string(long_scene).find("replicas = 5"), 12, "replicas = 50"));
+  const auto log = dir / "log.txt";
+  const std::string exe = ROTORSWEEP_EXECUTABLE;
+  const auto at = [&](const std::string& name) { return " -o '" + (dir / name).string() + "'"; };
+  // shards that merge, and a slider scene: refused for the output alone
+  const auto tiny =
+      write_text(dir / "tiny.toml", "[model]\nrows = 4\n[drive]\ng = 0.01\n[sweep]\nA = [1, 2]\n");
+  const auto slider = write_text(dir / "slider.toml", "[sweep]\nseparation = 8e-3\n");
+  for (const char* i : {"1", "2"})
+    REQUIRE(run_cli("run '" + tiny.string() + "' -q --shard " + std::string(i) + "/2" +
+                        at("s" + std::string(i) + ".h5"),
+                    dir)
+                .exit_code == 0);
+  const std::vector<std::pair<std::string, std::string>> writers = {
+      {"run partial", "run '" + scene.string() + "' -q --force" + at("out.h5.partial")},
+      {"run shard", "run '" + scene.string() + "' -q --shard 1/2" + at("out.h5.partial")},
+      {"merge",
+       "merge '" + (dir / "s1.h5").string() + "' '" + (dir / "s2.h5").string() + "'" + at("out.h5.partial")},
+      {"landscape partial", "landscape curves -q --samples 10 --force" + at("out.h5.partial")},
+      {"landscape temporary", "landscape curves -q --samples 10 --force" + at(".out.h5.12345.part")},
+      {"couplings partial", "couplings --range 1 --force" + at("out.h5.partial")},
+      {"couplings lock", "couplings --range 1 --force" + at(".out.h5.lock")},
+      {"table partial", "table --replicas 1 --force" + at("out.h5.partial")},
+      {"slider partial", "slider '" + slider.string() + "' -q --force" + at("out.h5.partial")},
+  };
+  std::string command = "cd '" + dir.string() + "'; " + exe + " run '" + scene.string() + "' -q" +
+                        at("out.h5") + " 2> first.txt & pid=$!; sleep 0.5; ";
+  for (const auto& [name, arguments] : writers)
+    command += exe + " " + arguments + " > /dev/null 2>> refused.txt; echo \"" + name + ": $?\"; ";
+  command += "kill -INT $pid; wait $pid; echo \"first: $?\"; cat first.txt refused.txt";
+  const auto result = detail::run_logged("(" + command + ") > '" + log.string() + "' 2>&1", log);
+  INFO(result.output);
+  for (const auto& [name, arguments] : writers) CHECK_THAT(result.output, Catch::Contains(name + ": 2\n"));
+  std::size_t refusals = 0;
+  for (std::size_t at = 0; (at = result.output.find("belongs to the output", at)) != std::string::npos; ++at)
+    ++refusals;
+  CHECK(refusals == writers.size());
+  // the run stopped with its own partial file, whose rows it counts
+  CHECK_THAT(result.output, Catch::Contains("first: 130") && Catch::Contains("kept in"));
+  const auto partial = dir / "out.h5.partial";
+  REQUIRE(fs::exists(partial));
+  CHECK(std::size_t(Hdf5Location::open_file(partial.string()).attribute_double("members_done")) ==
+        rows_done(partial));
+  CHECK(Hdf5Location::open_file(partial.string()).open_group("members").shape("done").first == 20000);
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const auto name = entry.path().filename().string();
+    CHECK((name.ends_with(".toml") || name == "out.h5.partial" || name == "s1.h5" || name == "s2.h5" ||
+           name.ends_with(".txt")));
+  }
+}
+
+TEST_CASE("a small result on a nearly full disk is refused up front, also by --resume and merge",
+          "[apps][run][resume][merge][files]") {
+  const auto dir = scratch_directory("disk-nearly-full");
+  const auto small = dir / "small";
+  // a 1 MiB file system of our own: room for the members' rows, not for the space the curves reserve
+  const std::string mount = private_tmpfs(small, "1m");
+  if (mount.empty()) {
+    WARN("skipped: no private tmpfs mount here (unshare -rm and mount -t tmpfs must work)");
+    return;
+  }
+  const auto scene =
+      write_text(dir / "tiny.toml", "[model]\nrows = 4\n[drive]\ng = 0.01\n[sweep]\nA = [1, 2]\n");
+  const std::string exe = ROTORSWEEP_EXECUTABLE, run = exe + " run '" + scene.string() + "' -q";
+  for (const char* i : {"1", "2"})
+    REQUIRE(run_cli("run '" + scene.string() + "' -q --shard " + std::string(i) + "/2 -o '" +
+                        (dir / ("s" + std::string(i) + ".h5")).string() + "'",
+                    dir)
+                .exit_code == 0);
+  // a stopped run's partial file: the whole run's file, not complete
+  REQUIRE(
+      run_cli("run '" + scene.string() + "' -q -o '" + (dir / "whole.h5").string() + "'", dir).exit_code ==
+      0);
+  fs::copy_file(dir / "whole.h5", dir / "out.h5.partial");
+  Hdf5Location::open_file_for_writing((dir / "out.h5.partial").string()).set_flag("complete", false);
+  const auto log = dir / "log.txt";
+  const std::string out = (small / "out.h5").string();
+  const std::string commands = run + " -o '" + out + "'; echo \\\"run: \\$?\\\"; ls '" + small.string() +
+                               "'; cp '" + (dir / "out.h5.partial").string() + "' '" + small.string() +
+                               "/'; " + run + " -o '" + out + "' --resume; echo \\\"resume: \\$?\\\"; " +
+                               exe + " merge '" + (dir / "s1.h5").string() + "' '" +
+                               (dir / "s2.h5").string() + "' -o '" + (small / "merged.h5").string() +
+                               "'; echo \\\"merge: \\$?\\\"; ls '" + small.string() + "'";
+  const int status = std::system((mount + commands + "\" > '" + log.string() + "' 2>&1").c_str());
+  std::ifstream in(log);
+  const std::string output{std::istreambuf_iterator<char>(in), {}};
+  INFO(output);
+  CHECK(WEXITSTATUS(status) == 0);
+  for (const char* refused : {"run: 2", "resume: 2", "merge: 2"})
+    CHECK_THAT(output, Catch::Contains(refused));
+  CHECK_THAT(output,
+             Catch::Contains("the curves written at the end need about") && Catch::Contains("MiB on disk"));
+  // nothing made but the partial file copied in, which is kept as it was
+  CHECK_THAT(output, Catch::EndsWith("out.h5.partial\n"));
+  CHECK_THAT(output, !Catch::Contains("merged.h5") && !Catch::Contains("out.h5\n"));
 }

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "io/hdf5_file.hpp"
@@ -91,6 +93,21 @@ TEST_CASE("landscape rejects bad options with exit code 2", "[apps][landscape]")
   CHECK(!std::filesystem::exists(dir / "x.h5"));
 }
 
+TEST_CASE("landscape refuses a raster or grid that would not fit in memory, saying what it needs",
+          "[apps][landscape]") {
+  const auto dir = scratch_directory("landscape-memory");
+  const auto out = " -o '" + (dir / "x.h5").string() + "'";
+  const auto refused = [&](const std::string& command, const std::string& option) {
+    const auto run = run_cli(command + out, dir, "ulimit -v 2000000; ");
+    INFO(run.output);
+    CHECK(run.exit_code == 2);
+    CHECK_THAT(run.output, Catch::Contains("GiB") && Catch::Contains(option) && Catch::Contains("ulimit -v"));
+  };
+  refused("landscape chambers -q --A-cells 100000 --tau-cells 100000", "--A-cells");
+  refused("landscape jump-friction -q --count 100000000", "--count");
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 1);
+}
+
 TEST_CASE("landscape on a full disk: a clear error and no file", "[apps][landscape][files]") {
   const auto dir = scratch_directory("landscape-full-disk");
   const auto run =
@@ -170,25 +187,75 @@ TEST_CASE("table prints W and S that agree with R outside CP, beside the paper's
   std::ifstream in(csv);
   std::string line;
   std::getline(in, line);
-  CHECK(line == "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S");
+  CHECK(line ==
+        "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,R_error_kind");
   int outside_cp = 0;
   while (std::getline(in, line)) {
-    double A = 0, W = 0, S = 0, R = 0, paper_R = 0, deviation = 0, steps = 0, paper_W = 0, paper_S = 0;
-    char ic[8] = {};
-    REQUIRE(std::sscanf(line.c_str(), "%lf,%7[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &A, ic, &W, &S, &R,
-                        &paper_R, &deviation, &steps, &paper_W, &paper_S) == 10);
+    double A = 0, W = 0, S = 0, R = 0, paper_R = 0, deviation = 0, steps = 0, paper_W = 0, paper_S = 0,
+           error = 0;
+    char ic[8] = {}, kind[24] = {};
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%7[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%23s", &A, ic, &W, &S,
+                        &R, &paper_R, &deviation, &steps, &paper_W, &paper_S, &error, kind) == 12);
     INFO(line);
     CHECK(paper_W > 0);
     CHECK(paper_S > 0);
-    if (A == 6 || A == 8) continue;  // CP: symmetry-limited
+    CHECK(error > 0);
+    if (A == 6 || A == 8) {  // CP: symmetry-limited, the error the shadow run's difference
+      CHECK(std::string(kind) == "symmetry-limited");
+      CHECK(error > 1e-6 * R);  // far above the local estimate
+      continue;
+    }
     ++outside_cp;
+    CHECK(std::string(kind) == "resolved");
+    CHECK(error < 1e-5 * R);
+    CHECK(std::fabs(R / paper_R - 1) < 2 * error / R + 1e-6);  // the paper's 7 digits
     CHECK(std::fabs(W / R - 1) < 1e-6);  // at rtol 1e-9 alone they were off by up to 4.7e-4
     CHECK(std::fabs(S / R - 1) < 1e-6);
   }
   CHECK(outside_cp == 6);
-  // each CP entry over noise draws, with its spread and its symmetry-limited count
+  // each CP entry over noise draws, with its spread and its flags: none resolved, all symmetry-limited
   CHECK_THAT(run.output,
-             Catch::Contains("CP entries over 8 noise draws (seed 1") && Catch::Contains("8 of 8"));
+             Catch::Contains("CP entries over 8 noise draws (seed 1") && Catch::Contains("0 / 8 / 0 of 8"));
+}
+
+TEST_CASE("table --disorder: the CP entries' errors become bounds, their values the disorder's",
+          "[apps][table]") {
+  const auto dir = scratch_directory("table-disorder");
+  const auto csv = dir / "table.csv";
+  const auto run = run_cli(
+      "table --disorder 1e-5 --rtol 1e-7 --estimator-rtol 1e-7 --replicas 1 -o '" + csv.string() + "'", dir);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("disorder sigma_A = 1e-05 (realization 0 of seed 1)"));
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::map<std::string, std::array<double, 3>> cp;  // A and start: R, its error, the paper's R
+  while (std::getline(in, line)) {
+    double A = 0, W = 0, S = 0, R = 0, paper_R = 0, deviation = 0, steps = 0, paper_W = 0, paper_S = 0,
+           error = 0;
+    char ic[8] = {}, kind[24] = {};
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%7[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%23s", &A, ic, &W, &S,
+                        &R, &paper_R, &deviation, &steps, &paper_W, &paper_S, &error, kind) == 12);
+    INFO(line);
+    CHECK(std::string(kind) == "resolved");  // every entry, CP included: the disorder breaks the symmetry
+    if (A == 6 || A == 8) cp[std::to_string(int(A)) + ic] = {R, error, paper_R};
+  }
+  REQUIRE(cp.size() == 4);
+  for (const char* A : {"6", "8"}) {
+    INFO("A = " << A);
+    const auto fm = cp[std::string(A) + "FM"], afm = cp[std::string(A) + "AFM"];
+    CHECK(std::fabs(fm[0] - afm[0]) <= fm[1] + afm[1]);  // both starts reach the disorder's one orbit
+    CHECK(fm[0] < 0.9 * fm[2]);  // 12 % (A = 6) and 38 % (A = 8) below the paper's symmetric value
+  }
+  // bad values: one message naming the option, exit code 2
+  for (const std::string bad :
+       {"--disorder 2", "--disorder -1", "--disorder nan", "--disorder-seed -1", "--disorder-seed 1.5"}) {
+    const auto refused = run_cli("table " + bad, dir);
+    INFO(bad << ": " << refused.output);
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.output, Catch::Contains(bad.substr(0, bad.find(' '))));
+  }
 }
 
 TEST_CASE(
@@ -234,4 +301,14 @@ TEST_CASE(
     if (t[0] == 6 || t[0] == 8) largest = std::max(largest, std::fabs(t[1] / t[3] - 1));
   CHECK(largest > 1e-4);
   CHECK(run_cli("table --window trapezoid", dir).exit_code == 2);
+}
+
+TEST_CASE("table refuses a seed outside 0 … 2⁶³ − 1 instead of wrapping or rounding it", "[apps][table]") {
+  const auto dir = scratch_directory("table-seed");
+  for (const char* bad : {"-1", "18446744073709551616", "9223372036854775808", "1e23", "2.5", "+3", ""}) {
+    const auto run = run_cli("table --replicas 2 --seed '" + std::string(bad) + "'", dir);
+    INFO(bad << ": " << run.output);
+    CHECK(run.exit_code == 2);
+    CHECK_THAT(run.output, Catch::Contains("--seed"));
+  }
 }

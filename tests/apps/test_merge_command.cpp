@@ -1,7 +1,11 @@
 // Shards (`run --shard I/N`) and `merge`: three shards merged give the unsharded file's datasets
 // byte for byte (period series, estimators, row profiles, random starts included); missing, doubled or
-// foreign shards and bad --shard values exit with code 2 and write nothing.
+// foreign shards, shards whose datasets or attributes do not fit their scene (partial files too, on
+// --resume), unreadable shards and bad --shard values exit with code 2 and write nothing.
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <filesystem>
 
 #include "io/hdf5_file.hpp"
@@ -98,7 +102,7 @@ TEST_CASE("shards that do not make one plan are refused", "[apps][merge]") {
       {quoted(dir / "whole.h5"), "not a shard file"},
       {s1 + " " + quoted(dir / "absent.h5"), "does not exist"},
       {s1 + " " + quoted(dir / "edited.h5"), "row 1 is not marked done"},
-      {s1 + " " + quoted(dir / "seventh.h5"), "shard index 7 is outside 1 … 2"},
+      {s1 + " " + quoted(dir / "seventh.h5"), "shard_index 7 and shard_count 2 do not name a shard"},
   };
   for (const auto& c : cases) {
     INFO(c.shards);
@@ -107,9 +111,11 @@ TEST_CASE("shards that do not make one plan are refused", "[apps][merge]") {
     CHECK_THAT(result.output, Catch::Contains(c.message));
     CHECK_FALSE(std::filesystem::exists(dir / "out.h5"));
   }
-  for (const char* bad : {"0/2", "3/2", "1/0", "a/2", "1/2x", "1"}) {
+  for (const char* bad : {"0/2", "3/2", "1/0", "a/2", "1/2x", "1", "1/99999999999999999999", "1/-1", "-1/2",
+                          "+1/2", " 1/2", "1/1e3", "1/2000000000"}) {
     INFO(bad);
-    const auto result = run_cli("run " + scene + " -q --shard " + bad + " -o " + quoted(dir / "bad.h5"), dir);
+    const auto result =
+        run_cli("run " + scene + " -q --shard '" + bad + "' -o " + quoted(dir / "bad.h5"), dir);
     CHECK(result.exit_code == 2);
     CHECK_THAT(result.output, Catch::Contains("--shard"));
     CHECK_FALSE(std::filesystem::exists(dir / "bad.h5"));
@@ -123,4 +129,128 @@ TEST_CASE("a shard without -o does not overwrite the scene's output or another s
   REQUIRE(run_cli("run " + scene + " -q --shard 1/2", dir).exit_code == 0);
   CHECK(std::filesystem::exists(dir / "r" / "curve.shard-1-of-2.h5"));
   CHECK_FALSE(std::filesystem::exists(dir / "r" / "curve.h5"));
+}
+
+TEST_CASE(
+    "shards and partial files whose datasets or attributes do not fit their scene are refused, naming them",
+    "[apps][merge][resume]") {
+  namespace fs = std::filesystem;
+  const auto dir = scratch_directory("merge-shapes");
+  const auto rows = quoted(
+      write_text(dir / "rows.toml", "[model]\nrows = 4\n[drive]\ng = 0.01\n[sweep]\nA = [1, 2, 3, 4]\n"));
+  const auto slider = quoted(write_text(
+      dir / "slider.toml",
+      "[slider]\ncolumns = 2\nrows = 1\n[substrate]\ncolumns = 5\nrows = 5\n[drive]\nrest = 0.1\nend = 2.1\n"
+      "[sweep]\nseparation = [8e-3, 9e-3]\n[observables]\nsamples_per_period = 10\n"));
+  for (const char* i : {"1", "2"}) {
+    REQUIRE(run_cli("run " + rows + " -q --shard " + std::string(i) + "/2 -o " +
+                        quoted(dir / ("r" + std::string(i) + ".h5")),
+                    dir)
+                .exit_code == 0);
+    REQUIRE(run_cli("slider " + slider + " -q --shard " + std::string(i) + "/2 -o " +
+                        quoted(dir / ("s" + std::string(i) + ".h5")),
+                    dir)
+                .exit_code == 0);
+  }
+  // an edited copy of shard 2 of each kind: a dataset of another shape or type, or an attribute changed
+  const auto edited = [&](const std::string& from, const std::string& name, const auto& edit) {
+    fs::copy_file(dir / from, dir / name);
+    edit(dir / name);
+    return quoted(dir / name);
+  };
+  const auto attribute = [](const char* key, auto value) {
+    return [=](const fs::path& path) {
+      Hdf5Location::open_file_for_writing(path.string()).set_attribute(key, value);
+    };
+  };
+  const auto reshaped = [](const char* dataset, std::vector<hsize_t> dims) {
+    return [=](const fs::path& path) { replace_dataset(path, dataset, dims); };
+  };
+  const struct {
+    std::string first, other, message;
+  } cases[] = {
+      {"r1.h5", edited("r2.h5", "theta.h5", reshaped("members/theta_final", {2, 2})),
+       "dataset /members/theta_final has shape (2, 2) where its scene gives (2, 4)"},
+      {"r1.h5", edited("r2.h5", "status.h5", reshaped("members/status", {2})),
+       "dataset /members/status does not hold fixed-length text"},
+      {"r1.h5", edited("r2.h5", "kind.h5", attribute("kind", std::string("rows"))), "says kind = 'rows'"},
+      {"r1.h5", edited("r2.h5", "plan.h5", attribute("plan_members", std::int64_t(95))), "plan_members"},
+      {"s1.h5", edited("s2.h5", "series.h5", reshaped("series/friction", {1, 5})),
+       "dataset /series/friction has shape (1, 5) where its scene gives (1, "},
+      {"s1.h5", edited("s2.h5", "period.h5", reshaped("members/period_friction", {1})),
+       "dataset /members/period_friction has shape (1,) where its scene gives (1, 1)"},
+      {"s1.h5", edited("s2.h5", "slider_kind.h5", attribute("kind", std::string("rows"))),
+       "says kind = 'rows'"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.other);
+    const auto result =
+        run_cli("merge " + quoted(dir / c.first) + " " + c.other + " -o " + quoted(dir / "out.h5"), dir);
+    CHECK(result.exit_code == 2);
+    CHECK_THAT(result.output, Catch::Contains(c.message));
+    CHECK_FALSE(fs::exists(dir / "out.h5"));
+  }
+  // the same edits to a partial file: --resume refuses it and leaves it as it is
+  REQUIRE(run_cli("run " + rows + " -q -o " + quoted(dir / "whole.h5"), dir).exit_code == 0);
+  REQUIRE(run_cli("slider " + slider + " -q -o " + quoted(dir / "scan.h5"), dir).exit_code == 0);
+  const struct {
+    std::string command, whole, dataset;
+    std::vector<hsize_t> dims;
+    std::string message;
+  } partials[] = {
+      {"run " + rows, "whole.h5", "members/theta_final", {4, 2}, "/members/theta_final has shape (4, 2)"},
+      {"slider " + slider, "scan.h5", "series/friction", {2, 5}, "/series/friction has shape (2, 5)"},
+      {"run " + rows, "whole.h5", "", {}, "plan_members"},
+      {"slider " + slider, "scan.h5", "", {}, "says kind = 'rows'"},
+  };
+  for (const auto& p : partials) {
+    INFO(p.command << " " << p.message);
+    const auto partial = dir / "out.h5.partial";
+    fs::copy_file(dir / p.whole, partial, fs::copy_options::overwrite_existing);
+    {
+      const auto file = Hdf5Location::open_file_for_writing(partial.string());
+      file.set_flag("complete", false);
+      if (p.whole == "whole.h5" && p.dataset.empty()) file.set_attribute("plan_members", std::int64_t(95));
+      if (p.whole == "scan.h5" && p.dataset.empty()) file.set_attribute("kind", std::string("rows"));
+    }
+    if (!p.dataset.empty()) replace_dataset(partial, p.dataset, p.dims);
+    const auto before = Hdf5Location::open_file(partial.string()).read_bytes("members/done");
+    const auto result = run_cli(p.command + " -q -o " + quoted(dir / "out.h5") + " --resume", dir);
+    CHECK(result.exit_code == 2);
+    CHECK_THAT(result.output, Catch::Contains(p.message) && Catch::Contains("--resume"));
+    CHECK_FALSE(fs::exists(dir / "out.h5"));
+    CHECK(Hdf5Location::open_file(partial.string()).read_bytes("members/done") == before);
+  }
+}
+
+TEST_CASE("a shard that cannot be read is named with the system's reason", "[apps][merge]") {
+  namespace fs = std::filesystem;
+  const auto dir = scratch_directory("merge-unreadable");
+  const auto scene =
+      quoted(write_text(dir / "tiny.toml", "[model]\nrows = 4\n[drive]\ng = 0.01\n[sweep]\nA = [1, 2]\n"));
+  for (const char* i : {"1", "2"})
+    REQUIRE(run_cli("run " + scene + " -q --shard " + std::string(i) + "/2 -o " +
+                        quoted(dir / ("s" + std::string(i) + ".h5")),
+                    dir)
+                .exit_code == 0);
+  // root reads any file: the merge then runs as nobody, for whom shard 2 is unreadable
+  std::string as_user;
+  if (::geteuid() == 0) {
+    as_user = "setpriv --reuid=65534 --regid=65534 --clear-groups ";
+    if (std::system((as_user + "true 2>/dev/null").c_str()) != 0) {
+      WARN("skipped: running as root, and setpriv cannot drop to nobody here");
+      return;
+    }
+  }
+  fs::permissions(dir, fs::perms::all);
+  fs::permissions(dir / "s1.h5", fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  fs::permissions(dir / "s2.h5", fs::perms::none);
+  const auto result = run_cli(
+      "merge " + quoted(dir / "s1.h5") + " " + quoted(dir / "s2.h5") + " -o " + quoted(dir / "out.h5"), dir,
+      as_user);
+  fs::permissions(dir / "s2.h5", fs::perms::owner_read | fs::perms::owner_write);
+  INFO(result.output);
+  CHECK(result.exit_code == 2);
+  CHECK_THAT(result.output, Catch::Contains("s2.h5': Permission denied"));
+  CHECK_FALSE(fs::exists(dir / "out.h5"));
 }

@@ -307,8 +307,20 @@ TEST_CASE("the GPU device: refusals exit 2 naming the key, and no GPU is a clear
   const auto bad_device = run_cli("run '" + (dir / "large.toml").string() + "' --device tpu", dir);
   CHECK(bad_device.exit_code == 2);
   CHECK_THAT(bad_device.output, Catch::Contains("--device"));
-  if (rotorsweep::ensemble::gpu_info().available) return;  // the rest is about a machine without one
+  // a bad launch setting in the environment is an exit code 2 naming the variable, with or without a GPU
   write_text(dir / "good.toml", good);
+  const auto slider = write_text(dir / "slider.toml", "[sweep]\nseparation = 8e-3\n");
+  for (const std::string variable : {"ROTORSWEEP_GPU_TEAM", "ROTORSWEEP_GPU_SCRATCH", "ROTORSWEEP_GPU_BLOCK"})
+    for (const auto& command :
+         {"run '" + (dir / "good.toml").string() + "'", "slider '" + slider.string() + "'"}) {
+      const auto refused =
+          run_cli(command + " -q --device gpu -o '" + out.string() + "'", dir, variable + "=garbage ");
+      INFO(variable << " " << command << ": " << refused.output);
+      CHECK(refused.exit_code == 2);
+      CHECK_THAT(refused.output, Catch::Contains(variable));
+      CHECK_FALSE(std::filesystem::exists(out));
+    }
+  if (rotorsweep::ensemble::gpu_info().available) return;  // the rest is about a machine without one
   const auto run =
       run_cli("run '" + (dir / "good.toml").string() + "' --device gpu -o '" + out.string() + "'", dir);
   CHECK(run.exit_code == 2);
@@ -342,4 +354,23 @@ TEST_CASE("bench gpu on the CPU reports the curve's members and attempts", "[app
     CHECK(refused.exit_code == 2);
     CHECK_THAT(refused.output, Catch::Contains(std::string(bad).substr(0, std::string(bad).find(' '))));
   }
+}
+
+TEST_CASE("CP members whose slips could not be told jumps or smooth are counted in a warning",
+          "[apps][run]") {
+  const auto dir = scratch_directory("run-slip-kinds");
+  // at g = 1e-12 the slower rerun (g/10) does not finish: slip_jumps and slip_smooth stay NaN
+  const auto scene = write_text(dir / "tiny_g.toml",
+                                "[model]\nrows = 2\n[drive]\ng = 1e-12\n[sweep]\nA = 8\n"
+                                "[observables]\nslip_kinds = true\n");
+  const auto out = dir / "out.h5";
+  const auto run = run_cli("run '" + scene.string() + "' -q -o '" + out.string() + "'", dir);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const auto members = rotorsweep::io::Hdf5Location::open_file(out.string()).open_group("members");
+  REQUIRE(members.read_strings("status") == std::vector<std::string>{"ok"});
+  REQUIRE(members.read_strings("regime") == std::vector<std::string>{"CP"});
+  REQUIRE(std::isnan(members.read_doubles("slip_jumps")[0]));
+  CHECK_THAT(run.output,
+             Catch::Contains("warning: 1 CP members whose slips could not be told jumps or smooth"));
 }

@@ -1,7 +1,8 @@
 // `rotorsweep slider` end to end (README "The experiment's slider"): scene in, complete HDF5 file out with
 // its datasets and units, `info` on it; bad keys, the wrong kind of scene and what the GPU does not run
 // as exit code 2, no file written;
-// SIGINT and SIGTERM keep the finished members for --resume; shards merge to the single-process file.
+// SIGINT and SIGTERM keep the finished members for --resume, also while substrate tables are built; shards
+// merge to the single-process file; sample points, axes and memory bounded before any work.
 #include <catch2/catch.hpp>
 #include <filesystem>
 
@@ -149,4 +150,78 @@ TEST_CASE("slider shards merge to the single-process file", "[apps][slider][merg
   check_same_datasets(whole, dir / "merged.h5");
   CHECK(rotorsweep::io::Hdf5Location::open_file((dir / "merged.h5").string()).attribute_string("kind") ==
         "slider");
+}
+
+TEST_CASE("slider bounds its sample points, axes and memory before any work, each refusal naming its key",
+          "[apps][slider]") {
+  const auto dir = scratch_directory("slider-bounds");
+  const auto out = dir / "never.h5";
+  const auto refused = [&](const std::string& text, const std::string& key, const std::string& prefix = "") {
+    const auto scene = write_text(dir / "scene.toml", text);
+    const auto run = run_cli("slider -q '" + scene.string() + "' -o '" + out.string() + "'", dir, prefix);
+    INFO(text << "\n" << run.output);
+    CHECK(run.exit_code == 2);
+    CHECK_THAT(run.output, Catch::Contains(key));
+    CHECK(run.output.size() < 600);  // one message, no 300-digit number
+    for (const char* left : {"never.h5", "never.h5.partial", ".never.h5.lock"})
+      CHECK_FALSE(std::filesystem::exists(dir / left));
+    return run.output;
+  };
+  const std::string small = "[slider]\ncolumns = 2\nrows = 2\n[sweep]\nseparation = 8e-3\n";
+  // rest and sample points: bounded where the scene is read, not by the memory they would take
+  refused(small + "[drive]\nrest = 1e9\nperiods = 1\n", "'drive.rest'");
+  refused(small + "[drive]\nrest = 1e300\nperiods = 1\n", "'drive.rest'");
+  refused(
+      "[slider]\ncolumns = 2\nrows = 2\nspacing = 1e-12\n[sweep]\nseparation = 8e-3\n[drive]\nperiods = 1\n",
+      "slider.spacing");
+  refused(
+      "[sweep]\nseparation = 8e-3\n[drive]\nperiods = 10000\n[observables]\nsamples_per_period = 100000\n"
+      "angles = true\n",
+      "'observables.samples_per_period'");
+  CHECK_THAT(refused(small + "[drive]\nspeed = 1e-300\n", "'drive.end'"), Catch::Contains("1.6e+298 s"));
+  // an axis's values differ, as sizes do; the plan's largest axis is named
+  refused("[sweep]\nseparation = 8e-3\n[drive]\nspeed = [8e-3, 8e-3]\nperiods = 1\n", "'drive.speed'");
+  refused("[sweep]\nseparation = [8e-3, 9e-3, 8e-3]\n",
+          "'sweep.separation': has the value 0.008 more than once");
+  refused("[sweep]\nseparation = { from = 8e-3, to = 8e-3, count = 3 }\n", "'sweep.separation'");
+  refused("[sweep]\nseparation = 8e-3\n[slider]\ndamping = [2.5e-6, 2.5e-6]\n", "'slider.damping'");
+  refused(
+      "[sweep]\nseparation = { from = 5e-3, to = 12e-3, count = 3000000 }\n[drive]\nspeed = [1e-3, 2e-3, "
+      "4e-3, 8e-3]\nperiods = 1\n",
+      "'sweep.separation': the plan has 1.2e+07 members");
+  refused("[sweep]\nseparation = 8e-3\n[substrate]\ncolumns = 2000\nrows = 2000\n", "'substrate.columns'");
+  // memory: a 100 × 100 slider's dense lane blocks, refused before the partial file exists
+  CHECK_THAT(refused("[slider]\ncolumns = 100\nrows = 100\n[sweep]\nseparation = 8e-3\n", "GiB to work in",
+                     "ulimit -v 2000000; "),
+             Catch::Contains("ulimit -v"));
+  // an empty shard runs no member and prints no NaN
+  const auto scene = write_text(dir / "small.toml", small_slider);
+  const auto empty =
+      run_cli("slider -q '" + scene.string() + "' --shard 4/4 -o '" + (dir / "e.h5").string() + "'", dir);
+  INFO(empty.output);
+  CHECK(empty.exit_code == 0);
+  CHECK_THAT(empty.output, Catch::Contains("no members run"));
+  CHECK(empty.output.find("nan") == std::string::npos);
+}
+
+TEST_CASE("a slider scan stops on SIGINT and SIGTERM while its substrate tables are built",
+          "[apps][slider][resume]") {
+  // a million substrate magnets: every table node sums over all of them (seconds per table)
+  const auto dir = scratch_directory("slider-table-signal");
+  const auto scene = write_text(
+      dir / "big.toml", "[substrate]\ncolumns = 1000\nrows = 1000\n[sweep]\nseparation = [8e-3, 9e-3]\n");
+  for (const auto& [signal, code] : {std::pair<std::string, int>{"INT", 130}, {"TERM", 143}}) {
+    const auto log = dir / "log.txt";
+    // in the background of a shell without job control SIGINT starts out ignored: the scan must take it
+    const auto result =
+        detail::run_logged(std::string(ROTORSWEEP_EXECUTABLE) + " slider -q '" + scene.string() +
+                               "' --force -o '" + (dir / "out.h5").string() + "' > '" + log.string() +
+                               "' 2>&1 & pid=$!; sleep 1; kill -" + signal + " $pid; wait $pid",
+                           log);
+    INFO(result.output);
+    CHECK(result.exit_code == code);
+    CHECK_THAT(result.output,
+               Catch::Contains("stopped by SIG" + signal) && Catch::Contains("0 of 2 members"));
+    CHECK_FALSE(std::filesystem::exists(dir / ".out.h5.lock"));
+  }
 }

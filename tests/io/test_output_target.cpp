@@ -54,7 +54,16 @@ TEST_CASE("output paths that would destroy something are refused", "[io][output]
   // --force replaces a file of another kind, never the input
   CHECK_NOTHROW(OutputTarget((dir / "notes.txt").string(), {scene.string()}, Replaceable::hdf5, true));
   CHECK_THROWS(OutputTarget(scene.string(), {scene.string()}, Replaceable::hdf5, true));
-  CHECK_NOTHROW(OutputTarget((dir / "notes.txt").string(), {}, Replaceable::any, false));
+  // a text writer replaces only what it wrote itself (its first line) without --force
+  CHECK_THROWS_WITH(
+      OutputTarget((dir / "notes.txt").string(), {}, Replaceable::text_starting_with("u,b,c"), false),
+      Catch::Contains("not a table this command wrote") && Catch::Contains("--force"));
+  CHECK_NOTHROW(
+      OutputTarget((dir / "notes.txt").string(), {}, Replaceable::text_starting_with("my notes"), false));
+  write_hdf5((dir / "result.h5").string(), 1.0);
+  CHECK_THROWS(
+      OutputTarget((dir / "result.h5").string(), {}, Replaceable::text_starting_with("u,b,c"), false));
+  CHECK(Hdf5Location::open_file((dir / "result.h5").string()).attribute_double("marker") == 1.0);
 }
 
 TEST_CASE("a NUL byte or a name the temporary file would push past NAME_MAX is refused", "[io][output]") {
@@ -87,6 +96,7 @@ TEST_CASE("the old file stays until commit, and nothing is left without it", "[i
   {
     OutputTarget target(path, {}, Replaceable::hdf5, false);
     write_hdf5(target.temporary(), 3.0);
+    target.claim_temporary();
     target.commit();
     CHECK(target.replaced());
   }
@@ -106,6 +116,7 @@ TEST_CASE("directories created for an output are removed when it fails", "[io][o
   {
     OutputTarget target(path, {}, Replaceable::hdf5, false);
     write_hdf5(target.temporary(), 1.0);
+    target.claim_temporary();
     target.commit();
     CHECK_FALSE(target.replaced());
   }
@@ -119,6 +130,7 @@ TEST_CASE("an output through a symbolic link replaces the link's target", "[io][
   fs::create_symlink(real, dir / "link.h5");
   OutputTarget target((dir / "link.h5").string(), {}, Replaceable::hdf5, false);
   write_hdf5(target.temporary(), 2.0);
+  target.claim_temporary();
   target.commit();
   CHECK(fs::is_symlink(dir / "link.h5"));
   CHECK(Hdf5Location::open_file(real).attribute_double("marker") == 2.0);
@@ -128,6 +140,7 @@ TEST_CASE("an output through a symbolic link replaces the link's target", "[io][
   {
     OutputTarget through((dir / "chain.h5").string(), {}, Replaceable::hdf5, false);
     write_hdf5(through.temporary(), 3.0);
+    through.claim_temporary();
     through.commit();
   }
   CHECK(fs::is_symlink(dir / "chain.h5"));
@@ -173,4 +186,63 @@ TEST_CASE("a second writer of the same output is refused, naming the first's PID
   write_text(lock_file, "999999\n");
   const OutputTarget again(path, {}, Replaceable::hdf5, false, true);
   CHECK(fs::exists(lock_file));
+}
+
+TEST_CASE("the partial, temporary and lock files of an output belong to it", "[io][output][lock]") {
+  CHECK(covering_output("w.h5.partial") == "w.h5");
+  CHECK(covering_output("w.h5.partial.rank-3") == "w.h5");
+  CHECK(covering_output(".w.h5.4711.part") == "w.h5");
+  CHECK(covering_output(".w.h5.lock") == "w.h5");
+  CHECK(covering_output(".w.h5.partial.4711.part") == "w.h5.partial");
+  for (const char* own : {"w.h5", ".partial", "w.h5.part", ".w.h5.x1.part", ".w.h5..part",
+                          "w.h5.partial.rank-", ".lock", "w.lock", ".part"})
+    CHECK(covering_output(own).empty());
+}
+
+TEST_CASE("a writer of another output's partial, temporary or lock file waits for that output's writer",
+          "[io][output][lock]") {
+  const auto dir = scratch_directory("output-covered");
+  const std::string out = (dir / "w.h5").string();
+  const std::string pid = std::to_string(::getpid());
+  {
+    OutputTarget run(out, {}, Replaceable::hdf5, false, true);  // `run -o w.h5`: writes w.h5.partial
+    for (const std::string name :
+         {"w.h5.partial", ".w.h5.99.part", ".w.h5.lock", "w.h5.partial.rank-1", ".w.h5.partial.99.part"})
+      for (const bool resumable : {false, true}) {
+        INFO(name);
+        CHECK_THROWS_WITH(OutputTarget((dir / name).string(), {}, Replaceable::hdf5, true, resumable),
+                          Catch::Contains("belongs to the output") && Catch::Contains("(PID " + pid + ")"));
+      }
+    // through a link to the partial file, too
+    fs::create_symlink(dir / "w.h5.partial", dir / "link.h5");
+    CHECK_THROWS(OutputTarget((dir / "link.h5").string(), {}, Replaceable::hdf5, true));
+  }
+  // the other way round: while w.h5.partial is written, w.h5's run waits; its locks go with it
+  {
+    const OutputTarget partial((dir / "w.h5.partial").string(), {}, Replaceable::hdf5, true);
+    CHECK(partial.lock_files().size() == 2);
+    CHECK_THROWS_WITH(OutputTarget(out, {}, Replaceable::hdf5, true, true), Catch::Contains("being written"));
+  }
+  CHECK_FALSE(fs::exists(dir / ".w.h5.lock"));
+  CHECK_FALSE(fs::exists(dir / ".w.h5.partial.lock"));
+  CHECK_NOTHROW(OutputTarget((dir / "w.h5.partial").string(), {}, Replaceable::hdf5, true));
+}
+
+TEST_CASE("a writer puts in place only the file it wrote itself", "[io][output]") {
+  const auto dir = scratch_directory("output-identity");
+  const auto path = (dir / "out.h5").string();
+  {
+    OutputTarget target(path, {}, Replaceable::hdf5, false, true);
+    write_hdf5(target.temporary(), 1.0);
+    target.claim_temporary();
+    CHECK(target.temporary_is_ours());
+    // another file renamed over the partial file (what a writer without the lock would do)
+    write_hdf5((dir / "other.h5").string(), 2.0);
+    fs::rename(dir / "other.h5", target.temporary());
+    CHECK_FALSE(target.temporary_is_ours());
+    CHECK_THROWS_WITH(target.commit(), Catch::Contains("no longer the file this process wrote"));
+    target.keep();
+  }
+  CHECK_FALSE(fs::exists(path));
+  CHECK(Hdf5Location::open_file(path + ".partial").attribute_double("marker") == 2.0);
 }

@@ -78,6 +78,26 @@ TEST_CASE("grids are lists or ranges with linear or log spacing", "[io][scene]")
   CHECK(scene.A_values.back() == 14.0);
 }
 
+TEST_CASE("a range's points are the nearest doubles to its exact points, its ends exactly from and to",
+          "[io][scene]") {
+  const auto scene = parse_scene_text(
+      "[model]\nrows = 4\n[drive]\ng = { from = 1e-6, to = 10.0, count = 8, spacing = \"log\" }\n"
+      "[sweep]\nA = { from = 0.25, to = 11.0, count = 44 }\n",
+      "test.toml");
+  // 0.25 + k/4: the grid meets 3.75, 6, 7.25 and 8 (each came out one bit off as from + k/43 · 10.75)
+  REQUIRE(scene.A_values.size() == 44);
+  CHECK(scene.A_values[14] == 3.75);
+  CHECK(scene.A_values[23] == 6.0);
+  CHECK(scene.A_values[28] == 7.25);
+  CHECK(scene.A_values[31] == 8.0);
+  for (std::size_t i = 0; i < 44; ++i) CHECK(scene.A_values[i] == Approx(0.25 + double(i) / 4));
+  CHECK(scene.g_values.front() == 1e-6);  // exp(log(1e-6)) is 1.0000000000000004e-6
+  CHECK(scene.g_values.back() == 10.0);
+  const auto offsets =
+      parse_scene_text(minimal + "[initial]\noffset = { from = -3.0, to = 3.0, count = 7 }\n", "test.toml");
+  CHECK(offsets.offset_values == std::vector<double>{-3, -2, -1, 0, 1, 2, 3});
+}
+
 TEST_CASE("every option is read from its key", "[io][scene]") {
   const auto scene =
       parse_scene_text(minimal +
@@ -308,4 +328,29 @@ TEST_CASE("slip_kinds needs the regime rule, no temperature and the CPU, each re
   CHECK_THAT(error_of(minimal + on + "[numerics]\ndevice = \"gpu\"\n"),
              Catch::Contains("'numerics.device'") && Catch::Contains("slip_kinds"));
   CHECK_THAT(error_of(minimal + "[observables]\nslip_kinds = 1\n"), Catch::Contains("'observables.slip_kinds'"));
+}
+
+TEST_CASE("at T > 0 what needs a deterministic member is refused, naming its key", "[io][scene]") {
+  const std::string hot = "[thermal]\ntemperature = 0.1\n";
+  // the moments carry W and S: the Stokes estimator diverges with noise, as estimators does
+  CHECK_THAT(error_of(minimal + hot + "[observables]\nmoments = true\n"),
+             Catch::Contains("'observables.moments'") && Catch::Contains("Stokes estimator diverges"));
+  CHECK(error_of(minimal + "[observables]\nmoments = true\n") == "");
+  // shadow runs are a T = 0 error estimate: asked for at T > 0 they are refused, not dropped
+  CHECK_THAT(error_of(minimal + hot + "[numerics]\nglobal_error = \"shadow\"\n"),
+             Catch::Contains("'numerics.global_error'") && Catch::Contains("\"local\""));
+  CHECK(error_of(minimal + hot + "[numerics]\nglobal_error = \"local\"\n") == "");
+  CHECK(error_of(minimal + hot) == "");  // the default
+}
+
+TEST_CASE("an axis that gives a value twice is refused, naming it", "[io][scene]") {
+  const std::string start = "[model]\nrows = 4\n";
+  CHECK_THAT(error_of(start + "[drive]\ng = 0.01\n[sweep]\nA = [1, 2, 1]\n"),
+             Catch::Contains("'sweep.A': has the value 1 more than once"));
+  CHECK_THAT(error_of(start + "[drive]\ng = [0.01, 0.01]\n[sweep]\nA = 1\n"), Catch::Contains("'drive.g'"));
+  CHECK_THAT(error_of(start + "[drive]\ng = { from = 0.01, to = 0.01, count = 3 }\n[sweep]\nA = 1\n"),
+             Catch::Contains("'drive.g'"));
+  CHECK_THAT(error_of(minimal + "[initial]\nnoise = [0.1, 0.1]\n"), Catch::Contains("'initial.noise'"));
+  CHECK_THAT(error_of(minimal + "[initial]\noffset = [0, 0.0]\n"), Catch::Contains("'initial.offset'"));
+  CHECK(error_of(start + "[drive]\ng = { from = 0.01, to = 0.02, count = 3 }\n[sweep]\nA = [0, 1]\n") == "");
 }

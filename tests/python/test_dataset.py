@@ -131,7 +131,7 @@ def test_open_refuses_an_incomplete_or_foreign_file(tmp_path):
     with h5py.File(tmp_path / "other.h5", "w") as f:
         f.attrs["complete"] = np.bool_(True)
         f.attrs["scene"] = THREE_AXES
-    with pytest.raises(ValueError, match="no /members"):
+    with pytest.raises(ValueError, match="not a rotorsweep file"):
         rotorsweep.open(tmp_path / "other.h5")
 
 

@@ -59,6 +59,14 @@ def test_output_writes_the_command_lines_file(tmp_path):
     with pytest.raises(ValueError, match="exists"):
         (tmp_path / "not_hdf5.h5").write_text("text")
         rotorsweep.slider(SMALL, progress=False, output=tmp_path / "not_hdf5.h5")
+    # a stopped scan's partial file is refused and kept as it is, unless force=True, as `rotorsweep slider` does
+    partial = tmp_path / "again.h5.partial"
+    partial.write_bytes(b"members of an earlier scan")
+    with pytest.raises(ValueError, match="stopped early"):
+        rotorsweep.slider(SMALL, progress=False, output=tmp_path / "again.h5")
+    assert partial.read_bytes() == b"members of an earlier scan"
+    rotorsweep.slider(SMALL, progress=False, output=tmp_path / "again.h5", force=True)
+    assert not partial.exists()
 
 
 def test_a_bad_key_is_a_value_error_naming_it():
@@ -81,7 +89,7 @@ print("finished", flush=True)
 """
 
 
-def test_sigint_stops_a_slider_scan_and_writes_nothing(tmp_path):
+def test_sigint_stops_a_slider_scan_keeping_its_finished_members(tmp_path):
     output = tmp_path / "long.h5"
     process = subprocess.Popen([sys.executable, "-c", SCRIPT, str(output)], stdout=subprocess.PIPE, text=True,
                                env=os.environ.copy())
@@ -93,7 +101,11 @@ def test_sigint_stops_a_slider_scan_and_writes_nothing(tmp_path):
     assert time.monotonic() - sent < 30  # the running lane block finishes first
     assert process.returncode == 130
     assert out.strip() == "interrupted"
-    assert list(tmp_path.iterdir()) == []
+    # as `rotorsweep slider`: the finished members in the partial file, no temporary or lock file
+    assert list(tmp_path.iterdir()) == [tmp_path / "long.h5.partial"]
+    with h5py.File(tmp_path / "long.h5.partial", "r") as f:
+        assert not f.attrs["complete"]
+        assert f.attrs["members_done"] == f["members/done"][:].sum() < 64
 
 
 MU0_4PI = 1e-7

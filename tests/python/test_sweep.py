@@ -107,7 +107,8 @@ def test_the_paper_members_through_the_module():
 
 def test_thread_counts_outside_1_to_4096_raise_value_error(monkeypatch):
     scene = {"model": {"rows": 4}, "drive": {"g": 0.01}, "sweep": {"A": 1}}
-    for bad in (-1, 5000, 100000):
+    # also what Python would quietly turn into a count: 0 and False (every core), 2.5 (2), "2", 2**80
+    for bad in (-1, 5000, 100000, 0, "0", "2", False, True, 2.5, 2**80):
         with pytest.raises(ValueError, match="threads"):
             rotorsweep.run(scene, threads=bad, progress=False)
         with pytest.raises(ValueError, match="threads"):
@@ -142,8 +143,22 @@ def test_open_names_a_file_that_is_not_a_result(tmp_path):
     with h5py.File(path, "w") as f:
         f.attrs["complete"] = True
         f.create_group("members").create_dataset("A", data=[1.0])
-    with pytest.raises(ValueError, match="no scene attribute"):
+    with pytest.raises(ValueError, match="not a rotorsweep file"):
         rotorsweep.open(path)
+    # HDF5 files rotorsweep did not write, or that lack a dataset its files have: ValueError, never KeyError
+    with h5py.File(tmp_path / "empty.h5", "w"):
+        pass
+    with h5py.File(tmp_path / "complete.h5", "w") as f:
+        f.attrs["complete"] = True
+    with h5py.File(tmp_path / "slider.h5", "w") as f:
+        f.attrs.update({"complete": True, "kind": "slider", "version": "x", "scene": ""})
+    for foreign in ("empty.h5", "complete.h5", "slider.h5"):
+        with pytest.raises(ValueError, match="not a rotorsweep file"):
+            rotorsweep.open(tmp_path / foreign)
+    with h5py.File(tmp_path / "slider.h5", "a") as f:
+        f.create_group("members")
+    with pytest.raises(ValueError, match="is missing"):
+        rotorsweep.open(tmp_path / "slider.h5")
 
 
 def test_run_prints_the_command_lines_first_and_last_lines_unless_quiet(small_scene, capsys):
@@ -177,3 +192,40 @@ def test_slip_kinds_gives_the_window_its_label_and_counts():
     plain = rotorsweep.run(dict(table, observables={}), threads=2, progress=False, quiet=True)
     assert "slip_jumps" not in plain and "curve_fraction_SA" not in plain
     assert list(plain["regime"].sel(A=9.0).values.ravel()) == ["CP", "CP"]
+
+
+def test_a_range_axis_meets_its_exact_points_so_sel_finds_them():
+    """A = 0.25 … 11 in 44 points is 0.25 + k/4: sel(A=6.0) finds the member at k = 23."""
+    scene = {"model": {"rows": 2}, "drive": {"g": [0.1]}, "sweep": {"A": {"from": 0.25, "to": 11.0, "count": 44}},
+             "schedule": {"relax_periods": 0, "average_periods": 1}}
+    ds = rotorsweep.run(scene, progress=False, quiet=True)
+    assert list(ds.A.values) == [0.25 + k / 4 for k in range(44)]
+    assert float(ds.dissipation.sel(A=6.0).squeeze()) == float(ds.dissipation.isel(A=23).squeeze())
+
+
+def test_the_progress_line_shows_the_periods_closed(capsys, monkeypatch):
+    line = rotorsweep._progress.ProgressLine(10, True)
+    monkeypatch.setattr(line, "last", line.last - 60)  # as if the last line were a minute old
+    line.update(3, 42)
+    err = capsys.readouterr().err
+    assert "3/10 members" in err and "(42 periods closed)" in err
+
+
+def test_a_sweep_job_counts_the_periods_its_members_close(small_scene):
+    job = rotorsweep._core.SweepJob(small_scene, False, 1, "", False, "test", "test")
+    assert job.wait(-1)
+    assert job.done == job.total == 12
+    with h5py.File(io.BytesIO(job.take_image()), "r") as f:
+        shadows = int(np.isfinite(f["members/dissipation_shadow"][:]).sum())
+    assert shadows > 0  # the CP members at A = 6 run their 2 averaged periods again
+    assert job.periods == 12 * 3 + 2 * shadows  # relax 1 + average 2 each
+
+
+def test_the_last_lines_count_symmetry_limited_members_apart(small_scene, capsys):
+    """A = 6 without disorder: 4 CP members whose D the integration error decides, none merely unresolved."""
+    ds = rotorsweep.run(small_scene, progress=False)
+    err = capsys.readouterr().err
+    limited = int(ds.symmetry_limited.sum())
+    assert limited == 4 and int(ds.dissipation_resolved.where(ds.symmetry_limited == 1).sum()) == 0
+    assert f"warning: {limited} members whose D the integration error decides" in err
+    assert "not resolved" not in err and "tighten" not in err

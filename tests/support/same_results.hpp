@@ -1,5 +1,6 @@
 // Test support: whether two member results are the same bits (summaries, counts, final angles,
-// period records, final state and row profiles), for backend and lane-type agreement tests.
+// period records, final state, the shadow's D and flags, row profiles), for backend and lane-type
+// agreement tests.
 #pragma once
 
 #include <cstring>
@@ -34,6 +35,9 @@ inline std::string result_difference(const ensemble::MemberResult& a, const ense
       if (!same_bits(a.periods[p].values[c], b.periods[p].values[c]))
         return "period record " + std::to_string(p);
   if (a.final_state.attractor != b.final_state.attractor) return "attractor";
+  if (!same_bits(a.dissipation_shadow, b.dissipation_shadow)) return "dissipation_shadow";
+  if (a.symmetry_limited != b.symmetry_limited || a.shadow_departed != b.shadow_departed)
+    return "symmetry_limited or shadow_departed";
   for (const auto profile :
        {&ensemble::MemberResult::row_dissipation, &ensemble::MemberResult::link_alignment}) {
     if ((a.*profile).size() != (b.*profile).size()) return "row profile size";

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <type_traits>
 #include <vector>
 
@@ -82,17 +83,22 @@ ROTORSWEEP_HD TrackField<V> field_in_lanes(const SubstrateTableView* tables, std
   return f;
 }
 
+/// Thrown by a SubstrateTable whose build was asked to stop (its `stopped` returned true).
+struct SubstrateTableStopped {};
+
 /// The table of one separation: tracks at y = track_y[t] (units of a; a slider's rows, or each rotor's
 /// path when the slider is turned), x over [x_begin, x_end] in intervals of at most `dx`. It holds B_∥,
 /// the field along the rotors' in-plane axis (cos τ, sin τ, 0) for a slider turned by τ = tilt (B_x at
 /// τ = 0), and B_z. Each interval's quintic matches the direct sum's value, slope and curvature at both
 /// ends, so the field is C² and its error falls as dx⁶. The direct sums run at lane_width<V> nodes at
-/// once (V of the last argument; every V gives the same table).
+/// once (V of the type_identity argument; every V gives the same table); `stopped`, where given, is
+/// asked before each block of nodes, and the build ends with SubstrateTableStopped once it says true.
 class SubstrateTable {
  public:
   template <class V = double>
   SubstrateTable(const SubstrateLattice& lattice, const std::vector<double>& track_y, double x_begin,
-                 double x_end, double dx, double tilt = 0.0, std::type_identity<V> = {})
+                 double x_end, double dx, double tilt = 0.0, std::type_identity<V> = {},
+                 const std::function<bool()>& stopped = {})
       : intervals_(std::size_t(std::ceil((x_end - x_begin) / dx - 1e-9))),
         tracks_(track_y.size()),
         x_begin_(x_begin) {
@@ -110,6 +116,7 @@ class SubstrateTable {
     };
     for (std::size_t track = 0; track < tracks_; ++track) {
       for (std::size_t first = 0; first <= intervals_; first += width) {
+        if (stopped && stopped()) throw SubstrateTableStopped{};
         const auto node = [&](std::size_t l) { return std::min(first + l, intervals_); };
         const auto field = substrate_field(
             lattice, lane_from<V>([&](std::size_t l) { return x_begin + double(node(l)) * step; }),

@@ -13,6 +13,7 @@
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/shadow_attractor.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -141,6 +142,51 @@ TEST_CASE("the device member driver runs a shadow run as the CPU does: its toler
   // and the scale and the start took effect: the plain members give other results
   const auto plain = ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {});
   CHECK(testing::count_differences(plain.results, slots, first) > 0);
+}
+
+TEST_CASE("the GPU's second pass of shadow runs gives the CPU lanes' errors and flags",
+          "[device_member][shadow]") {
+  // random starts without disorder at N = 6: CP members, symmetry-limited, some of whose shadows fall
+  // into the strict-FM set; the GPU runs the primaries, then their shadows from where their averaged
+  // periods began, and completes each as ShadowedRange (ensemble/rows/sweep.cpp) does
+  const auto scene = io::parse_scene_text(
+      "[model]\nrows = 6\n[drive]\ng = [0.002]\n[sweep]\nA = [6.0, 8.1, 9.3]\n"
+      "[initial]\nkinds = [\"random\", \"AFM\"]\nreplicas = 3\n[numerics]\nrtol = 1e-7\natol = 1e-10\n",
+      "device-member-shadow-pass");
+  const auto members = ensemble::plan_members(scene);
+  const auto cpu = ensemble::run_sweep(scene, members, 2, {}).results;
+
+  ensemble::Scene primaries = scene;
+  primaries.shadow_runs = false;
+  const ensemble::MemberSource all{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  auto gpu = run_through_slots(primaries, all);
+  std::vector<ensemble::Member> shadows;
+  std::vector<std::size_t> of;
+  for (std::size_t i = 0; i < gpu.size(); ++i) {
+    if (!ensemble::needs_shadow(gpu[i])) continue;
+    ensemble::Member m = members[i];
+    m.rerun = ensemble::Rerun::shadow;
+    m.tolerance_scale = ensemble::shadow_tolerance_scale;
+    m.start = std::make_shared<const std::vector<double>>(gpu[i].averaging_start);
+    shadows.push_back(std::move(m));
+    of.push_back(i);
+  }
+  REQUIRE_FALSE(shadows.empty());
+  ensemble::Scene averaged = scene;
+  averaged.relax_periods = 0;
+  averaged.steady_tol = 0;
+  const ensemble::MemberSource second{shadows.size(), [&](std::size_t k) { return shadows[k]; }, {}};
+  const auto shadow_results = run_through_slots(averaged, second);
+  for (std::size_t k = 0; k < of.size(); ++k)
+    ensemble::complete_with_shadow(gpu[of[k]], shadow_results[k], scene.symmetry_limited(members[0].rtol));
+
+  std::size_t departed = 0;
+  for (std::size_t i = 0; i < cpu.size(); ++i) {
+    INFO("member " << i);
+    CHECK(testing::result_difference(cpu[i], gpu[i]) == "");  // the error, the shadow's D and the flags too
+    departed += cpu[i].shadow_departed;
+  }
+  CHECK(departed > 0);  // the test covers a departed shadow
 }
 
 TEST_CASE("the device member driver with disorder: drawn and given per row", "[device_member][disorder]") {

@@ -175,7 +175,7 @@ TEST_CASE("at T > 0 a team steps a member along the lanes' path: the same noise,
           "[team][device_member]") {
   const std::string thermal =
       "[sweep]\nA = [1.0, 6.0]\n[thermal]\ntemperature = 0.05\nsteps_per_period = 200\nseed = 3\n"
-      "[observables]\nenergy = true\nmoments = true\nrow_profiles = true\n";
+      "[observables]\nenergy = true\nrow_profiles = true\n";
   SECTION("disordered nearest neighbours") {
     check_thermal_path<Model>(rows_20 + "[disorder]\nA = 1e-3\n" + thermal);
   }

@@ -1,7 +1,8 @@
 // The global error of D in the CP regime (ensemble/engine/shadow_run.hpp): with disorder above the
 // tolerance the reported errors cover the deviation from a much tighter run at several tolerances (the
-// local estimate alone does not); without it the members are flagged symmetry-limited; outside CP
-// nothing changes; an offset of 1e4 rad and the same start reduced modulo 2π agree within the errors.
+// local estimate alone does not); without it the members are flagged symmetry-limited, never resolved;
+// outside CP nothing changes; an offset of 1e4 rad and the same start reduced modulo 2π agree within the
+// errors.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <iomanip>
@@ -80,6 +81,7 @@ TEST_CASE("without a perturbation above the tolerance, CP members are flagged sy
     CHECK(r.regime == ensemble::Regime::cp);
     CHECK(r.symmetry_limited);
     CHECK(r.dissipation_error() > 1e-4 * r.dissipation());  // far above the local estimate (~1e-9 D)
+    CHECK_FALSE(r.dissipation_resolved());                  // no error bounds D, whatever its size
   }
 }
 

@@ -1,7 +1,8 @@
 // Member summaries (ensemble/member_summary): the regime rule on hand-made period records,
-// the steady-state test, and means and spread over the averaged periods.
+// the steady-state test, means and spread over the averaged periods, and the DW label.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <vector>
 
 #include "ensemble/rows/member_summary.hpp"
 
@@ -59,4 +60,30 @@ TEST_CASE("summaries average the last periods only", "[ensemble][summary]") {
   summarize({}, 2, true, failed);
   CHECK(std::isnan(failed.dissipation()));
   CHECK(std::isnan(failed.alignment_mean()));
+}
+
+TEST_CASE("a member that slips every period across domain walls is DW, with walls it is not CP",
+          "[ensemble][regime]") {
+  const double pi = std::acos(-1.0);
+  const auto retired = [&](const std::vector<double>& theta) {
+    RetiredLane lane;
+    lane.status = rotorsweep::kernels::LaneStatus::ok;
+    lane.settled = true;
+    lane.periods = 4;
+    lane.theta = theta;
+    lane.history = {period(1, 0.3, 1.0, 4), period(1, 0.3, 1.0, 4)};
+    lane.end_states.assign(4, theta);
+    SummaryRules rules;
+    rules.average_periods = 2;
+    rules.classify = true;
+    return retired_member_result(std::move(lane), rules);
+  };
+  // two antiferromagnetic domains: the bonds 3–4 and 7–0 are aligned, four sign changes, two walls
+  const auto walls = retired({0, pi, 0, pi, pi, 0, pi, 0});
+  CHECK(walls.regime == Regime::dw);
+  CHECK(walls.final_state.domain_walls == 2);
+  CHECK(walls.final_state.attractor == "DW:walls2:p1");
+  const auto two_sublattices = retired({0, pi, 0, pi, 0, pi, 0, pi});
+  CHECK(two_sublattices.regime == Regime::cp);
+  CHECK(two_sublattices.final_state.attractor == "CP:2SL:p1");
 }
