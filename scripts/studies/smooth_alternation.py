@@ -115,9 +115,11 @@ def sigma_law(results, A_index, g_index):
 
 
 def torque(theta, t, Aj):
-    """−∂H/∂θ_j of the two-row ring (each row's neighbour on both sides is the other row)."""
+    """−∂H/∂θ_j of the two-row ring (each row's neighbour on both sides is the other row); θ may hold a column per
+    time of an array t."""
+    rows = (slice(None),) + (None,) * (np.ndim(theta) - 1)
     d = theta[0] - theta[1]
-    return -3 * np.sin(2 * theta) + 2 * np.sin(d) * np.array([1.0, -1.0]) + Aj * np.sin(theta - t)
+    return -3 * np.sin(2 * theta) + 2 * np.sin(d) * np.array([1.0, -1.0])[rows] + Aj[rows] * np.sin(theta - t)
 
 
 def hessian(theta, t, Aj):
@@ -163,24 +165,24 @@ def slips_of(A, g, Aj):
     periods = SCHEDULE["relax_periods"] + SCHEDULE["average_periods"]
     solution = follow(A, g, Aj, periods)
 
-    def speed(t):
-        return np.max(np.abs(torque(solution.sol(t), t, Aj))) / g
+    def speeds_at(times):
+        return np.max(np.abs(torque(solution.sol(times), times, Aj)), axis=0) / g
 
     steps = solution.t
-    speeds = np.array([speed(t) for t in steps])
+    speeds = speeds_at(steps)
     events = []
     for k in np.flatnonzero((speeds[1:] > FAST) & (speeds[:-1] <= FAST)) + 1:
         if steps[k] < 2 * np.pi * SCHEDULE["relax_periods"]:
             continue
         fine = np.linspace(steps[k - 1], steps[k], 201)
-        start = fine[np.argmax([speed(t) > FAST for t in fine])]
+        start = fine[np.argmax(speeds_at(fine) > FAST)]
         # the slip runs between the solver's last calm step before it and its first calm step after it
         calm = speeds <= CALM
         lo = k - 1 - np.argmax(calm[k - 1::-1]) if calm[:k].any() else 0
         hi = k + np.argmax(calm[k:]) if calm[k:].any() else len(steps) - 1
         span = np.union1d(np.linspace(steps[lo], steps[hi], 20001), steps[lo:hi + 1])
-        velocity = np.array([torque(solution.sol(t), t, Aj) for t in span]) / g
-        energy = g * np.trapz(np.sum(velocity ** 2, axis=1), span)
+        velocity = torque(solution.sol(span), span, Aj) / g
+        energy = g * np.trapz(np.sum(velocity ** 2, axis=0), span)
         theta = solution.sol(start)
         events.append({"phase": start / (2 * np.pi), "point": nearest_critical_point(theta, start, Aj),
                        "energy": float(energy), "episode": (lo, hi),

@@ -21,11 +21,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// 2000 members that take a few seconds on two cores.
+/// 800 members that take some 11 CPU-seconds (about 6 s on two cores, 11 s on one: runs to be
+/// interrupted after up to 1.2 s run on one thread).
 const char* long_scene =
-    "[model]\nrows = 20\n[drive]\ng = [0.0011]\n[sweep]\nA = { from = 0.5, to = 12.0, count = 200 }\n"
+    "[model]\nrows = 20\n[drive]\ng = [0.0011]\n[sweep]\nA = { from = 0.5, to = 12.0, count = 80 }\n"
     "[initial]\nkinds = [\"AFM\", \"random\"]\nreplicas = 5\n[schedule]\nrelax_periods = 10\naverage_periods "
     "= 10\n";
+const std::size_t long_scene_members = 800;
 
 std::string bytes_of(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -60,7 +62,9 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
   const auto dir = scratch_directory("interrupt-resume");
   const auto scene = dir / "long.toml";
   write_text(scene, long_scene);
-  const std::string base = "run '" + scene.string() + "' -q -o '" + (dir / "out.h5").string() + "'";
+  // the interrupted runs on one thread (the whole run's bits on any number)
+  const std::string base =
+      "run '" + scene.string() + "' -q --threads 1 -o '" + (dir / "out.h5").string() + "'";
   REQUIRE(
       run_cli("run '" + scene.string() + "' -q -o '" + (dir / "whole.h5").string() + "'", dir).exit_code ==
       0);
@@ -83,7 +87,7 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
     kept = std::size_t(file.attribute_double("members_done"));
     CHECK(kept == rows_done(partial));
     CHECK(kept > 0);
-    CHECK(kept < 2000);
+    CHECK(kept < long_scene_members);
   }
 
   // a changed scene does not resume and leaves the partial file as it is; nor does a fresh run
@@ -111,7 +115,7 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
   INFO(third.output);
   REQUIRE(third.exit_code == 137);
   CHECK(rows_done(partial) > kept);
-  CHECK(rows_done(partial) < 2000);
+  CHECK(rows_done(partial) < long_scene_members);
 
   const auto last = run_cli(base + " --resume", dir);
   INFO(last.output);
@@ -122,11 +126,12 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
 
 TEST_CASE("an allocation that fails in a worker thread is one message, exit 1, and the run resumes",
           "[apps][run][resume]") {
-  // N = 20 first, then N = 20000, whose lane block (tens of MB) the preloaded posix_memalign refuses
+  // N = 20 first (a lane block of some 80 kB with 8 lanes), then N = 2000, whose lane block (about 1 MB per
+  // lane: 2 MB with SSE2's 2 lanes, 8 MB with AVX-512's 8) the preloaded posix_memalign refuses
   const auto dir = scratch_directory("worker-allocation");
   const auto scene = dir / "two_sizes.toml";
   write_text(scene,
-             "[model]\nrows = [20, 20000]\n[drive]\ng = [0.05]\n[sweep]\nA = [1.0]\n"
+             "[model]\nrows = [20, 2000]\n[drive]\ng = [0.05]\n[sweep]\nA = [1.0]\n"
              "[schedule]\nrelax_periods = 0\naverage_periods = 1\n");
   const std::string base = "run '" + scene.string() + "' -q -o '" + (dir / "out.h5").string() + "'";
   REQUIRE(
@@ -134,7 +139,7 @@ TEST_CASE("an allocation that fails in a worker thread is one message, exit 1, a
       0);
   const auto failed = run_cli(base, dir,
                               "export LD_PRELOAD='" ROTORSWEEP_FAILING_ALLOCATION
-                              "' ROTORSWEEP_TEST_ALLOCATION_LIMIT=8000000; ");
+                              "' ROTORSWEEP_TEST_ALLOCATION_LIMIT=1000000; ");
   INFO(failed.output);
   CHECK(failed.exit_code == 1);
   CHECK_THAT(failed.output, Catch::Contains("out of memory") && Catch::Contains("--resume"));
@@ -158,7 +163,8 @@ TEST_CASE("a killed shard resumes and merges to the unsharded file", "[apps][run
   };
   REQUIRE(run_cli(run("-o '" + (dir / "whole.h5").string() + "'"), dir).exit_code == 0);
   const std::string shard = "--shard 1/2 -o '" + (dir / "one.h5").string() + "'";
-  const auto killed = run_cli_signalled(run(shard + " --flush-seconds 0.1"), dir, "KILL", random_delay());
+  const auto killed =
+      run_cli_signalled(run(shard + " --threads 1 --flush-seconds 0.1"), dir, "KILL", random_delay());
   REQUIRE(killed.exit_code == 137);
   REQUIRE(fs::exists(dir / "one.h5.partial"));
   CHECK(run_cli(run("--shard 2/2 -o '" + (dir / "one.h5").string() + "' --resume"), dir).exit_code == 2);
@@ -205,7 +211,7 @@ TEST_CASE("a disk that fills up mid-run keeps the finished members for --resume"
   CHECK_THAT(output, !Catch::Contains("out.h5\n"));  // no complete file in the small file system
   REQUIRE(fs::exists(dir / "out.h5.partial"));
   CHECK_FALSE(Hdf5Location::open_file((dir / "out.h5.partial").string()).attribute_flag("complete"));
-  CHECK(rows_done(dir / "out.h5.partial") < 2000);
+  CHECK(rows_done(dir / "out.h5.partial") < long_scene_members);
   const auto resumed =
       run_cli("run '" + scene.string() + "' -q -o '" + (dir / "out.h5").string() + "' --resume", dir);
   INFO(resumed.output);
@@ -238,7 +244,7 @@ TEST_CASE("a second writer of a running run's output is refused and the first ru
   CHECK_THAT(result.output, Catch::Contains("being written by another process (PID "));
   const auto file = Hdf5Location::open_file((dir / "out.h5").string());
   CHECK(file.attribute_flag("complete"));
-  CHECK(rows_done(dir / "out.h5") == 2000);
+  CHECK(rows_done(dir / "out.h5") == long_scene_members);
   CHECK_FALSE(fs::exists(dir / ".out.h5.lock"));
 }
 
@@ -292,7 +298,7 @@ TEST_CASE("no writer takes a running run's partial, temporary or lock file, and 
   REQUIRE(fs::exists(partial));
   CHECK(std::size_t(Hdf5Location::open_file(partial.string()).attribute_double("members_done")) ==
         rows_done(partial));
-  CHECK(Hdf5Location::open_file(partial.string()).open_group("members").shape("done").first == 20000);
+  CHECK(Hdf5Location::open_file(partial.string()).open_group("members").shape("done").first == 10 * long_scene_members);
   for (const auto& entry : fs::directory_iterator(dir)) {
     const auto name = entry.path().filename().string();
     CHECK((name.ends_with(".toml") || name == "out.h5.partial" || name == "s1.h5" || name == "s2.h5" ||
