@@ -3,6 +3,7 @@
 #include <cuda_runtime.h>
 
 #include <stdexcept>
+#include <string>
 
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -25,8 +26,15 @@ const GpuInfo& gpu_info() {
                 (status != cudaSuccess ? cudaGetErrorString(status) : "no devices") + ")";
       return out;
     }
+    out.devices = count;
+    try {
+      out.index = gpu_device_index(count);
+    } catch (const GpuLaunchError& e) {
+      out.why = e.what();
+      return out;
+    }
     cudaDeviceProp properties{};
-    if (cudaGetDeviceProperties(&properties, 0) != cudaSuccess) {
+    if (cudaGetDeviceProperties(&properties, out.index) != cudaSuccess) {
       out.why = "the CUDA GPU could not be queried";
       return out;
     }
@@ -41,6 +49,11 @@ const GpuInfo& gpu_info() {
     return out;
   }();
   return info;
+}
+
+void use_gpu() {
+  if (cudaSetDevice(gpu_info().index) != cudaSuccess)
+    throw std::runtime_error("cannot use CUDA device " + std::to_string(gpu_info().index));
 }
 
 SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, int host_threads,

@@ -15,12 +15,18 @@ struct GpuInfo {
   bool available = false;
   std::string name;  ///< the device's name, e.g. "NVIDIA H100 80GB HBM3"
   std::string why;   ///< why none is available
+  int index = 0;     ///< the CUDA device's index (gpu_device_index)
+  int devices = 0;   ///< CUDA devices visible to the process
   int multiprocessors = 0;
   double memory_gib = 0;
 };
 
-/// The first CUDA device (probed once).
+/// The process's CUDA device (gpu_device_index: the local rank's under mpirun or srun, else the first),
+/// probed once; made the calling thread's device by use_gpu().
 const GpuInfo& gpu_info();
+
+/// Makes gpu_info()'s device the calling thread's CUDA device (each thread that runs a sweep on it).
+void use_gpu();
 
 /// "cpu", or for a scene with numerics.device = "gpu" the result file's "device": "gpu (<name>; 8
 /// threads per member)", the threads per member at each N where the scene has several.

@@ -9,7 +9,7 @@ namespace rotorsweep::ensemble {
 
 const GpuInfo& gpu_info() {
   static const GpuInfo info{
-      false, "", "this rotorsweep was built without the GPU backend (ROTORSWEEP_CUDA=OFF, or no nvcc)", 0, 0};
+      .why = "this rotorsweep was built without the GPU backend (ROTORSWEEP_CUDA=OFF, or no nvcc)"};
   return info;
 }
 

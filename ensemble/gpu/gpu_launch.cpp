@@ -35,6 +35,19 @@ GpuScratch scratch_from_environment() {
 
 }  // namespace
 
+int gpu_device_index(int devices) {
+  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_RANK", "SLURM_LOCALID"}) {
+    const char* text = std::getenv(name);
+    if (!text || !*text) continue;
+    char* end = nullptr;
+    const long rank = std::strtol(text, &end, 10);
+    if (*end != '\0' || rank < 0 || rank > (1 << 24))
+      throw GpuLaunchError(std::string(name) + " = '" + text + "': not a local rank (a non-negative integer)");
+    return devices > 0 ? int(rank % devices) : 0;
+  }
+  return 0;
+}
+
 GpuLaunch gpu_launch() {
   GpuLaunch launch;
   launch.threads_per_block = positive_from_environment("ROTORSWEEP_GPU_BLOCK", launch.threads_per_block);

@@ -36,6 +36,12 @@ struct GpuLaunch {
 /// ROTORSWEEP_GPU_SCRATCH (shared or global); a bad value throws GpuLaunchError naming it.
 GpuLaunch gpu_launch();
 
+/// The CUDA device this process runs on among `devices` visible ones (docs/architecture.md "Backends"):
+/// its node-local rank modulo `devices` under mpirun (OMPI_COMM_WORLD_LOCAL_RANK) or srun
+/// (SLURM_LOCALID), so that a node's ranks spread over its GPUs; device 0 outside them. A local rank
+/// that is not a non-negative integer throws GpuLaunchError naming the variable.
+int gpu_device_index(int devices);
+
 /// Whether the scene's members can run on a team (ensemble/engine/team_member.hpp): rows (nearest
 /// neighbours or a coupling table) at T > 0 or with a linearly implicit stepper.
 bool gpu_teams_fit(const Scene& scene);

@@ -217,6 +217,7 @@ SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const Slo
 inline const GpuInfo& available_gpu() {
   const GpuInfo& info = gpu_info();
   if (!info.available) throw std::runtime_error("numerics.device = \"gpu\": " + info.why);
+  use_gpu();
   return info;
 }
 

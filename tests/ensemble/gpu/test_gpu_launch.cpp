@@ -178,3 +178,29 @@ TEST_CASE("a slider member's team: two or three rotors a thread, at most a warp;
   const ScopedVariable team("ROTORSWEEP_GPU_TEAM", "16");
   CHECK_THAT(ensemble::slider_device_label(scene), Catch::Contains("16 at 7 × 7, 16 at 3 × 2"));
 }
+
+TEST_CASE("under mpirun or srun each rank of a node takes the GPU of its local rank", "[gpu_launch]") {
+  {
+    const ScopedVariable open_mpi("OMPI_COMM_WORLD_LOCAL_RANK", "");
+    const ScopedVariable slurm("SLURM_LOCALID", "");
+    CHECK(ensemble::gpu_device_index(4) == 0);  // one process: the first device
+  }
+  {
+    const ScopedVariable open_mpi("OMPI_COMM_WORLD_LOCAL_RANK", "3");
+    const ScopedVariable slurm("SLURM_LOCALID", "6");  // mpirun's rank counts where both are set
+    CHECK(ensemble::gpu_device_index(4) == 3);
+    CHECK(ensemble::gpu_device_index(2) == 1);  // more ranks than GPUs: they share them in turn
+    CHECK(ensemble::gpu_device_index(1) == 0);
+  }
+  {
+    const ScopedVariable open_mpi("OMPI_COMM_WORLD_LOCAL_RANK", "");
+    const ScopedVariable slurm("SLURM_LOCALID", "6");
+    CHECK(ensemble::gpu_device_index(4) == 2);
+  }
+  for (const char* bad : {"-1", "two", "1.5"}) {
+    const ScopedVariable open_mpi("OMPI_COMM_WORLD_LOCAL_RANK", bad);
+    INFO(bad);
+    CHECK_THROWS_WITH(ensemble::gpu_device_index(4),
+                      Catch::Contains("OMPI_COMM_WORLD_LOCAL_RANK") && Catch::Contains("non-negative integer"));
+  }
+}
