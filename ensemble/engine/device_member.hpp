@@ -1,12 +1,10 @@
 // One member on one `double` lane from its start to its retirement: the device backend's scheduler
-// (one member per GPU thread), doing in one lane what LaneScheduler does per lane (docs/model.md §3).
+// (one member per GPU thread), run_member's loop over the member's rows on one thread (docs/model.md §3).
 #pragma once
 
 #include <cstddef>
 
-#include "ensemble/engine/device_period_record.hpp"
-#include "ensemble/engine/member_progress.hpp"
-#include "ensemble/engine/member_result.hpp"
+#include "ensemble/engine/member_loop.hpp"
 #include "ensemble/engine/member_slots.hpp"
 #include "ensemble/engine/step_reducers.hpp"
 #include "ensemble/rows/row_profile_integral.hpp"
@@ -36,70 +34,11 @@ struct DeviceMember {
   /// at least storage_size(s) values.
   ROTORSWEEP_HD static void run(const SlotSchedule& s, const SlotViews& slots, std::size_t k, double* storage,
                                 std::size_t capacity) {
-    const std::size_t n = s.rows;
     kernels::LaneArena<double> arena(storage, capacity);
     Parts parts(s, arena);
-    const kernels::Integrals Q = s.quadratures;
-    Model& model = parts.model;
-    Integrator& integrator = parts.integrator;
-    kernels::LaneState<double>& state = parts.state;
-    double* theta_before = parts.theta_before;
-
-    for (std::size_t j = 0; j < n; ++j) state.y[j] = slots.y0[k * n + j];
-    state.t_stop = Model::period;
-    state.tolerance_scale = slots.tolerance_scale[k];
-    model.set_lane(0, slot_parameters<Model>(s, slots, k));
-    SlipCounter<double> slips(s.slip_rate, s.slip_energies);
-    slips.set_damping(0, slots.g[k]);
-    if constexpr (stochastic) {
-      const double g = slots.g[k];
-      integrator.start_lane(0, slots.noise_key[k], g, model.curvature_bound(0));
-      slips.set_rate(0, thermal_slip_rate(s.slip_rate, s.temperature, g, integrator.step_size(0)));
-    }
-    AlignmentExtrema<double> alignment;
-    DissipationSwing<double> swing;
-    const bool swing_on = Q.drive && !stochastic;
-    if (s.row_profiles) parts.profile.start(model, parts.profile_work, state, 0);
-
-    MemberProgress progress;
-    for (;;) {
-      double t_before = 0;
-      if (s.slips) {
-        for (std::size_t j = 0; j < n; ++j) theta_before[j] = state.y[j];
-        t_before = state.t;
-      }
-      if (s.row_profiles) parts.profile.before_step(model, parts.profile_work, state);
-      const bool accepted = integrator.attempt(model, state);
-      if (Q.alignment) alignment.accumulate(true, integrator.start_integrands()[Q.alignment_index()]);
-      if (accepted) {
-        if (swing_on) swing.accumulate(true, state.quad[Q.drive_index()]);
-        if (s.slips) slips.accumulate(true, n, theta_before, state.y, state.t - t_before);
-      }
-      if (s.row_profiles) parts.profile.after_step(model, parts.profile_work, state, accepted);
-      if (state.status[0] != kernels::LaneStatus::ok) break;
-      if (state.t < state.t_stop) continue;
-
-      const PeriodRecord record = device_period_record(
-          s, [&](std::size_t p) { return state.quad[p]; }, Model::period, state.t, alignment, swing, swing_on,
-          slips, stochastic);
-      const std::size_t closed = std::size_t(progress.periods());
-      double* end = slots.end_states + (k * s.end_capacity + closed % s.end_capacity) * n;
-      for (std::size_t j = 0; j < n; ++j) end[j] = state.y[j];
-      if (s.row_profiles)
-        parts.profile.take_period(
-            0, slots.profiles + (k * s.profile_capacity + closed % s.profile_capacity) * 2 * n);
-      const std::size_t ring = s.record_capacity;
-      double* slot = slots.records + (k * ring + closed % ring) * channel_count;
-      for (std::size_t c = 0; c < channel_count; ++c) slot[c] = record.values[c];
-      if (progress.close_period(s.periods, record.dissipation())) break;
-      next_period(s, state);
-    }
-    slots.status[k] = std::uint8_t(state.status[0]);
-    slots.settled[k] = progress.settled() ? 1 : 0;
-    slots.periods[k] = progress.periods();
-    slots.steps[2 * k] = state.steps_accepted;
-    slots.steps[2 * k + 1] = state.steps_rejected;
-    for (std::size_t j = 0; j < n; ++j) slots.theta[k * n + j] = state.y[j];
+    Body body{parts, s};
+    body.start(slots, k);
+    run_member(body, s, slots, k);
   }
 
  private:
@@ -124,6 +63,74 @@ struct DeviceMember {
           profile_work(s.row_profiles ? s.rows : 0, arena) {}
   };
 
+  /// The member on its one lane, as run_member asks (ensemble/engine/member_loop.hpp).
+  struct Body {
+    static constexpr bool stochastic = DeviceMember::stochastic;
+    static constexpr double period = Model::period;
+    Parts& parts;
+    const SlotSchedule& s;
+
+    ROTORSWEEP_HD void start(const SlotViews& slots, std::size_t k) {
+      kernels::LaneState<double>& state = parts.state;
+      for (std::size_t j = 0; j < s.rows; ++j) state.y[j] = slots.y0[k * s.rows + j];
+      state.t_stop = Model::period;
+      state.tolerance_scale = slots.tolerance_scale[k];
+      parts.model.set_lane(0, slot_parameters<Model>(s, slots, k));
+      if constexpr (stochastic) parts.integrator.start_lane(0, slots.noise_key[k], slots.g[k], parts.model.curvature_bound(0));
+    }
+    ROTORSWEEP_HD bool attempt() { return parts.integrator.attempt(parts.model, parts.state); }
+    ROTORSWEEP_HD double t() const { return parts.state.t; }
+    ROTORSWEEP_HD double t_stop() const { return parts.state.t_stop; }
+    ROTORSWEEP_HD kernels::LaneStatus status() const { return parts.state.status[0]; }
+    ROTORSWEEP_HD double quadrature(std::size_t p) const { return parts.state.quad[p]; }
+    ROTORSWEEP_HD double drive() const { return parts.state.quad[s.quadratures.drive_index()]; }
+    ROTORSWEEP_HD double alignment_integrand() const {
+      return parts.integrator.start_integrands()[s.quadratures.alignment_index()];
+    }
+    ROTORSWEEP_HD double slip_rate(const SlotSchedule& schedule, double g) const {
+      return thermal_slip_rate(schedule.slip_rate, schedule.temperature, g, parts.integrator.step_size(0));
+    }
+    ROTORSWEEP_HD void keep_before() {
+      for (std::size_t j = 0; j < s.rows; ++j) parts.theta_before[j] = parts.state.y[j];
+    }
+    ROTORSWEEP_HD SlipTurns turns(bool squares) const {
+      SlipTurns out;
+      for (std::size_t j = 0; j < s.rows; ++j) {
+        const double turn = parts.state.y[j] - parts.theta_before[j];
+        out.largest = kernels::lane_max(out.largest, kernels::lane_abs(turn));
+        if (squares) out.squares += turn * turn;
+      }
+      return out;
+    }
+    ROTORSWEEP_HD void write_rows(double* out) const {
+      for (std::size_t j = 0; j < s.rows; ++j) out[j] = parts.state.y[j];
+    }
+    template <class F>
+    ROTORSWEEP_HD void one(F&& f) const {
+      f();
+    }
+    /// IntegrationLoop::next_period on the one lane.
+    ROTORSWEEP_HD void next_period(bool wrap) {
+      kernels::LaneState<double>& state = parts.state;
+      for (std::size_t p = 0; p <= nq; ++p) state.quad[p] = 0.0;
+      if (!wrap) {
+        state.t_stop = state.t + Model::period;
+        return;
+      }
+      state.t = 0.0;
+      state.t_stop = Model::period;
+      for (std::size_t j = 0; j < s.rows; ++j) state.y[j] = kernels::wrap_2pi(state.y[j]);
+    }
+    ROTORSWEEP_HD double steps_accepted() const { return parts.state.steps_accepted; }
+    ROTORSWEEP_HD double steps_rejected() const { return parts.state.steps_rejected; }
+    ROTORSWEEP_HD void profile_start() { parts.profile.start(parts.model, parts.profile_work, parts.state, 0); }
+    ROTORSWEEP_HD void profile_before() { parts.profile.before_step(parts.model, parts.profile_work, parts.state); }
+    ROTORSWEEP_HD void profile_after(bool accepted) {
+      parts.profile.after_step(parts.model, parts.profile_work, parts.state, accepted);
+    }
+    ROTORSWEEP_HD void profile_take(double* out) { parts.profile.take_period(0, out); }
+  };
+
   ROTORSWEEP_HD static typename Integrator::Settings integrator_settings(const SlotSchedule& s) {
     if constexpr (stochastic)
       return {s.temperature, s.steps_per_period, s.step_fraction};
@@ -140,18 +147,6 @@ struct DeviceMember {
       return Integrator(model, settings, arena);
     else
       return Integrator(model, settings.method, settings.tolerances, settings.limits, s.first_step_scale, arena);
-  }
-
-  /// IntegrationLoop::next_period on the one lane.
-  ROTORSWEEP_HD static void next_period(const SlotSchedule& s, kernels::LaneState<double>& state) {
-    for (std::size_t p = 0; p <= nq; ++p) state.quad[p] = 0.0;
-    if (!s.wrap_angles) {
-      state.t_stop = state.t + Model::period;
-      return;
-    }
-    state.t = 0.0;
-    state.t_stop = Model::period;
-    for (std::size_t j = 0; j < s.rows; ++j) state.y[j] = kernels::wrap_2pi(state.y[j]);
   }
 };
 

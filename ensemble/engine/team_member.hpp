@@ -1,13 +1,11 @@
 // One member on a team of threads from its start to its retirement (docs/architecture.md "Teams"):
-// DeviceMember's state machine (docs/model.md §3, §7 at T > 0), its row loops over each rank's rows.
+// run_member's loop (docs/model.md §3, §7 at T > 0) with its row loops over each rank's rows.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 
-#include "ensemble/engine/device_period_record.hpp"
-#include "ensemble/engine/member_progress.hpp"
-#include "ensemble/engine/member_result.hpp"
+#include "ensemble/engine/member_loop.hpp"
 #include "ensemble/engine/member_slots.hpp"
 #include "ensemble/engine/step_reducers.hpp"
 #include "ensemble/engine/team_row_profile.hpp"
@@ -42,96 +40,12 @@ struct TeamMember {
   /// (the team's, at least storage_size values) holds its vectors.
   ROTORSWEEP_HD static void run(Team& team, const SlotSchedule& s, const SlotViews& slots, std::size_t k,
                                 double* storage, std::size_t capacity) {
-    const std::size_t n = s.rows, ranks = team.size();
     kernels::LaneArena<double> arena(storage, capacity);
-    Parts parts(s, ranks, arena);
+    Parts parts(s, team.size(), arena);
     team.sync();
-    const kernels::Integrals Q = s.quadratures;
-    Model& model = parts.model;
-    model.set_lane(0, slot_parameters<Model>(s, slots, k));
-    kernels::TeamMemberState state;
-    state.y = parts.theta;
-    each_row(team, n, [&](std::size_t j) { state.y[j] = slots.y0[k * n + j]; });
-    state.t_stop = Model::period;
-    state.tolerance_scale = slots.tolerance_scale[k];
-    SlipCounter<double> slips(s.slip_rate, s.slip_energies);
-    slips.set_damping(0, slots.g[k]);
-    if constexpr (stochastic) {
-      const double g = slots.g[k];
-      parts.integrator.start(slots.noise_key[k], g, model.curvature_bound(0));
-      slips.set_rate(0, thermal_slip_rate(s.slip_rate, s.temperature, g, parts.integrator.step_size()));
-    }
-    AlignmentExtrema<double> alignment;
-    DissipationSwing<double> swing;
-    const bool swing_on = Q.drive && !stochastic;
-    if (s.row_profiles) parts.profile.start(team, model, state);
-
-    MemberProgress progress;
-    for (;;) {
-      if (s.slips) each_row(team, n, [&](std::size_t j) { parts.theta_before[j] = state.y[j]; });
-      const double t_before = state.t;
-      if (s.row_profiles) parts.profile.before_step(team, model, state);
-      const bool accepted = parts.integrator.attempt(team, model, state);
-      if (Q.alignment) alignment.accumulate(true, parts.integrator.start_integrands()[Q.alignment_index()]);
-      if (accepted) {
-        if (swing_on) swing.accumulate(true, state.quad[Q.drive_index()]);
-        if (s.slips) {
-          const double largest = team.max([&](std::size_t r) {
-            const kernels::TeamRows rows = kernels::team_rows(n, ranks, r);
-            double m = 0.0;
-            for (std::size_t j = rows.begin; j < rows.end; ++j) {
-              const double turn = state.y[j] - parts.theta_before[j];
-              m = kernels::lane_max(m, kernels::lane_abs(turn));
-            }
-            return m;
-          });
-          const double squares = !s.slip_energies ? 0.0 : team.sum([&](std::size_t r) {
-            const kernels::TeamRows rows = kernels::team_rows(n, ranks, r);
-            double sum = 0.0;
-            for (std::size_t j = rows.begin; j < rows.end; ++j) {
-              const double turn = state.y[j] - parts.theta_before[j];
-              sum += turn * turn;
-            }
-            return sum;
-          });
-          slips.accumulate_turns(true, largest, squares, state.t - t_before);
-        }
-      }
-      if (s.row_profiles) parts.profile.after_step(team, model, state, accepted);
-      if (state.status != kernels::LaneStatus::ok) break;
-      if (state.t < state.t_stop) continue;
-
-      const PeriodRecord record = device_period_record(
-          s, [&](std::size_t p) { return state.quad[p]; }, Model::period, state.t, alignment, swing, swing_on,
-          slips, stochastic);
-      const std::size_t closed = std::size_t(progress.periods());
-      double* end = slots.end_states + (k * s.end_capacity + closed % s.end_capacity) * n;
-      each_row(team, n, [&](std::size_t j) { end[j] = state.y[j]; });
-      if (s.row_profiles)
-        parts.profile.take_period(
-            team, slots.profiles + (k * s.profile_capacity + closed % s.profile_capacity) * 2 * n);
-      team.one([&] {
-        double* slot = slots.records + (k * s.record_capacity + closed % s.record_capacity) * channel_count;
-        for (std::size_t c = 0; c < channel_count; ++c) slot[c] = record.values[c];
-      });
-      if (progress.close_period(s.periods, record.dissipation())) break;
-      for (double& q : state.quad) q = 0.0;
-      if (s.wrap_angles) {
-        state.t = 0.0;
-        state.t_stop = Model::period;
-        each_row(team, n, [&](std::size_t j) { state.y[j] = kernels::wrap_2pi(state.y[j]); });
-      } else {
-        state.t_stop = state.t + Model::period;
-      }
-    }
-    team.one([&] {
-      slots.status[k] = std::uint8_t(state.status);
-      slots.settled[k] = progress.settled() ? 1 : 0;
-      slots.periods[k] = progress.periods();
-      slots.steps[2 * k] = state.steps_accepted;
-      slots.steps[2 * k + 1] = state.steps_rejected;
-    });
-    each_row(team, n, [&](std::size_t j) { slots.theta[k * n + j] = state.y[j]; });
+    Body body{team, parts, s, {}};
+    body.start(slots, k);
+    run_member(body, s, slots, k);
   }
 
  private:
@@ -151,6 +65,95 @@ struct TeamMember {
           profile(s.row_profiles ? s.rows : 0, arena) {}
   };
 
+  /// The member on the team, as run_member asks (ensemble/engine/member_loop.hpp): each rank its rows,
+  /// the team's sums and maxima where one thread's run sums over rows.
+  struct Body {
+    static constexpr bool stochastic = TeamMember::stochastic;
+    static constexpr double period = Model::period;
+    Team& team;
+    Parts& parts;
+    const SlotSchedule& s;
+    kernels::TeamMemberState state;
+
+    ROTORSWEEP_HD void start(const SlotViews& slots, std::size_t k) {
+      parts.model.set_lane(0, slot_parameters<Model>(s, slots, k));
+      state.y = parts.theta;
+      each_row([&](std::size_t j) { state.y[j] = slots.y0[k * s.rows + j]; });
+      state.t_stop = Model::period;
+      state.tolerance_scale = slots.tolerance_scale[k];
+      if constexpr (stochastic) parts.integrator.start(slots.noise_key[k], slots.g[k], parts.model.curvature_bound(0));
+    }
+    ROTORSWEEP_HD bool attempt() { return parts.integrator.attempt(team, parts.model, state); }
+    ROTORSWEEP_HD double t() const { return state.t; }
+    ROTORSWEEP_HD double t_stop() const { return state.t_stop; }
+    ROTORSWEEP_HD kernels::LaneStatus status() const { return state.status; }
+    ROTORSWEEP_HD double quadrature(std::size_t p) const { return state.quad[p]; }
+    ROTORSWEEP_HD double drive() const { return state.quad[s.quadratures.drive_index()]; }
+    ROTORSWEEP_HD double alignment_integrand() const {
+      return parts.integrator.start_integrands()[s.quadratures.alignment_index()];
+    }
+    ROTORSWEEP_HD double slip_rate(const SlotSchedule& schedule, double g) const {
+      return thermal_slip_rate(schedule.slip_rate, schedule.temperature, g, parts.integrator.step_size());
+    }
+    ROTORSWEEP_HD void keep_before() {
+      each_row([&](std::size_t j) { parts.theta_before[j] = state.y[j]; });
+    }
+    ROTORSWEEP_HD SlipTurns turns(bool squares) const {
+      const std::size_t n = s.rows, ranks = team.size();
+      SlipTurns out;
+      out.largest = team.max([&](std::size_t r) {
+        const kernels::TeamRows rows = kernels::team_rows(n, ranks, r);
+        double m = 0.0;
+        for (std::size_t j = rows.begin; j < rows.end; ++j)
+          m = kernels::lane_max(m, kernels::lane_abs(state.y[j] - parts.theta_before[j]));
+        return m;
+      });
+      if (squares)
+        out.squares = team.sum([&](std::size_t r) {
+          const kernels::TeamRows rows = kernels::team_rows(n, ranks, r);
+          double sum = 0.0;
+          for (std::size_t j = rows.begin; j < rows.end; ++j) {
+            const double turn = state.y[j] - parts.theta_before[j];
+            sum += turn * turn;
+          }
+          return sum;
+        });
+      return out;
+    }
+    ROTORSWEEP_HD void write_rows(double* out) const {
+      each_row([&](std::size_t j) { out[j] = state.y[j]; });
+    }
+    template <class F>
+    ROTORSWEEP_HD void one(F&& f) const {
+      team.one(f);
+    }
+    ROTORSWEEP_HD void next_period(bool wrap) {
+      for (double& q : state.quad) q = 0.0;
+      if (wrap) {
+        state.t = 0.0;
+        state.t_stop = Model::period;
+        each_row([&](std::size_t j) { state.y[j] = kernels::wrap_2pi(state.y[j]); });
+      } else {
+        state.t_stop = state.t + Model::period;
+      }
+    }
+    ROTORSWEEP_HD double steps_accepted() const { return state.steps_accepted; }
+    ROTORSWEEP_HD double steps_rejected() const { return state.steps_rejected; }
+    ROTORSWEEP_HD void profile_start() { parts.profile.start(team, parts.model, state); }
+    ROTORSWEEP_HD void profile_before() { parts.profile.before_step(team, parts.model, state); }
+    ROTORSWEEP_HD void profile_after(bool accepted) { parts.profile.after_step(team, parts.model, state, accepted); }
+    ROTORSWEEP_HD void profile_take(double* out) { parts.profile.take_period(team, out); }
+
+    /// row(j) for every row, each rank its own.
+    template <class Row>
+    ROTORSWEEP_HD void each_row(Row&& row) const {
+      team.each([&](std::size_t r) {
+        const kernels::TeamRows rows = kernels::team_rows(s.rows, team.size(), r);
+        for (std::size_t j = rows.begin; j < rows.end; ++j) row(j);
+      });
+    }
+  };
+
   ROTORSWEEP_HD static Integrator make_integrator(const Model& model, const SlotSchedule& s,
                                                   std::size_t ranks, kernels::LaneArena<double>& arena) {
     if constexpr (stochastic)
@@ -159,15 +162,6 @@ struct TeamMember {
       return Integrator(model, ranks, kernels::stepper_method<typename Integrator::Method>(s.stepper),
                         {s.rtol, s.atol}, {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
                         s.first_step_scale, arena);
-  }
-
-  /// row(j) for every row, each rank its own.
-  template <class Row>
-  ROTORSWEEP_HD static void each_row(Team& team, std::size_t n, Row&& row) {
-    team.each([&](std::size_t r) {
-      const kernels::TeamRows rows = kernels::team_rows(n, team.size(), r);
-      for (std::size_t j = rows.begin; j < rows.end; ++j) row(j);
-    });
   }
 };
 

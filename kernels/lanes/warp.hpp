@@ -1,6 +1,7 @@
 // A member's L lanes of a warp (docs/architecture.md "Register kernels"): what a register kernel asks
 // of them — its lane, a value from the cyclic neighbour lanes, a lane's value to all, sums, maxima and
-// votes in one fixed order — on the host as a lane type of L doubles, on a device as L threads.
+// votes in one fixed order, a write by one lane — on the host as a lane type of L doubles, on a device
+// as L threads.
 #pragma once
 
 #include <cstddef>
@@ -72,6 +73,11 @@ struct HostWarp {
     return true;
   }
   static bool any(const mask& m) { return lane_any(m); }
+  /// f() once for the member (on a device: by its first lane).
+  template <class F>
+  static void one(F&& f) {
+    f();
+  }
 
  private:
   template <class Source>
@@ -136,6 +142,10 @@ struct DeviceWarp {
   }
   __device__ static bool all(bool m) { return __all_sync(group(), m ? 1 : 0) != 0; }
   __device__ static bool any(bool m) { return __any_sync(group(), m ? 1 : 0) != 0; }
+  template <class F>
+  __device__ static void one(F&& f) {
+    if (rank() == 0) f();
+  }
 };
 #endif
 

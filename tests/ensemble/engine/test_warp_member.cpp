@@ -1,0 +1,125 @@
+// One member in a warp's registers (ensemble/engine/warp_member.hpp, on the host's emulation of the
+// warp) against the one-thread driver DeviceMember (the CPU lanes' bits) on the same slots: the same
+// periods, slips, regimes and attractors, D and every channel within the integration error.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "ensemble/engine/device_member.hpp"
+#include "ensemble/engine/member_slots.hpp"
+#include "ensemble/engine/warp_member.hpp"
+#include "io/scene_parser.hpp"
+#include "kernels/lanes/warp.hpp"
+#include "kernels/models/rows/warp_rows.hpp"
+#include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/rosenbrock.hpp"
+#include "kernels/steppers/warp_integrator.hpp"
+#include "kernels/steppers/warp_rosenbrock.hpp"
+#include "support/slot_runs.hpp"
+
+using namespace rotorsweep;
+using Catch::Detail::Approx;
+using Model = kernels::NearestNeighbourRows<double>;
+using Lanes = kernels::AdaptiveIntegrator<Model, kernels::RosenbrockStepper<Model>>;
+
+namespace {
+
+/// Every member of the scene in registers on L lanes × R slots (rows disordered where PerRow).
+template <std::size_t L, std::size_t R, bool PerRow>
+std::vector<ensemble::MemberResult> in_registers(const ensemble::Scene& scene) {
+  using Rows = kernels::WarpRows<kernels::HostWarp<L>, R, PerRow, kernels::all_integrals>;
+  using Driver = ensemble::WarpMember<Rows, kernels::WarpIntegrator<Rows, kernels::WarpRosenbrock<Rows, 8>>>;
+  return testing::through_slots<Lanes>(
+      scene, [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
+        REQUIRE(Driver::fits(s, kernels::all_integrals));
+        Driver::run(s, v, k);
+      });
+}
+
+/// The members in registers follow the one-thread driver: labels and counts equal, D within 1e-8
+/// relative (5e-10 and a hundredth of its error outside CP), ρ̄ and the other channels within 1e-8, step counts within 1 %.
+template <std::size_t L, std::size_t R, bool PerRow>
+void check_follows(const std::string& text) {
+  const auto scene = io::parse_scene_text(text, "warp-member");
+  const auto thread = testing::on_one_thread<Model, Lanes>(scene);
+  const auto warp = in_registers<L, R, PerRow>(scene);
+  REQUIRE(warp.size() == thread.size());
+  for (std::size_t k = 0; k < thread.size(); ++k) {
+    const auto &a = thread[k], &b = warp[k];
+    INFO("L = " << L << ", R = " << R << ", member " << k << ": D " << a.dissipation() << ", "
+                << a.final_state.attractor);
+    REQUIRE(b.status == a.status);
+    CHECK(b.periods_run == a.periods_run);
+    CHECK(b.regime == a.regime);
+    CHECK(b.final_state.attractor == a.final_state.attractor);
+    CHECK(b.slips_per_period() == a.slips_per_period());
+    CHECK(b.dissipation() == Approx(a.dissipation()).epsilon(1e-8).margin(1e-12));
+    INFO("relative D difference " << (b.dissipation() - a.dissipation()) / a.dissipation() << ", error "
+                                   << a.dissipation_error() / a.dissipation());
+    // outside CP the stage solve's other order of eliminations moves D by rounding: 1.2e-10 and 1.8e-10
+    // relative at A = 1 without disorder, a hundredth of D's own error or less
+    if (a.regime != ensemble::Regime::cp) {
+      CHECK(b.dissipation() == Approx(a.dissipation()).epsilon(5e-10).margin(1e-14));
+      CHECK(std::fabs(b.dissipation() - a.dissipation()) <= 0.01 * a.dissipation_error());
+    }
+    CHECK(b.alignment_mean() == Approx(a.alignment_mean()).epsilon(1e-9));
+    for (const auto channel :
+         {ensemble::Channel::work, ensemble::Channel::stokes, ensemble::Channel::energy_mean,
+          ensemble::Channel::dissipation_moment, ensemble::Channel::stokes_moment}) {
+      INFO("channel " << std::size_t(channel));
+      CHECK(b.mean(channel) == Approx(a.mean(channel)).epsilon(1e-8).margin(1e-12));
+    }
+    CHECK(b.steps_accepted + b.steps_rejected == Approx(a.steps_accepted + a.steps_rejected).epsilon(0.01));
+  }
+}
+
+/// 20 rows from noisy AFM and FM starts at A = 1, 6, 12 (AFM, CP, FM) with a disorder of A that breaks
+/// the rows' symmetry physically (so that CP's slips do not depend on rounding), every quadrature.
+const std::string rows_20 =
+    "[model]\nrows = 20\n[drive]\ng = 0.0011\n[sweep]\nA = [1.0, 6.0, 12.0]\n[initial]\nkinds = [\"AFM\", "
+    "\"FM\"]\nnoise = 0.01\n[schedule]\nrelax_periods = 2\naverage_periods = 2\n[numerics]\nrtol = 1e-10\n"
+    "atol = 1e-13\n[disorder]\nA = 1e-6\n[observables]\nestimators = true\nenergy = true\nmoments = true\n";
+
+}  // namespace
+
+TEST_CASE("a member in registers follows the one-thread driver: labels, slips, D and every channel",
+          "[warp][device_member]") {
+  check_follows<8, 3, true>(rows_20);
+  check_follows<4, 5, true>(rows_20);
+}
+
+TEST_CASE("a member in registers runs uniform rows, wrapped periods and one thread's four rows",
+          "[warp][device_member]") {
+  const std::string uniform = rows_20.substr(0, rows_20.find("[disorder]")) + "[observables]\nenergy = true\n";
+  check_follows<8, 3, false>(uniform.substr(0, uniform.find("[sweep]")) + "[sweep]\nA = [1.0, 12.0]\n" +
+                             uniform.substr(uniform.find("[initial]")));
+  check_follows<8, 3, false>(
+      "[model]\nrows = 20\n[drive]\ng = 0.0011\n[sweep]\nA = [1.0, 12.0]\n[schedule]\nrelax_periods = 2\n"
+      "average_periods = 2\n[numerics]\nwrap_angles = true\nrtol = 1e-10\natol = 1e-13\n");
+  check_follows<1, 4, false>(
+      "[model]\nrows = 4\n[drive]\ng = 0.05\n[sweep]\nA = [0.5, 3.0, 8.0]\n[initial]\nkinds = [\"AFM\", "
+      "\"random\"]\n[schedule]\nrelax_periods = 2\naverage_periods = 2\n[numerics]\nrtol = 1e-10\natol = 1e-13\n");
+}
+
+TEST_CASE("a schedule runs in registers only where the kernel can hold it", "[warp][device_member]") {
+  using Rows = kernels::WarpRows<kernels::HostWarp<8>, 3, true, kernels::all_integrals>;
+  using Driver = ensemble::WarpMember<Rows, kernels::WarpIntegrator<Rows, kernels::WarpRosenbrock<Rows, 8>>>;
+  const auto schedule_of = [](const std::string& text) {
+    const auto scene = io::parse_scene_text(text, "warp-fits");
+    const ensemble::MemberPlan plan(scene);
+    return ensemble::slot_schedule(scene, plan[0], 0.01);
+  };
+  const std::string base = "[drive]\ng = 0.01\n[sweep]\nA = [1.0]\n";
+  CHECK(Driver::fits(schedule_of("[model]\nrows = 20\n" + base), kernels::all_integrals));
+  CHECK(Driver::fits(schedule_of("[model]\nrows = 8\n" + base), kernels::all_integrals));    // a row per lane
+  CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 6\n" + base), kernels::all_integrals));  // a lane empty
+  CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 26\n" + base), kernels::all_integrals));  // beyond 8 × 3
+  CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 20\n" + base + "[thermal]\ntemperature = 0.01\n"),
+                           kernels::all_integrals));
+  CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 20\n" + base + "[observables]\nrow_profiles = true\n"),
+                           kernels::all_integrals));
+  CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 20\n" + base + "[observables]\nenergy = true\n"),
+                           kernels::Integrals{}));  // an instantiation that carries R only
+}
