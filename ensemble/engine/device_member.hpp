@@ -135,7 +135,7 @@ struct DeviceMember {
     if constexpr (stochastic)
       return {s.temperature, s.steps_per_period, s.step_fraction};
     else
-      return {kernels::stepper_method<typename Integrator::Method>(s.stepper),
+      return {s.methods.template get<typename Integrator::Method>(),
               {s.rtol, s.atol},
               {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller}};
   }

@@ -22,7 +22,7 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   s.slips = scene.has(Observable::slips);
   s.slip_energies = scene.slip_kinds;
   s.slip_rate = scene.slip_rate;
-  s.stepper = scene.stepper;
+  s.methods = kernels::stepper_methods(scene.stepper);
   s.rtol = variant.rtol;
   s.atol = variant.atol;
   s.error_rtol = kernels::stepper_swing_error_factors[scene.stepper] * variant.rtol;

@@ -27,7 +27,7 @@ struct SlotSchedule {
   bool slips = false;          ///< the slip counter is on
   bool slip_energies = false;  ///< it records each slip's energy (observables.slip_kinds)
   double slip_rate = 0;
-  kernels::StepperId stepper = 0;  ///< the scene's: its tableau is the integrator's (stepper_method)
+  kernels::StepperMethods methods{};  ///< the scene's stepper's tableau (kernels::stepper_methods)
   double rtol = 0, atol = 0, h_max = 0, max_steps = 0;
   double error_rtol = 0;  ///< rtol × the stepper's swing_error_factor (channel dissipation_error)
   kernels::StepController controller = kernels::StepController::integral;

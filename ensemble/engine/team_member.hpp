@@ -159,7 +159,7 @@ struct TeamMember {
     if constexpr (stochastic)
       return Integrator(model, ranks, {s.temperature, s.steps_per_period, s.step_fraction}, arena);
     else
-      return Integrator(model, ranks, kernels::stepper_method<typename Integrator::Method>(s.stepper),
+      return Integrator(model, ranks, s.methods.template get<typename Integrator::Method>(),
                         {s.rtol, s.atol}, {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
                         s.first_step_scale, arena);
   }

@@ -40,7 +40,7 @@ struct WarpMember {
   ROTORSWEEP_HD static void run(const SlotSchedule& s, const SlotViews& slots, std::size_t k) {
     const Slots rows(s.rows);
     Model model(rows, s.quadratures, slot_parameters<Model>(s, slots, k));
-    const kernels::RosenbrockTableau method = kernels::stepper_method<kernels::RosenbrockTableau>(s.stepper);
+    const kernels::RosenbrockTableau& method = s.methods.rosenbrock;
     Integrator integrator(method, {s.rtol, s.atol},
                           {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
                           s.first_step_scale);

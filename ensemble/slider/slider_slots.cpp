@@ -15,7 +15,7 @@ SliderSlotSchedule slider_slot_schedule(const SliderScene& scene, std::size_t sp
   SliderSlotSchedule schedule;
   schedule.grid = {size.columns, size.rows};
   schedule.placement = slider_placement(scene);
-  schedule.stepper = scene.stepper;
+  schedule.methods = kernels::stepper_methods(scene.stepper);
   schedule.rtol = scene.rtol;
   schedule.atol = scene.atol;
   schedule.h_max = kernels::two_pi / double(scene.samples_per_period);  // as SliderProblem's lanes

@@ -14,6 +14,7 @@
 #include "ensemble/slider/slider_scene.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "kernels/lanes/host_device.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 #include "kernels/models/slider/slider_model.hpp"
 
 namespace rotorsweep::ensemble {
@@ -24,7 +25,7 @@ namespace rotorsweep::ensemble {
 struct SliderSlotSchedule {
   kernels::SliderGrid grid;
   kernels::SliderPlacement placement;
-  kernels::StepperId stepper = 0;  ///< the scene's (a linearly implicit one: its tableau is the team's)
+  kernels::StepperMethods methods{};  ///< the scene's (linearly implicit) stepper's tableau
   double rtol = 0, atol = 0, h_max = 0, max_steps = 0;
   double first_step_scale = 0;  ///< the stepper's (kernels::AdaptiveIntegrator), computed on the host
   std::size_t stops = 0;        ///< samples (SliderSampleGrid::stops)

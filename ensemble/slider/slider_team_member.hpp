@@ -93,7 +93,7 @@ struct SliderTeamMember {
 
     ROTORSWEEP_HD Parts(const SliderSlotSchedule& s, std::size_t ranks, kernels::LaneArena<double>& arena)
         : model(s.grid, s.placement, arena),
-          integrator(model, ranks, kernels::stepper_method<typename Integrator::Method>(s.stepper),
+          integrator(model, ranks, s.methods.template get<typename Integrator::Method>(),
                      {s.rtol, s.atol}, {.h_max = s.h_max, .max_steps = s.max_steps}, s.first_step_scale, arena),
           work(model.dimension(), arena),
           y(arena.take(model.dimension())),

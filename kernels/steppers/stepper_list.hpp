@@ -117,10 +117,10 @@ decltype(auto) with_stepper_family(StepperId id, F&& f) {
   return f.template operator()<StepperFamily::rosenbrock>();
 }
 
-/// The tableau (Method) of stepper `id`, which belongs to a family whose tableaus are of type Method;
-/// callable on a device (each tableau a constant there).
+/// The tableau (Method) of stepper `id`, which belongs to a family whose tableaus are of type Method
+/// (on the host: a device cannot read the list's constants and gets StepperMethods instead).
 template <class Method, std::size_t... ids>
-ROTORSWEEP_HD Method stepper_method(StepperId id, std::index_sequence<ids...>) {
+Method stepper_method(StepperId id, std::index_sequence<ids...>) {
   Method method{};
   const auto take = [&]<std::size_t i>() {
     if constexpr (std::is_same_v<std::remove_cvref_t<decltype(stepper_at<i>::type::tableau)>, Method>) {
@@ -132,8 +132,30 @@ ROTORSWEEP_HD Method stepper_method(StepperId id, std::index_sequence<ids...>) {
   return method;
 }
 template <class Method>
-ROTORSWEEP_HD Method stepper_method(StepperId id) {
+Method stepper_method(StepperId id) {
   return stepper_method<Method>(id, std::make_index_sequence<steppers::size>());
+}
+
+/// Stepper `id`'s tableau as data a device reads: the host fills the member of its family's type
+/// (stepper_methods) and passes it in a kernel's arguments.
+struct StepperMethods {
+  RosenbrockTableau rosenbrock{};
+  ExplicitTableau explicit_runge_kutta{};
+  template <class Method>
+  ROTORSWEEP_HD const Method& get() const {
+    if constexpr (std::is_same_v<Method, RosenbrockTableau>)
+      return rosenbrock;
+    else
+      return explicit_runge_kutta;
+  }
+};
+inline StepperMethods stepper_methods(StepperId id) {
+  StepperMethods methods;
+  if (stepper_family(id) == StepperFamily::rosenbrock)
+    methods.rosenbrock = stepper_method<RosenbrockTableau>(id);
+  else
+    methods.explicit_runge_kutta = stepper_method<ExplicitTableau>(id);
+  return methods;
 }
 
 /// Calls f.template operator()<Stepper>(method) with the stepper type of `id` on `System` (its family's)

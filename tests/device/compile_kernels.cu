@@ -1,34 +1,40 @@
 // The kernels compiled for a GPU (nvcc, no GPU needed): the row model and both stepper families on the
 // double lane, and on warp and block teams the stage solves (ring, dense, slider) and whole members
-// (nearest neighbours at T = 0 and T > 0, a coupling table at T = 0, the slider's).
+// (nearest neighbours at T = 0 and T > 0, a coupling table at T = 0, the slider's), and members in a
+// warp's registers.
 #include "ensemble/engine/team_member.hpp"
+#include "ensemble/engine/warp_member.hpp"
 #include "ensemble/slider/slider_team_member.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/lanes/team.hpp"
+#include "kernels/lanes/warp.hpp"
 #include "kernels/linear/team_cyclic_tridiagonal.hpp"
 #include "kernels/linear/team_dense_symmetric.hpp"
 #include "kernels/linear/team_second_order_jacobian.hpp"
 #include "kernels/models/rows/coupled_rows.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/models/rows/warp_rows.hpp"
 #include "kernels/models/slider/slider_model.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "kernels/steppers/team_integrator.hpp"
 #include "kernels/steppers/team_leimkuhler_matthews.hpp"
 #include "kernels/steppers/team_rosenbrock.hpp"
+#include "kernels/steppers/warp_integrator.hpp"
+#include "kernels/steppers/warp_rosenbrock.hpp"
 
 using namespace rotorsweep::kernels;
 
 using Model = NearestNeighbourRows<double>;
 
 template <class Stepper>
-__global__ void advance_members(StepperId id, double* storage, std::size_t per_thread, std::size_t rows,
+__global__ void advance_members(StepperMethods methods, double* storage, std::size_t per_thread, std::size_t rows,
                                 const double* A, const double* g, double* dissipation) {
   const std::size_t member = blockIdx.x * blockDim.x + threadIdx.x;
   LaneArena<double> arena(storage + member * per_thread, per_thread);
   const Model model(rows, arena, all_integrals, {A[member], g[member], false});
-  AdaptiveIntegrator<Model, Stepper> integrator(model, stepper_method<typename Stepper::Method>(id), {1e-6, 1e-9},
+  AdaptiveIntegrator<Model, Stepper> integrator(model, methods.get<typename Stepper::Method>(), {1e-6, 1e-9},
                                                 {}, arena);
   LaneState<double> state(rows, Model::max_quadratures, arena);
   for (std::size_t j = 0; j < rows; ++j) state.y[j] = 3.14159 * double(j % 2) + 0.01 * double(j);
@@ -39,9 +45,9 @@ __global__ void advance_members(StepperId id, double* storage, std::size_t per_t
   dissipation[member] = state.quad[0] + 0.0 * s * c;
 }
 
-template __global__ void advance_members<RosenbrockStepper<Model>>(StepperId, double*, std::size_t, std::size_t,
+template __global__ void advance_members<RosenbrockStepper<Model>>(StepperMethods, double*, std::size_t, std::size_t,
                                                                    const double*, const double*, double*);
-template __global__ void advance_members<DormandPrince5<Model>>(StepperId, double*, std::size_t, std::size_t,
+template __global__ void advance_members<DormandPrince5<Model>>(StepperMethods, double*, std::size_t, std::size_t,
                                                                 const double*, const double*, double*);
 
 /// The stage solves on a warp team: each team of `team_size` threads factors and solves one member's
@@ -79,14 +85,14 @@ __global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_
 }
 
 /// A member of the nearest-neighbour rows integrated by a warp team over one period (team_integrator.hpp).
-__global__ void advance_on_teams(double* storage, std::size_t per_team, std::size_t rows, unsigned team_size,
+__global__ void advance_on_teams(RosenbrockTableau method, double* storage, std::size_t per_team, std::size_t rows, unsigned team_size,
                                  const double* A, double* theta, double* drive) {
   using Stepper = TeamRosenbrock<const WarpTeam>;
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
   LaneArena<double> arena(storage + team * per_team, per_team);
   const Model model(rows, arena, Integrals{true, false, false, true, false, false}, {A[team], 0.0011, false});
-  TeamIntegrator<const WarpTeam, Stepper> integrator(model, team_size, stepper_method<RosenbrockTableau>(3),
+  TeamIntegrator<const WarpTeam, Stepper> integrator(model, team_size, method,
                                                      {1e-6, 1e-9}, {}, 1e-3, arena);
   crew.sync();
   TeamMemberState state;
@@ -149,3 +155,17 @@ __global__ void run_members_on_blocks(rotorsweep::ensemble::SlotSchedule schedul
   rotorsweep::ensemble::TeamMember<const BlockTeam, TeamIntegrator<const BlockTeam, Stepper>>::run(
       crew, schedule, slots, blockIdx.x, storage + blockIdx.x * per_team, per_team);
 }
+
+/// Members of disordered nearest-neighbour rows in registers, each on L threads of a warp with R rows
+/// apiece and every quadrature (ensemble/engine/warp_member.hpp): 8 × 3 (N ≤ 24; ptxas alone takes some
+/// 40 s a shape, docs/performance.md "Rows in registers" has the others' figures).
+template <std::size_t L, std::size_t R>
+__global__ void run_members_in_registers(const __grid_constant__ rotorsweep::ensemble::SlotSchedule schedule,
+                                         rotorsweep::ensemble::SlotViews slots) {
+  using Rows = WarpRows<DeviceWarp<L>, R, true, all_integrals>;
+  using Driver = rotorsweep::ensemble::WarpMember<Rows, WarpIntegrator<Rows, WarpRosenbrock<Rows, 8>>>;
+  Driver::run(schedule, slots, (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / L);
+}
+
+template __global__ void run_members_in_registers<8, 3>(const __grid_constant__ rotorsweep::ensemble::SlotSchedule,
+                                                        rotorsweep::ensemble::SlotViews);
