@@ -160,7 +160,7 @@ double slider_thread_bytes(const SliderScene& scene) {
                                                                                 const auto& method) {
       using Loop = typename SliderProblem<V, Inertial, Stepper>::Loop;
       const std::size_t dimension = Inertial ? 2 * largest.rotors() : largest.rotors();
-      return double(Loop::storage_size(dimension, typename Loop::Settings{.method = method},
+      return double(Loop::storage_size(dimension, typename Loop::Settings{method, {}, {}},
                                        kernels::SliderGrid{largest.columns, largest.rows},
                                        slider_placement(scene))) *
              double(sizeof(V));

@@ -53,7 +53,7 @@ class WarpCyclicTridiagonal {
       ROTORSWEEP_UNROLL
       for (std::size_t r = 0; r + 1 < interior; ++r) upper_[r] = lane_neg(off[r]) * inv_pivot_[r];
       ROTORSWEEP_UNROLL
-      for (std::size_t r = 0; r < interior; ++r) definite = definite & (!slots.real(r) | (inv_pivot_[r] > V(0.0)));
+      for (std::size_t r = 0; r < interior; ++r) definite = definite & ((!slots.real(r)) | (inv_pivot_[r] > V(0.0)));
       // the interior's couplings: its first row to the separator before (the previous lane's last row),
       // its last slot to this lane's separator
       const V into_first = lane_neg(W::from_previous(off[R - 1]));
@@ -102,7 +102,7 @@ class WarpCyclicTridiagonal {
       M same = shift == shift;
       ROTORSWEEP_UNROLL
       for (std::size_t r = 0; r < R; ++r)
-        same = same & (!slots.real(r) | ((diag[r] == V(d0)) & (off[r] == V(o0))));
+        same = same & ((!slots.real(r)) | ((diag[r] == V(d0)) & (off[r] == V(o0))));
       circulant_ = W::all(same);
       constant_inverse_ = 1.0 / (W::from_lane(shift, 0) - d0 - 2.0 * o0);
     }
@@ -117,7 +117,7 @@ class WarpCyclicTridiagonal {
       const double r0 = W::from_lane(x[R - 1], 0);
       M constant = x[R - 1] == x[R - 1];
       ROTORSWEEP_UNROLL
-      for (std::size_t r = 0; r < R; ++r) constant = constant & (!slots.real(r) | (x[r] == V(r0)));
+      for (std::size_t r = 0; r < R; ++r) constant = constant & ((!slots.real(r)) | (x[r] == V(r0)));
       if (W::all(constant)) {
         ROTORSWEEP_UNROLL
         for (std::size_t r = 0; r < R; ++r) x[r] = lane_select(slots.real(r), V(r0 * constant_inverse_), V(0.0));

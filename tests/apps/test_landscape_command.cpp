@@ -180,6 +180,28 @@ TEST_CASE("landscape replaces a file that is not HDF5 only with --force", "[apps
   CHECK(rotorsweep::io::is_hdf5_file(path));
 }
 
+namespace {
+
+/// One row of table's CSV (A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,
+/// R_error_kind).
+struct TableRow {
+  double A = 0, W = 0, S = 0, R = 0, paper_R = 0, deviation = 0, steps = 0, paper_W = 0, paper_S = 0, error = 0;
+  std::string ic, kind;
+};
+
+TableRow table_row(const std::string& line) {
+  TableRow row;
+  char ic[8] = {}, kind[24] = {};
+  REQUIRE(std::sscanf(line.c_str(), "%lf,%7[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%23s", &row.A, ic, &row.W,
+                      &row.S, &row.R, &row.paper_R, &row.deviation, &row.steps, &row.paper_W, &row.paper_S,
+                      &row.error, kind) == 12);
+  row.ic = ic;
+  row.kind = kind;
+  return row;
+}
+
+}  // namespace
+
 TEST_CASE("table prints W and S that agree with R outside CP, beside the paper's W, S, R", "[apps][table]") {
   const auto dir = scratch_directory("table-estimators");
   const auto csv = dir / "table.csv";
@@ -193,22 +215,20 @@ TEST_CASE("table prints W and S that agree with R outside CP, beside the paper's
         "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,R_error_kind");
   int outside_cp = 0;
   while (std::getline(in, line)) {
-    double A = 0, W = 0, S = 0, R = 0, paper_R = 0, deviation = 0, steps = 0, paper_W = 0, paper_S = 0,
-           error = 0;
-    char ic[8] = {}, kind[24] = {};
-    REQUIRE(std::sscanf(line.c_str(), "%lf,%7[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%23s", &A, ic, &W, &S,
-                        &R, &paper_R, &deviation, &steps, &paper_W, &paper_S, &error, kind) == 12);
     INFO(line);
-    CHECK(paper_W > 0);
-    CHECK(paper_S > 0);
+    const TableRow row = table_row(line);
+    const double A = row.A, W = row.W, S = row.S, R = row.R, paper_R = row.paper_R, error = row.error;
+    const std::string kind = row.kind;
+    CHECK(row.paper_W > 0);
+    CHECK(row.paper_S > 0);
     CHECK(error > 0);
     if (A == 6 || A == 8) {  // CP: symmetry-limited, the error the shadow run's difference
-      CHECK(std::string(kind) == "symmetry-limited");
+      CHECK(kind == "symmetry-limited");
       CHECK(error > 1e-6 * R);  // far above the local estimate
       continue;
     }
     ++outside_cp;
-    CHECK(std::string(kind) == "resolved");
+    CHECK(kind == "resolved");
     CHECK(error < 1e-5 * R);
     CHECK(std::fabs(R / paper_R - 1) < 2 * error / R + 1e-6);  // the paper's 7 digits
     CHECK(std::fabs(W / R - 1) < 1e-6);  // at rtol 1e-9 alone they were off by up to 4.7e-4
@@ -234,14 +254,10 @@ TEST_CASE("table --disorder: the CP entries' errors become bounds, their values 
   std::getline(in, line);
   std::map<std::string, std::array<double, 3>> cp;  // A and start: R, its error, the paper's R
   while (std::getline(in, line)) {
-    double A = 0, W = 0, S = 0, R = 0, paper_R = 0, deviation = 0, steps = 0, paper_W = 0, paper_S = 0,
-           error = 0;
-    char ic[8] = {}, kind[24] = {};
-    REQUIRE(std::sscanf(line.c_str(), "%lf,%7[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%23s", &A, ic, &W, &S,
-                        &R, &paper_R, &deviation, &steps, &paper_W, &paper_S, &error, kind) == 12);
     INFO(line);
-    CHECK(std::string(kind) == "resolved");  // every entry, CP included: the disorder breaks the symmetry
-    if (A == 6 || A == 8) cp[std::to_string(int(A)) + ic] = {R, error, paper_R};
+    const TableRow row = table_row(line);
+    CHECK(row.kind == "resolved");  // every entry, CP included: the disorder breaks the symmetry
+    if (row.A == 6 || row.A == 8) cp[std::to_string(int(row.A)) + row.ic] = {row.R, row.error, row.paper_R};
   }
   REQUIRE(cp.size() == 4);
   for (const char* A : {"6", "8"}) {

@@ -15,6 +15,7 @@
 #include "kernels/steppers/team_integrator.hpp"
 #include "kernels/steppers/team_rosenbrock.hpp"
 #include "support/kernel_scratch.hpp"
+#include "support/lanes_reference.hpp"
 
 using namespace rotorsweep::kernels;
 using Model = NearestNeighbourRows<double>;
@@ -25,41 +26,18 @@ using Team = TeamIntegrator<HostTeam, TeamStepper>;
 namespace {
 
 constexpr Integrals every_integral = all_integrals;
-constexpr Tolerances tight{1e-10, 1e-13};
+using rotorsweep::testing::afm_start;
+using rotorsweep::testing::TwoPeriods;
+constexpr Tolerances tight = rotorsweep::testing::tight_tolerances;
 
-/// An AFM start, rows alternately near 0 and π.
-std::vector<double> start(std::size_t n) {
-  std::vector<double> theta(n);
-  for (std::size_t j = 0; j < n; ++j)
-    theta[j] = 3.141592653589793 * double(j % 2) + 0.01 * std::sin(1.7 * double(j));
-  return theta;
-}
-
-struct Run {
-  std::vector<double> theta;
-  std::vector<double> quad;  ///< R, W, S, ρ̄, H and the moments of R, W, S over the two periods
-  double steps = 0;
-};
-
-Run on_lanes(const Model& model, std::size_t n) {
-  auto integrator = rotorsweep::testing::built<Lanes, double>(model, rodas4p2_tableau, tight, StepLimits{});
-  auto state = rotorsweep::testing::built<LaneState<double>, double>(n, Model::max_quadratures);
-  const auto theta = start(n);
-  for (std::size_t j = 0; j < n; ++j) state.y[j] = theta[j];
-  state.t_stop = 2 * two_pi;
-  integrator.advance(model, state);
-  return {std::vector<double>(state.y, state.y + n), std::vector<double>(state.quad, state.quad + 8),
-          state.steps_accepted + state.steps_rejected};
-}
-
-Run on_team(const Model& model, std::size_t n, std::size_t ranks) {
+TwoPeriods on_team(const Model& model, std::size_t n, std::size_t ranks) {
   const double scale = Lanes::first_step_scale(tight, rodas4p2_tableau);
   std::vector<double> storage(counted_storage<double>([&](LaneArena<double>& arena) {
     const Team counted(model, ranks, rodas4p2_tableau, tight, StepLimits{}, scale, arena);
   }));
   LaneArena<double> arena(storage.data(), storage.size());
   Team integrator(model, ranks, rodas4p2_tableau, tight, StepLimits{}, scale, arena);
-  std::vector<double> theta = start(n);
+  std::vector<double> theta = afm_start(n);
   TeamMemberState state;
   state.y = theta.data();
   state.t_stop = 2 * two_pi;
@@ -80,12 +58,14 @@ TEST_CASE("a member on a team of 1 … 8 ranks follows the lanes' integration", 
       Model::Parameters p{A, 0.0011};
       p.A_rows = disorder.data();
       const Model model = rotorsweep::testing::model<Model>(n, every_integral, p);
-      const Run lanes = on_lanes(model, n);
+      bool ok = false;
+      const TwoPeriods lanes = rotorsweep::testing::on_lanes(model, n, rodas4p2_tableau, ok);
+      REQUIRE(ok);
       for (std::size_t ranks : {1u, 2u, 4u, 8u}) {
         if (ranks > n) continue;
         INFO("N = " << n << ", A = " << A << ", ranks = " << ranks << ": R " << lanes.quad[0] << ", steps "
                     << lanes.steps);
-        const Run team = on_team(model, n, ranks);
+        const TwoPeriods team = on_team(model, n, ranks);
         for (std::size_t p = 0; p < 8; ++p) {
           INFO("quadrature " << p);
           CHECK(team.quad[p] == Approx(lanes.quad[p]).epsilon(1e-9).margin(1e-12));

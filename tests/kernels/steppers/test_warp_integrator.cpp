@@ -13,44 +13,19 @@
 #include "kernels/steppers/warp_integrator.hpp"
 #include "kernels/steppers/warp_rosenbrock.hpp"
 #include "support/kernel_scratch.hpp"
+#include "support/lanes_reference.hpp"
 
 using namespace rotorsweep::kernels;
 
 namespace {
 
 using Lanes = NearestNeighbourRows<double>;
-constexpr Tolerances tight{1e-10, 1e-13};
-
-/// An AFM start, rows alternately near 0 and π.
-std::vector<double> start(std::size_t n) {
-  std::vector<double> theta(n);
-  for (std::size_t j = 0; j < n; ++j)
-    theta[j] = 3.141592653589793 * double(j % 2) + 0.01 * std::sin(1.7 * double(j));
-  return theta;
-}
-
-struct Run {
-  std::vector<double> theta;
-  std::vector<double> quad;  ///< by kind: R, W, S, ρ̄, H and the moments of R, W, S
-  double steps = 0;
-};
-
-Run on_lanes(std::size_t n, const Lanes::Parameters& p, const RosenbrockTableau& table) {
-  const Lanes model = rotorsweep::testing::model<Lanes>(n, all_integrals, p);
-  auto integrator = rotorsweep::testing::integrator<AdaptiveIntegrator<Lanes, RosenbrockStepper<Lanes>>>(
-      model, table, tight);
-  auto state = rotorsweep::testing::lane_state<double>(n, Lanes::max_quadratures);
-  const auto theta = start(n);
-  for (std::size_t j = 0; j < n; ++j) state.y[j] = theta[j];
-  state.t_stop = 2 * two_pi;
-  integrator.advance(model, state);
-  REQUIRE(state.status[0] == LaneStatus::ok);
-  return {std::vector<double>(state.y, state.y + n), std::vector<double>(state.quad, state.quad + 8),
-          state.steps_accepted + state.steps_rejected};
-}
+using rotorsweep::testing::afm_start;
+using rotorsweep::testing::TwoPeriods;
+constexpr Tolerances tight = rotorsweep::testing::tight_tolerances;
 
 template <std::size_t L, std::size_t R, bool PerRow>
-Run in_registers(std::size_t n, const Lanes::Parameters& p, const RosenbrockTableau& table) {
+TwoPeriods in_registers(std::size_t n, const Lanes::Parameters& p, const RosenbrockTableau& table) {
   using W = HostWarp<L>;
   using Model = WarpRows<W, R, PerRow, all_integrals>;
   using Integrator = WarpIntegrator<Model, WarpRosenbrock<Model, 8>>;
@@ -60,14 +35,14 @@ Run in_registers(std::size_t n, const Lanes::Parameters& p, const RosenbrockTabl
   const double scale = AdaptiveIntegrator<Lanes, RosenbrockStepper<Lanes>>::first_step_scale(tight, table);
   Integrator integrator(table, tight, StepLimits{}, scale);
   typename Integrator::State state;
-  const auto theta = start(n);
+  const auto theta = afm_start(n);
   for (std::size_t r = 0; r < R; ++r)
     for (std::size_t l = 0; l < L; ++l)
       lane_set(state.y[r], l, mask_get(slots.real(r), l) ? theta[std::size_t(lane_get(slots.row(r), l))] : 0.0);
   state.t_stop = 2 * two_pi;
   while (state.stepping()) integrator.attempt(model, state);
   REQUIRE(state.status == LaneStatus::ok);
-  Run run{std::vector<double>(n), std::vector<double>(state.quad, state.quad + 8),
+  TwoPeriods run{std::vector<double>(n), std::vector<double>(state.quad, state.quad + 8),
           state.steps_accepted + state.steps_rejected};
   for (std::size_t r = 0; r < R; ++r)
     for (std::size_t l = 0; l < L; ++l)
@@ -87,8 +62,11 @@ void check_follows(std::size_t n, const RosenbrockTableau& table = rodas4p2_tabl
     for (std::size_t j = 0; j < n; ++j) disorder[j] = 1e-6 * std::sin(2.3 * double(j) + 0.4);
     Lanes::Parameters p{A, 0.0011};
     if (PerRow) p.A_rows = p.anisotropy_rows = p.coupling_rows = disorder.data();
-    const Run lanes = on_lanes(n, p, table);
-    const Run warp = in_registers<L, R, PerRow>(n, p, table);
+    bool ok = false;
+    const TwoPeriods lanes =
+        rotorsweep::testing::on_lanes(rotorsweep::testing::model<Lanes>(n, all_integrals, p), n, table, ok);
+    REQUIRE(ok);
+    const TwoPeriods warp = in_registers<L, R, PerRow>(n, p, table);
     INFO(table.name << ", L = " << L << ", R = " << R << ", N = " << n << ", A = " << A << ": R " << lanes.quad[0]
                     << ", steps " << lanes.steps << " and " << warp.steps);
     const double tolerance = A == 6.0 ? 1e-7 : 1e-9;
