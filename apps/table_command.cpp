@@ -192,7 +192,9 @@ int run_table(const TableOptions& options) {
               "S (Stokes)", "R (drive)", "paper R", "R/paper-1", "steps/T", "paper W", "paper S", "R error",
               "dev/unc", "R error is");
   const auto start = std::chrono::steady_clock::now();
-  const ensemble::Disorder disorder{.A = options.disorder, .seed = options.disorder_seed};
+  ensemble::Disorder disorder;
+  disorder.A = options.disorder;
+  disorder.seed = options.disorder_seed;
   const auto outcome = integrate(paper_scene_with_errors(stepper, options.rtol, disorder));
   const auto estimators = integrate(paper_scene(stepper, options.estimator_rtol, disorder));
   for (std::size_t i = 0; i < paper::entries.size(); ++i) {

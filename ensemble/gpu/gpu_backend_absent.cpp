@@ -8,8 +8,11 @@
 namespace rotorsweep::ensemble {
 
 const GpuInfo& gpu_info() {
-  static const GpuInfo info{
-      .why = "this rotorsweep was built without the GPU backend (ROTORSWEEP_CUDA=OFF, or no nvcc)"};
+  static const GpuInfo info = [] {
+    GpuInfo none;
+    none.why = "this rotorsweep was built without the GPU backend (ROTORSWEEP_CUDA=OFF, or no nvcc)";
+    return none;
+  }();
   return info;
 }
 
