@@ -10,7 +10,6 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/lanes/warp.hpp"
-#include "kernels/models/rows/integrals.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
@@ -74,22 +73,9 @@ struct WarpMember {
     ROTORSWEEP_HD double t() const { return state.t; }
     ROTORSWEEP_HD double t_stop() const { return state.t_stop; }
     ROTORSWEEP_HD kernels::LaneStatus status() const { return state.status; }
-    /// The quadrature at index p of the carried set, from the state's by-kind layout (every array
-    /// index a compile-time constant, so the state stays in registers).
-    ROTORSWEEP_HD double quadrature(std::size_t p) const {
-      const kernels::Integrals carried = model.integrals();
-      double value = 0.0;
-      ROTORSWEEP_UNROLL
-      for (std::size_t kind = 0; kind < kinds; ++kind) {
-        const auto q = kernels::Quadrature(kind);
-        if (carried.carries(q) && carried.index(q) == p) value = state.quad[kind];
-      }
-      return value;
-    }
-    ROTORSWEEP_HD double drive() const { return state.quad[std::size_t(kernels::Quadrature::drive)]; }
-    ROTORSWEEP_HD double alignment_integrand() const {
-      return integrator.start_integrands()[std::size_t(kernels::Quadrature::alignment)];
-    }
+    ROTORSWEEP_HD double quadrature(std::size_t p) const { return model.carried_quadrature(state.quad, p); }
+    ROTORSWEEP_HD double drive() const { return state.quad[Model::drive_kind]; }
+    ROTORSWEEP_HD double alignment_integrand() const { return integrator.start_integrands()[Model::alignment_kind]; }
     ROTORSWEEP_HD double slip_rate(const SlotSchedule& schedule, double) const { return schedule.slip_rate; }
     ROTORSWEEP_HD void keep_before() {
       ROTORSWEEP_UNROLL

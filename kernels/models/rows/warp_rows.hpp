@@ -78,6 +78,21 @@ class WarpRows {
     return row_quadrature_scale(all_integrals, kind);
   }
   ROTORSWEEP_HD bool strict_fm() const { return strict_fm_; }
+
+  /// Where a state kept by kind holds R(t) and ρ̄'s integral.
+  static constexpr std::size_t drive_kind = std::size_t(Quadrature::drive);
+  static constexpr std::size_t alignment_kind = std::size_t(Quadrature::alignment);
+  /// The quadrature at index p of the carried set (Integrals::index) from a state kept by kind, every
+  /// array index a compile-time constant (so that the state stays in registers).
+  ROTORSWEEP_HD double carried_quadrature(const double (&quad)[kinds], std::size_t p) const {
+    double value = 0.0;
+    ROTORSWEEP_UNROLL
+    for (std::size_t kind = 0; kind < kinds; ++kind) {
+      const auto q = Quadrature(kind);
+      if (carried_.carries(q) && carried_.index(q) == p) value = quad[kind];
+    }
+    return value;
+  }
   ROTORSWEEP_HD double damping() const { return g_; }
   /// A bound on g·|∂f/∂θ| would be curvature_bound's; the register kernels run T = 0 only.
 
