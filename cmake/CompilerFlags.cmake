@@ -24,7 +24,10 @@ set(CMAKE_CUDA_STANDARD_REQUIRED ON)
 set(ROTORSWEEP_CUDA_FLAGS --fmad=false --expt-relaxed-constexpr -Xcompiler=-ffp-contract=off -Werror all-warnings
                           -diag-suppress=186)  # "pointless comparison" in loops over no quadratures
 # Code without numerics (scene parsing, files, the command line, the Python bindings) runs for
-# milliseconds per run; at -O1 it compiles 30–40 % faster than at -O3 (docs/performance.md, build time).
+# milliseconds per run: at -O1 it compiles 30–40 % faster than at -O3, and its files, which spend
+# most of their time parsing the same headers, are compiled a few at a time (docs/performance.md,
+# build time).
 function(rotorsweep_without_numerics target)
   target_compile_options(${target} PRIVATE $<$<AND:$<COMPILE_LANGUAGE:CXX>,$<NOT:$<CONFIG:Debug>>>:-O1>)
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 5)
 endfunction()

@@ -25,7 +25,7 @@ namespace rotorsweep::python {
 
 namespace {
 
-ensemble::SliderScene parse(const std::string& scene, bool is_path) {
+ensemble::SliderScene parse_slider(const std::string& scene, bool is_path) {
   return is_path ? io::parse_slider_scene_file(scene) : io::parse_slider_scene_text(scene, "<scene>");
 }
 
@@ -38,7 +38,7 @@ ensemble::SliderScene parse(const std::string& scene, bool is_path) {
 std::size_t run_slider(const std::string& scene_text, bool is_path, int threads, const std::string& output,
                        bool force, bool keep, const std::string& version, const std::string& revision,
                        const py::object& progress, const py::object& stopped) {
-  const auto scene = parse(scene_text, is_path);
+  const auto scene = parse_slider(scene_text, is_path);
   threads = ensemble::thread_count(threads, "threads");
   const std::string source = is_path ? scene_text : std::string("<python>");
   io::OutputTarget target(output, {source}, io::Replaceable::hdf5, force, keep);
@@ -103,7 +103,7 @@ void bind_slider(py::module_& m) {
   m.def(
       "slider_scene_info",
       [](const std::string& scene, bool is_path) {
-        const auto parsed = parse(scene, is_path);
+        const auto parsed = parse_slider(scene, is_path);
         py::dict info;
         info["output_path"] = parsed.output_path;
         info["members"] = parsed.member_count();

@@ -23,7 +23,7 @@ namespace rotorsweep::python {
 namespace {
 
 /// The scene text (from a file when `is_path`) parsed and validated; io::SceneError otherwise.
-ensemble::Scene parse(const std::string& scene, bool is_path) {
+ensemble::Scene parse_row_scene(const std::string& scene, bool is_path) {
   return is_path ? io::parse_scene_file(scene) : io::parse_scene_text(scene, "<scene>");
 }
 
@@ -71,14 +71,14 @@ py::dict paper_table() {
 
 void bind_sweep(py::module_& m) {
   m.def(
-      "plan_axes", [](const std::string& scene, bool is_path) { return plan_axes(parse(scene, is_path)); },
+      "plan_axes", [](const std::string& scene, bool is_path) { return plan_axes(parse_row_scene(scene, is_path)); },
       py::arg("scene"), py::arg("is_path") = false,
       "The member plan's axes of a scene (TOML text, or a path with is_path): a dict from axis name "
       "to its values, outermost first; raises ValueError naming a bad key.");
   m.def(
       "plan_positions",
       [](const std::string& scene, bool is_path) {
-        const auto parsed = parse(scene, is_path);
+        const auto parsed = parse_row_scene(scene, is_path);
         const ensemble::MemberPlan plan(parsed);
         const auto sizes = parsed.axis_sizes();
         std::vector<std::int64_t> flat(plan.size());
@@ -96,7 +96,7 @@ void bind_sweep(py::module_& m) {
   m.def(
       "scene_info",
       [](const std::string& scene, bool is_path) {
-        const auto parsed = parse(scene, is_path);
+        const auto parsed = parse_row_scene(scene, is_path);
         py::dict info;
         info["text"] = parsed.text;
         info["output_path"] = parsed.output_path;
@@ -108,8 +108,8 @@ void bind_sweep(py::module_& m) {
   m.def(
       "run_description",
       [](const std::string& scene, bool is_path, int threads) {
-        return io::run_description(parse(scene, is_path), is_path ? scene : std::string("<python>"),
-                                   parse(scene, is_path).member_count(),
+        return io::run_description(parse_row_scene(scene, is_path), is_path ? scene : std::string("<python>"),
+                                   parse_row_scene(scene, is_path).member_count(),
                                    ensemble::thread_count(threads, "threads"));
       },
       py::arg("scene"), py::arg("is_path"), py::arg("threads"),
@@ -127,8 +127,8 @@ void bind_sweep(py::module_& m) {
                        bool force, const std::string& version, const std::string& revision) {
              const std::string source = is_path ? scene : std::string("<python>");
              return std::make_unique<SweepJob>(
-                 parse(scene, is_path), threads, output, force,
-                 io::Provenance{source, version, revision, ensemble::device_label(parse(scene, is_path)),
+                 parse_row_scene(scene, is_path), threads, output, force,
+                 io::Provenance{source, version, revision, ensemble::device_label(parse_row_scene(scene, is_path)),
                                 ensemble::instruction_set().name});
            }),
            py::arg("scene"), py::arg("is_path"), py::arg("threads"), py::arg("output"), py::arg("force"),
