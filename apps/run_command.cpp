@@ -190,7 +190,7 @@ void print_header(const RunOptions& options, const ensemble::Scene& scene, std::
     std::fprintf(stderr, "shard %zu/%zu: members %zu, %zu, %zu, ... of the plan's %zu\n", shard->index,
                  shard->count, shard->index - 1, shard->index - 1 + shard->count,
                  shard->index - 1 + 2 * shard->count, shard->plan_members);
-  std::fputs(io::run_description(scene, options.scene, members, threads).c_str(), stderr);
+  std::fputs(io::run_description(scene, options.scene, members, threads, ensemble::instruction_set().lanes).c_str(), stderr);
 }
 
 bool open_resumable_target(const SceneCommandOptions& options, bool resume, const std::string& path,

@@ -4,7 +4,6 @@
 
 #include <cstdio>
 
-#include "ensemble/engine/instruction_set.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
@@ -57,8 +56,8 @@ std::string start_axes(const ensemble::Scene& scene) {
 }  // namespace
 
 std::string run_description(const ensemble::Scene& scene, const std::string& name, std::size_t members,
-                            int threads) {
-  const std::size_t lanes = scene.lanes == ensemble::LaneKind::simd ? ensemble::instruction_set().lanes : 1;
+                            int threads, std::size_t simd_lanes) {
+  const std::size_t lanes = scene.lanes == ensemble::LaneKind::simd ? simd_lanes : 1;
   std::string rows;
   for (std::size_t n : scene.row_counts) {
     if (!rows.empty()) rows += ',';

@@ -110,7 +110,7 @@ void bind_sweep(py::module_& m) {
       [](const std::string& scene, bool is_path, int threads) {
         return io::run_description(parse_row_scene(scene, is_path), is_path ? scene : std::string("<python>"),
                                    parse_row_scene(scene, is_path).member_count(),
-                                   ensemble::thread_count(threads, "threads"));
+                                   ensemble::thread_count(threads, "threads"), ensemble::instruction_set().lanes);
       },
       py::arg("scene"), py::arg("is_path"), py::arg("threads"),
       "The lines `rotorsweep run` prints before it starts (threads 0: the default count).");
