@@ -49,7 +49,10 @@ struct HostWarp {
     return permuted(v, [&](std::size_t l) { return (l + L - s % L) % L; });
   }
   /// Lane k's value in every lane.
-  static double from_lane(const value& v, std::size_t k) { return lane_get(v, k); }
+  static double from_lane(const value& v, std::size_t k) {
+    count_warp_operations(&WarpOperationCount::shuffle);
+    return lane_get(v, k);
+  }
   /// p[index] in each lane (index: a value holding each lane's own index).
   static value load(const double* p, const value& index) {
     return lane_from<value>([&](std::size_t l) { return p[std::size_t(lane_get(index, l))]; });
@@ -82,6 +85,7 @@ struct HostWarp {
  private:
   template <class Source>
   static value permuted(const value& v, Source&& source) {
+    count_warp_operations(&WarpOperationCount::shuffle);
     return lane_from<value>([&](std::size_t l) { return lane_get(v, source(l)); });
   }
   template <class Combine>
@@ -89,6 +93,8 @@ struct HostWarp {
     double w[L];
     for (std::size_t l = 0; l < L; ++l) w[l] = lane_get(v, l);
     for (std::size_t o = L / 2; o >= 1; o /= 2) {
+      count_warp_operations(&WarpOperationCount::shuffle);
+      count_warp_operations(&WarpOperationCount::arithmetic);
       double next[L];
       for (std::size_t l = 0; l < L; ++l) next[l] = combine(w[l], w[l ^ o]);
       for (std::size_t l = 0; l < L; ++l) w[l] = next[l];

@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "kernels/lanes/lane.hpp"
+#include "kernels/lanes/warp_operation_count.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -50,27 +51,33 @@ struct WarpLanes {
   }
   template <class F>
   static WarpMask<L> test(F&& f) {
+    count_warp_operations(&WarpOperationCount::other);
     WarpMask<L> m;
     for (std::size_t l = 0; l < L; ++l) m.bits[l] = f(l);
     return m;
   }
 
   friend WarpLanes operator+(const WarpLanes& a, const WarpLanes& b) {
+    count_warp_operations(&WarpOperationCount::arithmetic);
     return each([&](std::size_t l) { return a.v[l] + b.v[l]; });
   }
   friend WarpLanes operator-(const WarpLanes& a, const WarpLanes& b) {
+    count_warp_operations(&WarpOperationCount::arithmetic);
     return each([&](std::size_t l) { return a.v[l] - b.v[l]; });
   }
   friend WarpLanes operator*(const WarpLanes& a, const WarpLanes& b) {
+    count_warp_operations(&WarpOperationCount::arithmetic);
     return each([&](std::size_t l) { return a.v[l] * b.v[l]; });
   }
   friend WarpLanes operator/(const WarpLanes& a, const WarpLanes& b) {
+    count_warp_operations(&WarpOperationCount::division);
     return each([&](std::size_t l) { return a.v[l] / b.v[l]; });
   }
   WarpLanes& operator+=(const WarpLanes& b) { return *this = *this + b; }
   WarpLanes& operator-=(const WarpLanes& b) { return *this = *this - b; }
   WarpLanes& operator*=(const WarpLanes& b) { return *this = *this * b; }
   WarpLanes operator-() const {
+    count_warp_operations(&WarpOperationCount::other);
     return each([&](std::size_t l) { return -v[l]; });
   }
 
@@ -102,10 +109,12 @@ struct lane_traits<WarpLanes<L>> {
 
 template <std::size_t L>
 WarpLanes<L> lane_select(const WarpMask<L>& m, const WarpLanes<L>& a, const WarpLanes<L>& b) {
+  count_warp_operations(&WarpOperationCount::other);
   return WarpLanes<L>::each([&](std::size_t l) { return m.bits[l] ? a.v[l] : b.v[l]; });
 }
 template <std::size_t L, class F>
 WarpLanes<L> lanewise(const WarpLanes<L>& x, F&& f) {
+  count_warp_operations(&WarpOperationCount::other);
   return WarpLanes<L>::each([&](std::size_t l) { return f(x.v[l]); });
 }
 template <std::size_t L>
@@ -118,15 +127,18 @@ WarpLanes<L> lane_neg(const WarpLanes<L>& x) {
 }
 template <std::size_t L>
 WarpLanes<L> lane_min(const WarpLanes<L>& a, const WarpLanes<L>& b) {
+  count_warp_operations(&WarpOperationCount::other);
   return WarpLanes<L>::each([&](std::size_t l) { return lane_min(a.v[l], b.v[l]); });
 }
 template <std::size_t L>
 WarpLanes<L> lane_max(const WarpLanes<L>& a, const WarpLanes<L>& b) {
+  count_warp_operations(&WarpOperationCount::other);
   return WarpLanes<L>::each([&](std::size_t l) { return lane_max(a.v[l], b.v[l]); });
 }
 template <std::size_t L>
 WarpLanes<L> lane_sqrt(const WarpLanes<L>& x) {
-  return lanewise(x, [](double a) { return lane_sqrt(a); });
+  count_warp_operations(&WarpOperationCount::square_root);
+  return WarpLanes<L>::each([&](std::size_t l) { return lane_sqrt(x.v[l]); });
 }
 template <std::size_t L>
 WarpLanes<L> lane_floor(const WarpLanes<L>& x) {
@@ -146,10 +158,12 @@ WarpMask<L> lane_signbit(const WarpLanes<L>& x) {
 }
 template <std::size_t L>
 WarpLanes<L> lane_frexp(const WarpLanes<L>& x, WarpLanes<L>& e) {
+  count_warp_operations(&WarpOperationCount::other);
   return WarpLanes<L>::each([&](std::size_t l) { return lane_frexp(x.v[l], e.v[l]); });
 }
 template <std::size_t L>
 WarpLanes<L> lane_ldexp(const WarpLanes<L>& x, const WarpLanes<L>& e) {
+  count_warp_operations(&WarpOperationCount::other);
   return WarpLanes<L>::each([&](std::size_t l) { return lane_ldexp(x.v[l], e.v[l]); });
 }
 template <std::size_t L>

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "ensemble/engine/warp_member.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/lanes/warp.hpp"
+#include "kernels/lanes/warp_operation_count.hpp"
 #include "kernels/models/rows/warp_rows.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
@@ -106,4 +108,50 @@ TEST_CASE("a schedule runs in registers only where the kernel can hold it", "[wa
                            kernels::all_integrals));
   CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 20\n" + base + "[observables]\nenergy = true\n"),
                            kernels::Integrals{}));  // an instantiation that carries R only
+}
+
+namespace {
+
+/// A member's operations per attempt in registers on L lanes × R slots, counted on the emulation.
+template <std::size_t L, std::size_t R, bool PerRow>
+kernels::WarpOperationCount counted(const ensemble::Scene& scene, double& attempts) {
+  kernels::WarpOperationCount count;
+  std::vector<ensemble::MemberResult> results;
+  {
+    const kernels::CountingWarpOperations counting(count);
+    results = in_registers<L, R, PerRow>(scene);
+  }
+  attempts = 0.0;
+  for (const auto& r : results) attempts += r.steps_accepted + r.steps_rejected;
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("the emulation counts what a member in registers asks of its threads", "[warp][device_member][counts]") {
+  const std::string uniform = "[model]\nrows = 20\n[drive]\ng = 0.0011\n[sweep]\nA = [1.0, 12.0]\n[schedule]\n"
+                              "relax_periods = 1\naverage_periods = 1\n[numerics]\nrtol = 1e-8\natol = 1e-11\n";
+  const auto scene = io::parse_scene_text(uniform, "warp-counts");
+  double attempts = 0.0, again = 0.0;
+  const auto count = counted<8, 3, false>(scene, attempts);
+  const auto repeated = counted<8, 3, false>(scene, again);
+  REQUIRE(attempts > 0.0);
+  CHECK(again == attempts);  // the same run counts the same operations
+  CHECK(repeated.arithmetic == count.arithmetic);
+  CHECK(repeated.shuffle == count.shuffle);
+  CHECK(repeated.other == count.other);
+  CHECK(repeated.division == count.division);
+  // every stage evaluation reads both neighbour rows and the error norm is a sum over the lanes
+  const int stages = kernels::rodas4p2_tableau.stages;  // the default stepper
+  CHECK(double(count.shuffle) >= attempts * (2.0 * stages + 3.0));
+  CHECK(double(count.arithmetic) > 10.0 * double(count.division + count.square_root));
+  kernels::WarpOperationCount outside;
+  { const kernels::CountingWarpOperations counting(outside); }
+  in_registers<8, 3, false>(scene);
+  CHECK(outside.arithmetic == 0);  // nothing counted once the scope has closed
+  std::printf("8 x 3 lanes x slots, 20 uniform rows, rodas4p2: per attempt and thread %.0f FP64 +-*, %.1f /, %.1f "
+              "sqrt, %.0f other, %.0f shuffles (%.0f attempts)\n",
+              double(count.arithmetic) / attempts, double(count.division) / attempts,
+              double(count.square_root) / attempts, double(count.other) / attempts, double(count.shuffle) / attempts,
+              attempts);
 }
