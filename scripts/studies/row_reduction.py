@@ -10,8 +10,8 @@ paper's estimate A_paper beside it) and the slider's g. Friction per rotor again
 size and regime; how uniform the rows stay and which rotors slip; the regimes in h against the row model's and the
 landscape's windows; the array at a slow speed against the quasi-static J(A); the 8 × 8 slider over substrates 2 … 8
 times its extent; the experiment's 7 × 7 array, overdamped and inertial, against the large-N limit. Prints the tables
-of docs/studies.md and draws the figure (about 9 minutes on 2 cores; --quick: sizes 4 and 6 at four separations, a few
-seconds).
+of docs/studies.md and draws the figure (about 15 minutes on 2 cores; --quick: sizes 4 and 6 at four separations,
+about 10 s).
 Usage: row_reduction.py [--quick] [--out docs/figures/row_reduction.png] [--python build/python] [--threads 2]"""
 import sys
 
