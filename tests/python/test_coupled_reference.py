@@ -1,7 +1,8 @@
 """Sweeps with an explicit coupling table (docs/model.md §1 "Extended couplings") against an
 independent integration: the equations written out with numpy, a dense Jacobian, scipy's Radau
-at rtol 1e-12; D over the averaged periods agrees to 1e-7 for members outside CP, periodic and open,
-and so do the row profiles (each row's share of D, each link's alignment) carried as extra quadratures."""
+at rtol 1e-10 (the sweep agrees with it to about 1e-12, as with rtol 1e-12); D over the averaged
+periods agrees to 1e-7 for members outside CP, periodic and open, and so do the row profiles (each
+row's share of D, each link's alignment) carried as extra quadratures."""
 
 import numpy as np
 import pytest
@@ -74,9 +75,9 @@ def reference_profiles(theta0, A, g, open_rows):
 
     period = 2 * np.pi
     y = np.concatenate([theta0, np.zeros(n + 1 + links)])
-    first = solve_ivp(rhs, (0, RELAX * period), y, method="Radau", rtol=1e-12, atol=1e-14, jac=jac)
+    first = solve_ivp(rhs, (0, RELAX * period), y, method="Radau", rtol=1e-10, atol=1e-12, jac=jac)
     second = solve_ivp(rhs, (RELAX * period, (RELAX + AVERAGE) * period), first.y[:, -1], method="Radau",
-                       rtol=1e-12, atol=1e-14, jac=jac)
+                       rtol=1e-10, atol=1e-12, jac=jac)
     assert first.status == 0 and second.status == 0
     integrals = (second.y[n:, -1] - first.y[n:, -1]) / AVERAGE
     return integrals[0], integrals[1 : n + 1], integrals[n + 1 :] / period

@@ -1,7 +1,8 @@
 """The moments of R, W and S over each period (observables.moments, docs/model.md §3 "The paper's
 window") against an independent integration: the nearest-neighbour equations written out with numpy,
-scipy's Radau at rtol 1e-12, the integrands of R, W, S and t times them as extra quadratures; every
-period of a relaxing member agrees to 1e-7, and the paper's triangular window follows from them."""
+scipy's Radau at rtol 1e-10 (the sweep agrees with it as closely as with rtol 1e-12), the integrands of
+R, W, S and t times them as extra quadratures; every period of a relaxing member agrees to 1e-7, and the
+paper's triangular window follows from them."""
 
 import numpy as np
 import pytest
@@ -33,7 +34,7 @@ def reference_periods(theta0, A):
     rows = []
     for k in range(PERIODS):
         t0 = k * period
-        sol = solve_ivp(rhs, (t0, t0 + period), y, method="Radau", rtol=1e-12, atol=1e-14)
+        sol = solve_ivp(rhs, (t0, t0 + period), y, method="Radau", rtol=1e-10, atol=1e-12)
         assert sol.status == 0
         end = sol.y[:, -1]
         integrals = end[n:n + 3] - y[n:n + 3]
