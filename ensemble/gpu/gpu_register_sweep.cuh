@@ -6,17 +6,29 @@
 #include <cuda_runtime.h>
 
 #include <stdexcept>
+#include <string>
 
 #include "ensemble/gpu/gpu_runner.cuh"
 #include "ensemble/gpu/register_member.hpp"
 #include "kernels/lanes/warp.hpp"
 
+/// The blocks of 128 threads per multiprocessor the register kernels are compiled for (CMake's
+/// ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS): n > 0 caps a thread's registers at 65 536 / (128 n), spilling
+/// the rest to local memory, to trade spills for resident warps (docs/performance.md "Rows in
+/// registers, measured on an H100"); 0 leaves the registers to ptxas.
+#if ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS > 0
+#define ROTORSWEEP_REGISTER_BOUNDS __launch_bounds__(128, ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS)
+#else
+#define ROTORSWEEP_REGISTER_BOUNDS
+#endif
+
 namespace rotorsweep::ensemble::gpu {
 
 /// Members of a chunk, one per L threads: the group's first thread claims the next member for all.
 template <std::size_t L, std::size_t R, bool PerRow>
-__global__ void sweep_in_registers(const __grid_constant__ SlotSchedule schedule, SlotViews slots,
-                                   unsigned long long count, unsigned long long* next) {
+__global__ void ROTORSWEEP_REGISTER_BOUNDS sweep_in_registers(const __grid_constant__ SlotSchedule schedule,
+                                                              SlotViews slots, unsigned long long count,
+                                                              unsigned long long* next) {
   using W = kernels::DeviceWarp<L>;
   for (;;) {
     unsigned long long k = 0;
@@ -41,6 +53,10 @@ SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, int
     throw std::logic_error("a register kernel cannot run this schedule");
   const auto kernel = sweep_in_registers<L, R, PerRow>;
   const GpuLaunch launch = gpu_launch();
+  if (ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS > 0 && launch.threads_per_block > 128)
+    throw GpuLaunchError("ROTORSWEEP_GPU_BLOCK = " + std::to_string(launch.threads_per_block) +
+                         ": this build's register kernels run at most 128 threads per block "
+                         "(ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS)");
   ChunkGrid grid{resident_blocks(kernel, launch, 0), launch.threads_per_block, 0, 0};
   grid.resident = std::size_t(grid.blocks) * std::size_t(grid.threads_per_block) / L;
   return run_chunks(scene, range, schedule, grid, host_threads, control, sink,
