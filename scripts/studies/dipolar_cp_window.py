@@ -7,7 +7,7 @@ For the experiment's slider (examples/experiment_7x7.toml, docs/model.md §9) th
 (A_−, A_*, and the quasi-static cycle's alignment) and from sweeps of N = 20 periodic and open rows at g = 0.001 and at
 the slider's own g, turned into separations h with both mappings of A the slider file writes (A_paper, A_field), next to
 the slider's own window from its order parameter across y. Prints the tables of docs/studies.md and draws the figure
-(about 40 s on 2 cores; --quick: coarser grids, about 20 s).
+(about 40 s on 2 cores; --quick: coarser grids, a shorter slide and fewer periods, about 20 s).
 Usage: dipolar_cp_window.py [--quick] [--out docs/figures/dipolar_cp_window.png] [--python build/python] [--threads 2]"""
 import itertools
 import pathlib
@@ -30,7 +30,6 @@ SLIDER_SCENE = ROOT / "examples" / "experiment_7x7.toml"
 ROWS = 20                      # rows of the sweeps (range 8 needs N ≥ 16 on a ring)
 ROW_LENGTH = 7                 # the slider's rotors per row: the dipolar tables' sums over k
 G_SMALL = 0.001                # the sweeps' quasi-static side
-SCHEDULE = {"relax_periods": 4, "average_periods": 4}
 REDUCTIONS = [("nearest", {}), ("M = 1", {"range": 1}), ("M = 2", {"range": 2}), ("M = 4", {"range": 4}),
               ("M = 8", {"range": 8}), ("all", {"range": "all"})]
 NEAREST = (1.5, 2.0, 0.0)      # (a_M, b_M, c_M) of nearest neighbours (docs/model.md §8)
@@ -39,8 +38,12 @@ SETTLED_FROM = 2.5             # s: the slider's swing is read after its first p
 DISORDER = 1e-3                # σ_A of the one disordered sweep (source "…,σA"), nearest neighbours only
 MEAN_RULE = 0.9                # the check on the mean: CP-like where |order_y| < this
 
-FULL = {"separations": 81, "coarse_step": 0.25, "fine_step": 0.02, "cycle_points": 241}
-QUICK = {"separations": 41, "coarse_step": 0.5, "fine_step": 0.1, "cycle_points": 41}
+FULL = {"separations": 81, "slide_end": None, "schedule": {"relax_periods": 4, "average_periods": 4},
+        "coarse_step": 0.25, "fine_step": 0.02, "cycle_points": 241}
+# the quick run: the slider's scan to t = 6.5 s (two periods of sliding after SETTLED_FROM) and the sweeps' members
+# over 2 + 2 periods, which leave every window of the slider and of the sweeps at g = 0.001 where they were
+QUICK = {"separations": 33, "slide_end": 6.5, "schedule": {"relax_periods": 2, "average_periods": 2},
+         "coarse_step": 1.0, "fine_step": 0.25, "cycle_points": 41}
 A_RANGE = (2.5, 16.0)          # the sweeps' coarse grid spans every window
 
 
@@ -51,10 +54,13 @@ def progress(text):
 # ---------------------------------------------------------------- the slider and the mappings of A
 
 
-def run_slider(rotorsweep, separations, threads):
-    """The slider scan's /curve and its order_y series (members in separation order; one size, one replica)."""
+def run_slider(rotorsweep, grid, threads):
+    """The slider scan's /curve and its order_y series (members in separation order; one size, one replica) over the
+    grid's separations, to its slide_end (None: the scene's end)."""
     scene = tomllib.loads(SLIDER_SCENE.read_text())
-    scene["sweep"]["separation"]["count"] = separations
+    scene["sweep"]["separation"]["count"] = grid["separations"]
+    if grid["slide_end"] is not None:
+        scene["drive"]["end"] = grid["slide_end"]
     del scene["output"]
     with tempfile.TemporaryDirectory(prefix="dipolar-cp-window-") as scratch:
         path = pathlib.Path(scratch) / "slider.h5"
@@ -132,13 +138,13 @@ def landscape_window(rotorsweep, model, points):
             "cycle_A": A, "cycle_rho": np.asarray(rho)}
 
 
-def sweep(rotorsweep, model, boundary, g, A, threads, disorder=0.0):
+def sweep(rotorsweep, model, boundary, g, A, schedule, threads, disorder=0.0):
     """(A, regime, alignment_mean) of AFM starts (the slider's start) at the given A values."""
     section = {"rows": ROWS, "boundary": boundary}
     if model:
         section.update({"couplings": "dipolar", "row_length": ROW_LENGTH, **model})
     scene = {"model": section, "drive": {"g": [g]}, "sweep": {"A": [float(a) for a in A]},
-             "initial": {"kinds": ["AFM"]}, "schedule": SCHEDULE}
+             "initial": {"kinds": ["AFM"]}, "schedule": schedule}
     if disorder:
         scene["disorder"] = {"A": disorder}
     m = rotorsweep.members(rotorsweep.run(scene, threads=threads, progress=False, quiet=True))
@@ -156,12 +162,13 @@ def sweep_window(rotorsweep, model, boundary, g, grid, threads, disorder=0.0):
     """The sweep's CP window (the lowest and highest A labelled CP) on a coarse grid refined at both ends, and the mean
     alignment of its CP members (coarse grid, weighted to a mean uniform in h). None without CP."""
     coarse = np.round(np.arange(A_RANGE[0], A_RANGE[1] + 1e-9, grid["coarse_step"]), 6)
-    A, regime, rho = sweep(rotorsweep, model, boundary, g, coarse, threads, disorder)
+    A, regime, rho = sweep(rotorsweep, model, boundary, g, coarse, grid["schedule"], threads, disorder)
     if not (regime == "CP").any():
         return None
     mean_rho = float(np.average(rho[regime == "CP"], weights=in_separation(A[regime == "CP"])))
     fine = np.concatenate([np.arange(lo, hi + 1e-9, grid["fine_step"]) for lo, hi in edges(A, regime == "CP")])
-    A_fine, regime_fine, _ = sweep(rotorsweep, model, boundary, g, np.unique(np.round(fine, 6)), threads, disorder)
+    A_fine, regime_fine, _ = sweep(rotorsweep, model, boundary, g, np.unique(np.round(fine, 6)), grid["schedule"],
+                                   threads, disorder)
     A_all, order = np.unique(np.concatenate([A, A_fine]), return_index=True)
     cp = np.concatenate([regime, regime_fine])[order] == "CP"
     return {"A": (float(A_all[cp].min()), float(A_all[cp].max())), "rho": mean_rho,
@@ -193,8 +200,8 @@ def landscape_table(landscape, mapping):
               f"{width_and_ratio(h['field'])[1]:7.4f} {w['rho']:5.3f}")
 
 
-def sweep_table(sweeps, mapping):
-    print(f"\nsweeps (N = {ROWS}, AFM starts, {SCHEDULE['relax_periods']} + {SCHEDULE['average_periods']} periods; "
+def sweep_table(sweeps, mapping, schedule):
+    print(f"\nsweeps (N = {ROWS}, AFM starts, {schedule['relax_periods']} + {schedule['average_periods']} periods; "
           f"window: lowest to highest A labelled CP; h in mm; rho: mean alignment_mean of the CP members, uniform in h; "
           f"σA: quenched disorder σ_A = {DISORDER:g})")
     print(f"{'source':12} {'couplings':9} {'boundary':8} {'A window':>12} {'h paper':>11} {'width':>5} "
@@ -309,7 +316,7 @@ def main():
     args, rotorsweep = study_command_line.parse(__doc__, "dipolar_cp_window.png", "coarser grids (the test suite's run)")
 
     grid = QUICK if args.quick else FULL
-    curve = run_slider(rotorsweep, grid["separations"], args.threads)
+    curve = run_slider(rotorsweep, grid, args.threads)
     progress(f"slider: {grid['separations']} separations done")
     mapping = Mapping(curve)
     window = slider_window(curve)
@@ -329,7 +336,7 @@ def main():
                                                                       args.threads, disorder=DISORDER)
 
     landscape_table(landscape, mapping)
-    sweep_table(sweeps, mapping)
+    sweep_table(sweeps, mapping, grid["schedule"])
     slider_table(curve, window)
     comparison_table(predictions(landscape, sweeps, mapping), window)
     coefficient_table(rotorsweep)

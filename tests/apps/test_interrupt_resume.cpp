@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <random>
 
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
@@ -21,23 +20,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// 800 members that take some 11 CPU-seconds (about 6 s on two cores, 11 s on one: runs to be
-/// interrupted after up to 1.2 s run on one thread).
+/// 800 members of some 7 CPU-milliseconds each (about 3 s on two cores, 5.5 s on one): the runs to be
+/// interrupted run on one thread and are signalled after 10 to 20 % of the whole run's wall time on two
+/// (random_delay), when some of their members are written and most are not.
 const char* long_scene =
     "[model]\nrows = 20\n[drive]\ng = [0.0011]\n[sweep]\nA = { from = 0.5, to = 12.0, count = 80 }\n"
-    "[initial]\nkinds = [\"AFM\", \"random\"]\nreplicas = 5\n[schedule]\nrelax_periods = 10\naverage_periods "
-    "= 10\n";
+    "[initial]\nkinds = [\"AFM\", \"random\"]\nreplicas = 5\n[schedule]\nrelax_periods = 4\naverage_periods "
+    "= 4\n";
 const std::size_t long_scene_members = 800;
 
 std::string bytes_of(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-/// A delay for sleep(1) between 0.3 and 1.2 s, different in every test run (and reported).
-std::string random_delay() {
-  static std::mt19937 engine{std::random_device{}()};
-  return std::to_string(std::uniform_real_distribution<double>(0.3, 1.2)(engine));
 }
 
 std::size_t rows_done(const fs::path& path) {
@@ -65,15 +59,14 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
   // the interrupted runs on one thread (the whole run's bits on any number)
   const std::string base =
       "run '" + scene.string() + "' -q --threads 1 -o '" + (dir / "out.h5").string() + "'";
-  REQUIRE(
-      run_cli("run '" + scene.string() + "' -q -o '" + (dir / "whole.h5").string() + "'", dir).exit_code ==
-      0);
+  const auto whole = run_cli("run '" + scene.string() + "' -q -o '" + (dir / "whole.h5").string() + "'", dir);
+  REQUIRE(whole.exit_code == 0);
   const auto partial = dir / "out.h5.partial";
 
   CHECK(run_cli(base + " --resume", dir).exit_code == 2);  // nothing to resume yet
 
-  const std::string delay = random_delay();
-  INFO("signal delay " << delay << " s");
+  const std::string delay = random_delay(whole.seconds);
+  INFO("whole run " << whole.seconds << " s, first signal after " << delay << " s");
   const auto first = run_cli_signalled(base, dir, "INT", delay);
   INFO(first.output);
   REQUIRE(first.exit_code == 130);
@@ -103,7 +96,9 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
   CHECK_THAT(fresh.output, Catch::Contains("--resume") && Catch::Contains("--force"));
   CHECK(bytes_of(partial) == before);
 
-  const auto second = run_cli_signalled(base + " --resume", dir, "TERM", random_delay());
+  const std::string second_delay = random_delay(whole.seconds);
+  INFO("second signal after " << second_delay << " s");
+  const auto second = run_cli_signalled(base + " --resume", dir, "TERM", second_delay);
   INFO(second.output);
   REQUIRE(second.exit_code == 143);
   CHECK_THAT(second.output, Catch::Contains("resuming from") && Catch::Contains("stopped by SIGTERM"));
@@ -111,7 +106,9 @@ TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[ap
   kept = rows_done(partial);
 
   // SIGKILL: no handler runs; the batches flushed before it are in the file, which stays readable
-  const auto third = run_cli_signalled(base + " --resume --flush-seconds 0.1", dir, "KILL", random_delay());
+  const std::string third_delay = random_delay(whole.seconds);
+  INFO("third signal after " << third_delay << " s");
+  const auto third = run_cli_signalled(base + " --resume --flush-seconds 0.1", dir, "KILL", third_delay);
   INFO(third.output);
   REQUIRE(third.exit_code == 137);
   CHECK(rows_done(partial) > kept);
@@ -161,10 +158,12 @@ TEST_CASE("a killed shard resumes and merges to the unsharded file", "[apps][run
   const auto run = [&](const std::string& arguments) {
     return "run '" + scene.string() + "' -q " + arguments;
   };
-  REQUIRE(run_cli(run("-o '" + (dir / "whole.h5").string() + "'"), dir).exit_code == 0);
+  const auto whole = run_cli(run("-o '" + (dir / "whole.h5").string() + "'"), dir);
+  REQUIRE(whole.exit_code == 0);
   const std::string shard = "--shard 1/2 -o '" + (dir / "one.h5").string() + "'";
-  const auto killed =
-      run_cli_signalled(run(shard + " --threads 1 --flush-seconds 0.1"), dir, "KILL", random_delay());
+  const std::string delay = random_delay(whole.seconds);
+  INFO("whole run " << whole.seconds << " s, signal after " << delay << " s");
+  const auto killed = run_cli_signalled(run(shard + " --threads 1 --flush-seconds 0.1"), dir, "KILL", delay);
   REQUIRE(killed.exit_code == 137);
   REQUIRE(fs::exists(dir / "one.h5.partial"));
   CHECK(run_cli(run("--shard 2/2 -o '" + (dir / "one.h5").string() + "' --resume"), dir).exit_code == 2);
@@ -191,13 +190,16 @@ TEST_CASE("a disk that fills up mid-run keeps the finished members for --resume"
     WARN("skipped: no private tmpfs mount here (unshare -rm and mount -t tmpfs must work)");
     return;
   }
-  REQUIRE(
-      run_cli("run '" + scene.string() + "' -q -o '" + (dir / "whole.h5").string() + "'", dir).exit_code ==
-      0);
+  const auto whole = run_cli("run '" + scene.string() + "' -q -o '" + (dir / "whole.h5").string() + "'", dir);
+  REQUIRE(whole.exit_code == 0);
+  // the disk fills a third of the way through the run (on as many threads as the whole run), with a batch
+  // of 100 members written every eighth of the way
+  const std::string filled_after = std::to_string(whole.seconds / 3);
+  INFO("whole run " << whole.seconds << " s, disk filled after " << filled_after << " s");
   const auto log = dir / "full.txt";
   const std::string command = mount + std::string(ROTORSWEEP_EXECUTABLE) + " run '" + scene.string() +
                               "' -q --flush-members 100 -o '" + (small / "out.h5").string() + "' > '" +
-                              log.string() + "' 2>&1 & pid=\\$!; sleep 1; cat /dev/zero > '" +
+                              log.string() + "' 2>&1 & pid=\\$!; sleep " + filled_after + "; cat /dev/zero > '" +
                               (small / "filler").string() + "' 2>/dev/null; wait \\$pid; rc=\\$?; cp '" +
                               (small / "out.h5.partial").string() + "' '" +
                               (dir / "out.h5.partial").string() + "'; ls '" + small.string() + "' >> '" +
@@ -227,10 +229,11 @@ TEST_CASE("a second writer of a running run's output is refused and the first ru
   const auto slider = write_text(dir / "slider.toml", "[sweep]\nseparation = 8e-3\n");
   const auto log = dir / "log.txt";
   const std::string exe = ROTORSWEEP_EXECUTABLE, out = "'" + (dir / "out.h5").string() + "'";
-  // the first run in the background; while it runs, every way of writing there: each must exit 2
+  // the first run in the background (on one thread: some 5 s); while it runs, every way of writing there:
+  // each must exit 2
   const std::string second = exe + " run '" + scene.string() + "' -q -o " + out;
   const std::string command =
-      "cd '" + dir.string() + "'; " + second + " 2> first.txt & pid=$!; sleep 0.5; " +  //
+      "cd '" + dir.string() + "'; " + second + " --threads 1 2> first.txt & pid=$!; sleep 0.5; " +  //
       "for extra in '' --force --resume '--shard 1/2'; do " + second +
       " $extra 2>> refused.txt; echo \"run $extra: $?\"; done; " +  //
       exe + " slider -q '" + slider.string() + "' -o " + out + " 2>> refused.txt; echo \"slider: $?\"; " +

@@ -76,14 +76,15 @@ def identical(a, b):
     return bool(np.all(a == b))
 
 
-def run_study_quick(script, tmp_path):
-    """A study's --quick run (scripts/studies/) with this module, its figure checked for size; its stdout."""
+def run_study_quick(script, tmp_path, threads=2):
+    """A study's --quick run (scripts/studies/) with this module on `threads`, its figure checked for size; its
+    stdout."""
     import rotorsweep
 
     figure = tmp_path / "figure.png"
     module = pathlib.Path(rotorsweep.__file__).resolve().parents[1]
-    done = subprocess.run([sys.executable, str(script), "--quick", "--out", str(figure), "--python", str(module)],
-                          capture_output=True, text=True, timeout=120)
+    done = subprocess.run([sys.executable, str(script), "--quick", "--out", str(figure), "--python", str(module),
+                           "--threads", str(threads)], capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert 10_000 < figure.stat().st_size < 200_000
     return done.stdout

@@ -21,7 +21,8 @@ WINDOW = r"([0-9.]+)-([0-9.]+)"
 
 
 def run_quick(tmp_path):
-    return run_study_quick(SCRIPT, tmp_path)
+    # one thread: the sweeps of a few members each take as long on two, and the slider's scan as much CPU time
+    return run_study_quick(SCRIPT, tmp_path, threads=1)
 
 
 def test_quick_run_prints_windows_that_parse_and_order_as_found(tmp_path):
