@@ -1,4 +1,4 @@
-// `rotorsweep bench gpu`: whole-sweep throughput on the GPU backend, a member per thread and per team
+// `rotorsweep bench gpu`: whole-sweep throughput on the GPU backend, members in registers, per thread and per team
 // (or, with --device cpu, on this machine's cores for scale): step attempts/s and a 10⁶-member curve.
 #include <algorithm>
 #include <chrono>
@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_registers.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
@@ -47,9 +48,14 @@ struct Mapping {
   std::string scratch;
 };
 
-std::string mapping_label(const Mapping& m, const BenchGpuOptions& options) {
+std::string mapping_label(const Mapping& m, const ensemble::Scene& scene, int rows, const BenchGpuOptions& options) {
   if (options.device == "cpu") return "lanes";
-  if (m.team == 0) return "default";
+  if (m.team == 0) {
+    const auto shape = ensemble::choose_register_shape(ensemble::gpu_register_shapes(), scene, std::size_t(rows),
+                                                       ensemble::gpu_launch());
+    if (!shape) return "default";
+    return "registers " + std::to_string(shape->lanes) + " × " + std::to_string(shape->slots);
+  }
   if (m.team == 1) return "thread";
   return "team " + std::to_string(m.team) + ", " + m.scratch;
 }
@@ -65,12 +71,14 @@ void set_mapping(const Mapping& m) {
     ::unsetenv("ROTORSWEEP_GPU_SCRATCH");
 }
 
-/// The mappings a scene is measured with: the lanes on the CPU; on the GPU a member per thread and
-/// per team of each size in options.teams up to N where teams run the scene, in shared and/or global
-/// memory.
+/// The mappings a scene is measured with: the lanes on the CPU; on the GPU the registers where a
+/// register kernel holds the scene, a member per thread and per team of each size in options.teams up
+/// to N where teams run the scene, in shared and/or global memory.
 std::vector<Mapping> mappings_of(const ensemble::Scene& scene, int rows, const BenchGpuOptions& options) {
   if (options.device == "cpu") return {Mapping{}};
   std::vector<Mapping> out;
+  if (ensemble::choose_register_shape(ensemble::gpu_register_shapes(), scene, std::size_t(rows), {}))
+    out.push_back({});
   for (const int team : options.teams) {
     if (team == 1) out.push_back({1, ""});
     if (team == 1 || team > rows || !ensemble::gpu_teams_fit(scene)) continue;
@@ -80,12 +88,19 @@ std::vector<Mapping> mappings_of(const ensemble::Scene& scene, int rows, const B
   return out;
 }
 
-/// One sweep (plan, device work, host summaries; no file) with mapping m: a table row.
+std::string format_rate(double rate) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", rate);
+  return text;
+}
+
+/// One sweep (plan, device work, host summaries; no file) with mapping m: a table row; the kernel
+/// rate counts only the time the GPU's kernels ran (the wall's rate adds the host's fills and summaries).
 void run_row(const BenchScene& s, const BenchGpuOptions& options, const Mapping& m) {
   const auto scene = io::parse_scene_text(scene_text(s, options.device), "bench");
   const auto members = ensemble::plan_members(scene);
-  const std::string label = mapping_label(m, options);
   set_mapping(m);
+  const std::string label = mapping_label(m, scene, s.rows, options);
   try {
     const auto t0 = std::chrono::steady_clock::now();
     const auto outcome = ensemble::run_sweep(scene, members, options.threads, {});
@@ -97,11 +112,13 @@ void run_row(const BenchScene& s, const BenchGpuOptions& options, const Mapping&
       ok += r.status == kernels::LaneStatus::ok;
     }
     const double n = double(members.size());
-    std::printf("| %d%s | %s | %s | %zu | %.2f | %.0f | %.3g | %.3g | %zu |\n", s.rows,
+    const double kernel = outcome.statistics.kernel_seconds;
+    const std::string kernel_rate = kernel > 0 ? format_rate(s.rows * attempts / kernel) : "—";
+    std::printf("| %d%s | %s | %s | %zu | %.2f | %.0f | %.3g | %.3g | %s | %zu |\n", s.rows,
                 s.dipolar ? " dipolar" : "", s.stepper, label.c_str(), members.size(), wall, attempts / n,
-                attempts / wall, s.rows * attempts / wall, ok);
+                attempts / wall, s.rows * attempts / wall, kernel_rate.c_str(), ok);
   } catch (const std::runtime_error& e) {
-    std::printf("| %d%s | %s | %s | %zu | — | — | — | — | (%s) |\n", s.rows, s.dipolar ? " dipolar" : "",
+    std::printf("| %d%s | %s | %s | %zu | — | — | — | — | — | (%s) |\n", s.rows, s.dipolar ? " dipolar" : "",
                 s.stepper, label.c_str(), members.size(), e.what());
   }
   set_mapping({});
@@ -126,9 +143,8 @@ int run_bench_gpu(const BenchGpuOptions& options) {
   };
   std::printf(
       "| N | stepper | mapping | members | wall s | attempts/member | member-attempts/s | rotor-attempts/s | "
-      "ok "
-      "|\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+      "kernel rotor-attempts/s | ok |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   if (!options.curve_only) {
     for (const BenchScene s : {BenchScene{2, "rodas4", 1000, 100}, BenchScene{2, "rodas4p2", 1000, 100},
                                BenchScene{20, "rodas4", 1000, 100}, BenchScene{20, "rodas5p", 1000, 100},

@@ -70,8 +70,7 @@ std::string run_description(const ensemble::Scene& scene, const std::string& nam
       scene.g_values.size(), start_axes(scene).c_str(), rows.c_str(), integrator(scene).c_str(), threads,
       lanes);
   if (scene.device == ensemble::Device::gpu)
-    text += format("device: %s, one member per GPU thread (%d host threads summarize)\n",
-                   ensemble::gpu_info().name.c_str(), threads);
+    text += format("device: %s (%d host threads summarize)\n", ensemble::device_label(scene).c_str(), threads);
   const auto& couplings = scene.couplings;
   if (couplings.nearest_neighbour()) return text;
   std::string what = "nearest neighbours";

@@ -29,10 +29,13 @@ struct WarpMember {
   static constexpr std::size_t kinds = Model::kinds;
 
   /// Whether members of schedule s run in registers: T = 0, no row profiles, N rows that fill every
-  /// lane and fit its R slots, quadratures the instantiation carries.
+  /// lane and fit its R slots, quadratures the instantiation carries, disorder only where it keeps
+  /// factors per row.
   static bool fits(const SlotSchedule& s, kernels::Integrals carriable) {
     const kernels::Integrals Q = s.quadratures;
-    return !s.stochastic && !s.row_profiles && Slots::fits(s.rows) && (Q | carriable) == carriable;
+    const bool disordered = s.A_rows || s.anisotropy_rows || s.coupling_rows;
+    return !s.stochastic && !s.row_profiles && Slots::fits(s.rows) && (Q | carriable) == carriable &&
+           (Model::per_row || !disordered);
   }
 
   /// Integrates chunk member k of `slots` to its retirement and writes its slot (each lane its rows).

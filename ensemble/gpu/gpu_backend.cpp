@@ -1,27 +1,37 @@
-// The parts of the GPU backend every build has: the result file's device label (with the threads
-// per member) and the row limit (of a thread's scratch, or of a team's).
+// The parts of the GPU backend every build has: the result file's device label (the threads per
+// member, and whether its rows live in registers) and the row limit (of a thread's scratch, or of a team's).
 #include "ensemble/gpu/gpu_backend.hpp"
 
 #include <stdexcept>
 
 #include "ensemble/gpu/device_drivers.hpp"
+#include "ensemble/gpu/gpu_registers.hpp"
 #include "ensemble/gpu/gpu_slider.hpp"
 
 namespace rotorsweep::ensemble {
 
+namespace {
+
+/// "8 threads per member, rows in registers" (a register kernel) or "8 threads per member".
+std::string threads_per_member(const Scene& scene, std::size_t rows, const GpuLaunch& launch) {
+  if (const auto shape = choose_register_shape(gpu_register_shapes(), scene, rows, launch))
+    return std::to_string(shape->lanes) + (shape->lanes == 1 ? " thread" : " threads") +
+           " per member, rows in registers";
+  const unsigned team = gpu_team_size(scene, rows, launch);
+  return std::to_string(team) + (team == 1 ? " thread" : " threads") + " per member";
+}
+
+}  // namespace
+
 std::string device_label(const Scene& scene) {
   if (scene.device == Device::cpu) return "cpu";
   const GpuLaunch launch = gpu_launch();
-  if (scene.row_counts.size() == 1) {
-    const unsigned team = gpu_team_size(scene, scene.row_counts.front(), launch);
-    return "gpu (" + gpu_info().name + "; " + std::to_string(team) + (team == 1 ? " thread" : " threads") +
-           " per member)";
-  }
-  std::string teams;
+  if (scene.row_counts.size() == 1)
+    return "gpu (" + gpu_info().name + "; " + threads_per_member(scene, scene.row_counts.front(), launch) + ")";
+  std::string mappings;
   for (const std::size_t n : scene.row_counts)
-    teams += (teams.empty() ? "" : ", ") + std::to_string(gpu_team_size(scene, n, launch)) +
-             " at N = " + std::to_string(n);
-  return "gpu (" + gpu_info().name + "; threads per member: " + teams + ")";
+    mappings += (mappings.empty() ? "" : "; ") + threads_per_member(scene, n, launch) + " at N = " + std::to_string(n);
+  return "gpu (" + gpu_info().name + "; " + mappings + ")";
 }
 
 std::size_t gpu_max_rows(const Scene& scene) {

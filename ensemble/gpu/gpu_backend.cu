@@ -1,11 +1,15 @@
-// The GPU backend's entry points in a CUDA build: the device probe and the dispatch from the
-// scene's stepper to its family's translation unit (gpu_sweep_family.cu.in), or at T > 0 to the Langevin one.
+// The GPU backend's entry points in a CUDA build: the device probe and the dispatch to a register
+// kernel's unit (gpu_sweep_registers.cu.in) where one holds the scene, else from the scene's stepper to
+// its family's unit (gpu_sweep_family.cu.in), or at T > 0 to the Langevin one.
 #include <cuda_runtime.h>
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_register_shapes.hpp"
+#include "ensemble/gpu/gpu_registers.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -14,6 +18,23 @@ namespace gpu {
 template <kernels::StepperFamily family>
 SweepOutcome run_stepper_family(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
 SweepOutcome run_langevin(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
+template <std::size_t L, std::size_t R, bool PerRow>
+SweepOutcome run_in_registers(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
+
+/// run_in_registers for `shape`, the i-th compiled shape or a later one.
+template <std::size_t i = 0>
+SweepOutcome run_registers(const RegisterShape& shape, const Scene& scene, const VariantRange& range,
+                           int host_threads, const SweepControl& control, const ResultSink& sink) {
+  if constexpr (i < compiled_register_shapes.size()) {
+    constexpr RegisterShape compiled = compiled_register_shapes[i];
+    if (shape == compiled)
+      return run_in_registers<compiled.lanes, compiled.slots, compiled.disordered>(scene, range, host_threads,
+                                                                                   control, sink);
+    return run_registers<i + 1>(shape, scene, range, host_threads, control, sink);
+  } else {
+    throw std::logic_error("no register kernel of this shape was compiled");
+  }
+}
 }  // namespace gpu
 
 const GpuInfo& gpu_info() {
@@ -59,6 +80,9 @@ void use_gpu() {
 SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, int host_threads,
                                const SweepControl& control, const ResultSink& sink) {
   if (scene.thermal.on()) return gpu::run_langevin(scene, range, host_threads, control, sink);
+  const std::size_t rows = range.source->at(range.begin).rows;
+  if (const auto shape = choose_register_shape(gpu_register_shapes(), scene, rows, gpu_launch()))
+    return gpu::run_registers(*shape, scene, range, host_threads, control, sink);
   return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
     return gpu::run_stepper_family<family>(scene, range, host_threads, control, sink);
   });

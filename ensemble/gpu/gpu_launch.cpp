@@ -8,6 +8,8 @@
 #include <type_traits>
 
 #include "ensemble/gpu/device_drivers.hpp"
+#include "ensemble/gpu/gpu_register_shapes.hpp"
+#include "ensemble/gpu/gpu_registers.hpp"
 #include "kernels/lanes/team.hpp"
 
 namespace rotorsweep::ensemble {
@@ -78,6 +80,26 @@ unsigned gpu_team_size(const Scene& scene, std::size_t rows, const GpuLaunch& la
   unsigned team = 1;
   while (team < 32 && 3 * team < rows) team *= 2;
   return team;
+}
+
+std::span<const RegisterShape> gpu_register_shapes() { return compiled_register_shapes; }
+
+std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape> shapes, const Scene& scene,
+                                                   std::size_t rows, const GpuLaunch& launch) {
+  const kernels::Integrals q = scene.observables.quadratures();
+  if (launch.team || scene.thermal.on() || !scene.couplings.nearest_neighbour() || scene.row_profiles ||
+      (q | register_quadratures) != register_quadratures ||
+      kernels::stepper_family(scene.stepper) != kernels::StepperFamily::rosenbrock)
+    return std::nullopt;
+  const bool disordered = scene.disorder.any();
+  std::optional<RegisterShape> best;
+  for (const RegisterShape& shape : shapes) {
+    if (shape.disordered != disordered || !shape.holds(rows)) continue;
+    if (!best || shape.capacity() < best->capacity() ||
+        (shape.capacity() == best->capacity() && shape.lanes > best->lanes))
+      best = shape;
+  }
+  return best;
 }
 
 }  // namespace rotorsweep::ensemble

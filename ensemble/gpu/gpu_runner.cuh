@@ -9,6 +9,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -93,8 +94,10 @@ class DeviceBuffer {
   void* data_ = nullptr;
 };
 
-/// One chunk's device buffers (Chunk::buffers() order: SlotChunk, SliderSlotChunk) and its member
-/// counter; views_of makes the chunk's views of them.
+/// One chunk's device buffers (Chunk::buffers() order: SlotChunk, SliderSlotChunk), their pinned host
+/// copies (so that copies run beside kernels and the host) and its member counter; views_of makes the
+/// chunk's views of the device buffers. upload copies the host chunk's inputs and queues them;
+/// download queues the outputs, which take_results copies into the host chunk once they have arrived.
 template <class Chunk, auto views_of>
 class DeviceChunk {
  public:
@@ -103,6 +106,9 @@ class DeviceChunk {
       void* p = nullptr;
       check(cudaMalloc(&p, std::max<std::size_t>(b.bytes, 8)), "allocating member slots");
       pointers_.push_back(p);
+      void* pinned = nullptr;
+      check(cudaMallocHost(&pinned, std::max<std::size_t>(b.bytes, 8)), "allocating pinned member slots");
+      pinned_.push_back(pinned);
     }
     check(cudaMalloc(&counter_, sizeof(unsigned long long)), "allocating the member counter");
   }
@@ -110,6 +116,7 @@ class DeviceChunk {
   DeviceChunk& operator=(const DeviceChunk&) = delete;
   ~DeviceChunk() {
     for (void* p : pointers_) cudaFree(p);
+    for (void* p : pinned_) cudaFreeHost(p);
     cudaFree(counter_);
   }
   auto views() const { return views_of(pointers_.data()); }
@@ -118,23 +125,29 @@ class DeviceChunk {
   void upload(Chunk& host, cudaStream_t stream) {
     const auto buffers = host.buffers();
     for (std::size_t i = 0; i < buffers.size(); ++i)
-      if (buffers[i].input)
-        check(
-            cudaMemcpyAsync(pointers_[i], buffers[i].data, buffers[i].bytes, cudaMemcpyHostToDevice, stream),
-            "copying member inputs");
+      if (buffers[i].input) {
+        std::memcpy(pinned_[i], buffers[i].data, buffers[i].bytes);
+        check(cudaMemcpyAsync(pointers_[i], pinned_[i], buffers[i].bytes, cudaMemcpyHostToDevice, stream),
+              "copying member inputs");
+      }
     check(cudaMemsetAsync(counter_, 0, sizeof(unsigned long long), stream), "resetting the member counter");
   }
   void download(Chunk& host, cudaStream_t stream) {
     const auto buffers = host.buffers();
     for (std::size_t i = 0; i < buffers.size(); ++i)
       if (!buffers[i].input)
-        check(
-            cudaMemcpyAsync(buffers[i].data, pointers_[i], buffers[i].bytes, cudaMemcpyDeviceToHost, stream),
-            "copying member results");
+        check(cudaMemcpyAsync(pinned_[i], pointers_[i], buffers[i].bytes, cudaMemcpyDeviceToHost, stream),
+              "copying member results");
+  }
+  /// After the download has completed.
+  void take_results(Chunk& host) const {
+    const auto buffers = host.buffers();
+    for (std::size_t i = 0; i < buffers.size(); ++i)
+      if (!buffers[i].input) std::memcpy(buffers[i].data, pinned_[i], buffers[i].bytes);
   }
 
  private:
-  std::vector<void*> pointers_;
+  std::vector<void*> pointers_, pinned_;
   unsigned long long* counter_ = nullptr;
 };
 using RowDeviceChunk = DeviceChunk<SlotChunk, slot_views>;
@@ -158,9 +171,10 @@ int resident_blocks(Kernel kernel, const GpuLaunch& launch, std::size_t shared_b
   return std::max(1, per_multiprocessor) * gpu_info().multiprocessors;
 }
 
-/// The variant's members in chunks: while the GPU runs one chunk (launch(stream, views, count,
-/// counter)), the host fills the next and summarizes the last. Stops between chunks when control.stop
-/// is raised.
+/// The variant's members in chunks, two in flight: while the GPU runs one chunk (launch(stream, views,
+/// count, counter)), the host fills the next, whose copies and kernel the stream queues behind it, and
+/// then summarizes the one before. Stops between chunks when control.stop is raised. The kernels'
+/// time (CUDA events) goes to statistics.kernel_seconds.
 template <class Launch>
 SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const SlotSchedule& schedule,
                         const ChunkGrid& grid, int host_threads, const SweepControl& control,
@@ -178,22 +192,36 @@ SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const Slo
   std::array<RowDeviceChunk*, 2> device{&device0, &device1};
   cudaStream_t stream = nullptr;
   check(cudaStreamCreate(&stream), "creating a stream");
+  std::array<cudaEvent_t, 6> events{};  // per chunk: its kernel's start and end, its results arrived
+  for (cudaEvent_t& e : events) check(cudaEventCreate(&e), "creating an event");
 
   const auto launch_chunk = [&](std::size_t b, std::size_t first) {
     const std::size_t count = std::min(chunk, range.end - first);
     host[b].fill(scene, range, first, count);
     device[b]->upload(host[b], stream);
+    check(cudaEventRecord(events[3 * b], stream), "timing the sweep kernel");
     launch(stream, device[b]->views(), (unsigned long long)count, device[b]->counter());
     check(cudaGetLastError(), "launching the sweep kernel");
+    check(cudaEventRecord(events[3 * b + 1], stream), "timing the sweep kernel");
     device[b]->download(host[b], stream);
+    check(cudaEventRecord(events[3 * b + 2], stream), "copying member results");
+  };
+  const auto release = [&] {
+    cudaStreamSynchronize(stream);
+    for (cudaEvent_t e : events) cudaEventDestroy(e);
+    cudaStreamDestroy(stream);
   };
   std::size_t done = 0;
   try {
     launch_chunk(0, range.begin);
     for (std::size_t first = range.begin, b = 0; first < range.end; first += chunk, b ^= 1) {
-      check(cudaStreamSynchronize(stream), "running the sweep kernel");
       const std::size_t next = first + chunk;
       if (next < range.end && !control.stopped()) launch_chunk(b ^ 1, next);
+      check(cudaEventSynchronize(events[3 * b + 2]), "running the sweep kernel");
+      float kernel_ms = 0.0f;
+      check(cudaEventElapsedTime(&kernel_ms, events[3 * b], events[3 * b + 1]), "timing the sweep kernel");
+      stats.kernel_seconds += 1e-3 * double(kernel_ms);
+      device[b]->take_results(host[b]);
       const double attempts = host[b].deliver(scene, host_threads, sink);
       stats.lane_steps_busy += attempts;
       stats.lane_steps_total += attempts;
@@ -203,11 +231,10 @@ SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const Slo
     }
     check(cudaStreamSynchronize(stream), "running the sweep kernel");
   } catch (...) {
-    cudaStreamSynchronize(stream);
-    cudaStreamDestroy(stream);
+    release();
     throw;
   }
-  cudaStreamDestroy(stream);
+  release();
   stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.interrupted = control.stopped();
   return outcome;

@@ -63,6 +63,7 @@ class GpuSliderDevice final : public SliderSlotDevice {
     check(cudaGetLastError(), "launching the slider kernel");
     device.download(chunk, nullptr);
     check(cudaDeviceSynchronize(), "running the slider kernel");
+    device.take_results(chunk);
   }
 
  private:

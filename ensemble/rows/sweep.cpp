@@ -25,6 +25,7 @@ void SweepOutcome::append(SweepOutcome&& part) {
   for (auto& r : part.results) results.push_back(std::move(r));
   finished.insert(finished.end(), part.finished.begin(), part.finished.end());
   statistics.wall_seconds += part.statistics.wall_seconds;
+  statistics.kernel_seconds += part.statistics.kernel_seconds;
   statistics.lane_steps_busy += part.statistics.lane_steps_busy;
   statistics.lane_steps_total += part.statistics.lane_steps_total;
   statistics.threads = part.statistics.threads;

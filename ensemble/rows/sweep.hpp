@@ -15,6 +15,7 @@ namespace rotorsweep::ensemble {
 
 struct SweepStatistics {
   double wall_seconds = 0;
+  double kernel_seconds = 0;    ///< on a GPU: the time its sweep kernels ran (CUDA events); 0 on the CPU
   double lane_steps_busy = 0;   ///< Σ over step attempts of lanes that held a member
   double lane_steps_total = 0;  ///< Σ over step attempts of all lanes
   int threads = 1;

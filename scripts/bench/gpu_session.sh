@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The GPU backend's device checks and timings in one call, each step under its own time limit
-# (docs/performance.md "GPU"): the GPU tests, `bench gpu` per N and mapping, the 10⁶-member curve as a
-# run, and the slider's 8 100-member scan (teams of 32, of 16, and two teams per block in shared memory).
+# (docs/performance.md "GPU"): the register kernels against the host's emulation, the default mapping
+# against the CPU, the other GPU tests, `bench gpu` per N and mapping (kernel-only and end-to-end
+# rates), the 10⁶-member curve as a run (its progress in the log), and the slider's 8 100-member scan.
 # Usage: scripts/bench/gpu_session.sh [BIN (build/bin, from `scripts/build.sh gpu`)] [OUT ($OUT, or
 # bench-results/gpu)]. Writes summary.txt (one line per step: exit code, seconds) and log.txt (every
 # step's output, as it comes) to OUT, result files to a scratch folder it removes; prints each step's
 # line as the step ends, so a session stopped early still shows what it measured. The limits add up
-# to 410 s.
+# to 380 s (a step that ignores its stop is killed 10 s later).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 bin=$(realpath "${1:-build/bin}")
@@ -25,7 +26,7 @@ step() {
   echo "== $name: $*" >> "$out/log.txt"
   local start rc ms
   start=$(date +%s%N)
-  timeout "$limit" "$@" >> "$out/log.txt" 2>&1
+  timeout -k 10 "$limit" "$@" >> "$out/log.txt" 2>&1
   rc=$?
   ms=$((($(date +%s%N) - start) / 1000000))
   printf '%-22s exit %3d  %5d.%d s%s\n' "$name" "$rc" $((ms / 1000)) $((ms % 1000 / 100)) \
@@ -35,13 +36,13 @@ step() {
 if command -v nvidia-smi > /dev/null; then
   nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm --format=csv >> "$out/log.txt" 2>&1
 fi
-step gpu_tests 90 "$bin/test_gpu" -d yes
-step bench_2_20_48 90 "$bin/rotorsweep" bench gpu --rows 2,20,48 --no-curve
-step bench_128_1024 50 "$bin/rotorsweep" bench gpu --rows 128,1024 --no-curve --scale 0.2
-step curve_run 50 "$bin/rotorsweep" run examples/friction_curve_gpu.toml -q -o "$scratch/curve.h5"
+step gpu_registers 30 "$bin/test_gpu" -d yes "[registers]"
+step gpu_mappings 60 "$bin/test_gpu" -d yes "[mappings]"
+step gpu_tests 60 "$bin/test_gpu" -d yes "~[registers]~[mappings]"
+step bench_2_20 60 "$bin/rotorsweep" bench gpu --rows 2,20 --teams 1,8 --scratch shared --no-curve
+step bench_128_1024 50 "$bin/rotorsweep" bench gpu --rows 128,1024 --teams 1,32,128 --scratch shared --no-curve \
+  --scale 0.2
+step curve_run 60 "$bin/rotorsweep" run examples/friction_curve_gpu.toml -o "$scratch/curve.h5"
+step curve_info 10 "$bin/rotorsweep" info "$scratch/curve.h5"
 step slider_team32 40 "$bin/rotorsweep" slider examples/experiment_7x7_gpu.toml -q -o "$scratch/slider.h5"
-step slider_team16 40 env ROTORSWEEP_GPU_TEAM=16 "$bin/rotorsweep" slider examples/experiment_7x7_gpu.toml -q \
-  -o "$scratch/slider16.h5"
-step slider_block64 40 env ROTORSWEEP_GPU_BLOCK=64 "$bin/rotorsweep" slider examples/experiment_7x7_gpu.toml -q \
-  -o "$scratch/slider64.h5"
 step slider_info 10 "$bin/rotorsweep" info "$scratch/slider.h5"

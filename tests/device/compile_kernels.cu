@@ -157,8 +157,8 @@ __global__ void run_members_on_blocks(rotorsweep::ensemble::SlotSchedule schedul
 }
 
 /// Members of disordered nearest-neighbour rows in registers, each on L threads of a warp with R rows
-/// apiece and every quadrature (ensemble/engine/warp_member.hpp): 8 × 3 (N ≤ 24; ptxas alone takes some
-/// 40 s a shape, docs/performance.md "Rows in registers" has the others' figures).
+/// apiece and every quadrature (ensemble/engine/warp_member.hpp): 8 × 3 (N ≤ 24); the GPU backend's
+/// own register kernels carry R and ρ̄ (docs/performance.md "Rows in registers: what ptxas says").
 template <std::size_t L, std::size_t R>
 __global__ void run_members_in_registers(const __grid_constant__ rotorsweep::ensemble::SlotSchedule schedule,
                                          rotorsweep::ensemble::SlotViews slots) {

@@ -35,6 +35,7 @@ class WarpRows {
   using Slots = WarpRowSlots<W, R>;
   using Jacobian = WarpCyclicTridiagonal<W, R>;
   static constexpr std::size_t slots_per_lane = R;
+  static constexpr bool per_row = PerRow;
   static constexpr std::size_t kinds = Integrals::max_count;
   static constexpr double period = two_pi;
 

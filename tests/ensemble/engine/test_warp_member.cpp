@@ -108,6 +108,12 @@ TEST_CASE("a schedule runs in registers only where the kernel can hold it", "[wa
                            kernels::all_integrals));
   CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 20\n" + base + "[observables]\nenergy = true\n"),
                            kernels::Integrals{}));  // an instantiation that carries R only
+  using UniformRows = kernels::WarpRows<kernels::HostWarp<8>, 3, false, kernels::all_integrals>;
+  using Uniform =
+      ensemble::WarpMember<UniformRows, kernels::WarpIntegrator<UniformRows, kernels::WarpRosenbrock<UniformRows, 8>>>;
+  CHECK(Uniform::fits(schedule_of("[model]\nrows = 20\n" + base), kernels::all_integrals));
+  CHECK_FALSE(Uniform::fits(schedule_of("[model]\nrows = 20\n" + base + "[disorder]\nA = 1e-3\n"),
+                            kernels::all_integrals));  // no disorder factors per row to read it into
 }
 
 namespace {

@@ -1,13 +1,15 @@
 // How the GPU backend lays members on threads (ensemble/gpu/gpu_launch.hpp), on the host: which scenes
-// run on teams, the team's size by N (and the slider's by its rotors), the environment's settings and
-// their errors, the file's label.
+// run in registers or on teams, the team's size by N (and the slider's by its rotors), the environment's
+// settings and their errors, the file's label.
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/gpu/gpu_launch.hpp"
+#include "ensemble/gpu/gpu_registers.hpp"
 #include "ensemble/gpu/gpu_slider.hpp"
 #include "io/scene_parser.hpp"
 #include "io/slider_scene_parser.hpp"
@@ -138,19 +140,59 @@ TEST_CASE("a coupling table on a team holds up to 4096 rows, on one thread what 
 }
 
 TEST_CASE("the result file's device says how many threads run a member", "[gpu_launch]") {
+  // N = 20 runs in registers where the build compiled a shape that holds it (ROTORSWEEP_GPU_REGISTER_SHAPES)
+  const auto teams_of_8 = [](const ensemble::Scene& s) {
+    return ensemble::choose_register_shape(ensemble::gpu_register_shapes(), s, 20, {})
+               ? std::string("8 threads per member, rows in registers")
+               : std::string("8 threads per member");
+  };
   auto scene = scene_of("rows = 20");
   scene.device = ensemble::Device::gpu;
-  CHECK_THAT(ensemble::device_label(scene),
-             Catch::StartsWith("gpu (") && Catch::EndsWith("; 8 threads per member)"));
+  CHECK_THAT(ensemble::device_label(scene), Catch::StartsWith("gpu (") && Catch::EndsWith("; " + teams_of_8(scene) + ")"));
   auto pair = scene_of("rows = [2, 20]");
   pair.device = ensemble::Device::gpu;
-  CHECK_THAT(ensemble::device_label(pair), Catch::EndsWith("; threads per member: 1 at N = 2, 8 at N = 20)"));
+  CHECK_THAT(ensemble::device_label(pair),
+             Catch::EndsWith("; 1 thread per member at N = 2; " + teams_of_8(pair) + " at N = 20)"));
+  const ScopedVariable eight("ROTORSWEEP_GPU_TEAM", "8");  // a team, whatever the build compiled
+  CHECK_THAT(ensemble::device_label(scene), Catch::EndsWith("; 8 threads per member)"));
   auto coupled = scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2");
   coupled.device = ensemble::Device::gpu;
   CHECK_THAT(ensemble::device_label(coupled), Catch::EndsWith("; 8 threads per member)"));
   auto explicit_stepper = scene_of("rows = 20", "[numerics]\nstepper = \"dopri5\"\n");
   explicit_stepper.device = ensemble::Device::gpu;
   CHECK_THAT(ensemble::device_label(explicit_stepper), Catch::EndsWith("; 1 thread per member)"));
+}
+
+TEST_CASE("a register kernel runs the T = 0 nearest-neighbour scenes whose N a compiled shape holds",
+          "[gpu_launch]") {
+  using ensemble::RegisterShape;
+  const std::vector<RegisterShape> shapes{{1, 2, false}, {4, 2, false}, {8, 3, false}, {8, 3, true},
+                                          {16, 4, false}, {32, 4, false}};
+  const auto chosen = [&](const ensemble::Scene& scene, std::size_t rows) {
+    return ensemble::choose_register_shape(shapes, scene, rows, {});
+  };
+  const auto uniform = scene_of("rows = 20");
+  CHECK(chosen(uniform, 2) == RegisterShape{1, 2, false});
+  CHECK(chosen(uniform, 4) == RegisterShape{4, 2, false});  // fewest slots in all, then most lanes
+  CHECK(chosen(uniform, 8) == RegisterShape{4, 2, false});
+  CHECK(chosen(uniform, 10) == RegisterShape{8, 3, false});
+  CHECK(chosen(uniform, 24) == RegisterShape{8, 3, false});
+  CHECK(chosen(uniform, 26) == RegisterShape{16, 4, false});
+  CHECK(chosen(uniform, 128) == RegisterShape{32, 4, false});
+  CHECK_FALSE(chosen(uniform, 130));  // beyond every shape: teams
+  const auto disordered = scene_of("rows = 20", "[disorder]\nA = 1e-3\n");
+  CHECK(chosen(disordered, 20) == RegisterShape{8, 3, true});
+  CHECK_FALSE(chosen(disordered, 2));  // no disordered shape of one lane
+  // what a register kernel does not hold runs on teams or threads
+  CHECK_FALSE(chosen(scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n"), 20));
+  CHECK_FALSE(chosen(scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2"), 20));
+  CHECK_FALSE(chosen(scene_of("rows = 20", "[observables]\nrow_profiles = true\n"), 20));
+  CHECK_FALSE(chosen(scene_of("rows = 20", "[observables]\nenergy = true\n"), 20));
+  CHECK_FALSE(chosen(scene_of("rows = 20", "[numerics]\nstepper = \"dopri5\"\n"), 20));
+  CHECK(chosen(scene_of("rows = 20", "[observables]\nslips = false\n"), 20));
+  ensemble::GpuLaunch team;
+  team.team = 8;  // ROTORSWEEP_GPU_TEAM asks for a team
+  CHECK_FALSE(ensemble::choose_register_shape(shapes, uniform, 20, team));
 }
 
 TEST_CASE("a slider member's team: two or three rotors a thread, at most a warp; the file's label",

@@ -1,0 +1,69 @@
+// The GPU sweep of a variant whose members run in registers (docs/architecture.md "Register kernels"):
+// a persistent grid whose groups of L threads each take the next member from a counter and run it
+// with RegisterMember on a DeviceWarp<L>; the host's chunks as for the other kernels (run_chunks).
+#pragma once
+
+#include <cuda_runtime.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "ensemble/gpu/gpu_runner.cuh"
+#include "ensemble/gpu/register_member.hpp"
+#include "kernels/lanes/warp.hpp"
+
+/// The blocks of 128 threads per multiprocessor the register kernels are compiled for (CMake's
+/// ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS): n > 0 caps a thread's registers at 65 536 / (128 n), spilling
+/// the rest to local memory, to trade spills for resident warps (docs/performance.md "Rows in
+/// registers, measured on an H100"); 0 leaves the registers to ptxas.
+#if ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS > 0
+#define ROTORSWEEP_REGISTER_BOUNDS __launch_bounds__(128, ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS)
+#else
+#define ROTORSWEEP_REGISTER_BOUNDS
+#endif
+
+namespace rotorsweep::ensemble::gpu {
+
+/// Members of a chunk, one per L threads: the group's first thread claims the next member for all.
+template <std::size_t L, std::size_t R, bool PerRow>
+__global__ void ROTORSWEEP_REGISTER_BOUNDS sweep_in_registers(const __grid_constant__ SlotSchedule schedule,
+                                                              SlotViews slots, unsigned long long count,
+                                                              unsigned long long* next) {
+  using W = kernels::DeviceWarp<L>;
+  for (;;) {
+    unsigned long long k = 0;
+    if (W::rank() == 0) k = atomicAdd(next, 1ull);
+    k = __shfl_sync(W::group(), k, 0, int(L));
+    if (k >= count) return;
+    RegisterMember<W, R, PerRow>::run(schedule, slots, std::size_t(k));
+  }
+}
+
+/// The variant's members in registers on L lanes × R slots (a shape of compiled_register_shapes that
+/// choose_register_shape picked for the scene).
+template <std::size_t L, std::size_t R, bool PerRow>
+SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, int host_threads,
+                              const SweepControl& control, const ResultSink& sink) {
+  using Integrator = DeviceAdaptiveIntegrator<kernels::StepperFamily::rosenbrock, kernels::NearestNeighbourRows<double>>;
+  available_gpu();
+  const Member variant = range.source->at(range.begin);
+  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
+  using Driver = RegisterMember<kernels::DeviceWarp<L>, R, PerRow>;
+  if (!Driver::fits(schedule, register_quadratures))
+    throw std::logic_error("a register kernel cannot run this schedule");
+  const auto kernel = sweep_in_registers<L, R, PerRow>;
+  const GpuLaunch launch = gpu_launch();
+  if (ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS > 0 && launch.threads_per_block > 128)
+    throw GpuLaunchError("ROTORSWEEP_GPU_BLOCK = " + std::to_string(launch.threads_per_block) +
+                         ": this build's register kernels run at most 128 threads per block "
+                         "(ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS)");
+  ChunkGrid grid{resident_blocks(kernel, launch, 0), launch.threads_per_block, 0, 0};
+  grid.resident = std::size_t(grid.blocks) * std::size_t(grid.threads_per_block) / L;
+  return run_chunks(scene, range, schedule, grid, host_threads, control, sink,
+                    [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
+                        unsigned long long* counter) {
+                      kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(schedule, views, count, counter);
+                    });
+}
+
+}  // namespace rotorsweep::ensemble::gpu

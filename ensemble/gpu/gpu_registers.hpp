@@ -1,0 +1,41 @@
+// Which register kernel (docs/architecture.md "Register kernels") runs a row scene's members on the GPU:
+// the shapes a build compiled (lanes × slots, uniform or disordered rows) and the choice among them by N.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <span>
+
+#include "ensemble/gpu/gpu_launch.hpp"
+#include "ensemble/rows/scene.hpp"
+#include "kernels/models/rows/integrals.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// A register kernel's shape: a member on `lanes` threads of a warp with `slots` rows apiece, its
+/// rows uniform or disordered (each slot keeps three disorder factors).
+struct RegisterShape {
+  std::size_t lanes = 0, slots = 0;
+  bool disordered = false;
+  constexpr std::size_t capacity() const { return lanes * slots; }
+  /// Whether N rows fit: at least one per lane, at most `slots` (kernels::WarpRowSlots::fits).
+  constexpr bool holds(std::size_t rows) const { return rows >= lanes && rows <= capacity(); }
+  friend constexpr bool operator==(const RegisterShape&, const RegisterShape&) = default;
+};
+
+/// What a register kernel carries: R and ρ̄'s integral, the default observables' quadratures (a scene
+/// that asks for W, S, H or the moments runs on teams).
+inline constexpr kernels::Integrals register_quadratures{true, false, false, true, false, false};
+
+/// The shapes this build compiled (CMake's ROTORSWEEP_GPU_REGISTER_SHAPES; none without CUDA).
+std::span<const RegisterShape> gpu_register_shapes();
+
+/// The shape among `shapes` that runs members of N = `rows` of the scene in registers, or none:
+/// T = 0, nearest neighbours, a linearly implicit stepper, no row profiles, the quadratures of
+/// register_quadratures at most, no ROTORSWEEP_GPU_TEAM (which asks for a thread or a team), and a
+/// shape that holds N, disordered where the scene has disorder. Of those that fit, the fewest slots
+/// in all, then the most lanes.
+std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape> shapes, const Scene& scene,
+                                                   std::size_t rows, const GpuLaunch& launch);
+
+}  // namespace rotorsweep::ensemble

@@ -1,0 +1,29 @@
+// The member a register kernel runs (docs/architecture.md "Register kernels"): WarpMember over the
+// nearest-neighbour rows in registers (WarpRows, docs/model.md §1) with the Rosenbrock integrator, on
+// a device's warp (kernels::DeviceWarp) or the host's emulation of one (kernels::HostWarp).
+#pragma once
+
+#include <cstddef>
+
+#include "ensemble/engine/warp_member.hpp"
+#include "ensemble/gpu/gpu_registers.hpp"
+#include "kernels/models/rows/warp_rows.hpp"
+#include "kernels/steppers/rosenbrock_tableaus.hpp"
+#include "kernels/steppers/warp_integrator.hpp"
+#include "kernels/steppers/warp_rosenbrock.hpp"
+
+namespace rotorsweep::ensemble {
+
+/// The rows of a member on the lanes of W with R slots apiece, disordered where PerRow.
+template <class W, std::size_t R, bool PerRow>
+using RegisterRows = kernels::WarpRows<W, R, PerRow, register_quadratures>;
+
+/// A member of RegisterRows from its start to its retirement, any Rosenbrock tableau.
+template <class W, std::size_t R, bool PerRow>
+using RegisterMember =
+    WarpMember<RegisterRows<W, R, PerRow>,
+               kernels::WarpIntegrator<RegisterRows<W, R, PerRow>,
+                                       kernels::WarpRosenbrock<RegisterRows<W, R, PerRow>,
+                                                               kernels::RosenbrockTableau::max_stages>>>;
+
+}  // namespace rotorsweep::ensemble
