@@ -92,7 +92,6 @@ void check_fills() {
 TEST_CASE("the row model in registers gives NearestNeighbourRows' values for every lane count and fill",
           "[kernels][warp][model]") {
   check_fills<1, 4, false>();
-  check_fills<2, 3, false>();
   check_fills<2, 3, true>();
   check_fills<4, 2, true>();
   check_fills<8, 3, false>();
