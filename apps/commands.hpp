@@ -45,6 +45,15 @@ struct BenchGpuOptions {
 };
 int run_bench_gpu(const BenchGpuOptions& options);
 
+struct BenchHostOptions {
+  int rows = 20;
+  int members = 65536;  ///< a chunk of the GPU path (run_chunks' smallest)
+  int threads = 0;      ///< host threads (0: OMP_NUM_THREADS, else every core)
+  int repeats = 3;
+  std::string scratch = "/tmp";  ///< where the result file is written, and removed
+};
+int run_bench_host(const BenchHostOptions& options);
+
 /// What every command that runs a scene file takes.
 struct SceneCommandOptions {
   std::string scene;

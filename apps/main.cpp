@@ -292,6 +292,23 @@ int main(int argc, char** argv) {
   gpu_cmd->add_option("--scratch", bench_gpu.scratch, "Where a team's scratch lives: shared, global or both")
       ->check(CLI::IsMember({"shared", "global", "both"}))
       ->capture_default_str();
+  BenchHostOptions bench_host;
+  auto* host_cmd = bench_cmd->add_subcommand(
+      "host",
+      "The host's share of a GPU sweep per member, without a GPU: a chunk's fill, the members' summaries, "
+      "and the result file's writes (the 10^6-member curve's scene)");
+  host_cmd->add_option("--rows", bench_host.rows, "Rows N")->check(CLI::Range(2, 4096))->capture_default_str();
+  host_cmd->add_option("--members", bench_host.members, "Members per chunk")
+      ->check(CLI::Range(1, 1 << 22))
+      ->capture_default_str();
+  host_cmd->add_option("--threads", bench_host.threads, "Host threads (0: OpenMP's default)")
+      ->check(CLI::Range(0, 4096));
+  host_cmd->add_option("--repeats", bench_host.repeats, "Timed repeats (the median is reported)")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  host_cmd->add_option("--scratch", bench_host.scratch, "Directory for the result file written and removed")
+      ->check(CLI::ExistingDirectory)
+      ->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -317,6 +334,7 @@ int main(int argc, char** argv) {
     if (*table_cmd) return run_table(table);
     if (*kernels_cmd) return run_bench_kernels(bench);
     if (*gpu_cmd) return run_bench_gpu(bench_gpu);
+    if (*host_cmd) return run_bench_host(bench_host);
     if (*chambers_cmd) return run_landscape_chambers(landscape);
     if (*curves_cmd) return run_landscape_curves(landscape);
     if (*jump_cmd) return run_landscape_jump_friction(landscape);

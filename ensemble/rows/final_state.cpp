@@ -1,5 +1,6 @@
 // Final-state classification: circular sublattice means, deviations, domain walls, detached rows
-// and the orbit's period from the end-of-period states (rules in final_state.hpp).
+// and the orbit's period from the end-of-period states (rules in final_state.hpp); each angle's sine
+// and cosine taken once.
 #include "ensemble/rows/final_state.hpp"
 
 #include <algorithm>
@@ -18,18 +19,27 @@ double centred(double x) {
   return w > std::numbers::pi ? w - 2 * std::numbers::pi : w;
 }
 
-/// Circular means of the even and odd rows.
-std::pair<double, double> sublattice_means(const std::vector<double>& theta) {
+/// A state's sines and cosines, each taken once, and their sums over the even and odd rows (in row
+/// order) that give the sublattices' circular means.
+struct StateTrig {
+  std::vector<double> sines, cosines;
   double s[2] = {0, 0}, c[2] = {0, 0};
-  for (std::size_t j = 0; j < theta.size(); ++j) {
-    s[j % 2] += std::sin(theta[j]);
-    c[j % 2] += std::cos(theta[j]);
-  }
-  return {std::atan2(s[0], c[0]), std::atan2(s[1], c[1])};
-}
 
-double largest_deviation(const std::vector<double>& theta) {
-  const auto [even, odd] = sublattice_means(theta);
+  explicit StateTrig(const std::vector<double>& theta) : sines(theta.size()), cosines(theta.size()) {
+    for (std::size_t j = 0; j < theta.size(); ++j) {
+      const double sine = std::sin(theta[j]), cosine = std::cos(theta[j]);
+      sines[j] = sine;
+      cosines[j] = cosine;
+      s[j % 2] += sine;
+      c[j % 2] += cosine;
+    }
+  }
+  double even_mean() const { return std::atan2(s[0], c[0]); }
+  double odd_mean() const { return std::atan2(s[1], c[1]); }
+};
+
+double largest_deviation(const std::vector<double>& theta, const StateTrig& trig) {
+  const double even = trig.even_mean(), odd = trig.odd_mean();
   double worst = 0;
   for (std::size_t j = 0; j < theta.size(); ++j)
     worst = std::max(worst, std::fabs(centred(theta[j] - (j % 2 ? odd : even))));
@@ -43,27 +53,24 @@ FinalState classify_final_state(const std::vector<std::vector<double>>& end_stat
   FinalState f;
   const auto& last = end_states.back();
   const std::size_t n = last.size();
-  for (const auto& theta : end_states)
-    f.sublattice_deviation = std::max(f.sublattice_deviation, largest_deviation(theta));
-  const auto [even, odd] = sublattice_means(last);
-  f.sublattice_even = kernels::wrap_2pi(even);
-  f.sublattice_odd = kernels::wrap_2pi(odd);
+  for (std::size_t e = 0; e + 1 < end_states.size(); ++e)
+    f.sublattice_deviation =
+        std::max(f.sublattice_deviation, largest_deviation(end_states[e], StateTrig(end_states[e])));
+  const StateTrig trig(last);
+  f.sublattice_deviation = std::max(f.sublattice_deviation, largest_deviation(last, trig));
+  f.sublattice_even = kernels::wrap_2pi(trig.even_mean());
+  f.sublattice_odd = kernels::wrap_2pi(trig.odd_mean());
   // a row is detached when it is far from the circular mean of the other rows of its sublattice
-  double s[2] = {0, 0}, c[2] = {0, 0};
   for (std::size_t j = 0; j < n; ++j) {
-    s[j % 2] += std::sin(last[j]);
-    c[j % 2] += std::cos(last[j]);
-  }
-  for (std::size_t j = 0; j < n; ++j) {
-    const double others = std::atan2(s[j % 2] - std::sin(last[j]), c[j % 2] - std::cos(last[j]));
+    const double others =
+        std::atan2(trig.s[j % 2] - trig.sines[j], trig.c[j % 2] - trig.cosines[j]);
     f.detached_rows += std::fabs(centred(last[j] - others)) > detached_angle;
   }
+  // link j joins rows j and j + 1; a wall lies between an aligned and an anti-aligned link
+  std::vector<char> aligned(n);
+  for (std::size_t j = 0; j < n; ++j) aligned[j] = std::cos(last[j] - last[(j + 1) % n]) > 0;
   int changes = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    const bool aligned = std::cos(last[j] - last[(j + 1) % n]) > 0;
-    const bool next_aligned = std::cos(last[(j + 1) % n] - last[(j + 2) % n]) > 0;
-    changes += aligned != next_aligned;
-  }
+  for (std::size_t j = 0; j < n; ++j) changes += aligned[j] != aligned[(j + 1) % n];
   f.domain_walls = changes / 2;
   // clusters on the circle: sort, split at gaps wider than group_gap (the wrap-around gap included)
   std::vector<double> sorted(n);

@@ -1,0 +1,113 @@
+// `rotorsweep bench host`: the host's share of a GPU sweep per member, measured without a GPU: a chunk's
+// fill, the members' summaries, and the summaries with the result file's writes (as `rotorsweep run`).
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "commands.hpp"
+#include "ensemble/engine/member_slots.hpp"
+#include "ensemble/engine/thread_count.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "io/member_stream.hpp"
+#include "io/result_file.hpp"
+#include "io/scene_parser.hpp"
+
+namespace rotorsweep::apps {
+
+namespace {
+
+/// The curve's scene (examples/friction_curve_gpu.toml) with N rows and no output.
+std::string curve_scene(int rows) {
+  return "[model]\nrows = " + std::to_string(rows) +
+         "\n[drive]\ng = [0.01]\n[sweep]\nA = { from = 0.25, to = 16.0, count = 1000 }\n[initial]\n"
+         "kinds = [\"random\"]\nreplicas = 1000\nseed = 1\n[schedule]\nrelax_periods = 2\naverage_periods = 2\n"
+         "[numerics]\nrtol = 1e-6\natol = 1e-9\n";
+}
+
+/// The outputs a kernel leaves in the chunk's slots, made up: every member finished its 2 + 2 periods,
+/// each period's channels and end state derived from its starting angles, so that the summaries compute
+/// on distinct values.
+void leave_finished_members(ensemble::SlotChunk& chunk) {
+  const auto& s = chunk.schedule();
+  const ensemble::SlotViews v = chunk.views();
+  const std::size_t n = s.rows;
+  for (std::size_t k = 0; k < chunk.count(); ++k) {
+    v.status[k] = 0;
+    v.settled[k] = 1;
+    v.periods[k] = 4;
+    v.steps[2 * k] = 300;
+    v.steps[2 * k + 1] = 10;
+    std::copy(v.y0 + k * n, v.y0 + (k + 1) * n, v.theta + k * n);
+    for (std::size_t r = 0; r < s.record_capacity; ++r)
+      for (std::size_t c = 0; c < ensemble::channel_count; ++c)
+        v.records[(k * s.record_capacity + r) * ensemble::channel_count + c] = 0.5 + 0.01 * v.y0[k * n + c % n];
+    for (std::size_t r = 0; r < s.end_capacity; ++r)
+      std::copy(v.y0 + k * n, v.y0 + (k + 1) * n, v.end_states + (k * s.end_capacity + r) * n);
+  }
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median(std::vector<double> x) {
+  std::sort(x.begin(), x.end());
+  return x[x.size() / 2];
+}
+
+}  // namespace
+
+int run_bench_host(const BenchHostOptions& options) {
+  const int threads = ensemble::thread_count(options.threads);
+  const auto scene = io::parse_scene_text(curve_scene(options.rows), "bench host");
+  const ensemble::MemberPlan plan(scene);
+  const std::size_t members = std::min<std::size_t>(std::size_t(options.members), scene.member_count());
+  const ensemble::MemberSource source{scene.member_count(), [&](std::size_t k) { return plan[k]; }, {}};
+  const ensemble::VariantRange range{&source, 0, source.count};
+  ensemble::SlotChunk chunk(ensemble::slot_schedule(scene, plan[0], 1.0), members);
+  const std::filesystem::path path = std::filesystem::path(options.scratch) /
+                                     ("rotorsweep-bench-host-" + std::to_string(::getpid()) + ".h5");
+  std::printf("rotorsweep bench host: N = %d, %zu members per chunk, %d host threads, medians of %d\n",
+              options.rows, members, threads, options.repeats);
+
+  std::vector<double> fill, summaries, writes;
+  for (int repeat = 0; repeat < options.repeats; ++repeat) {
+    auto start = std::chrono::steady_clock::now();
+    chunk.fill(scene, range, 0, members);
+    fill.push_back(seconds_since(start));
+    leave_finished_members(chunk);
+
+    std::atomic<std::size_t> delivered{0};
+    start = std::chrono::steady_clock::now();
+    chunk.deliver(scene, threads, [&](ensemble::MemberResult&&) { ++delivered; });
+    summaries.push_back(seconds_since(start));
+
+    std::filesystem::remove(path);
+    const io::ResultFile file(path.string(), scene, io::Provenance{"bench host", "", "", "cpu", ""});
+    io::MemberStream stream(file, plan, {}, [] {});
+    start = std::chrono::steady_clock::now();
+    chunk.deliver(scene, threads, [&](ensemble::MemberResult&& r) { stream.add(std::move(r)); });
+    stream.flush();
+    writes.push_back(seconds_since(start));
+  }
+  std::filesystem::remove(path);
+
+  std::printf("| step | s per chunk | µs per member | members/s | s per 10⁶ members |\n|---|---|---|---|---|\n");
+  const auto row = [&](const char* step, double seconds) {
+    const double per_member = seconds / double(members);
+    std::printf("| %s | %.3f | %.2f | %.3g | %.2f |\n", step, seconds, 1e6 * per_member, 1.0 / per_member,
+                1e6 * per_member);
+  };
+  row("fill (one thread)", median(fill));
+  row("summaries", median(summaries));
+  row("summaries and file writes", median(writes));
+  std::fflush(stdout);
+  return 0;
+}
+
+}  // namespace rotorsweep::apps
