@@ -1,12 +1,13 @@
 // `rotorsweep bench host`: the host's share of a GPU sweep per member, measured without a GPU: a chunk's
 // fill, the members' summaries, and the summaries with the result file's writes (as `rotorsweep run`).
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "commands.hpp"
@@ -25,7 +26,8 @@ namespace {
 std::string curve_scene(int rows) {
   return "[model]\nrows = " + std::to_string(rows) +
          "\n[drive]\ng = [0.01]\n[sweep]\nA = { from = 0.25, to = 16.0, count = 1000 }\n[initial]\n"
-         "kinds = [\"random\"]\nreplicas = 1000\nseed = 1\n[schedule]\nrelax_periods = 2\naverage_periods = 2\n"
+         "kinds = [\"random\"]\nreplicas = 1000\nseed = 1\n[schedule]\nrelax_periods = 2\naverage_periods = "
+         "2\n"
          "[numerics]\nrtol = 1e-6\natol = 1e-9\n";
 }
 
@@ -45,7 +47,8 @@ void leave_finished_members(ensemble::SlotChunk& chunk) {
     std::copy(v.y0 + k * n, v.y0 + (k + 1) * n, v.theta + k * n);
     for (std::size_t r = 0; r < s.record_capacity; ++r)
       for (std::size_t c = 0; c < ensemble::channel_count; ++c)
-        v.records[(k * s.record_capacity + r) * ensemble::channel_count + c] = 0.5 + 0.01 * v.y0[k * n + c % n];
+        v.records[(k * s.record_capacity + r) * ensemble::channel_count + c] =
+            0.5 + 0.01 * v.y0[k * n + c % n];
     for (std::size_t r = 0; r < s.end_capacity; ++r)
       std::copy(v.y0 + k * n, v.y0 + (k + 1) * n, v.end_states + (k * s.end_capacity + r) * n);
   }
@@ -60,23 +63,20 @@ double median(std::vector<double> x) {
   return x[x.size() / 2];
 }
 
-}  // namespace
+/// The median seconds of each step for chunks of `members` of the curve's scene at N rows.
+struct HostSteps {
+  double fill, summaries, writes;
+};
 
-int run_bench_host(const BenchHostOptions& options) {
-  const int threads = ensemble::thread_count(options.threads);
-  const auto scene = io::parse_scene_text(curve_scene(options.rows), "bench host");
+HostSteps time_host_steps(int rows, std::size_t members, int threads, int repeats,
+                          const std::filesystem::path& path) {
+  const auto scene = io::parse_scene_text(curve_scene(rows), "bench host");
   const ensemble::MemberPlan plan(scene);
-  const std::size_t members = std::min<std::size_t>(std::size_t(options.members), scene.member_count());
   const ensemble::MemberSource source{scene.member_count(), [&](std::size_t k) { return plan[k]; }, {}};
   const ensemble::VariantRange range{&source, 0, source.count};
   ensemble::SlotChunk chunk(ensemble::slot_schedule(scene, plan[0], 1.0), members);
-  const std::filesystem::path path = std::filesystem::path(options.scratch) /
-                                     ("rotorsweep-bench-host-" + std::to_string(::getpid()) + ".h5");
-  std::printf("rotorsweep bench host: N = %d, %zu members per chunk, %d host threads, medians of %d\n",
-              options.rows, members, threads, options.repeats);
-
   std::vector<double> fill, summaries, writes;
-  for (int repeat = 0; repeat < options.repeats; ++repeat) {
+  for (int repeat = 0; repeat < repeats; ++repeat) {
     auto start = std::chrono::steady_clock::now();
     chunk.fill(scene, range, 0, members);
     fill.push_back(seconds_since(start));
@@ -96,17 +96,33 @@ int run_bench_host(const BenchHostOptions& options) {
     writes.push_back(seconds_since(start));
   }
   std::filesystem::remove(path);
+  return {median(fill), median(summaries), median(writes)};
+}
 
-  std::printf("| step | s per chunk | µs per member | members/s | s per 10⁶ members |\n|---|---|---|---|---|\n");
-  const auto row = [&](const char* step, double seconds) {
-    const double per_member = seconds / double(members);
-    std::printf("| %s | %.3f | %.2f | %.3g | %.2f |\n", step, seconds, 1e6 * per_member, 1.0 / per_member,
-                1e6 * per_member);
-  };
-  row("fill (one thread)", median(fill));
-  row("summaries", median(summaries));
-  row("summaries and file writes", median(writes));
-  std::fflush(stdout);
+}  // namespace
+
+int run_bench_host(const BenchHostOptions& options) {
+  const int threads = ensemble::thread_count(options.threads);
+  const std::size_t members = std::size_t(options.members);
+  const std::filesystem::path path = std::filesystem::path(options.scratch) /
+                                     ("rotorsweep-bench-host-" + std::to_string(::getpid()) + ".h5");
+  std::printf("rotorsweep bench host: %zu members per chunk, %d host threads, medians of %d\n", members,
+              threads, options.repeats);
+  std::printf(
+      "| N | step | s per chunk | µs per member | members/s | s per 10⁶ members |\n"
+      "|---|---|---|---|---|---|\n");
+  for (const int rows : options.rows) {
+    const HostSteps steps = time_host_steps(rows, members, threads, options.repeats, path);
+    const auto row = [&](const char* step, double seconds) {
+      const double per_member = seconds / double(members);
+      std::printf("| %d | %s | %.3f | %.2f | %.3g | %.2f |\n", rows, step, seconds, 1e6 * per_member,
+                  1.0 / per_member, 1e6 * per_member);
+    };
+    row("fill (one thread)", steps.fill);
+    row("summaries", steps.summaries);
+    row("summaries and file writes", steps.writes);
+    std::fflush(stdout);
+  }
   return 0;
 }
 

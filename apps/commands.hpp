@@ -46,7 +46,7 @@ struct BenchGpuOptions {
 int run_bench_gpu(const BenchGpuOptions& options);
 
 struct BenchHostOptions {
-  int rows = 20;
+  std::vector<int> rows{2, 20, 128};  ///< the scenes' N
   int members = 65536;  ///< a chunk of the GPU path (run_chunks' smallest)
   int threads = 0;      ///< host threads (0: OMP_NUM_THREADS, else every core)
   int repeats = 3;

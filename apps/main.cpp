@@ -297,9 +297,12 @@ int main(int argc, char** argv) {
       "host",
       "The host's share of a GPU sweep per member, without a GPU: a chunk's fill, the members' summaries, "
       "and the result file's writes (the 10^6-member curve's scene)");
-  host_cmd->add_option("--rows", bench_host.rows, "Rows N")->check(CLI::Range(2, 4096))->capture_default_str();
-  host_cmd->add_option("--members", bench_host.members, "Members per chunk")
-      ->check(CLI::Range(1, 1 << 22))
+  host_cmd->add_option("--rows", bench_host.rows, "The scenes to measure, by N")
+      ->check(CLI::Range(2, 4096))
+      ->delimiter(',')
+      ->capture_default_str();
+  host_cmd->add_option("--members", bench_host.members, "Members per chunk (of the curve's 10^6)")
+      ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   host_cmd->add_option("--threads", bench_host.threads, "Host threads (0: OpenMP's default)")
       ->check(CLI::Range(0, 4096));

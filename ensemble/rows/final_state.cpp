@@ -62,8 +62,7 @@ FinalState classify_final_state(const std::vector<std::vector<double>>& end_stat
   f.sublattice_odd = kernels::wrap_2pi(trig.odd_mean());
   // a row is detached when it is far from the circular mean of the other rows of its sublattice
   for (std::size_t j = 0; j < n; ++j) {
-    const double others =
-        std::atan2(trig.s[j % 2] - trig.sines[j], trig.c[j % 2] - trig.cosines[j]);
+    const double others = std::atan2(trig.s[j % 2] - trig.sines[j], trig.c[j % 2] - trig.cosines[j]);
     f.detached_rows += std::fabs(centred(last[j] - others)) > detached_angle;
   }
   // link j joins rows j and j + 1; a wall lies between an aligned and an anti-aligned link

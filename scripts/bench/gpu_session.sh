@@ -2,12 +2,13 @@
 # The GPU backend's device checks and timings in one call, each step under its own time limit
 # (docs/performance.md "GPU"): the register kernels against the host's emulation, the default mapping
 # against the CPU, the other GPU tests, `bench gpu` per N and mapping (kernel-only and end-to-end
-# rates), the 10⁶-member curve as a run (its progress in the log), and the slider's 8 100-member scan.
+# rates), the host's work per member on the device machine's cores (`bench host`, N = 2 and 20), the
+# 10⁶-member curve as a run (its progress in the log), and the slider's 8 100-member scan.
 # Usage: scripts/bench/gpu_session.sh [BIN (build/bin, from `scripts/build.sh gpu`)] [OUT ($OUT, or
 # bench-results/gpu)]. Writes summary.txt (one line per step: exit code, seconds) and log.txt (every
 # step's output, as it comes) to OUT, result files to a scratch folder it removes; prints each step's
 # line as the step ends, so a session stopped early still shows what it measured. The limits add up
-# to 380 s (a step that ignores its stop is killed 10 s later).
+# to 400 s (a step that ignores its stop is killed 10 s later).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 bin=$(realpath "${1:-build/bin}")
@@ -42,6 +43,7 @@ step gpu_tests 60 "$bin/test_gpu" -d yes "~[registers]~[mappings]"
 step bench_2_20 60 "$bin/rotorsweep" bench gpu --rows 2,20 --teams 1,8 --scratch shared --no-curve
 step bench_128_1024 50 "$bin/rotorsweep" bench gpu --rows 128,1024 --teams 1,32,128 --scratch shared --no-curve \
   --scale 0.2
+step bench_host 20 "$bin/rotorsweep" bench host --rows 2,20 --scratch "$scratch"
 step curve_run 60 "$bin/rotorsweep" run examples/friction_curve_gpu.toml -o "$scratch/curve.h5"
 step curve_info 10 "$bin/rotorsweep" info "$scratch/curve.h5"
 step slider_team32 40 "$bin/rotorsweep" slider examples/experiment_7x7_gpu.toml -q -o "$scratch/slider.h5"

@@ -11,26 +11,29 @@
 
 using namespace rotorsweep::testing;
 
-TEST_CASE("bench host times the fill, the summaries and the file writes and leaves no file", "[apps][bench]") {
+TEST_CASE("bench host times the fill, the summaries and the file writes and leaves no file",
+          "[apps][bench]") {
   const auto dir = scratch_directory("bench-host");
   const auto scratch = dir / "scratch";
   std::filesystem::create_directory(scratch);
-  const auto run =
-      run_cli("bench host --rows 4 --members 600 --repeats 1 --threads 2 --scratch " + scratch.string(), dir);
+  const auto run = run_cli(
+      "bench host --rows 4,6 --members 600 --repeats 1 --threads 2 --scratch " + scratch.string(), dir);
   INFO(run.output);
   REQUIRE(run.exit_code == 0);
-  CHECK_THAT(run.output, Catch::Contains("N = 4, 600 members per chunk, 2 host threads"));
-  for (const std::string step : {"fill (one thread)", "summaries", "summaries and file writes"}) {
-    INFO(step);
-    const auto at = run.output.find("| " + step + " |");
-    REQUIRE(at != std::string::npos);
-    std::istringstream cells(run.output.substr(at + step.size() + 4));
-    double seconds = 0, micro = 0;
-    char bar = 0;
-    cells >> seconds >> bar >> micro;
-    CHECK(std::isfinite(micro));
-    CHECK(micro > 0);
-  }
+  CHECK_THAT(run.output, Catch::Contains("600 members per chunk, 2 host threads"));
+  for (const std::string rows : {"4", "6"})
+    for (const std::string step : {"fill (one thread)", "summaries", "summaries and file writes"}) {
+      INFO("N = " << rows << ": " << step);
+      const std::string cell = "| " + rows + " | " + step + " |";
+      const auto at = run.output.find(cell);
+      REQUIRE(at != std::string::npos);
+      std::istringstream cells(run.output.substr(at + cell.size()));
+      double seconds = 0, micro = 0;
+      char bar = 0;
+      cells >> seconds >> bar >> micro;
+      CHECK(std::isfinite(micro));
+      CHECK(micro > 0);
+    }
   CHECK(std::filesystem::is_empty(scratch));
 }
 
