@@ -11,15 +11,30 @@
 
 namespace rotorsweep::kernels {
 
-/// A symmetric n × n matrix J per lane (entry(j, k) and entry(k, j) are one value: set both, or
-/// use add_pair), and the factorisation M = shift·I − J = L D Lᵀ without pivoting. With a band
-/// (set_band: row i couples to rows at most `band` away, and with `wrap` the last `band` rows also to
-/// the first ones, as a ring) the factorisation and the solve keep to the envelope, the columns from
-/// first(i) to i of each row: fill-in stays there, and the skipped terms are exact zeros, so the
-/// result is the dense one's, in O(n·band²) per lane instead of O(n³/6). By Sylvester's law of inertia the
-/// negative pivots of D count the eigenvalues of J above the shift, so positive_definite() says which lanes
-/// have no unstable direction the step cannot follow. A vanishing pivot elsewhere gives non-finite stages,
-/// which the step controller rejects.
+/// The rows a part of a solve takes: those i with i mod ranks = rank (a team's rank; everything for
+/// the default, one lane's whole solve).
+struct RowShare {
+  std::size_t rank = 0, ranks = 1;
+  /// The first row from `begin` on that is this share's.
+  ROTORSWEEP_HD std::size_t first_from(std::size_t begin) const {
+    return begin + (rank + ranks - begin % ranks) % ranks;
+  }
+};
+
+/// A symmetric n × n matrix J per lane (entry(j, k) and entry(k, j) are separate values: set both, or
+/// use add_pair), and the factorisation M = shift·I − J = L D Lᵀ without pivoting, in place: L takes
+/// J's lower triangle, so J (entry, row_product, multiply_add) holds until the next factor() and is
+/// set anew after it. With a band (set_band: row i couples to rows at most `band` away, and with
+/// `wrap` the last `band` rows also to the first ones, as a ring) the factorisation and the solve keep
+/// to the envelope, the columns from first(i) to i of each row: fill-in stays there, and the skipped
+/// terms are exact zeros, so the result is the dense one's, in O(n·band²) per lane instead of
+/// O(n³/6). By Sylvester's law of inertia the negative pivots of D count the eigenvalues of J above
+/// the shift, so positive_definite() says which lanes have no unstable direction the step cannot
+/// follow. A vanishing pivot elsewhere gives non-finite stages, which the step controller rejects.
+///
+/// The solve's two substitutions go column by column (after x_m is final, every row that depends on
+/// it takes its term), so that a team shares each column's rows (TeamDenseSymmetric): the forward one
+/// adds each row's terms in ascending columns, the backward one in descending rows.
 ///
 /// Strict-FM invariance, as CyclicTridiagonal: in marked lanes whose J has equal row sums (a
 /// circulant J at all-equal rows) a constant right-hand side is solved in closed form,
@@ -28,14 +43,14 @@ template <class V>
 class DenseSymmetric {
  public:
   using lane_type = V;
-  static constexpr std::size_t storage_size(std::size_t n) { return 2 * n * n + 2 * n; }
+  static constexpr std::size_t storage_size(std::size_t n) { return n * n + 3 * n; }
 
   ROTORSWEEP_HD DenseSymmetric(std::size_t n, LaneArena<V>& arena)
       : n_(n),
         entries_(arena.take(n * n)),
-        factor_(arena.take(n * n)),
         pivot_(arena.take(n)),
-        inv_pivot_(arena.take(n)) {}
+        inv_pivot_(arena.take(n)),
+        row_sum_(arena.take(n)) {}
 
   ROTORSWEEP_HD std::size_t size() const { return n_; }
   /// Entries lie within `band` of the diagonal, and with `wrap` also in the corners of a ring
@@ -69,10 +84,10 @@ class DenseSymmetric {
   ROTORSWEEP_HD lane_mask<V> positive_definite() const { return positive_definite_; }
   ROTORSWEEP_HD void keep_constant_solutions(lane_mask<V> lanes) { keep_constant_ = lanes; }
 
-  /// Factorises M = shift·I − J: factor_ holds L below the diagonal (unit diagonal implied) within
-  /// the envelope.
+  /// Factorises M = shift·I − J: J's lower triangle takes L below the diagonal (unit diagonal
+  /// implied) within the envelope.
   ROTORSWEEP_HD void factor(V shift) {
-    const auto every_row = [](std::size_t) { return true; };
+    const RowShare every_row;
     start_factor(shift, every_row);
     for (std::size_t k = 0; k < n_; ++k) {
       set_pivot(k, column_pivot(k));
@@ -81,24 +96,29 @@ class DenseSymmetric {
     finish_factor(shift);
   }
 
-  // factor() in steps, for a team that shares the matrix (TeamDenseSymmetric): each step's rows are
-  // independent of one another, and every value is computed as factor() computes it.
+  // factor() and solve() in steps, for a team that shares the matrix (TeamDenseSymmetric): each
+  // step's rows are independent of one another, and every value is computed as a lane computes it.
 
-  /// M's entries into the factor, for the rows where mine(i).
-  template <class Mine>
-  ROTORSWEEP_HD void start_factor(V shift, Mine&& mine) {
+  /// M's lower triangle in place of J's, for the rows of `share`; their row sums first, where a
+  /// strict-FM lane needs them (row 0's always).
+  ROTORSWEEP_HD void start_factor(V shift, RowShare share) {
     const std::size_t n = n_;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!mine(i)) continue;
-      for (std::size_t m = 0; m < n; ++m) factor_[i * n + m] = lane_neg(entries_[i * n + m]);
-      factor_[i * n + i] += shift;
+    const bool sums = lane_any(keep_constant_);
+    for (std::size_t i = share.rank; i < n; i += share.ranks) {
+      if (i == 0 || sums) {
+        V sum(0.0);
+        for (std::size_t k = 0; k < n; ++k) sum += entries_[i * n + k];
+        row_sum_[i] = sum;
+      }
+      for (std::size_t m = first(i); m <= i; ++m) entries_[i * n + m] = lane_neg(entries_[i * n + m]);
+      entries_[i * n + i] += shift;
     }
   }
   /// Column k's pivot, once L's columns before k and their pivots are in place.
   ROTORSWEEP_HD V column_pivot(std::size_t k) const {
     const std::size_t n = n_;
-    V d = factor_[k * n + k];
-    for (std::size_t m = first(k); m < k; ++m) d -= factor_[k * n + m] * factor_[k * n + m] * pivot_[m];
+    V d = entries_[k * n + k];
+    for (std::size_t m = first(k); m < k; ++m) d -= entries_[k * n + m] * entries_[k * n + m] * pivot_[m];
     return d;
   }
   /// Column k's pivot stored (by one rank of a team).
@@ -106,17 +126,15 @@ class DenseSymmetric {
     pivot_[k] = d;
     inv_pivot_[k] = V(1.0) / d;
   }
-  /// L's column k in the rows below k where mine(i), with 1 / column k's pivot.
-  template <class Mine>
-  ROTORSWEEP_HD void eliminate_column(std::size_t k, V inverse_pivot, Mine&& mine) {
+  /// L's column k in the rows of `share` below k, with 1 / column k's pivot.
+  ROTORSWEEP_HD void eliminate_column(std::size_t k, V inverse_pivot, RowShare share) {
     const std::size_t n = n_, fk = first(k);
-    for_rows_below(k, [&](std::size_t i) {
-      if (!mine(i)) return;
+    for_rows_below(k, share, [&](std::size_t i) {
       const std::size_t fi = first(i);
-      V s = factor_[i * n + k];
+      V s = entries_[i * n + k];
       for (std::size_t m = fi > fk ? fi : fk; m < k; ++m)
-        s -= factor_[i * n + m] * factor_[k * n + m] * pivot_[m];
-      factor_[i * n + k] = s * inverse_pivot;
+        s -= entries_[i * n + m] * entries_[k * n + m] * pivot_[m];
+      entries_[i * n + k] = s * inverse_pivot;
     });
   }
   /// The inertia test and the strict-FM closed form from the finished factor.
@@ -124,35 +142,55 @@ class DenseSymmetric {
     const std::size_t n = n_;
     positive_definite_ = inv_pivot_[0] > V(0.0);
     for (std::size_t i = 1; i < n; ++i) positive_definite_ = positive_definite_ & (inv_pivot_[i] > V(0.0));
-
     circulant_ = keep_constant_;
-    V row_sum(0.0);
-    for (std::size_t k = 0; k < n; ++k) row_sum += entry(0, k);
     if (lane_any(circulant_))
-      for (std::size_t j = 1; j < n; ++j) {
-        V sum(0.0);
-        for (std::size_t k = 0; k < n; ++k) sum += entry(j, k);
-        circulant_ = circulant_ & (sum == row_sum);
-      }
-    constant_inverse_ = V(1.0) / (shift - row_sum);
+      for (std::size_t j = 1; j < n; ++j) circulant_ = circulant_ & (row_sum_[j] == row_sum_[0]);
+    constant_inverse_ = V(1.0) / (shift - row_sum_[0]);
   }
 
   /// Solves M x = r in place, with M from the last factor().
   ROTORSWEEP_HD void solve(V* r) const {
-    const std::size_t n = n_;
-    const V r0 = r[0];
+    const RowShare every_row;
+    const ConstantRightSide constant = constant_right_side(r);
+    for (std::size_t m = 0; m + 1 < n_; ++m) forward_column(m, r, every_row);
+    scale(r, every_row);
+    for (std::size_t i = n_; i-- > 1;) backward_column(i, r, every_row);
+    finish_solve(constant, r, every_row);
+  }
+
+  /// The strict-FM lanes whose right-hand side is constant, and its value there.
+  struct ConstantRightSide {
+    lane_mask<V> lanes;
+    V value;
+  };
+  /// Those of right-hand side r (before the solve changes it).
+  ROTORSWEEP_HD ConstantRightSide constant_right_side(const V* r) const {
     lane_mask<V> constant = circulant_;
     if (lane_any(constant))
-      for (std::size_t i = 1; i < n; ++i) constant = constant & (r[i] == r0);
-    for (std::size_t i = 1; i < n; ++i)
-      for (std::size_t m = first(i); m < i; ++m) r[i] -= factor_[i * n + m] * r[m];
-    for (std::size_t i = 0; i < n; ++i) r[i] *= inv_pivot_[i];
-    for (std::size_t i = n; i-- > 0;)
-      for_rows_below(i, [&](std::size_t m) { r[i] -= factor_[m * n + i] * r[m]; });
-    if (lane_any(constant)) {
-      const V x = r0 * constant_inverse_;
-      for (std::size_t i = 0; i < n; ++i) r[i] = lane_select(constant, x, r[i]);
-    }
+      for (std::size_t i = 1; i < n_; ++i) constant = constant & (r[i] == r[0]);
+    return {constant, r[0]};
+  }
+  /// Forward substitution's column m, x_m final: its term in the rows of `share` below m.
+  ROTORSWEEP_HD void forward_column(std::size_t m, V* r, RowShare share) const {
+    const V x = r[m];
+    for_rows_below(m, share, [&](std::size_t i) { r[i] -= entries_[i * n_ + m] * x; });
+  }
+  /// D⁻¹ on the rows of `share`.
+  ROTORSWEEP_HD void scale(V* r, RowShare share) const {
+    for (std::size_t i = share.rank; i < n_; i += share.ranks) r[i] *= inv_pivot_[i];
+  }
+  /// Backward substitution's row i, x_i final: its term in the rows of `share` of its envelope.
+  ROTORSWEEP_HD void backward_column(std::size_t i, V* r, RowShare share) const {
+    const V x = r[i];
+    for (std::size_t m = share.first_from(first(i)); m < i; m += share.ranks)
+      r[m] -= entries_[i * n_ + m] * x;
+  }
+  /// The closed form in the lanes of `constant` (constant_right_side of the right-hand side), rows of
+  /// `share`; `r` is the solution elsewhere.
+  ROTORSWEEP_HD void finish_solve(const ConstantRightSide& constant, V* r, RowShare share) const {
+    if (!lane_any(constant.lanes)) return;
+    const V x = constant.value * constant_inverse_;
+    for (std::size_t i = share.rank; i < n_; i += share.ranks) r[i] = lane_select(constant.lanes, x, r[i]);
   }
 
  private:
@@ -161,20 +199,22 @@ class DenseSymmetric {
     if (wrap_ && i + band_ >= n_) return 0;
     return i > band_ ? i - band_ : 0;
   }
-  /// Calls f(i) for the rows i > k, ascending, whose envelope holds column k.
+  /// Calls f(i) for the rows i > k of `share`, ascending, whose envelope holds column k.
   template <class F>
-  ROTORSWEEP_HD void for_rows_below(std::size_t k, F&& f) const {
+  ROTORSWEEP_HD void for_rows_below(std::size_t k, RowShare share, F&& f) const {
     const std::size_t near_end = k + band_ < n_ - 1 ? k + band_ : n_ - 1;
-    for (std::size_t i = k + 1; i <= near_end; ++i) f(i);
+    for (std::size_t i = share.first_from(k + 1); i <= near_end; i += share.ranks) f(i);
     if (!wrap_) return;
     const std::size_t ring_start = n_ > band_ ? n_ - band_ : 0;
-    for (std::size_t i = (near_end + 1 > ring_start ? near_end + 1 : ring_start); i < n_; ++i) f(i);
+    for (std::size_t i = share.first_from(near_end + 1 > ring_start ? near_end + 1 : ring_start); i < n_;
+         i += share.ranks)
+      f(i);
   }
 
   std::size_t n_;
   std::size_t band_ = ~std::size_t(0) >> 1;
   bool wrap_ = false;
-  V *entries_, *factor_, *pivot_, *inv_pivot_;
+  V *entries_, *pivot_, *inv_pivot_, *row_sum_;
   lane_mask<V> positive_definite_{};
   lane_mask<V> keep_constant_{};
   lane_mask<V> circulant_{};

@@ -35,7 +35,7 @@ class SecondOrderJacobian {
     damping_ = damping;
   }
 
-  /// y += J x
+  /// y += J x (until the next factor(), which takes K's place)
   ROTORSWEEP_HD void multiply_add(const V* x, V* y) const {
     if constexpr (Inertial) {
       const V inv_inertia = V(1.0) / inertia_;

@@ -1,5 +1,6 @@
 // The dense stage solve of coupled rows (docs/model.md §1 "Extended couplings") on a team of threads
-// (docs/architecture.md "Teams"): DenseSymmetric's LDLᵀ with each column's rows spread over the ranks.
+// (docs/architecture.md "Teams"): DenseSymmetric's LDLᵀ and its substitutions with each column's rows spread
+// over the ranks.
 #pragma once
 
 #include <cstddef>
@@ -13,9 +14,9 @@ namespace rotorsweep::kernels {
 
 /// DenseSymmetric<double> of one member, shared by a team: the factor goes column by column, every
 /// rank computing the column's pivot alike and L's entries in its rows (row i on rank i mod R), one
-/// barrier per column; the solve's two substitutions, a chain of dependencies, run on rank 0; J x
-/// goes row by row over the ranks. Every value is computed as DenseSymmetric computes it, so the
-/// factor, the solution and the inertia test have its bits.
+/// barrier per column; the solve's two substitutions go column by column too, each rank updating its
+/// rows, one barrier per column; J x goes row by row over the ranks. Every value is computed as
+/// DenseSymmetric computes it, so the factor, the solution and the inertia test have its bits.
 template <class Team>
 class TeamDenseSymmetric {
  public:
@@ -31,22 +32,30 @@ class TeamDenseSymmetric {
   ROTORSWEEP_HD bool positive_definite() const { return dense_.positive_definite(); }
   ROTORSWEEP_HD void keep_constant_solutions(bool keep) { dense_.keep_constant_solutions(keep); }
 
-  /// Factorises M = shift·I − J (every rank, together).
+  /// Factorises M = shift·I − J in place (every rank, together): J holds until then.
   ROTORSWEEP_HD void factor(Team& team, double shift) {
     const std::size_t n = dense_.size();
-    team.each([&](std::size_t r) { dense_.start_factor(shift, [&](std::size_t i) { return mine(i, r); }); });
+    team.each([&](std::size_t r) { dense_.start_factor(shift, share(r)); });
     for (std::size_t k = 0; k < n; ++k)
       team.each([&](std::size_t r) {
         const double d = dense_.column_pivot(k);  // alike on every rank: row k is complete
-        if (mine(k, r)) dense_.set_pivot(k, d);
-        dense_.eliminate_column(k, 1.0 / d, [&](std::size_t i) { return mine(i, r); });
+        if (k % ranks_ == r) dense_.set_pivot(k, d);
+        dense_.eliminate_column(k, 1.0 / d, share(r));
       });
     dense_.finish_factor(shift);
   }
 
   /// Solves M x = r in place, with M from the last factor(); r is the team's.
   ROTORSWEEP_HD void solve(Team& team, double* r) const {
-    team.one([&] { dense_.solve(r); });
+    const std::size_t n = dense_.size();
+    typename DenseSymmetric<double>::ConstantRightSide constant{};
+    team.each([&](std::size_t) { constant = dense_.constant_right_side(r); });  // alike on every rank
+    for (std::size_t m = 0; m + 1 < n; ++m)
+      team.each([&](std::size_t rank) { dense_.forward_column(m, r, share(rank)); });
+    team.each([&](std::size_t rank) { dense_.scale(r, share(rank)); });
+    for (std::size_t i = n; i-- > 1;)
+      team.each([&](std::size_t rank) { dense_.backward_column(i, r, share(rank)); });
+    team.each([&](std::size_t rank) { dense_.finish_solve(constant, r, share(rank)); });
   }
 
   /// (J x)_j, as DenseSymmetric's.
@@ -60,7 +69,7 @@ class TeamDenseSymmetric {
   }
 
  private:
-  ROTORSWEEP_HD bool mine(std::size_t row, std::size_t rank) const { return row % ranks_ == rank; }
+  ROTORSWEEP_HD RowShare share(std::size_t rank) const { return {rank, ranks_}; }
 
   std::size_t ranks_;
   DenseSymmetric<double> dense_;

@@ -36,7 +36,7 @@ class TeamSecondOrderJacobian {
     damping_ = damping;
   }
 
-  /// y += J x, each rank its rotors' rows (θ and ω).
+  /// y += J x, each rank its rotors' rows (θ and ω); until the next factor(), which takes K's place.
   ROTORSWEEP_HD void multiply_add(Team& team, const double* x, double* y) const {
     each_rotor(team, [&](std::size_t j) {
       const double sum = stiffness_.row_product(j, x);

@@ -24,23 +24,24 @@ struct BuiltMatrix {
         matrix(size, ranks..., arena) {}
 };
 
-/// Factors `one` and `team` (the same matrix) at `shift`, solves a right-hand side of `size` values
-/// U(−1, 1) and forms y + J x with each (on a host team of `ranks`), and checks that the team's
-/// solution, J x and inertia test are `one`'s bit for bit; returns whether `one` was definite.
+/// Forms y + J x with `one` and `team` (the same matrix) for x of `size` values U(−1, 1), factors
+/// both at `shift` and solves with x as the right-hand side (the team on a host team of `ranks`), and
+/// checks that the team's J x, solution and inertia test are `one`'s bit for bit; returns whether `one`
+/// was definite.
 template <class One, class Team>
 bool check_same_solve(One& one, Team& team, std::size_t ranks, double shift, std::size_t size,
                       std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   kernels::HostTeam crew(ranks);
-  one.factor(shift);
-  team.factor(crew, shift);
   std::vector<double> r(size), x(size), y(size, 0.25), y_team(size, 0.25);
   for (double& v : r) v = u(rng);
+  one.multiply_add(r.data(), y.data());  // J x before the factor takes J's place
+  team.multiply_add(crew, r.data(), y_team.data());
+  one.factor(shift);
+  team.factor(crew, shift);
   x = r;
   one.solve(x.data());
   team.solve(crew, r.data());
-  one.multiply_add(x.data(), y.data());
-  team.multiply_add(crew, x.data(), y_team.data());
   CHECK(r == x);
   CHECK(y_team == y);
   CHECK(team.positive_definite() == bool(one.positive_definite()));

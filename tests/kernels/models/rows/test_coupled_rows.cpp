@@ -13,9 +13,9 @@
 #include "kernels/lanes/team.hpp"
 #include "kernels/models/rows/coupled_rows.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "support/dense_reference.hpp"
 #include "support/kernel_scratch.hpp"
 #include "support/linearization_check.hpp"
-#include "support/dense_reference.hpp"
 
 using namespace rotorsweep::kernels;
 using Catch::Detail::Approx;
@@ -131,12 +131,12 @@ TEST_CASE("dense LDLT solve and inertia agree with Eigen", "[kernels][couplings]
   Eigen::MatrixXd dense(n, n);
   const auto values = random_values(n * n, 23, -1.0, 1.0);
   for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t k = 0; k <= j; ++k) {
-      J.entry(j, k) = J.entry(k, j) = values[j * n + k];
+    for (std::size_t k = 0; k <= j; ++k)
       dense(Eigen::Index(j), Eigen::Index(k)) = dense(Eigen::Index(k), Eigen::Index(j)) = values[j * n + k];
-    }
   const Eigen::VectorXd eigenvalues = rotorsweep::testing::symmetric_eigenvalues(dense);
   for (double shift : {-3.0, 0.1, 0.7, 5.0}) {
+    for (std::size_t j = 0; j < n; ++j)  // anew for each factor, which takes J's place
+      for (std::size_t k = 0; k <= j; ++k) J.entry(j, k) = J.entry(k, j) = values[j * n + k];
     J.factor(shift);
     const bool stable = (eigenvalues.array() < shift).all();
     CHECK(bool(J.positive_definite()) == stable);
@@ -160,13 +160,13 @@ TEST_CASE("the envelope LDLT of banded and ring matrices gives the dense one's b
       auto banded = rotorsweep::testing::jacobian<DenseSymmetric<double>>(n);
       banded.set_band(band, wrap);
       const auto values = random_values(n * n, 31 + band, -1.0, 1.0);
-      for (std::size_t j = 0; j < n; ++j)
-        for (std::size_t k = 0; k <= j; ++k) {
-          const bool coupled = j - k <= band || (wrap && j - k >= n - band);
-          const double x = coupled ? values[j * n + k] : 0.0;
-          dense.entry(j, k) = dense.entry(k, j) = banded.entry(j, k) = banded.entry(k, j) = x;
-        }
       for (double shift : {-3.0, 0.4, 1.5, 6.0}) {
+        for (std::size_t j = 0; j < n; ++j)  // anew for each factor, which takes J's place
+          for (std::size_t k = 0; k <= j; ++k) {
+            const bool coupled = j - k <= band || (wrap && j - k >= n - band);
+            const double x = coupled ? values[j * n + k] : 0.0;
+            dense.entry(j, k) = dense.entry(k, j) = banded.entry(j, k) = banded.entry(k, j) = x;
+          }
         dense.factor(shift);
         banded.factor(shift);
         CHECK(bool(dense.positive_definite()) == bool(banded.positive_definite()));
