@@ -98,6 +98,9 @@ class DenseSymmetric {
 
   // factor() and solve() in steps, for a team that shares the matrix (TeamDenseSymmetric): each
   // step's rows are independent of one another, and every value is computed as a lane computes it.
+  // factor() forms each entry of L in one pass (left-looking: its running value stays in a register);
+  // a team takes the same sums in the same order by right-looking steps (column_from_updates, then
+  // update_below), which spread each column's trailing updates over its ranks.
 
   /// M's lower triangle in place of J's, for the rows of `share`; their row sums first, where a
   /// strict-FM lane needs them (row 0's always).
@@ -135,6 +138,24 @@ class DenseSymmetric {
       for (std::size_t m = fi > fk ? fi : fk; m < k; ++m)
         s -= entries_[i * n + m] * entries_[k * n + m] * pivot_[m];
       entries_[i * n + k] = s * inverse_pivot;
+    });
+  }
+  /// Right-looking step 1: column k's pivot, the updated diagonal entry (every update before k in
+  /// place), stored by one rank of a team; L's column k in the rows of `share` below k.
+  ROTORSWEEP_HD V updated_pivot(std::size_t k) const { return entries_[k * n_ + k]; }
+  ROTORSWEEP_HD void column_from_updates(std::size_t k, V inverse_pivot, RowShare share) {
+    for_rows_below(k, share,
+                   [&](std::size_t i) { entries_[i * n_ + k] = entries_[i * n_ + k] * inverse_pivot; });
+  }
+  /// Right-looking step 2: column k's terms L_ik L_jk d_k taken from the entries (i, j), k < j ≤ i, of
+  /// the rows i of `share`, once L's column k and its pivot are in place.
+  ROTORSWEEP_HD void update_below(std::size_t k, RowShare share) {
+    const std::size_t n = n_;
+    const RowShare every_row;
+    for_rows_below(k, share, [&](std::size_t i) {
+      for_rows_below(k, every_row, [&](std::size_t j) {
+        if (j <= i) entries_[i * n + j] -= entries_[i * n + k] * entries_[j * n + k] * pivot_[k];
+      });
     });
   }
   /// The inertia test and the strict-FM closed form from the finished factor.

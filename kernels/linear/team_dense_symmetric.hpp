@@ -12,10 +12,11 @@
 
 namespace rotorsweep::kernels {
 
-/// DenseSymmetric<double> of one member, shared by a team: the factor goes column by column, every
-/// rank computing the column's pivot alike and L's entries in its rows (row i on rank i mod R), one
-/// barrier per column; the solve's two substitutions go column by column too, each rank updating its
-/// rows, one barrier per column; J x goes row by row over the ranks. Every value is computed as
+/// DenseSymmetric<double> of one member, shared by a team: the factor goes column by column,
+/// right-looking, every rank taking the column's pivot from the updated diagonal, forming L's entries
+/// in its rows (row i on rank i mod R) and then taking the column's terms from its rows' trailing
+/// entries, two barriers per column; the solve's two substitutions go column by column too, each rank
+/// updating its rows, one barrier per column; J x goes row by row over the ranks. Every value is computed as
 /// DenseSymmetric computes it, so the factor, the solution and the inertia test have its bits.
 template <class Team>
 class TeamDenseSymmetric {
@@ -36,12 +37,14 @@ class TeamDenseSymmetric {
   ROTORSWEEP_HD void factor(Team& team, double shift) {
     const std::size_t n = dense_.size();
     team.each([&](std::size_t r) { dense_.start_factor(shift, share(r)); });
-    for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t k = 0; k < n; ++k) {
       team.each([&](std::size_t r) {
-        const double d = dense_.column_pivot(k);  // alike on every rank: row k is complete
+        const double d = dense_.updated_pivot(k);  // alike on every rank
         if (k % ranks_ == r) dense_.set_pivot(k, d);
-        dense_.eliminate_column(k, 1.0 / d, share(r));
+        dense_.column_from_updates(k, 1.0 / d, share(r));
       });
+      team.each([&](std::size_t r) { dense_.update_below(k, share(r)); });
+    }
     dense_.finish_factor(shift);
   }
 
