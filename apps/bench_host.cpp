@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "ensemble/engine/member_slots.hpp"
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_slots.hpp"
 #include "io/member_stream.hpp"
 #include "io/result_file.hpp"
 #include "io/scene_parser.hpp"

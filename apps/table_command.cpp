@@ -57,7 +57,7 @@ ensemble::Scene paper_scene(kernels::StepperId stepper, double rtol, const ensem
 }
 
 /// The paper's scene with slips counted, so that members whose averaged periods slip get their shadow
-/// runs: R's global error and its flags (ensemble/engine/shadow_run.hpp). Counting slips changes no bit.
+/// runs: R's global error and its flags (ensemble/rows/shadow_run.hpp). Counting slips changes no bit.
 ensemble::Scene paper_scene_with_errors(kernels::StepperId stepper, double rtol,
                                         const ensemble::Disorder& disorder) {
   auto scene = paper_scene(stepper, rtol, disorder);
@@ -121,7 +121,7 @@ ensemble::SweepOutcome integrate(const ensemble::Scene& scene) {
 }
 
 /// The CP entries over `replicas` noise draws of `seed` (draw r with the disorder's realization r), with
-/// slips counted, so that each gets its global error and its flags (ensemble/engine/shadow_run.hpp);
+/// slips counted, so that each gets its global error and its flags (ensemble/rows/shadow_run.hpp);
 /// then a line per entry.
 void print_cp_draws(kernels::StepperId stepper, double rtol, const ensemble::Disorder& disorder, int replicas,
                     std::uint64_t seed, bool triangular) {

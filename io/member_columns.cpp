@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <limits>
 
-#include "ensemble/engine/shadow_run.hpp"
 #include "ensemble/rows/disorder.hpp"
 #include "ensemble/rows/initial_conditions.hpp"
+#include "ensemble/rows/shadow_run.hpp"
 
 namespace rotorsweep::io {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/engine/member_result.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_result.hpp"
 #include "ensemble/rows/scene.hpp"
 #include "io/hdf5_file.hpp"
 #include "io/table_columns.hpp"

@@ -9,8 +9,8 @@
 #include <mutex>
 #include <vector>
 
-#include "ensemble/engine/member_result.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_result.hpp"
 #include "io/result_file.hpp"
 
 namespace rotorsweep::io {

@@ -5,7 +5,7 @@
 
 #include <type_traits>
 
-#include "ensemble/engine/device_member.hpp"
+#include "ensemble/rows/device_member.hpp"
 #include "ensemble/rows/scene.hpp"
 #include "kernels/models/rows/coupled_rows.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
@@ -23,8 +23,8 @@ using DeviceAdaptiveIntegrator = kernels::AdaptiveIntegrator<Model, kernels::fam
 /// The steppers of `family` on a team of Model (TeamRosenbrock), or void for the explicit family, which
 /// has no team form.
 template <kernels::StepperFamily family, class Team, class Model>
-using DeviceTeamStepper =
-    std::conditional_t<family == kernels::StepperFamily::rosenbrock, kernels::TeamRosenbrock<Team, Model>, void>;
+using DeviceTeamStepper = std::conditional_t<family == kernels::StepperFamily::rosenbrock,
+                                             kernels::TeamRosenbrock<Team, Model>, void>;
 
 /// Calls f.template operator()<Model>() with the scene's row model on the double lane, as
 /// with_row_model picks it for the CPU: NearestNeighbourRows, or CoupledRows for a coupling table
@@ -55,8 +55,8 @@ double device_first_step_scale(const Scene& scene, const Member& variant) {
   if constexpr (Integrator::stochastic)
     return 0.0;
   else
-    return Integrator::first_step_scale(
-        {variant.rtol, variant.atol}, kernels::stepper_method<typename Integrator::Method>(scene.stepper));
+    return Integrator::first_step_scale({variant.rtol, variant.atol},
+                                        kernels::stepper_method<typename Integrator::Method>(scene.stepper));
 }
 
 }  // namespace rotorsweep::ensemble

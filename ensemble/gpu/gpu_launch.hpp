@@ -42,7 +42,7 @@ GpuLaunch gpu_launch();
 /// that is not a non-negative integer throws GpuLaunchError naming the variable.
 int gpu_device_index(int devices);
 
-/// Whether the scene's members can run on a team (ensemble/engine/team_member.hpp): rows (nearest
+/// Whether the scene's members can run on a team (ensemble/rows/team_member.hpp): rows (nearest
 /// neighbours or a coupling table) at T > 0 or with a linearly implicit stepper.
 bool gpu_teams_fit(const Scene& scene);
 

@@ -17,10 +17,10 @@
 #include <type_traits>
 #include <vector>
 
-#include "ensemble/engine/member_slots.hpp"
-#include "ensemble/engine/team_member.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/rows/member_slots.hpp"
+#include "ensemble/rows/team_member.hpp"
 #include "kernels/lanes/team.hpp"
 
 namespace rotorsweep::ensemble::gpu {
@@ -255,7 +255,8 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
   using Driver = DeviceMember<Model, Integrator>;
   available_gpu();
   const Member variant = range.source->at(range.begin);
-  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
+  const SlotSchedule schedule =
+      slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
   if (Driver::storage_size(schedule) > gpu_thread_scratch)
     throw std::runtime_error("model.rows = " + std::to_string(variant.rows) +
                              " is more than the GPU backend holds (" + std::to_string(gpu_max_rows(scene)) +
@@ -328,7 +329,8 @@ SweepOutcome run_teams(const Scene& scene, const VariantRange& range, unsigned t
   constexpr bool block_team = std::is_same_v<std::remove_const_t<Team>, kernels::BlockTeam>;
   using Driver = TeamMember<Team, TeamIntegrator>;
   const Member variant = range.source->at(range.begin);
-  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
+  const SlotSchedule schedule =
+      slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
   if (!Driver::team_schedule_fits(schedule)) throw std::logic_error("a team cannot run this schedule");
 
   const auto kernel = sweep_slots_on_teams<TeamMember, TeamIntegrator, SlotSchedule, SlotViews>;

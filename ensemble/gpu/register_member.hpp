@@ -5,8 +5,8 @@
 
 #include <cstddef>
 
-#include "ensemble/engine/warp_member.hpp"
 #include "ensemble/gpu/gpu_registers.hpp"
+#include "ensemble/rows/warp_member.hpp"
 #include "kernels/models/rows/warp_rows.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
 #include "kernels/steppers/warp_integrator.hpp"

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/engine/member_result.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_result.hpp"
 
 namespace rotorsweep::ensemble {
 

@@ -12,7 +12,7 @@
 namespace rotorsweep::ensemble {
 
 /// A rerun completes its primary member's result: a shadow run at tighter tolerances
-/// (ensemble/engine/shadow_run.hpp) or the slower rerun at g/10 (ensemble/engine/slip_kinds.hpp).
+/// (ensemble/rows/shadow_run.hpp) or the slower rerun at g/10 (ensemble/rows/slip_kinds.hpp).
 enum class Rerun { none, shadow, slower };
 
 struct Member {
@@ -30,7 +30,7 @@ struct Member {
   double noise = 0.01;  ///< η of its FM/AFM start (the first initial.noise for other kinds)
   double offset = 0.0;  ///< θ0 of its FM/AFM start (the first initial.offset for other kinds)
   /// 1; below 1 for the member's shadow run at tolerances rtol·scale, atol·scale
-  /// (ensemble/engine/shadow_run.hpp)
+  /// (ensemble/rows/shadow_run.hpp)
   double tolerance_scale = 1.0;
   /// θ(0) given rather than drawn: a shadow run starts where its primary's averaged periods began
   std::shared_ptr<const std::vector<double>> start;

@@ -105,7 +105,7 @@ void label_wall_slipping(MemberResult& result) {
   rename_attractor_regime(result.final_state, std::string(regime_name(Regime::dw)));
 }
 
-/// Each averaged period's slip energies, in order (ensemble/engine/slip_kinds.hpp).
+/// Each averaged period's slip energies, in order (ensemble/rows/slip_kinds.hpp).
 void keep_slip_energies(const std::vector<PeriodRecord>& history, int average_periods, MemberResult& result) {
   const std::size_t count = std::min(history.size(), std::size_t(average_periods));
   for (auto p = history.end() - std::ptrdiff_t(count); p != history.end(); ++p) {

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/member_result.hpp"
 #include "ensemble/rows/scene.hpp"
 
 namespace rotorsweep::ensemble {

@@ -43,7 +43,7 @@ enum class Source {
   /// a moment quadrature ∫ t q̇ dt less t_k times its base's integral: ∫ (t − t_k) q̇ dt over the
   /// period [t_k, t_k + 2π]
   quadrature_moment,
-  step_reducer,  ///< a reducer watching every accepted step (ensemble/engine/step_reducers.hpp)
+  step_reducer,  ///< a reducer watching every accepted step (ensemble/rows/step_reducers.hpp)
 };
 
 /// How a member's averaged periods reduce to one number of /members.

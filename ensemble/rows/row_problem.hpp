@@ -14,17 +14,17 @@
 #include <vector>
 
 #include "ensemble/engine/integration_loop.hpp"
-#include "ensemble/engine/lane_observers.hpp"
 #include "ensemble/engine/member_progress.hpp"
-#include "ensemble/engine/member_result.hpp"
-#include "ensemble/engine/shadow_run.hpp"
-#include "ensemble/engine/slip_kinds.hpp"
+#include "ensemble/rows/lane_observers.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_result.hpp"
 #include "ensemble/rows/member_summary.hpp"
 #include "ensemble/rows/observables.hpp"
 #include "ensemble/rows/row_profile_observer.hpp"
 #include "ensemble/rows/scene.hpp"
 #include "ensemble/rows/shadow_attractor.hpp"
+#include "ensemble/rows/shadow_run.hpp"
+#include "ensemble/rows/slip_kinds.hpp"
 #include "ensemble/rows/smooth_alternation_window.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
@@ -42,8 +42,8 @@ auto quadrature_observers(const Scene& scene, const Member& variant, kernels::In
                         kernels::stepper_swing_error_factors[scene.stepper] * variant.rtol, variant.atol));
 }
 
-/// The integrator settings of a variant: the stepper's tableau, tolerances and step limits for the adaptive integrators,
-/// temperature and steps per period for the Langevin stepper.
+/// The integrator settings of a variant: the stepper's tableau, tolerances and step limits for the adaptive
+/// integrators, temperature and steps per period for the Langevin stepper.
 template <class Integrator>
 typename Integrator::Settings integrator_settings(const Scene& scene, const Member& variant) {
   if constexpr (Integrator::stochastic)
@@ -62,7 +62,7 @@ typename Integrator::Settings integrator_settings(const Scene& scene, const Memb
 /// stream: noise_key(member). The model reports the quadratures it carries (integrals()). A member
 /// whose averaged periods slip (with shadow runs on) is held and its shadow run queued, and one that
 /// slips in every averaged period (with observables.slip_kinds) its slower rerun: the reruns' results
-/// complete it (ensemble/engine/shadow_run.hpp, slip_kinds.hpp).
+/// complete it (ensemble/rows/shadow_run.hpp, slip_kinds.hpp).
 template <kernels::LaneModel Model, class Integrator, class Setup>
 class RowProblem {
  public:

@@ -70,7 +70,7 @@ struct Scene {
   bool row_profiles = false;  ///< R_j per row and the alignment per link (default: on for open rows)
   double slip_rate = 10.0;    ///< a step with max_j |Δθ_j|/Δt above this is part of a slip
   /// observables.slip_kinds: a member that slips in every averaged period runs again at g/10, and each
-  /// slip is a jump or a smooth slip by how its energy scales (ensemble/engine/slip_kinds.hpp)
+  /// slip is a jump or a smooth slip by how its energy scales (ensemble/rows/slip_kinds.hpp)
   bool slip_kinds = false;
 
   std::size_t stepper = kernels::default_stepper();  ///< position in kernels::steppers
@@ -81,7 +81,7 @@ struct Scene {
   Device device = Device::cpu;
   bool wrap_angles = false;  ///< restart every period at t = 0 with θ_j in [0, 2π)
   /// numerics.global_error = "shadow": a member whose averaged periods slip runs again at tolerances
-  /// × shadow_tolerance_scale, and D's error covers the difference (ensemble/engine/shadow_run.hpp);
+  /// × shadow_tolerance_scale, and D's error covers the difference (ensemble/rows/shadow_run.hpp);
   /// "local": D's error is the local estimate alone
   bool shadow_runs = true;
 

@@ -2,8 +2,8 @@
 // measures D's integration error (docs/numerics.md "The global error of D").
 #pragma once
 
-#include "ensemble/engine/member_result.hpp"
-#include "ensemble/engine/shadow_run.hpp"
+#include "ensemble/rows/member_result.hpp"
+#include "ensemble/rows/shadow_run.hpp"
 
 namespace rotorsweep::ensemble {
 

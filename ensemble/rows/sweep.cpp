@@ -9,9 +9,9 @@
 #include <memory>
 #include <mutex>
 
-#include "ensemble/engine/shadow_run.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/shadow_attractor.hpp"
+#include "ensemble/rows/shadow_run.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {

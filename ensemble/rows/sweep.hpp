@@ -7,8 +7,8 @@
 #include <functional>
 #include <vector>
 
-#include "ensemble/engine/member_result.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_result.hpp"
 #include "ensemble/rows/scene.hpp"
 
 namespace rotorsweep::ensemble {

@@ -2,8 +2,8 @@
 // double lane, and on warp and block teams the stage solves (ring, dense, slider) and whole members
 // (nearest neighbours at T = 0 and T > 0, a coupling table at T = 0, the slider's), and members in a
 // warp's registers.
-#include "ensemble/engine/team_member.hpp"
-#include "ensemble/engine/warp_member.hpp"
+#include "ensemble/rows/team_member.hpp"
+#include "ensemble/rows/warp_member.hpp"
 #include "ensemble/slider/slider_team_member.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
@@ -29,8 +29,8 @@ using namespace rotorsweep::kernels;
 using Model = NearestNeighbourRows<double>;
 
 template <class Stepper>
-__global__ void advance_members(StepperMethods methods, double* storage, std::size_t per_thread, std::size_t rows,
-                                const double* A, const double* g, double* dissipation) {
+__global__ void advance_members(StepperMethods methods, double* storage, std::size_t per_thread,
+                                std::size_t rows, const double* A, const double* g, double* dissipation) {
   const std::size_t member = blockIdx.x * blockDim.x + threadIdx.x;
   LaneArena<double> arena(storage + member * per_thread, per_thread);
   const Model model(rows, arena, all_integrals, {A[member], g[member], false});
@@ -45,10 +45,12 @@ __global__ void advance_members(StepperMethods methods, double* storage, std::si
   dissipation[member] = state.quad[0] + 0.0 * s * c;
 }
 
-template __global__ void advance_members<RosenbrockStepper<Model>>(StepperMethods, double*, std::size_t, std::size_t,
-                                                                   const double*, const double*, double*);
-template __global__ void advance_members<DormandPrince5<Model>>(StepperMethods, double*, std::size_t, std::size_t,
-                                                                const double*, const double*, double*);
+template __global__ void advance_members<RosenbrockStepper<Model>>(StepperMethods, double*, std::size_t,
+                                                                   std::size_t, const double*, const double*,
+                                                                   double*);
+template __global__ void advance_members<DormandPrince5<Model>>(StepperMethods, double*, std::size_t,
+                                                                std::size_t, const double*, const double*,
+                                                                double*);
 
 /// The stage solves on a warp team: each team of `team_size` threads factors and solves one member's
 /// ring (kernels/linear/team_cyclic_tridiagonal.hpp), its dense coupled rows (team_dense_symmetric.hpp)
@@ -85,15 +87,15 @@ __global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_
 }
 
 /// A member of the nearest-neighbour rows integrated by a warp team over one period (team_integrator.hpp).
-__global__ void advance_on_teams(RosenbrockTableau method, double* storage, std::size_t per_team, std::size_t rows, unsigned team_size,
-                                 const double* A, double* theta, double* drive) {
+__global__ void advance_on_teams(RosenbrockTableau method, double* storage, std::size_t per_team,
+                                 std::size_t rows, unsigned team_size, const double* A, double* theta,
+                                 double* drive) {
   using Stepper = TeamRosenbrock<const WarpTeam>;
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
   LaneArena<double> arena(storage + team * per_team, per_team);
   const Model model(rows, arena, Integrals{true, false, false, true, false, false}, {A[team], 0.0011, false});
-  TeamIntegrator<const WarpTeam, Stepper> integrator(model, team_size, method,
-                                                     {1e-6, 1e-9}, {}, 1e-3, arena);
+  TeamIntegrator<const WarpTeam, Stepper> integrator(model, team_size, method, {1e-6, 1e-9}, {}, 1e-3, arena);
   crew.sync();
   TeamMemberState state;
   state.y = theta + team * rows;
@@ -116,7 +118,7 @@ __global__ void run_slider_members_on_teams(rotorsweep::ensemble::SliderSlotSche
 }
 
 /// Members of a chunk of slots of the row model Rows, one per warp team, from start to retirement
-/// (ensemble/engine/team_member.hpp; for a coupling table CoupledRows' range forms and TeamDenseSymmetric).
+/// (ensemble/rows/team_member.hpp; for a coupling table CoupledRows' range forms and TeamDenseSymmetric).
 template <class Rows>
 __global__ void run_members_on_teams(rotorsweep::ensemble::SlotSchedule schedule,
                                      rotorsweep::ensemble::SlotViews slots, double* storage,
@@ -157,7 +159,7 @@ __global__ void run_members_on_blocks(rotorsweep::ensemble::SlotSchedule schedul
 }
 
 /// Members of disordered nearest-neighbour rows in registers, each on L threads of a warp with R rows
-/// apiece and every quadrature (ensemble/engine/warp_member.hpp): 8 × 3 (N ≤ 24); the GPU backend's
+/// apiece and every quadrature (ensemble/rows/warp_member.hpp): 8 × 3 (N ≤ 24); the GPU backend's
 /// own register kernels carry R and ρ̄ (docs/performance.md "Rows in registers: what ptxas says").
 template <std::size_t L, std::size_t R>
 __global__ void run_members_in_registers(const __grid_constant__ rotorsweep::ensemble::SlotSchedule schedule,
@@ -167,5 +169,5 @@ __global__ void run_members_in_registers(const __grid_constant__ rotorsweep::ens
   Driver::run(schedule, slots, (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / L);
 }
 
-template __global__ void run_members_in_registers<8, 3>(const __grid_constant__ rotorsweep::ensemble::SlotSchedule,
-                                                        rotorsweep::ensemble::SlotViews);
+template __global__ void run_members_in_registers<8, 3>(
+    const __grid_constant__ rotorsweep::ensemble::SlotSchedule, rotorsweep::ensemble::SlotViews);

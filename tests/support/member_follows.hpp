@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 
-#include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/member_result.hpp"
 
 namespace rotorsweep::testing {
 
@@ -24,8 +24,9 @@ inline void check_member_follows(const ensemble::MemberResult& a, const ensemble
   if (a.regime != ensemble::Regime::cp)
     CHECK(b.dissipation() == Approx(a.dissipation()).epsilon(outside_cp).margin(1e-14));
   CHECK(b.alignment_mean() == Approx(a.alignment_mean()).epsilon(1e-9));
-  for (const auto channel : {ensemble::Channel::work, ensemble::Channel::stokes, ensemble::Channel::energy_mean,
-                             ensemble::Channel::dissipation_moment, ensemble::Channel::stokes_moment}) {
+  for (const auto channel :
+       {ensemble::Channel::work, ensemble::Channel::stokes, ensemble::Channel::energy_mean,
+        ensemble::Channel::dissipation_moment, ensemble::Channel::stokes_moment}) {
     INFO("channel " << std::size_t(channel));
     CHECK(b.mean(channel) == Approx(a.mean(channel)).epsilon(1e-8).margin(1e-12));
   }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/member_result.hpp"
 
 namespace rotorsweep::testing {
 

@@ -6,11 +6,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include "ensemble/engine/device_member.hpp"
-#include "ensemble/engine/member_slots.hpp"
-#include "ensemble/engine/team_member.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
+#include "ensemble/rows/device_member.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_slots.hpp"
+#include "ensemble/rows/team_member.hpp"
 #include "kernels/lanes/team.hpp"
 
 namespace rotorsweep::testing {

@@ -1,4 +1,4 @@
-// The global error of D in the CP regime (ensemble/engine/shadow_run.hpp): with disorder above the
+// The global error of D in the CP regime (ensemble/rows/shadow_run.hpp): with disorder above the
 // tolerance the reported errors cover the deviation from a much tighter run at several tolerances (the
 // local estimate alone does not); without it the members are flagged symmetry-limited, never resolved;
 // outside CP nothing changes; an offset of 1e4 rad and the same start reduced modulo 2π agree within the

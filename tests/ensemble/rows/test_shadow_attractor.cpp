@@ -1,4 +1,4 @@
-// A shadow run as an error estimate (ensemble/rows/shadow_attractor.hpp, engine/shadow_run.hpp) on
+// A shadow run as an error estimate (ensemble/rows/shadow_attractor.hpp, rows/shadow_run.hpp) on
 // hand-made results: one that reaches its primary's attractor gives the Richardson bound, at least the
 // local estimate times shadow_local_floor; one that does not (another regime, slip count or domain
 // walls) is flagged and gives no estimate; symmetry-limited members and departed shadows are never

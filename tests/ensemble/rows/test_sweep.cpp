@@ -264,7 +264,7 @@ TEST_CASE("progress moves within members: every closed period is counted and rep
                              },
                              nullptr, &periods};
   std::size_t shadows =
-      0;  // a member whose averaged periods slip runs them again (ensemble/engine/shadow_run.hpp)
+      0;  // a member whose averaged periods slip runs them again (ensemble/rows/shadow_run.hpp)
   run_members(scene, source, 1, control,
               [&](MemberResult&& r) { shadows += std::isfinite(r.dissipation_shadow) ? 1 : 0; });
   CHECK(periods.load() == 12 + 3 * shadows);  // 2 members × (3 + 3) periods, and 3 per shadow run

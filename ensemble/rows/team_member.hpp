@@ -5,10 +5,10 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "ensemble/engine/member_loop.hpp"
-#include "ensemble/engine/member_slots.hpp"
-#include "ensemble/engine/step_reducers.hpp"
-#include "ensemble/engine/team_row_profile.hpp"
+#include "ensemble/rows/member_loop.hpp"
+#include "ensemble/rows/member_slots.hpp"
+#include "ensemble/rows/step_reducers.hpp"
+#include "ensemble/rows/team_row_profile.hpp"
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
@@ -65,7 +65,7 @@ struct TeamMember {
           profile(s.row_profiles ? s.rows : 0, arena) {}
   };
 
-  /// The member on the team, as run_member asks (ensemble/engine/member_loop.hpp): each rank its rows,
+  /// The member on the team, as run_member asks (ensemble/rows/member_loop.hpp): each rank its rows,
   /// the team's sums and maxima where one thread's run sums over rows.
   struct Body {
     static constexpr bool stochastic = TeamMember::stochastic;
@@ -81,7 +81,8 @@ struct TeamMember {
       each_row([&](std::size_t j) { state.y[j] = slots.y0[k * s.rows + j]; });
       state.t_stop = Model::period;
       state.tolerance_scale = slots.tolerance_scale[k];
-      if constexpr (stochastic) parts.integrator.start(slots.noise_key[k], slots.g[k], parts.model.curvature_bound(0));
+      if constexpr (stochastic)
+        parts.integrator.start(slots.noise_key[k], slots.g[k], parts.model.curvature_bound(0));
     }
     ROTORSWEEP_HD bool attempt() { return parts.integrator.attempt(team, parts.model, state); }
     ROTORSWEEP_HD double t() const { return state.t; }
@@ -141,7 +142,9 @@ struct TeamMember {
     ROTORSWEEP_HD double steps_rejected() const { return state.steps_rejected; }
     ROTORSWEEP_HD void profile_start() { parts.profile.start(team, parts.model, state); }
     ROTORSWEEP_HD void profile_before() { parts.profile.before_step(team, parts.model, state); }
-    ROTORSWEEP_HD void profile_after(bool accepted) { parts.profile.after_step(team, parts.model, state, accepted); }
+    ROTORSWEEP_HD void profile_after(bool accepted) {
+      parts.profile.after_step(team, parts.model, state, accepted);
+    }
     ROTORSWEEP_HD void profile_take(double* out) { parts.profile.take_period(team, out); }
 
     /// row(j) for every row, each rank its own.
@@ -159,8 +162,8 @@ struct TeamMember {
     if constexpr (stochastic)
       return Integrator(model, ranks, {s.temperature, s.steps_per_period, s.step_fraction}, arena);
     else
-      return Integrator(model, ranks, s.methods.template get<typename Integrator::Method>(),
-                        {s.rtol, s.atol}, {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
+      return Integrator(model, ranks, s.methods.template get<typename Integrator::Method>(), {s.rtol, s.atol},
+                        {.h_max = s.h_max, .max_steps = s.max_steps, .controller = s.controller},
                         s.first_step_scale, arena);
   }
 };

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/member_result.hpp"
 
 namespace rotorsweep::ensemble {
 

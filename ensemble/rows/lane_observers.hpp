@@ -4,8 +4,8 @@
 
 #include <cstddef>
 
-#include "ensemble/engine/member_result.hpp"
-#include "ensemble/engine/step_reducers.hpp"
+#include "ensemble/rows/member_result.hpp"
+#include "ensemble/rows/step_reducers.hpp"
 #include "kernels/lanes/lane.hpp"
 
 namespace rotorsweep::ensemble {

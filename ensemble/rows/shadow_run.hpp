@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/member_result.hpp"
 
 namespace rotorsweep::ensemble {
 

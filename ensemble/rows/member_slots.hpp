@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "ensemble/engine/member_progress.hpp"
-#include "ensemble/engine/member_result.hpp"
 #include "ensemble/engine/slot_buffer.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_result.hpp"
 #include "ensemble/rows/scene.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "kernels/lanes/host_device.hpp"

@@ -1,11 +1,11 @@
-// Jumps and smooth slips (ensemble/engine/slip_kinds.hpp, docs/model.md §3): the matching rule on given
+// Jumps and smooth slips (ensemble/rows/slip_kinds.hpp, docs/model.md §3): the matching rule on given
 // energies, and on N = 2 rows the CP side (A = 8) against the smooth-alternation window (A = 9, 9.5) with
 // the slips' energies adding up to D, as the window's study found them (docs/studies.md); no SA below A_*.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
 
-#include "ensemble/engine/slip_kinds.hpp"
+#include "ensemble/rows/slip_kinds.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 

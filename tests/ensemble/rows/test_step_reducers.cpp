@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "ensemble/engine/step_reducers.hpp"
+#include "ensemble/rows/step_reducers.hpp"
 
 using namespace rotorsweep::ensemble;
 using Catch::Detail::Approx;

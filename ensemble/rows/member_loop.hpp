@@ -5,11 +5,11 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "ensemble/engine/device_period_record.hpp"
 #include "ensemble/engine/member_progress.hpp"
-#include "ensemble/engine/member_result.hpp"
-#include "ensemble/engine/member_slots.hpp"
-#include "ensemble/engine/step_reducers.hpp"
+#include "ensemble/rows/device_period_record.hpp"
+#include "ensemble/rows/member_result.hpp"
+#include "ensemble/rows/member_slots.hpp"
+#include "ensemble/rows/step_reducers.hpp"
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/steppers/lane_status.hpp"
 

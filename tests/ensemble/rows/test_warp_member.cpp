@@ -1,4 +1,4 @@
-// One member in a warp's registers (ensemble/engine/warp_member.hpp, on the host's emulation of the
+// One member in a warp's registers (ensemble/rows/warp_member.hpp, on the host's emulation of the
 // warp) against the one-thread driver DeviceMember (the CPU lanes' bits) on the same slots: the same
 // periods, slips, regimes and attractors, D and every channel within the integration error.
 #include <catch2/catch.hpp>
@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/engine/device_member.hpp"
-#include "ensemble/engine/member_slots.hpp"
-#include "ensemble/engine/warp_member.hpp"
+#include "ensemble/rows/device_member.hpp"
+#include "ensemble/rows/member_slots.hpp"
+#include "ensemble/rows/warp_member.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/lanes/warp.hpp"
 #include "kernels/lanes/warp_operation_count.hpp"
@@ -77,7 +77,8 @@ TEST_CASE("a member in registers follows the one-thread driver: labels, slips, D
 
 TEST_CASE("a member in registers runs uniform rows, wrapped periods and one thread's four rows",
           "[warp][device_member]") {
-  const std::string uniform = rows_20.substr(0, rows_20.find("[disorder]")) + "[observables]\nenergy = true\n";
+  const std::string uniform =
+      rows_20.substr(0, rows_20.find("[disorder]")) + "[observables]\nenergy = true\n";
   check_follows<8, 3, false>(uniform.substr(0, uniform.find("[sweep]")) + "[sweep]\nA = [1.0, 12.0]\n" +
                              uniform.substr(uniform.find("[initial]")));
   check_follows<8, 3, false>(
@@ -85,7 +86,8 @@ TEST_CASE("a member in registers runs uniform rows, wrapped periods and one thre
       "average_periods = 2\n[numerics]\nwrap_angles = true\nrtol = 1e-10\natol = 1e-13\n");
   check_follows<1, 4, false>(
       "[model]\nrows = 4\n[drive]\ng = 0.05\n[sweep]\nA = [0.5, 3.0, 8.0]\n[initial]\nkinds = [\"AFM\", "
-      "\"random\"]\n[schedule]\nrelax_periods = 2\naverage_periods = 2\n[numerics]\nrtol = 1e-10\natol = 1e-13\n");
+      "\"random\"]\n[schedule]\nrelax_periods = 2\naverage_periods = 2\n[numerics]\nrtol = 1e-10\natol = "
+      "1e-13\n");
 }
 
 TEST_CASE("a schedule runs in registers only where the kernel can hold it", "[warp][device_member]") {
@@ -98,18 +100,22 @@ TEST_CASE("a schedule runs in registers only where the kernel can hold it", "[wa
   };
   const std::string base = "[drive]\ng = 0.01\n[sweep]\nA = [1.0]\n";
   CHECK(Driver::fits(schedule_of("[model]\nrows = 20\n" + base), kernels::all_integrals));
-  CHECK(Driver::fits(schedule_of("[model]\nrows = 8\n" + base), kernels::all_integrals));    // a row per lane
-  CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 6\n" + base), kernels::all_integrals));  // a lane empty
-  CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 26\n" + base), kernels::all_integrals));  // beyond 8 × 3
+  CHECK(Driver::fits(schedule_of("[model]\nrows = 8\n" + base), kernels::all_integrals));  // a row per lane
+  CHECK_FALSE(
+      Driver::fits(schedule_of("[model]\nrows = 6\n" + base), kernels::all_integrals));  // a lane empty
+  CHECK_FALSE(
+      Driver::fits(schedule_of("[model]\nrows = 26\n" + base), kernels::all_integrals));  // beyond 8 × 3
   CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 20\n" + base + "[thermal]\ntemperature = 0.01\n"),
                            kernels::all_integrals));
-  CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 20\n" + base + "[observables]\nrow_profiles = true\n"),
-                           kernels::all_integrals));
+  CHECK_FALSE(
+      Driver::fits(schedule_of("[model]\nrows = 20\n" + base + "[observables]\nrow_profiles = true\n"),
+                   kernels::all_integrals));
   CHECK_FALSE(Driver::fits(schedule_of("[model]\nrows = 20\n" + base + "[observables]\nenergy = true\n"),
                            kernels::Integrals{}));  // an instantiation that carries R only
   using UniformRows = kernels::WarpRows<kernels::HostWarp<8>, 3, false, kernels::all_integrals>;
   using Uniform =
-      ensemble::WarpMember<UniformRows, kernels::WarpIntegrator<UniformRows, kernels::WarpRosenbrock<UniformRows, 8>>>;
+      ensemble::WarpMember<UniformRows,
+                           kernels::WarpIntegrator<UniformRows, kernels::WarpRosenbrock<UniformRows, 8>>>;
   CHECK(Uniform::fits(schedule_of("[model]\nrows = 20\n" + base), kernels::all_integrals));
   CHECK_FALSE(Uniform::fits(schedule_of("[model]\nrows = 20\n" + base + "[disorder]\nA = 1e-3\n"),
                             kernels::all_integrals));  // no disorder factors per row to read it into
@@ -133,9 +139,11 @@ kernels::WarpOperationCount counted(const ensemble::Scene& scene, double& attemp
 
 }  // namespace
 
-TEST_CASE("the emulation counts what a member in registers asks of its threads", "[warp][device_member][counts]") {
-  const std::string uniform = "[model]\nrows = 20\n[drive]\ng = 0.0011\n[sweep]\nA = [1.0, 12.0]\n[schedule]\n"
-                              "relax_periods = 1\naverage_periods = 1\n[numerics]\nrtol = 1e-8\natol = 1e-11\n";
+TEST_CASE("the emulation counts what a member in registers asks of its threads",
+          "[warp][device_member][counts]") {
+  const std::string uniform =
+      "[model]\nrows = 20\n[drive]\ng = 0.0011\n[sweep]\nA = [1.0, 12.0]\n[schedule]\n"
+      "relax_periods = 1\naverage_periods = 1\n[numerics]\nrtol = 1e-8\natol = 1e-11\n";
   const auto scene = io::parse_scene_text(uniform, "warp-counts");
   double attempts = 0.0, again = 0.0;
   const auto count = counted<8, 3, false>(scene, attempts);
@@ -154,9 +162,10 @@ TEST_CASE("the emulation counts what a member in registers asks of its threads",
   { const kernels::CountingWarpOperations counting(outside); }
   in_registers<8, 3, false>(scene);
   CHECK(outside.arithmetic == 0);  // nothing counted once the scope has closed
-  std::printf("8 x 3 lanes x slots, 20 uniform rows, rodas4p2: per attempt and thread %.0f FP64 +-*, %.1f /, %.1f "
-              "sqrt, %.0f other, %.0f shuffles (%.0f attempts)\n",
-              double(count.arithmetic) / attempts, double(count.division) / attempts,
-              double(count.square_root) / attempts, double(count.other) / attempts, double(count.shuffle) / attempts,
-              attempts);
+  std::printf(
+      "8 x 3 lanes x slots, 20 uniform rows, rodas4p2: per attempt and thread %.0f FP64 +-*, %.1f /, %.1f "
+      "sqrt, %.0f other, %.0f shuffles (%.0f attempts)\n",
+      double(count.arithmetic) / attempts, double(count.division) / attempts,
+      double(count.square_root) / attempts, double(count.other) / attempts, double(count.shuffle) / attempts,
+      attempts);
 }

@@ -4,9 +4,9 @@
 
 #include <limits>
 
-#include "ensemble/engine/member_result.hpp"
-#include "ensemble/engine/member_slots.hpp"
-#include "ensemble/engine/step_reducers.hpp"
+#include "ensemble/rows/member_result.hpp"
+#include "ensemble/rows/member_slots.hpp"
+#include "ensemble/rows/step_reducers.hpp"
 #include "kernels/lanes/host_device.hpp"
 
 namespace rotorsweep::ensemble {

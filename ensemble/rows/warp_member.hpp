@@ -4,8 +4,8 @@
 
 #include <cstddef>
 
-#include "ensemble/engine/member_loop.hpp"
-#include "ensemble/engine/member_slots.hpp"
+#include "ensemble/rows/member_loop.hpp"
+#include "ensemble/rows/member_slots.hpp"
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane.hpp"
@@ -52,7 +52,7 @@ struct WarpMember {
   }
 
  private:
-  /// The member in its lanes' registers, as run_member asks (ensemble/engine/member_loop.hpp).
+  /// The member in its lanes' registers, as run_member asks (ensemble/rows/member_loop.hpp).
   struct Body {
     static constexpr bool stochastic = false;
     static constexpr double period = Model::period;
@@ -78,7 +78,9 @@ struct WarpMember {
     ROTORSWEEP_HD kernels::LaneStatus status() const { return state.status; }
     ROTORSWEEP_HD double quadrature(std::size_t p) const { return model.carried_quadrature(state.quad, p); }
     ROTORSWEEP_HD double drive() const { return state.quad[Model::drive_kind]; }
-    ROTORSWEEP_HD double alignment_integrand() const { return integrator.start_integrands()[Model::alignment_kind]; }
+    ROTORSWEEP_HD double alignment_integrand() const {
+      return integrator.start_integrands()[Model::alignment_kind];
+    }
     ROTORSWEEP_HD double slip_rate(const SlotSchedule& schedule, double) const { return schedule.slip_rate; }
     ROTORSWEEP_HD void keep_before() {
       ROTORSWEEP_UNROLL
@@ -116,7 +118,8 @@ struct WarpMember {
       ROTORSWEEP_UNROLL
       for (std::size_t r = 0; r < R; ++r) {
         const V y = state.y[r];
-        state.y[r] = kernels::lane_from<V>([&](std::size_t l) { return kernels::wrap_2pi(kernels::lane_get(y, l)); });
+        state.y[r] =
+            kernels::lane_from<V>([&](std::size_t l) { return kernels::wrap_2pi(kernels::lane_get(y, l)); });
       }
     }
     ROTORSWEEP_HD double steps_accepted() const { return state.steps_accepted; }

@@ -120,7 +120,7 @@ struct MemberResult {
   /// j's share of D, and the time mean of cos²((θ_j − θ_{j+1})/2) for each link (docs/model.md §3).
   std::vector<double> row_dissipation, link_alignment;
   /// D of the member's shadow run at tighter tolerances (NaN where it had none:
-  /// ensemble/engine/shadow_run.hpp); whether no physical perturbation of the scene exceeds the
+  /// ensemble/rows/shadow_run.hpp); whether no physical perturbation of the scene exceeds the
   /// tolerance, so that the integration error decides D (symmetry-limited); and whether the shadow
   /// reached another attractor, so that it estimates no error (shadow_departed).
   double dissipation_shadow = std::numeric_limits<double>::quiet_NaN();
@@ -130,7 +130,7 @@ struct MemberResult {
       averaging_start;  ///< θ where the averaged periods began (empty: θ(0)), a shadow's start
   /// With observables.slip_kinds: each averaged period's slips' energies, in order (NaN past the
   /// recorded max_slip_energies), and from the rerun at g/10 the jumps and smooth slips per period
-  /// (NaN without a rerun: ensemble/engine/slip_kinds.hpp).
+  /// (NaN without a rerun: ensemble/rows/slip_kinds.hpp).
   std::vector<std::vector<double>> slip_energies;
   double slip_jumps = std::numeric_limits<double>::quiet_NaN();
   double slip_smooth = std::numeric_limits<double>::quiet_NaN();

@@ -4,10 +4,10 @@
 
 #include <cstddef>
 
-#include "ensemble/engine/member_loop.hpp"
-#include "ensemble/engine/member_slots.hpp"
-#include "ensemble/engine/step_reducers.hpp"
+#include "ensemble/rows/member_loop.hpp"
+#include "ensemble/rows/member_slots.hpp"
 #include "ensemble/rows/row_profile_integral.hpp"
+#include "ensemble/rows/step_reducers.hpp"
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
@@ -63,7 +63,7 @@ struct DeviceMember {
           profile_work(s.row_profiles ? s.rows : 0, arena) {}
   };
 
-  /// The member on its one lane, as run_member asks (ensemble/engine/member_loop.hpp).
+  /// The member on its one lane, as run_member asks (ensemble/rows/member_loop.hpp).
   struct Body {
     static constexpr bool stochastic = DeviceMember::stochastic;
     static constexpr double period = Model::period;
@@ -76,7 +76,8 @@ struct DeviceMember {
       state.t_stop = Model::period;
       state.tolerance_scale = slots.tolerance_scale[k];
       parts.model.set_lane(0, slot_parameters<Model>(s, slots, k));
-      if constexpr (stochastic) parts.integrator.start_lane(0, slots.noise_key[k], slots.g[k], parts.model.curvature_bound(0));
+      if constexpr (stochastic)
+        parts.integrator.start_lane(0, slots.noise_key[k], slots.g[k], parts.model.curvature_bound(0));
     }
     ROTORSWEEP_HD bool attempt() { return parts.integrator.attempt(parts.model, parts.state); }
     ROTORSWEEP_HD double t() const { return parts.state.t; }
@@ -123,8 +124,12 @@ struct DeviceMember {
     }
     ROTORSWEEP_HD double steps_accepted() const { return parts.state.steps_accepted; }
     ROTORSWEEP_HD double steps_rejected() const { return parts.state.steps_rejected; }
-    ROTORSWEEP_HD void profile_start() { parts.profile.start(parts.model, parts.profile_work, parts.state, 0); }
-    ROTORSWEEP_HD void profile_before() { parts.profile.before_step(parts.model, parts.profile_work, parts.state); }
+    ROTORSWEEP_HD void profile_start() {
+      parts.profile.start(parts.model, parts.profile_work, parts.state, 0);
+    }
+    ROTORSWEEP_HD void profile_before() {
+      parts.profile.before_step(parts.model, parts.profile_work, parts.state);
+    }
     ROTORSWEEP_HD void profile_after(bool accepted) {
       parts.profile.after_step(parts.model, parts.profile_work, parts.state, accepted);
     }
@@ -146,7 +151,8 @@ struct DeviceMember {
     if constexpr (stochastic)
       return Integrator(model, settings, arena);
     else
-      return Integrator(model, settings.method, settings.tolerances, settings.limits, s.first_step_scale, arena);
+      return Integrator(model, settings.method, settings.tolerances, settings.limits, s.first_step_scale,
+                        arena);
   }
 };
 

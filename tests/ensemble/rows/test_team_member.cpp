@@ -1,4 +1,4 @@
-// One member per team (ensemble/engine/team_member.hpp) on host teams of 1, 3 and 8 ranks against the
+// One member per team (ensemble/rows/team_member.hpp) on host teams of 1, 3 and 8 ranks against the
 // one-thread driver DeviceMember on the same slots: the same periods, slips, regimes and attractors, D
 // and ρ̄ within the integration error (AFM, CP, FM; nearest neighbours and coupling tables; at T > 0
 // the same path), and the examples' labels.
@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/engine/device_member.hpp"
-#include "ensemble/engine/member_slots.hpp"
-#include "ensemble/engine/team_member.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
+#include "ensemble/rows/device_member.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_slots.hpp"
 #include "ensemble/rows/sweep.hpp"
+#include "ensemble/rows/team_member.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
@@ -35,7 +35,8 @@ namespace {
 template <class Rows>
 using Lanes = kernels::AdaptiveIntegrator<Rows, kernels::RosenbrockStepper<Rows>>;
 template <class Rows>
-using TeamLanes = kernels::TeamIntegrator<kernels::HostTeam, kernels::TeamRosenbrock<kernels::HostTeam, Rows>>;
+using TeamLanes =
+    kernels::TeamIntegrator<kernels::HostTeam, kernels::TeamRosenbrock<kernels::HostTeam, Rows>>;
 
 /// A team's members against one thread's: the same labels, D and the other means within 1e-8 (1e-10
 /// outside CP). Where rounding decides CP (`cp_rounding`: uniform rows, whose symmetry only rounding

@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/engine/member_slots.hpp"
-#include "ensemble/engine/shadow_run.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/member_slots.hpp"
 #include "ensemble/rows/shadow_attractor.hpp"
+#include "ensemble/rows/shadow_run.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -30,8 +30,8 @@ std::vector<ensemble::MemberResult> run_through_slots(const ensemble::Scene& sce
   return ensemble::with_device_driver(scene, [&]<class Model, class Integrator>() {
     using Driver = ensemble::DeviceMember<Model, Integrator>;
     const ensemble::Member variant = source.at(0);
-    const auto schedule =
-        ensemble::slot_schedule(scene, variant, ensemble::device_first_step_scale<Integrator>(scene, variant));
+    const auto schedule = ensemble::slot_schedule(
+        scene, variant, ensemble::device_first_step_scale<Integrator>(scene, variant));
     ensemble::SlotChunk chunk(schedule, source.count);
     chunk.fill(scene, {&source, 0, source.count}, 0, source.count);
     std::vector<double> storage(Driver::storage_size(schedule));

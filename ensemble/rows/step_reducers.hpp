@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "ensemble/engine/member_result.hpp"
+#include "ensemble/rows/member_result.hpp"
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/lane_state.hpp"

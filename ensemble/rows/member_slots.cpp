@@ -1,7 +1,7 @@
 // The host side of member slots: a chunk's inputs from the plan (initial angles, A, g, the
 // strict-FM mark, disorder, couplings and noise keys as RowSetup gives them) and each slot's
 // result, summarized as LaneScheduler does.
-#include "ensemble/engine/member_slots.hpp"
+#include "ensemble/rows/member_slots.hpp"
 
 #include <algorithm>
 

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The engine's layer holds (docs/architecture.md "Layers"): no file under ensemble/engine/ includes a
+# problem (ensemble/rows/, ensemble/slider/), an executor (ensemble/gpu/) or a concrete model
+# (kernels/models/ other than the model concept).
+# Usage: engine_knows_no_model.sh SOURCE_DIR
+set -euo pipefail
+engine="$1/ensemble/engine"
+[ -d "$engine" ] || { echo "engine_knows_no_model.sh: no folder $engine" >&2; exit 2; }
+found=$(grep -rnE '#include "(ensemble/(rows|slider|gpu)/|kernels/models/)' "$engine" |
+  grep -v 'kernels/models/model_concept.hpp' || true)
+if [ -n "$found" ]; then
+  echo "ensemble/engine/ includes what lies above it or a concrete model:"
+  echo "$found"
+  exit 1
+fi
+echo "ensemble/engine/: $(find "$engine" -type f | wc -l) files, none includes a problem, an executor or a model"
