@@ -10,8 +10,9 @@ endif()
 option(ROTORSWEEP_MPI "Let rotorsweep run share a plan between mpirun ranks (needs libopenmpi-dev; off when absent)" ON)
 option(ROTORSWEEP_CUDA "Build the GPU backend (numerics.device = \"gpu\"; needs nvcc, off when absent)" ON)
 # The register kernels' shapes (docs/architecture.md "Register kernels"): lanes x slots per lane, "d"
-# for disordered rows; each is a CUDA unit of its own. The default is the shape of N = 8 … 24 (the
-# suite's and the examples'); the gpu preset compiles every shape it measures.
+# for disordered rows, "sS" for S stage vectors (tableaus of at most S stages; 8 without it); each is
+# a CUDA unit of its own. The default is the shape of N = 8 … 24 (the suite's and the examples');
+# the gpu preset compiles every shape it measures.
 set(ROTORSWEEP_GPU_REGISTER_SHAPES "8x3;8x3d" CACHE STRING "Register kernel shapes LxR[d] for the GPU backend")
 # n > 0: the register kernels run n blocks of 128 threads per multiprocessor at least, their registers
 # capped at 65536 / (128 n) and the rest spilled (a trade of spills for resident warps to measure).

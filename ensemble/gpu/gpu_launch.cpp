@@ -11,6 +11,7 @@
 #include "ensemble/gpu/gpu_register_shapes.hpp"
 #include "ensemble/gpu/gpu_registers.hpp"
 #include "kernels/lanes/team.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -44,7 +45,8 @@ int gpu_device_index(int devices) {
     char* end = nullptr;
     const long rank = std::strtol(text, &end, 10);
     if (*end != '\0' || rank < 0 || rank > (1 << 24))
-      throw GpuLaunchError(std::string(name) + " = '" + text + "': not a local rank (a non-negative integer)");
+      throw GpuLaunchError(std::string(name) + " = '" + text +
+                           "': not a local rank (a non-negative integer)");
     return devices > 0 ? int(rank % devices) : 0;
   }
   return 0;
@@ -69,7 +71,8 @@ GpuLaunch gpu_launch() {
 bool gpu_teams_fit(const Scene& scene) {
   if (scene.thermal.on()) return true;  // the Langevin stepper, whatever numerics.stepper says
   return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
-    return !std::is_void_v<DeviceTeamStepper<family, kernels::HostTeam, kernels::NearestNeighbourRows<double>>>;
+    return !std::is_void_v<
+        DeviceTeamStepper<family, kernels::HostTeam, kernels::NearestNeighbourRows<double>>>;
   });
 }
 
@@ -92,11 +95,14 @@ std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape
       kernels::stepper_family(scene.stepper) != kernels::StepperFamily::rosenbrock)
     return std::nullopt;
   const bool disordered = scene.disorder.any();
+  const std::size_t stages =
+      std::size_t(kernels::stepper_method<kernels::RosenbrockTableau>(scene.stepper).stages);
   std::optional<RegisterShape> best;
   for (const RegisterShape& shape : shapes) {
-    if (shape.disordered != disordered || !shape.holds(rows)) continue;
+    if (shape.disordered != disordered || !shape.holds(rows) || shape.stages < stages) continue;
     if (!best || shape.capacity() < best->capacity() ||
-        (shape.capacity() == best->capacity() && shape.lanes > best->lanes))
+        (shape.capacity() == best->capacity() &&
+         (shape.lanes > best->lanes || (shape.lanes == best->lanes && shape.stages < best->stages))))
       best = shape;
   }
   return best;

@@ -25,7 +25,7 @@
 namespace rotorsweep::ensemble::gpu {
 
 /// Members of a chunk, one per L threads: the group's first thread claims the next member for all.
-template <std::size_t L, std::size_t R, bool PerRow>
+template <std::size_t L, std::size_t R, bool PerRow, std::size_t S>
 __global__ void ROTORSWEEP_REGISTER_BOUNDS sweep_in_registers(const __grid_constant__ SlotSchedule schedule,
                                                               SlotViews slots, unsigned long long count,
                                                               unsigned long long* next) {
@@ -35,23 +35,25 @@ __global__ void ROTORSWEEP_REGISTER_BOUNDS sweep_in_registers(const __grid_const
     if (W::rank() == 0) k = atomicAdd(next, 1ull);
     k = __shfl_sync(W::group(), k, 0, int(L));
     if (k >= count) return;
-    RegisterMember<W, R, PerRow>::run(schedule, slots, std::size_t(k));
+    RegisterMember<W, R, PerRow, S>::run(schedule, slots, std::size_t(k));
   }
 }
 
-/// The variant's members in registers on L lanes × R slots (a shape of compiled_register_shapes that
-/// choose_register_shape picked for the scene).
-template <std::size_t L, std::size_t R, bool PerRow>
+/// The variant's members in registers on L lanes × R slots with S stage vectors (a shape of
+/// compiled_register_shapes that choose_register_shape picked for the scene).
+template <std::size_t L, std::size_t R, bool PerRow, std::size_t S>
 SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, int host_threads,
                               const SweepControl& control, const ResultSink& sink) {
-  using Integrator = DeviceAdaptiveIntegrator<kernels::StepperFamily::rosenbrock, kernels::NearestNeighbourRows<double>>;
+  using Integrator =
+      DeviceAdaptiveIntegrator<kernels::StepperFamily::rosenbrock, kernels::NearestNeighbourRows<double>>;
   available_gpu();
   const Member variant = range.source->at(range.begin);
-  const SlotSchedule schedule = slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
-  using Driver = RegisterMember<kernels::DeviceWarp<L>, R, PerRow>;
-  if (!Driver::fits(schedule, register_quadratures))
+  const SlotSchedule schedule =
+      slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
+  using Driver = RegisterMember<kernels::DeviceWarp<L>, R, PerRow, S>;
+  if (!Driver::fits(schedule, register_quadratures) || std::size_t(schedule.methods.rosenbrock.stages) > S)
     throw std::logic_error("a register kernel cannot run this schedule");
-  const auto kernel = sweep_in_registers<L, R, PerRow>;
+  const auto kernel = sweep_in_registers<L, R, PerRow, S>;
   const GpuLaunch launch = gpu_launch();
   if (ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS > 0 && launch.threads_per_block > 128)
     throw GpuLaunchError("ROTORSWEEP_GPU_BLOCK = " + std::to_string(launch.threads_per_block) +
@@ -62,7 +64,8 @@ SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, int
   return run_chunks(scene, range, schedule, grid, host_threads, control, sink,
                     [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
                         unsigned long long* counter) {
-                      kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(schedule, views, count, counter);
+                      kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(schedule, views, count,
+                                                                                 counter);
                     });
 }
 

@@ -9,14 +9,18 @@
 #include "ensemble/gpu/gpu_launch.hpp"
 #include "ensemble/rows/scene.hpp"
 #include "kernels/models/rows/integrals.hpp"
+#include "kernels/steppers/rosenbrock_tableaus.hpp"
 
 namespace rotorsweep::ensemble {
 
 /// A register kernel's shape: a member on `lanes` threads of a warp with `slots` rows apiece, its
-/// rows uniform or disordered (each slot keeps three disorder factors).
+/// rows uniform or disordered (each slot keeps three disorder factors), and the stage vectors it holds
+/// (tableaus of at most `stages` stages: 8 holds every Rosenbrock tableau, 6 rodas4 and rodas4p2 in
+/// fewer registers).
 struct RegisterShape {
   std::size_t lanes = 0, slots = 0;
   bool disordered = false;
+  std::size_t stages = kernels::RosenbrockTableau::max_stages;
   constexpr std::size_t capacity() const { return lanes * slots; }
   /// Whether N rows fit: at least one per lane, at most `slots` (kernels::WarpRowSlots::fits).
   constexpr bool holds(std::size_t rows) const { return rows >= lanes && rows <= capacity(); }
@@ -33,8 +37,8 @@ std::span<const RegisterShape> gpu_register_shapes();
 /// The shape among `shapes` that runs members of N = `rows` of the scene in registers, or none:
 /// T = 0, nearest neighbours, a linearly implicit stepper, no row profiles, the quadratures of
 /// register_quadratures at most, no ROTORSWEEP_GPU_TEAM (which asks for a thread or a team), and a
-/// shape that holds N, disordered where the scene has disorder. Of those that fit, the fewest slots
-/// in all, then the most lanes.
+/// shape that holds N, disordered where the scene has disorder, with stage vectors for the scene's
+/// stepper. Of those that fit, the fewest slots in all, then the most lanes, then the fewest stages.
 std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape> shapes, const Scene& scene,
                                                    std::size_t rows, const GpuLaunch& launch);
 

@@ -18,12 +18,12 @@ namespace rotorsweep::ensemble {
 template <class W, std::size_t R, bool PerRow>
 using RegisterRows = kernels::WarpRows<W, R, PerRow, register_quadratures>;
 
-/// A member of RegisterRows from its start to its retirement, any Rosenbrock tableau.
-template <class W, std::size_t R, bool PerRow>
+/// A member of RegisterRows from its start to its retirement, any Rosenbrock tableau of at most S
+/// stages.
+template <class W, std::size_t R, bool PerRow, std::size_t S = kernels::RosenbrockTableau::max_stages>
 using RegisterMember =
     WarpMember<RegisterRows<W, R, PerRow>,
                kernels::WarpIntegrator<RegisterRows<W, R, PerRow>,
-                                       kernels::WarpRosenbrock<RegisterRows<W, R, PerRow>,
-                                                               kernels::RosenbrockTableau::max_stages>>>;
+                                       kernels::WarpRosenbrock<RegisterRows<W, R, PerRow>, S>>>;
 
 }  // namespace rotorsweep::ensemble

@@ -5,15 +5,16 @@
 #include <string>
 #include <vector>
 
+#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/gpu/gpu_register_shapes.hpp"
 #include "ensemble/gpu/gpu_registers.hpp"
 #include "ensemble/gpu/register_member.hpp"
 #include "ensemble/rows/member_plan.hpp"
-#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/lanes/warp.hpp"
+#include "kernels/steppers/stepper_list.hpp"
 #include "support/same_results.hpp"
 #include "support/slot_runs.hpp"
 
@@ -27,13 +28,28 @@ constexpr std::size_t rows_for(const ensemble::RegisterShape& shape) {
   return n < shape.lanes ? shape.lanes : n;
 }
 
-/// AFM, CP and FM members from random and noisy AFM starts, two periods each side, rtol 1e-8; no
-/// shadow runs (the host's run through one chunk has none; they run the same kernel again).
+/// The linearly implicit stepper with the most stages a shape holds (rodas5p for 8, rodas4 for 6).
+std::string stepper_for(const ensemble::RegisterShape& shape) {
+  std::size_t best = 0, best_stages = 0;
+  for (std::size_t id = 0; id < kernels::stepper_names.size(); ++id) {
+    if (kernels::stepper_family(id) != kernels::StepperFamily::rosenbrock) continue;
+    const auto stages = std::size_t(kernels::stepper_method<kernels::RosenbrockTableau>(id).stages);
+    if (stages <= shape.stages && stages > best_stages) best = id, best_stages = stages;
+  }
+  return std::string(kernels::stepper_names[best]);
+}
+
+/// AFM, CP and FM members from random and noisy AFM starts, two periods each side, rtol 1e-8, the
+/// shape's stepper; no shadow runs (the host's run through one chunk has none; they run the same
+/// kernel again).
 std::string scene_text(const ensemble::RegisterShape& shape) {
   return "[model]\nrows = " + std::to_string(rows_for(shape)) +
          "\n[drive]\ng = [0.01]\n[sweep]\nA = {from = 0.5, to = 14, count = 8}\n[initial]\nkinds = "
-         "[\"random\", \"AFM\"]\nnoise = 0.01\nreplicas = 2\n[schedule]\nrelax_periods = 2\naverage_periods = "
-         "2\n[numerics]\nrtol = 1e-8\natol = 1e-11\nglobal_error = \"local\"\ndevice = \"gpu\"\n" +
+         "[\"random\", \"AFM\"]\nnoise = 0.01\nreplicas = 2\n[schedule]\nrelax_periods = 2\naverage_periods "
+         "= "
+         "2\n[numerics]\nrtol = 1e-8\natol = 1e-11\nglobal_error = \"local\"\ndevice = \"gpu\"\nstepper = "
+         "\"" +
+         stepper_for(shape) + "\"\n" +
          (shape.disordered ? "[disorder]\nA = 1e-3\nanisotropy = 1e-3\ncoupling = 1e-3\n" : "");
 }
 
@@ -43,11 +59,13 @@ void check_compiled_shapes() {
     constexpr ensemble::RegisterShape shape = ensemble::compiled_register_shapes[i];
     const auto scene = io::parse_scene_text(scene_text(shape), "registers");
     const std::size_t rows = rows_for(shape);
-    INFO(shape.lanes << " × " << shape.slots << (shape.disordered ? " disordered" : "") << ", N = " << rows);
+    INFO(shape.lanes << " × " << shape.slots << (shape.disordered ? " disordered" : "") << ", "
+                     << shape.stages << " stages, N = " << rows);
     REQUIRE(ensemble::choose_register_shape(ensemble::compiled_register_shapes, scene, rows, {}) == shape);
     const auto members = ensemble::plan_members(scene);
     const auto gpu = ensemble::run_sweep(scene, members, ensemble::thread_count(0), {}).results;
-    using Driver = ensemble::RegisterMember<kernels::HostWarp<shape.lanes>, shape.slots, shape.disordered>;
+    using Driver =
+        ensemble::RegisterMember<kernels::HostWarp<shape.lanes>, shape.slots, shape.disordered, shape.stages>;
     using Integrator = ensemble::DeviceAdaptiveIntegrator<kernels::StepperFamily::rosenbrock,
                                                           kernels::NearestNeighbourRows<double>>;
     const auto host = testing::through_slots<Integrator>(

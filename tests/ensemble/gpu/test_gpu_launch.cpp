@@ -148,7 +148,8 @@ TEST_CASE("the result file's device says how many threads run a member", "[gpu_l
   };
   auto scene = scene_of("rows = 20");
   scene.device = ensemble::Device::gpu;
-  CHECK_THAT(ensemble::device_label(scene), Catch::StartsWith("gpu (") && Catch::EndsWith("; " + teams_of_8(scene) + ")"));
+  CHECK_THAT(ensemble::device_label(scene),
+             Catch::StartsWith("gpu (") && Catch::EndsWith("; " + teams_of_8(scene) + ")"));
   auto pair = scene_of("rows = [2, 20]");
   pair.device = ensemble::Device::gpu;
   CHECK_THAT(ensemble::device_label(pair),
@@ -166,8 +167,8 @@ TEST_CASE("the result file's device says how many threads run a member", "[gpu_l
 TEST_CASE("a register kernel runs the T = 0 nearest-neighbour scenes whose N a compiled shape holds",
           "[gpu_launch]") {
   using ensemble::RegisterShape;
-  const std::vector<RegisterShape> shapes{{1, 2, false}, {4, 2, false}, {8, 3, false}, {8, 3, true},
-                                          {16, 4, false}, {32, 4, false}};
+  const std::vector<RegisterShape> shapes{{1, 2, false}, {4, 2, false},  {8, 3, false},
+                                          {8, 3, true},  {16, 4, false}, {32, 4, false}};
   const auto chosen = [&](const ensemble::Scene& scene, std::size_t rows) {
     return ensemble::choose_register_shape(shapes, scene, rows, {});
   };
@@ -193,6 +194,24 @@ TEST_CASE("a register kernel runs the T = 0 nearest-neighbour scenes whose N a c
   ensemble::GpuLaunch team;
   team.team = 8;  // ROTORSWEEP_GPU_TEAM asks for a team
   CHECK_FALSE(ensemble::choose_register_shape(shapes, uniform, 20, team));
+}
+
+TEST_CASE("a register shape with six stage vectors runs the six-stage tableaus, eight the rest",
+          "[gpu_launch]") {
+  using ensemble::RegisterShape;
+  const std::vector<RegisterShape> shapes{{8, 3, false, 8}, {8, 3, false, 6}, {32, 4, false, 8}};
+  const auto chosen = [&](const char* stepper, std::size_t rows) {
+    const auto scene = scene_of("rows = 20", std::string("[numerics]\nstepper = \"") + stepper + "\"\n");
+    return ensemble::choose_register_shape(shapes, scene, rows, {});
+  };
+  CHECK(chosen("rodas4", 20) == RegisterShape{8, 3, false, 6});
+  CHECK(chosen("rodas4p2", 20) == RegisterShape{8, 3, false, 6});
+  CHECK(chosen("ros2", 20) == RegisterShape{8, 3, false, 6});
+  CHECK(chosen("rodas5p", 20) == RegisterShape{8, 3, false, 8});
+  CHECK(chosen("rodas4p2", 100) == RegisterShape{32, 4, false, 8});  // no six-stage shape holds N = 100
+  CHECK_FALSE(ensemble::choose_register_shape(std::vector<RegisterShape>{{8, 3, false, 6}},
+                                              scene_of("rows = 20", "[numerics]\nstepper = \"rodas5p\"\n"),
+                                              20, {}));
 }
 
 TEST_CASE("a slider member's team: two or three rotors a thread, at most a warp; the file's label",
@@ -242,7 +261,7 @@ TEST_CASE("under mpirun or srun each rank of a node takes the GPU of its local r
   for (const char* bad : {"-1", "two", "1.5"}) {
     const ScopedVariable open_mpi("OMPI_COMM_WORLD_LOCAL_RANK", bad);
     INFO(bad);
-    CHECK_THROWS_WITH(ensemble::gpu_device_index(4),
-                      Catch::Contains("OMPI_COMM_WORLD_LOCAL_RANK") && Catch::Contains("non-negative integer"));
+    CHECK_THROWS_WITH(ensemble::gpu_device_index(4), Catch::Contains("OMPI_COMM_WORLD_LOCAL_RANK") &&
+                                                         Catch::Contains("non-negative integer"));
   }
 }

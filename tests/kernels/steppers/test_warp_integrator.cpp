@@ -1,6 +1,7 @@
 // A member with its rows in registers (kernels/steppers/warp_integrator.hpp, on the host's emulation of
 // a warp) follows the lanes' integration (AdaptiveIntegrator over NearestNeighbourRows) over two
-// periods: every lane count and fill of the slots, uniform and disordered rows, every quadrature.
+// periods: every lane count and fill of the slots, uniform and disordered rows, every quadrature; and
+// with fewer stage vectors (a shape's stage count) the same bits.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
@@ -24,29 +25,30 @@ using rotorsweep::testing::afm_start;
 using rotorsweep::testing::TwoPeriods;
 constexpr Tolerances tight = rotorsweep::testing::tight_tolerances;
 
-template <std::size_t L, std::size_t R, bool PerRow>
+template <std::size_t L, std::size_t R, bool PerRow, std::size_t S = 8>
 TwoPeriods in_registers(std::size_t n, const Lanes::Parameters& p, const RosenbrockTableau& table) {
   using W = HostWarp<L>;
   using Model = WarpRows<W, R, PerRow, all_integrals>;
-  using Integrator = WarpIntegrator<Model, WarpRosenbrock<Model, 8>>;
+  using Integrator = WarpIntegrator<Model, WarpRosenbrock<Model, S>>;
   const WarpRowSlots<W, R> slots(n);
-  Model model(slots, all_integrals,
-              {p.A, p.g, p.strict_fm, p.A_rows, p.anisotropy_rows, p.coupling_rows});
+  Model model(slots, all_integrals, {p.A, p.g, p.strict_fm, p.A_rows, p.anisotropy_rows, p.coupling_rows});
   const double scale = AdaptiveIntegrator<Lanes, RosenbrockStepper<Lanes>>::first_step_scale(tight, table);
   Integrator integrator(table, tight, StepLimits{}, scale);
   typename Integrator::State state;
   const auto theta = afm_start(n);
   for (std::size_t r = 0; r < R; ++r)
     for (std::size_t l = 0; l < L; ++l)
-      lane_set(state.y[r], l, mask_get(slots.real(r), l) ? theta[std::size_t(lane_get(slots.row(r), l))] : 0.0);
+      lane_set(state.y[r], l,
+               mask_get(slots.real(r), l) ? theta[std::size_t(lane_get(slots.row(r), l))] : 0.0);
   state.t_stop = 2 * two_pi;
   while (state.stepping()) integrator.attempt(model, state);
   REQUIRE(state.status == LaneStatus::ok);
   TwoPeriods run{std::vector<double>(n), std::vector<double>(state.quad, state.quad + 8),
-          state.steps_accepted + state.steps_rejected};
+                 state.steps_accepted + state.steps_rejected};
   for (std::size_t r = 0; r < R; ++r)
     for (std::size_t l = 0; l < L; ++l)
-      if (mask_get(slots.real(r), l)) run.theta[std::size_t(lane_get(slots.row(r), l))] = lane_get(state.y[r], l);
+      if (mask_get(slots.real(r), l))
+        run.theta[std::size_t(lane_get(slots.row(r), l))] = lane_get(state.y[r], l);
   return run;
 }
 
@@ -67,15 +69,16 @@ void check_follows(std::size_t n, const RosenbrockTableau& table = rodas4p2_tabl
         rotorsweep::testing::on_lanes(rotorsweep::testing::model<Lanes>(n, all_integrals, p), n, table, ok);
     REQUIRE(ok);
     const TwoPeriods warp = in_registers<L, R, PerRow>(n, p, table);
-    INFO(table.name << ", L = " << L << ", R = " << R << ", N = " << n << ", A = " << A << ": R " << lanes.quad[0]
-                    << ", steps " << lanes.steps << " and " << warp.steps);
+    INFO(table.name << ", L = " << L << ", R = " << R << ", N = " << n << ", A = " << A << ": R "
+                    << lanes.quad[0] << ", steps " << lanes.steps << " and " << warp.steps);
     const double tolerance = A == 6.0 ? 1e-7 : 1e-9;
     for (std::size_t q = 0; q < 8; ++q) {
       INFO("quadrature " << q);
       CHECK(warp.quad[q] == Approx(lanes.quad[q]).epsilon(tolerance).margin(1e-12));
     }
     double largest = 0;
-    for (std::size_t j = 0; j < n; ++j) largest = std::max(largest, std::fabs(warp.theta[j] - lanes.theta[j]));
+    for (std::size_t j = 0; j < n; ++j)
+      largest = std::max(largest, std::fabs(warp.theta[j] - lanes.theta[j]));
     CHECK(largest < tolerance);
     CHECK(warp.steps == Approx(lanes.steps).epsilon(0.01));
   }
@@ -96,4 +99,17 @@ TEST_CASE("a member in registers follows the lanes' integration for each border 
 TEST_CASE("a member in registers runs every linearly implicit tableau", "[kernels][warp][steppers]") {
   check_follows<8, 3, true>(20, rodas4_tableau);
   check_follows<8, 3, true>(20, rodas5p_tableau);
+}
+
+TEST_CASE("a member in registers with six stage vectors gives eight's bits with a six-stage tableau",
+          "[kernels][warp][steppers]") {
+  for (const RosenbrockTableau* table : {&rodas4_tableau, &rodas4p2_tableau}) {
+    const Lanes::Parameters p{6.0, 0.0011};
+    const TwoPeriods six = in_registers<1, 4, false, 6>(4, p, *table);
+    const TwoPeriods eight = in_registers<1, 4, false, 8>(4, p, *table);
+    INFO(table->name);
+    CHECK(six.theta == eight.theta);
+    CHECK(six.quad == eight.quad);
+    CHECK(six.steps == eight.steps);
+  }
 }
