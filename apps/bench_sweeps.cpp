@@ -54,7 +54,8 @@ std::string mapping_label(const Mapping& m, const ensemble::Scene& scene, int ro
     const auto shape = ensemble::choose_register_shape(ensemble::gpu_register_shapes(), scene, std::size_t(rows),
                                                        ensemble::gpu_launch());
     if (!shape) return "default";
-    return "registers " + std::to_string(shape->lanes) + " × " + std::to_string(shape->slots);
+    return "registers " + std::to_string(shape->lanes) + " × " + std::to_string(shape->slots) + ", " +
+           std::to_string(shape->stages) + " stages";
   }
   if (m.team == 1) return "thread";
   return "team " + std::to_string(m.team) + ", " + m.scratch;

@@ -3,12 +3,13 @@
 # (docs/performance.md "GPU"): the register kernels against the host's emulation, the default mapping
 # against the CPU, the other GPU tests, `bench gpu` per N and mapping (kernel-only and end-to-end
 # rates), the host's work per member on the device machine's cores (`bench host`, N = 2 and 20), the
-# 10⁶-member curve as a run (its progress in the log), and the slider's 8 100-member scan.
+# 10⁶-member curve as a run (its progress in the log), and the slider's 8 100-member scan (blocks of
+# 128 threads, then of 64).
 # Usage: scripts/bench/gpu_session.sh [BIN (build/bin, from `scripts/build.sh gpu`)] [OUT ($OUT, or
 # bench-results/gpu)]. Writes summary.txt (one line per step: exit code, seconds) and log.txt (every
 # step's output, as it comes) to OUT, result files to a scratch folder it removes; prints each step's
 # line as the step ends, so a session stopped early still shows what it measured. The limits add up
-# to 400 s (a step that ignores its stop is killed 10 s later).
+# to 420 s (a step that ignores its stop is killed 10 s later).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 bin=$(realpath "${1:-build/bin}")
@@ -47,4 +48,6 @@ step bench_host 20 "$bin/rotorsweep" bench host --rows 2,20 --scratch "$scratch"
 step curve_run 60 "$bin/rotorsweep" run examples/friction_curve_gpu.toml -o "$scratch/curve.h5"
 step curve_info 10 "$bin/rotorsweep" info "$scratch/curve.h5"
 step slider_team32 40 "$bin/rotorsweep" slider examples/experiment_7x7_gpu.toml -q -o "$scratch/slider.h5"
+step slider_block64 20 env ROTORSWEEP_GPU_BLOCK=64 "$bin/rotorsweep" slider examples/experiment_7x7_gpu.toml -q \
+  -o "$scratch/slider64.h5"
 step slider_info 10 "$bin/rotorsweep" info "$scratch/slider.h5"
