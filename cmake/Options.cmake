@@ -13,7 +13,11 @@ option(ROTORSWEEP_CUDA "Build the GPU backend (numerics.device = \"gpu\"; needs 
 # for disordered rows, "sS" for S stage vectors (tableaus of at most S stages; 8 without it); each is
 # a CUDA unit of its own. The default is the shape of N = 8 … 24 (the suite's and the examples');
 # the gpu preset compiles every shape it measures.
-set(ROTORSWEEP_GPU_REGISTER_SHAPES "8x3;8x3d" CACHE STRING "Register kernel shapes LxR[d] for the GPU backend")
+set(ROTORSWEEP_GPU_REGISTER_SHAPES "8x3;8x3d" CACHE STRING "Register kernel shapes LxR[d][sS] for the GPU backend")
+# Shapes among them whose machine code must not spill (ptxas --warn-on-spills, an error): the gpu
+# preset lists those ptxas compiles without spills (docs/performance.md "Rows in registers: what
+# ptxas says"); a build of PTX alone runs no ptxas and checks nothing.
+set(ROTORSWEEP_GPU_SPILL_FREE_SHAPES "" CACHE STRING "Register kernel shapes whose machine code must not spill")
 # n > 0: the register kernels run n blocks of 128 threads per multiprocessor at least, their registers
 # capped at 65536 / (128 n) and the rest spilled (a trade of spills for resident warps to measure).
 set(ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS 0 CACHE STRING "Blocks per multiprocessor the register kernels are bounded to (0: none)")

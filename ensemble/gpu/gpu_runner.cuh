@@ -50,7 +50,7 @@ __global__ void sweep_slots(SlotSchedule schedule, SlotViews slots, unsigned lon
 /// counter for all; the team's scratch is its part of the block's shared memory or, where `scratch` is
 /// given, of that global buffer (per_team values each).
 template <template <class, class> class Driver, class TeamIntegrator, class Schedule, class Views>
-__global__ void sweep_slots_on_teams(Schedule schedule, Views slots, unsigned long long count,
+__global__ void sweep_slots_on_teams(const __grid_constant__ Schedule schedule, Views slots, unsigned long long count,
                                      unsigned long long* next, unsigned team, double* scratch,
                                      std::size_t per_team) {
   using Team = std::remove_const_t<typename TeamIntegrator::TeamType>;

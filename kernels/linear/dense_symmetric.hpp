@@ -153,9 +153,10 @@ class DenseSymmetric {
     const std::size_t n = n_;
     const RowShare every_row;
     for_rows_below(k, share, [&](std::size_t i) {
-      for_rows_below(k, every_row, [&](std::size_t j) {
-        if (j <= i) entries_[i * n + j] -= entries_[i * n + k] * entries_[j * n + k] * pivot_[k];
-      });
+      const auto take = [&](std::size_t j) {
+        entries_[i * n + j] -= entries_[i * n + k] * entries_[j * n + k] * pivot_[k];
+      };
+      for_rows_below(k, every_row, take, i);
     });
   }
   /// The inertia test and the strict-FM closed form from the finished factor.
@@ -220,14 +221,16 @@ class DenseSymmetric {
     if (wrap_ && i + band_ >= n_) return 0;
     return i > band_ ? i - band_ : 0;
   }
-  /// Calls f(i) for the rows i > k of `share`, ascending, whose envelope holds column k.
+  /// Calls f(i) for the rows k < i ≤ last of `share`, ascending, whose envelope holds column k.
   template <class F>
-  ROTORSWEEP_HD void for_rows_below(std::size_t k, RowShare share, F&& f) const {
-    const std::size_t near_end = k + band_ < n_ - 1 ? k + band_ : n_ - 1;
+  ROTORSWEEP_HD void for_rows_below(std::size_t k, RowShare share, F&& f,
+                                    std::size_t last = ~std::size_t(0)) const {
+    const std::size_t end = last < n_ - 1 ? last : n_ - 1;
+    const std::size_t near_end = k + band_ < end ? k + band_ : end;
     for (std::size_t i = share.first_from(k + 1); i <= near_end; i += share.ranks) f(i);
     if (!wrap_) return;
     const std::size_t ring_start = n_ > band_ ? n_ - band_ : 0;
-    for (std::size_t i = share.first_from(near_end + 1 > ring_start ? near_end + 1 : ring_start); i < n_;
+    for (std::size_t i = share.first_from(near_end + 1 > ring_start ? near_end + 1 : ring_start); i <= end;
          i += share.ranks)
       f(i);
   }

@@ -32,9 +32,10 @@ class TeamRosenbrock {
   static constexpr int max_stages = RosenbrockTableau::max_stages;
   static constexpr std::size_t quadratures = Integrals::max_count;  ///< at most
 
+  /// `table` outlives the stepper (on a device: the kernel's parameters, read where they are).
   ROTORSWEEP_HD TeamRosenbrock(const Model& model, std::size_t ranks, const RosenbrockTableau& table,
                                LaneArena<double>& arena)
-      : table_(table),
+      : table_(&table),
         n_(model.dimension()),
         ranks_(ranks),
         carried_(model.quadrature_count()),
@@ -48,8 +49,8 @@ class TeamRosenbrock {
         scratch_(arena.take(n_)),
         partial_(arena.take(quadratures * ranks)) {}
 
-  ROTORSWEEP_HD int order() const { return table_.order; }
-  ROTORSWEEP_HD int embedded_order() const { return table_.embedded_order; }
+  ROTORSWEEP_HD int order() const { return table_->order; }
+  ROTORSWEEP_HD int embedded_order() const { return table_->embedded_order; }
   ROTORSWEEP_HD std::size_t quadrature_count() const { return carried_; }
 
   /// One step of size h from (t, y, q) into y_new, q_new and the error estimates; returns whether it
@@ -58,11 +59,11 @@ class TeamRosenbrock {
                              const double* q, double* y_new, double* q_new, double* y_error,
                              double* q_error) {
     linearize(team, model, y, t);
-    const Step step{t, h, h * table_.gamma, 1.0 / h};
+    const Step step{t, h, h * table_->gamma, 1.0 / h};
     if constexpr (requires { model.strict_fm(0); }) jacobian_.keep_constant_solutions(model.strict_fm(0));
     jacobian_.factor(team, 1.0 / step.h_gamma);
     double quad_stages[max_stages][quadratures] = {};
-    for (int i = 0; i < table_.stages; ++i) run_stage(team, model, step, y, quad_stages, i);
+    for (int i = 0; i < table_->stages; ++i) run_stage(team, model, step, y, quad_stages, i);
     combine(team, y, q, quad_stages, y_new, q_new, y_error, q_error);
     return jacobian_.positive_definite();
   }
@@ -99,13 +100,13 @@ class TeamRosenbrock {
     if (i > 0) {
       Terms arguments;
       for (int j = 0; j < i; ++j)
-        if (table_.a[i][j] != 0.0) arguments.add(table_.a[i][j], stage(j));
+        if (table_->a[i][j] != 0.0) arguments.add(table_->a[i][j], stage(j));
       each_combination(team, arguments, [&](std::size_t k) { return y[k]; }, argument_);
-      evaluate(team, model, argument_, s.t + table_.alpha[i] * s.h, qdot_);
+      evaluate(team, model, argument_, s.t + table_->alpha[i] * s.h, qdot_);
     }
-    const double time_weight = table_.gamma_sum[i] * s.h;
+    const double time_weight = table_->gamma_sum[i] * s.h;
     Terms earlier;  // c_ij / h U_j for every j < i
-    for (int j = 0; j < i; ++j) earlier.add(table_.c[i][j] * s.inv_h, stage(j));
+    for (int j = 0; j < i; ++j) earlier.add(table_->c[i][j] * s.inv_h, stage(j));
     double* u = stage(i);
     each_combination(team, earlier, [&](std::size_t k) { return f_[k] + time_weight * df_dt_[k]; }, u);
     jacobian_.solve(team, u);
@@ -132,17 +133,17 @@ class TeamRosenbrock {
                              const double (&quad_stages)[max_stages][quadratures], double* y_new, double* q_new,
                              double* y_error, double* q_error) const {
     Terms solution, estimate;
-    for (int i = 0; i < table_.stages; ++i) {
-      if (table_.m[i] != 0.0) solution.add(table_.m[i], stage(i));
-      if (table_.e[i] != 0.0) estimate.add(table_.e[i], stage(i));
+    for (int i = 0; i < table_->stages; ++i) {
+      if (table_->m[i] != 0.0) solution.add(table_->m[i], stage(i));
+      if (table_->e[i] != 0.0) estimate.add(table_->e[i], stage(i));
     }
     each_combination(team, solution, [&](std::size_t k) { return y[k]; }, y_new);
     each_combination(team, estimate, [](std::size_t) { return 0.0; }, y_error);
     for (std::size_t p = 0; p < quadrature_count(); ++p) {
       double sum = q[p], error = 0.0;
-      for (int i = 0; i < table_.stages; ++i) {
-        if (table_.m[i] != 0.0) sum = sum + table_.m[i] * quad_stages[i][p];
-        if (table_.e[i] != 0.0) error = error + table_.e[i] * quad_stages[i][p];
+      for (int i = 0; i < table_->stages; ++i) {
+        if (table_->m[i] != 0.0) sum = sum + table_->m[i] * quad_stages[i][p];
+        if (table_->e[i] != 0.0) error = error + table_->e[i] * quad_stages[i][p];
       }
       q_new[p] = sum;
       q_error[p] = error;
@@ -159,7 +160,7 @@ class TeamRosenbrock {
     model.team_time_derivatives(time_sums, t, start_qdot_, dq_dt_);
   }
 
-  RosenbrockTableau table_;
+  const RosenbrockTableau* table_;  ///< outlives the stepper (a device reads it from its parameters)
   std::size_t n_, ranks_;
   std::size_t carried_;  ///< the model's quadratures
   typename Model::Workspace work_;

@@ -87,7 +87,7 @@ __global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_
 }
 
 /// A member of the nearest-neighbour rows integrated by a warp team over one period (team_integrator.hpp).
-__global__ void advance_on_teams(RosenbrockTableau method, double* storage, std::size_t per_team,
+__global__ void advance_on_teams(const __grid_constant__ RosenbrockTableau method, double* storage, std::size_t per_team,
                                  std::size_t rows, unsigned team_size, const double* A, double* theta,
                                  double* drive) {
   using Stepper = TeamRosenbrock<const WarpTeam>;
