@@ -1,11 +1,13 @@
 // `rotorsweep bench host`: the host's share of a GPU sweep per member, measured without a GPU: a chunk's
-// fill, the members' summaries, and the summaries with the result file's writes (as `rotorsweep run`).
+// fill, the members' summaries, and the summaries with the result file's writes (as `rotorsweep run`), the
+// rows in order and scattered as a GPU's two passes deliver them.
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -63,8 +65,27 @@ double median(std::vector<double> x) {
 
 /// The median seconds of each step for chunks of `members` of the curve's scene at N rows.
 struct HostSteps {
-  double fill, summaries, writes;
+  double fill, summaries, writes, ordered_writes, scattered_writes;
 };
+
+/// The seconds one thread takes to write `results` into a new result file at `path`, rows in order or,
+/// `scattered`, as a GPU sweep delivers them: every fourth member first (its averaged periods did not
+/// slip), the other three after their shadow runs.
+double time_writes(const ensemble::Scene& scene, const ensemble::MemberPlan& plan,
+                   const std::vector<ensemble::MemberResult>& results, bool scattered,
+                   const std::filesystem::path& path) {
+  std::filesystem::remove(path);
+  const io::ResultFile file(path.string(), scene, io::Provenance{"bench host", "", "", "cpu", ""});
+  io::MemberStream stream(file, plan, {}, [] {});
+  const auto start = std::chrono::steady_clock::now();
+  for (const int pass : {0, 1})
+    for (const auto& r : results)
+      if (!scattered ? pass == 0 : (r.index % 4 == 0) == (pass == 0)) stream.add(ensemble::MemberResult(r));
+  stream.flush();
+  const double seconds = seconds_since(start);
+  std::filesystem::remove(path);
+  return seconds;
+}
 
 HostSteps time_host_steps(int rows, std::size_t members, int threads, int repeats,
                           const std::filesystem::path& path) {
@@ -73,7 +94,7 @@ HostSteps time_host_steps(int rows, std::size_t members, int threads, int repeat
   const ensemble::MemberSource source{scene.member_count(), [&](std::size_t k) { return plan[k]; }, {}};
   const ensemble::VariantRange range{&source, 0, source.count};
   ensemble::SlotChunk chunk(ensemble::slot_schedule(scene, plan[0], 1.0), members);
-  std::vector<double> fill, summaries, writes;
+  std::vector<double> fill, summaries, writes, ordered, scattered;
   for (int repeat = 0; repeat < repeats; ++repeat) {
     auto start = std::chrono::steady_clock::now();
     chunk.fill(scene, range, 0, members);
@@ -85,15 +106,26 @@ HostSteps time_host_steps(int rows, std::size_t members, int threads, int repeat
     summaries.push_back(seconds_since(start));
 
     std::filesystem::remove(path);
-    const io::ResultFile file(path.string(), scene, io::Provenance{"bench host", "", "", "cpu", ""});
-    io::MemberStream stream(file, plan, {}, [] {});
-    start = std::chrono::steady_clock::now();
-    chunk.deliver(scene, threads, [&](ensemble::MemberResult&& r) { stream.add(std::move(r)); });
-    stream.flush();
-    writes.push_back(seconds_since(start));
+    {
+      const io::ResultFile file(path.string(), scene, io::Provenance{"bench host", "", "", "cpu", ""});
+      io::MemberStream stream(file, plan, {}, [] {});
+      start = std::chrono::steady_clock::now();
+      chunk.deliver(scene, threads, [&](ensemble::MemberResult&& r) { stream.add(std::move(r)); });
+      stream.flush();
+      writes.push_back(seconds_since(start));
+    }
+
+    std::vector<ensemble::MemberResult> results;
+    std::mutex lock;
+    chunk.deliver(scene, threads, [&](ensemble::MemberResult&& r) {
+      const std::lock_guard guard(lock);
+      results.push_back(std::move(r));
+    });
+    std::sort(results.begin(), results.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+    ordered.push_back(time_writes(scene, plan, results, false, path));
+    scattered.push_back(time_writes(scene, plan, results, true, path));
   }
-  std::filesystem::remove(path);
-  return {median(fill), median(summaries), median(writes)};
+  return {median(fill), median(summaries), median(writes), median(ordered), median(scattered)};
 }
 
 }  // namespace
@@ -118,6 +150,8 @@ int run_bench_host(const BenchHostOptions& options) {
     row("fill (one thread)", steps.fill);
     row("summaries", steps.summaries);
     row("summaries and file writes", steps.writes);
+    row("file writes alone (one thread)", steps.ordered_writes);
+    row("file writes alone, rows scattered (one thread)", steps.scattered_writes);
     std::fflush(stdout);
   }
   return 0;

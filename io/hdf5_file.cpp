@@ -287,6 +287,40 @@ void Hdf5Location::create_column(const std::string& name, ColumnType type, const
   give_units(set.id(), units);
 }
 
+namespace {
+
+/// Selects whole rows (ascending) of a dataset of up to three dimensions; false where HDF5 fails.
+/// Few runs of consecutive rows become one hyperslab per run; more become every element of each row as
+/// a point, in the rows' order: HDF5 1.10's union of k hyperslabs costs more than k² steps (minutes at
+/// k = 64 000, the scattered rows the GPU's second pass leaves), points cost time linear in the elements.
+bool select_rows(hid_t space, int rank, const std::vector<hsize_t>& rows, const hsize_t dims[3]) {
+  constexpr std::size_t most_runs = 64;
+  std::size_t runs = 1;
+  for (std::size_t i = 1; i < rows.size() && runs <= most_runs; ++i) runs += rows[i] != rows[i - 1] + 1;
+  if (runs > most_runs) {
+    std::vector<hsize_t> points;
+    points.reserve(rows.size() * dims[1] * dims[2] * std::size_t(rank));
+    for (const hsize_t row : rows)
+      for (hsize_t j = 0; j < dims[1]; ++j)
+        for (hsize_t k = 0; k < dims[2]; ++k) {
+          const hsize_t point[3] = {row, j, k};
+          points.insert(points.end(), point, point + rank);
+        }
+    return H5Sselect_elements(space, H5S_SELECT_SET, points.size() / std::size_t(rank), points.data()) >= 0;
+  }
+  H5Sselect_none(space);
+  for (std::size_t i = 0; i < rows.size();) {
+    std::size_t j = i + 1;
+    while (j < rows.size() && rows[j] == rows[j - 1] + 1) ++j;
+    const hsize_t start[3] = {rows[i], 0, 0}, count[3] = {hsize_t(j - i), dims[1], dims[2]};
+    if (H5Sselect_hyperslab(space, H5S_SELECT_OR, start, nullptr, count, nullptr) < 0) return false;
+    i = j;
+  }
+  return true;
+}
+
+}  // namespace
+
 void Hdf5Location::write_selected_rows(const std::string& name, const std::vector<hsize_t>& rows,
                                        hid_t memory_type, const void* data) const {
   if (rows.empty()) return;
@@ -296,17 +330,9 @@ void Hdf5Location::write_selected_rows(const std::string& name, const std::vecto
   if (rank > 3) fail("write rows of", name);
   hsize_t dims[3] = {0, 1, 1};
   H5Sget_simple_extent_dims(file_space.id(), dims, nullptr);
-  H5Sselect_none(file_space.id());
-  // one hyperslab per run of consecutive rows
-  for (std::size_t i = 0; i < rows.size();) {
-    std::size_t j = i + 1;
-    while (j < rows.size() && rows[j] == rows[j - 1] + 1) ++j;
-    const hsize_t start[3] = {rows[i], 0, 0}, count[3] = {hsize_t(j - i), dims[1], dims[2]};
-    if (rows[j - 1] >= dims[0] ||
-        H5Sselect_hyperslab(file_space.id(), H5S_SELECT_OR, start, nullptr, count, nullptr) < 0)
-      fail("select rows of", name);
-    i = j;
-  }
+  if (std::any_of(rows.begin(), rows.end(), [&](hsize_t row) { return row >= dims[0]; }) ||
+      !select_rows(file_space.id(), rank, rows, dims))
+    fail("select rows of", name);
   const hsize_t memory_dims[3] = {hsize_t(rows.size()), dims[1], dims[2]};
   const Hdf5Handle memory_space(H5Screate_simple(rank, memory_dims, nullptr), H5Sclose);
   if (H5Dwrite(set.id(), memory_type, memory_space.id(), file_space.id(), H5P_DEFAULT, data) < 0)
