@@ -1,4 +1,4 @@
-// `rotorsweep bench host` (apps/bench_host.cpp): its three steps each with a finite positive rate, the
+// `rotorsweep bench host` (apps/bench_host.cpp): its five steps each with a finite positive rate, the
 // result file it writes removed afterwards; bad options as exit code 2. No timing is asserted.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -22,7 +22,8 @@ TEST_CASE("bench host times the fill, the summaries and the file writes and leav
   REQUIRE(run.exit_code == 0);
   CHECK_THAT(run.output, Catch::Contains("600 members per chunk, 2 host threads"));
   for (const std::string rows : {"4", "6"})
-    for (const std::string step : {"fill (one thread)", "summaries", "summaries and file writes"}) {
+    for (const std::string step : {"fill (one thread)", "summaries", "summaries and file writes",
+                                   "file writes alone (one thread)", "file writes alone, rows scattered (one thread)"}) {
       INFO("N = " << rows << ": " << step);
       const std::string cell = "| " + rows + " | " + step + " |";
       const auto at = run.output.find(cell);
