@@ -289,40 +289,44 @@ void Hdf5Location::create_column(const std::string& name, ColumnType type, const
 
 namespace {
 
-/// Selects whole rows (ascending) of a dataset of up to three dimensions; false where HDF5 fails.
-/// Few runs of consecutive rows become one hyperslab per run; more become every element of each row as
-/// a point, in the rows' order: HDF5 1.10's union of k hyperslabs costs more than k² steps (minutes at
-/// k = 64 000, the scattered rows the GPU's second pass leaves), points cost time linear in the elements.
-bool select_rows(hid_t space, int rank, const std::vector<hsize_t>& rows, const hsize_t dims[3]) {
-  constexpr std::size_t most_runs = 64;
-  std::size_t runs = 1;
-  for (std::size_t i = 1; i < rows.size() && runs <= most_runs; ++i) runs += rows[i] != rows[i - 1] + 1;
-  if (runs > most_runs) {
-    std::vector<hsize_t> points;
-    points.reserve(rows.size() * dims[1] * dims[2] * std::size_t(rank));
-    for (const hsize_t row : rows)
+/// Selects rows [first, last) of `rows` (ascending) of a dataset of up to three dimensions, one
+/// hyperslab per run of consecutive rows, or with `points` every element of each row as a point in the
+/// rows' order; false where HDF5 fails.
+bool select_rows(hid_t space, int rank, const hsize_t dims[3], const hsize_t* first, const hsize_t* last,
+                 bool points) {
+  if (points) {
+    std::vector<hsize_t> coordinates;
+    coordinates.reserve(std::size_t(last - first) * dims[1] * dims[2] * std::size_t(rank));
+    for (const hsize_t* row = first; row != last; ++row)
       for (hsize_t j = 0; j < dims[1]; ++j)
         for (hsize_t k = 0; k < dims[2]; ++k) {
-          const hsize_t point[3] = {row, j, k};
-          points.insert(points.end(), point, point + rank);
+          const hsize_t point[3] = {*row, j, k};
+          coordinates.insert(coordinates.end(), point, point + rank);
         }
-    return H5Sselect_elements(space, H5S_SELECT_SET, points.size() / std::size_t(rank), points.data()) >= 0;
+    return H5Sselect_elements(space, H5S_SELECT_SET, coordinates.size() / std::size_t(rank),
+                              coordinates.data()) >= 0;
   }
   H5Sselect_none(space);
-  for (std::size_t i = 0; i < rows.size();) {
-    std::size_t j = i + 1;
-    while (j < rows.size() && rows[j] == rows[j - 1] + 1) ++j;
-    const hsize_t start[3] = {rows[i], 0, 0}, count[3] = {hsize_t(j - i), dims[1], dims[2]};
+  for (const hsize_t* run = first; run != last;) {
+    const hsize_t* end = run + 1;
+    while (end != last && *end == *(end - 1) + 1) ++end;
+    const hsize_t start[3] = {*run, 0, 0}, count[3] = {hsize_t(end - run), dims[1], dims[2]};
     if (H5Sselect_hyperslab(space, H5S_SELECT_OR, start, nullptr, count, nullptr) < 0) return false;
-    i = j;
+    run = end;
   }
   return true;
 }
 
 }  // namespace
 
+// HDF5 1.10 unites k hyperslabs in more than k² steps (per column of a 10⁶-row dataset, every fourth
+// row: 1 000 take 9 ms, 16 000 7.4 s, 64 000 528 s), and the GPU's two passes leave batches of
+// scattered rows. So a batch of more than 16 runs goes as points where a row holds a few values (HDF5
+// selects points in linear time: 0.16 µs per one-value row) and otherwise in parts of 16 runs, one
+// H5Dwrite each (3.4 µs per 128-value row, against 16 µs as points); docs/performance.md.
 void Hdf5Location::write_selected_rows(const std::string& name, const std::vector<hsize_t>& rows,
                                        hid_t memory_type, const void* data) const {
+  constexpr std::size_t runs_per_part = 16, most_values_as_points = 8;
   if (rows.empty()) return;
   auto set = open_dataset(name);
   const Hdf5Handle file_space(H5Dget_space(set.id()), H5Sclose);
@@ -330,13 +334,28 @@ void Hdf5Location::write_selected_rows(const std::string& name, const std::vecto
   if (rank > 3) fail("write rows of", name);
   hsize_t dims[3] = {0, 1, 1};
   H5Sget_simple_extent_dims(file_space.id(), dims, nullptr);
-  if (std::any_of(rows.begin(), rows.end(), [&](hsize_t row) { return row >= dims[0]; }) ||
-      !select_rows(file_space.id(), rank, rows, dims))
+  if (std::any_of(rows.begin(), rows.end(), [&](hsize_t row) { return row >= dims[0]; }))
     fail("select rows of", name);
-  const hsize_t memory_dims[3] = {hsize_t(rows.size()), dims[1], dims[2]};
-  const Hdf5Handle memory_space(H5Screate_simple(rank, memory_dims, nullptr), H5Sclose);
-  if (H5Dwrite(set.id(), memory_type, memory_space.id(), file_space.id(), H5P_DEFAULT, data) < 0)
-    fail("write rows of", name);
+  std::size_t runs = 1;
+  for (std::size_t i = 1; i < rows.size(); ++i) runs += rows[i] != rows[i - 1] + 1;
+  const bool points = runs > runs_per_part && dims[1] * dims[2] <= most_values_as_points;
+  const std::size_t row_bytes = H5Tget_size(memory_type) * dims[1] * dims[2];
+  for (std::size_t first = 0; first < rows.size();) {
+    std::size_t last = first + 1;
+    if (points || runs <= runs_per_part)
+      last = rows.size();
+    else
+      for (std::size_t part_runs = 1; last < rows.size(); ++last)
+        if (rows[last] != rows[last - 1] + 1 && ++part_runs > runs_per_part) break;
+    if (!select_rows(file_space.id(), rank, dims, rows.data() + first, rows.data() + last, points))
+      fail("select rows of", name);
+    const hsize_t memory_dims[3] = {hsize_t(last - first), dims[1], dims[2]};
+    const Hdf5Handle memory_space(H5Screate_simple(rank, memory_dims, nullptr), H5Sclose);
+    if (H5Dwrite(set.id(), memory_type, memory_space.id(), file_space.id(), H5P_DEFAULT,
+                 static_cast<const char*>(data) + first * row_bytes) < 0)
+      fail("write rows of", name);
+    first = last;
+  }
   // closing writes the dataset's buffered rows: a failure there is a failed write too
   auto closing = std::move(set);
   if (H5Dclose(closing.release()) < 0) fail("write rows of", name);

@@ -105,7 +105,7 @@ TEST_CASE("scattered rows (every third of 3 000, as a GPU's second pass leaves t
   const auto dir = rotorsweep::testing::scratch_directory("hdf5-scattered");
   const std::string path = (dir / "scattered.h5").string();
   constexpr hsize_t rows_in_file = 3000;
-  std::vector<hsize_t> rows;  // 1 000 runs of one row: beyond the runs that become hyperslabs
+  std::vector<hsize_t> rows;  // 1 000 runs of one row: points for narrow rows, parts of 16 runs for wide ones
   for (hsize_t r = 1; r < rows_in_file; r += 3) rows.push_back(r);
   std::vector<double> flat, blocks;
   std::vector<std::int64_t> pairs;
@@ -113,14 +113,14 @@ TEST_CASE("scattered rows (every third of 3 000, as a GPU's second pass leaves t
   for (const hsize_t r : rows) {
     flat.push_back(double(r));
     pairs.insert(pairs.end(), {std::int64_t(r), -std::int64_t(r)});
-    for (int k = 0; k < 6; ++k) blocks.push_back(10.0 * double(r) + k);
+    for (int k = 0; k < 12; ++k) blocks.push_back(100.0 * double(r) + k);
     labels.push_back("row " + std::to_string(r));
   }
   {
     const auto file = Hdf5Location::create_file(path);
     file.create_column("flat", ColumnType::float64, {rows_in_file, 0, 0}, "");
     file.create_column("pairs", ColumnType::int64, {rows_in_file, 2, 0}, "");
-    file.create_column("blocks", ColumnType::float64, {rows_in_file, 2, 0, 3}, "");
+    file.create_column("blocks", ColumnType::float64, {rows_in_file, 3, 0, 4}, "");
     file.create_column("labels", ColumnType::text, {rows_in_file, 0, 16}, "");
     file.write_rows("flat", rows, flat.data());
     file.write_rows("pairs", rows, pairs.data());
@@ -128,12 +128,13 @@ TEST_CASE("scattered rows (every third of 3 000, as a GPU's second pass leaves t
     file.write_rows("labels", rows, labels);
   }
   const auto file = Hdf5Location::open_file(path);
-  for (const hsize_t r : {hsize_t(1), hsize_t(4), hsize_t(1501), hsize_t(2998)}) {
+  for (const hsize_t r : {hsize_t(1), hsize_t(4), hsize_t(46), hsize_t(49), hsize_t(1501), hsize_t(2998)}) {
     INFO("row " << r);
     CHECK(file.read_rows_doubles("flat", r, 1) == std::vector<double>{double(r)});
     CHECK(file.read_rows_integers("pairs", r, 1) == std::vector<std::int64_t>{std::int64_t(r), -std::int64_t(r)});
-    const double b = 10.0 * double(r);
-    CHECK(file.read_rows_doubles("blocks", r, 1) == std::vector<double>{b, b + 1, b + 2, b + 3, b + 4, b + 5});
+    std::vector<double> block;
+    for (int k = 0; k < 12; ++k) block.push_back(100.0 * double(r) + k);
+    CHECK(file.read_rows_doubles("blocks", r, 1) == block);
     CHECK(file.read_rows_strings("labels", r, 1) == std::vector<std::string>{"row " + std::to_string(r)});
   }
 }
