@@ -20,13 +20,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// 800 members of some 7 CPU-milliseconds each (about 3 s on two cores, 5.5 s on one): the runs to be
-/// interrupted run on one thread and are signalled after 10 to 20 % of the whole run's wall time on two
-/// (random_delay), when some of their members are written and most are not.
+/// 800 members of some 3.5 CPU-milliseconds each (about 1.5 s on two cores, 2.8 s on one): the runs to
+/// be interrupted run on one thread and are signalled after 10 to 20 % of the whole run's wall time on
+/// two (random_delay), when some of their members are written and most are not.
 const char* long_scene =
     "[model]\nrows = 20\n[drive]\ng = [0.0011]\n[sweep]\nA = { from = 0.5, to = 12.0, count = 80 }\n"
-    "[initial]\nkinds = [\"AFM\", \"random\"]\nreplicas = 5\n[schedule]\nrelax_periods = 4\naverage_periods "
-    "= 4\n";
+    "[initial]\nkinds = [\"AFM\", \"random\"]\nreplicas = 5\n[schedule]\nrelax_periods = 2\naverage_periods "
+    "= 2\n";
 const std::size_t long_scene_members = 800;
 
 std::string bytes_of(const fs::path& path) {
@@ -229,7 +229,7 @@ TEST_CASE("a second writer of a running run's output is refused and the first ru
   const auto slider = write_text(dir / "slider.toml", "[sweep]\nseparation = 8e-3\n");
   const auto log = dir / "log.txt";
   const std::string exe = ROTORSWEEP_EXECUTABLE, out = "'" + (dir / "out.h5").string() + "'";
-  // the first run in the background (on one thread: some 5 s); while it runs, every way of writing there:
+  // the first run in the background (on one thread: some 3 s); while it runs, every way of writing there:
   // each must exit 2
   const std::string second = exe + " run '" + scene.string() + "' -q -o " + out;
   const std::string command =
