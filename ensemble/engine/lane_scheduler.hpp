@@ -16,7 +16,7 @@ namespace rotorsweep::ensemble {
 ///   Member, Result, width, refill();
 ///   start(lane, member, queued) → the member's PeriodSchedule;  step();
 ///   failed(lane), any_period_ended(), period_ended(lane);
-///   close_period(lane) → the value the steady test compares;  next_period(lane);
+///   close_period(lane) → whether its steady test holds (read where the schedule has one);  next_period(lane);
 ///   finish(lane, progress, settled, retire): hands zero or one Result to retire();
 ///   take_queued() / has_queued(): members it adds itself (shadow runs), run before the plan's.
 /// Each lane owns its member and its MemberProgress (periods closed, steady state, when it retires:
@@ -97,9 +97,9 @@ class LaneScheduler {
 
   template <class Retire, class PeriodClosed>
   void close_period(std::size_t l, Retire& retire, PeriodClosed& period_closed) {
-    const double steady_value = problem_.close_period(l);
+    const bool steady = problem_.close_period(l);
     period_closed();
-    if (lanes_[l].progress.close_period(lanes_[l].schedule, steady_value)) {
+    if (lanes_[l].progress.close_period(lanes_[l].schedule, steady)) {
       finish(l, lanes_[l].progress.settled(), retire);
       return;
     }

@@ -9,6 +9,7 @@
 #include "ensemble/rows/device_period_record.hpp"
 #include "ensemble/rows/member_result.hpp"
 #include "ensemble/rows/member_slots.hpp"
+#include "ensemble/rows/steady_dissipation.hpp"
 #include "ensemble/rows/step_reducers.hpp"
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/steppers/lane_status.hpp"
@@ -46,6 +47,7 @@ ROTORSWEEP_HD void run_member(Body& body, const SlotSchedule& s, const SlotViews
   if (s.row_profiles) body.profile_start();
 
   MemberProgress progress;
+  SteadyDissipation steady{s.steady_tol};
   for (;;) {
     if (s.slips) body.keep_before();
     const double t_before = body.t();
@@ -74,7 +76,7 @@ ROTORSWEEP_HD void run_member(Body& body, const SlotSchedule& s, const SlotViews
       double* slot = slots.records + (k * s.record_capacity + closed % s.record_capacity) * channel_count;
       for (std::size_t c = 0; c < channel_count; ++c) slot[c] = record.values[c];
     });
-    if (progress.close_period(s.periods, record.dissipation())) break;
+    if (progress.close_period(s.periods, steady.close(record.dissipation()))) break;
     body.next_period(s.wrap_angles);
   }
   body.one([&] {

@@ -18,6 +18,7 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   SlotSchedule s;
   s.rows = variant.rows;
   s.periods = scene.period_schedule();
+  s.steady_tol = scene.steady_tol;
   s.wrap_angles = scene.wrap_angles;
   s.slips = scene.has(Observable::slips);
   s.slip_energies = scene.slip_kinds;

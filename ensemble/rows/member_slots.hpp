@@ -23,6 +23,7 @@ namespace rotorsweep::ensemble {
 struct SlotSchedule {
   std::size_t rows = 0;
   PeriodSchedule periods{};
+  double steady_tol = 0;  ///< the steady test's tolerance (SteadyDissipation), with periods.steady_test
   bool wrap_angles = false;
   bool slips = false;          ///< the slip counter is on
   bool slip_energies = false;  ///< it records each slip's energy (observables.slip_kinds)

@@ -1,5 +1,5 @@
 // Turns a member's period records into its summary: means and spread over the averaged
-// periods, and the regime rule (the steady-state test is MemberProgress's).
+// periods, and the regime rule (the steady-state test is steady_dissipation.hpp's).
 #pragma once
 
 #include <vector>

@@ -26,6 +26,7 @@
 #include "ensemble/rows/shadow_run.hpp"
 #include "ensemble/rows/slip_kinds.hpp"
 #include "ensemble/rows/smooth_alternation_window.hpp"
+#include "ensemble/rows/steady_dissipation.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -84,7 +85,7 @@ class RowProblem {
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips), scene.slip_kinds),
         profiles_(variant.rows, scene.row_profiles),
         period_schedule_(scene.period_schedule()),
-        shadow_schedule_{0, scene.average_periods, 0, 0.0},
+        shadow_schedule_{0, scene.average_periods, 0, false},
         shadows_on_(scene.runs_shadows() && !Loop::stochastic),
         slower_on_(scene.slip_kinds && !Loop::stochastic),
         symmetry_limited_(scene.symmetry_limited(variant.rtol)),
@@ -122,6 +123,7 @@ class RowProblem {
     lane.history.clear();
     lane.end_states.clear();
     lane.profiles.clear();
+    lane.steady = SteadyDissipation{scene_.steady_tol};
     return member.rerun == Rerun::shadow ? shadow_schedule_ : period_schedule_;
   }
 
@@ -134,8 +136,9 @@ class RowProblem {
   bool any_period_ended() const { return loop_.any_period_ended(); }
   bool period_ended(std::size_t l) const { return loop_.period_ended(l); }
 
-  /// Records the period lane l just closed; returns its dissipation, which the steady test compares.
-  double close_period(std::size_t l) {
+  /// Records the period lane l just closed; returns whether its dissipation agrees with the period
+  /// before's (the steady test, SteadyDissipation).
+  bool close_period(std::size_t l) {
     PeriodRecord record;
     record_quadratures(
         channels_, carried_, record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period,
@@ -158,7 +161,7 @@ class RowProblem {
     auto& history = lanes_[l].history;
     history.push_back(record);
     forget_old_periods(history);
-    return record.dissipation();
+    return lanes_[l].steady.close(record.dissipation());
   }
 
   /// Lane l goes on to its next period (wrapped with scene.wrap_angles).
@@ -216,6 +219,7 @@ class RowProblem {
     std::vector<std::vector<double>>
         end_states;  ///< θ at the last period ends (up to end_capacity_, oldest first)
     std::deque<std::vector<double>> profiles;  ///< row profiles of the last average_periods periods
+    SteadyDissipation steady;                  ///< the steady test over its periods
   };
 
   template <class F>

@@ -90,7 +90,7 @@ class SliderProblem {
     size_slider_series(lane.member, scene_, samples);
     lane.sample = 0;
     lane.boundaries = {};
-    return {0, int(samples), 0, 0.0};
+    return {0, int(samples), 0, false};
   }
 
   void step() {
@@ -101,8 +101,9 @@ class SliderProblem {
   bool any_period_ended() const { return loop_.any_period_ended(); }
   bool period_ended(std::size_t l) const { return loop_.period_ended(l); }
 
-  /// Lane l reached its next sample: records it (and a period boundary's quadratures).
-  double close_period(std::size_t l) {
+  /// Lane l reached its next sample: records it (and a period boundary's quadratures). A scan has no
+  /// steady test: false.
+  bool close_period(std::size_t l) {
     Lane& lane = lanes_[l];
     const std::size_t k = lane.sample++;
     record_sample(l, k);
@@ -111,7 +112,7 @@ class SliderProblem {
       lane.boundaries.dissipation.push_back(loop_.quadrature(l, Model::dissipation_index));
       lane.boundaries.energy.push_back(kernels::lane_get(energy_, l));
     }
-    return 0.0;
+    return false;
   }
 
   void next_period(std::size_t l) { loop_.set_stop(l, lanes_[l].grid->stops[lanes_[l].sample]); }
