@@ -39,11 +39,17 @@ FULL = {
                  3.7, 4.6, 4.7, 5.0, 6.0, 8.0, 10.0, 12.0}),
     "random_A": [0.5, 1.0, 1.5, 1.75, 2.0, 2.25, 2.5, 3.0, 3.25, 3.5, 3.55, 3.6, 3.7, 4.0, 4.25, 4.5, 5.0, 6.0, 8.0,
                  10.0],
-    "max_period": 24, "near_draws": 4, "disorder_replicas": 4, "random_replicas": 200,
+    "max_period": 24, "near_draws": 4, "disorder_replicas": 4, "random_replicas": 200, "wall_periods": 8,
+    "J_points": 200, "numerics": {},
 }
+# the quick run: the patterns of period ≤ 3 (every family but blocks) on the small rings, one near draw each (each
+# scene costs about 0.1 s besides its members); the walls followed over their last slip (in the first period) and two
+# periods after it; J(A) drawn from 20 points (the landscape takes 0.01 s a point); no shadow runs (they bound D's
+# error, which no table prints, and change no D, label or angle)
 QUICK = {
     "rows": [2, 4, 6, 8], "A": [1.0, 3.0, 4.0, 6.0, 11.0], "random_A": [1.0, 3.0, 6.0, 11.0],
-    "max_period": 4, "near_draws": 2, "disorder_replicas": 2, "random_replicas": 20,
+    "max_period": 3, "near_draws": 1, "disorder_replicas": 2, "random_replicas": 10, "wall_periods": 3,
+    "J_points": 20, "numerics": {"global_error": "local"},
 }
 REDUCTION_A = np.round(np.arange(0.25, 12.01, 0.25), 2)  # N = 2 is cheap: its branches on a fine grid
 # the A values the friction and basin tables quote (the quick grid has some of them)
@@ -158,10 +164,11 @@ def patterns(max_period, rows):
 # ---------------------------------------------------------------- runs and outcomes
 
 
-def sweep(rotorsweep, rows, A, initial, threads, disorder=0.0, row_profiles=False):
+def sweep(rotorsweep, rows, A, initial, threads, disorder=0.0, row_profiles=False, numerics=None):
     """The members (stacked Dataset) of one scene at g = G."""
     scene = {"model": {"rows": rows}, "drive": {"g": [G]}, "sweep": {"A": [float(a) for a in A]},
-             "initial": initial, "schedule": SCHEDULE, "observables": {"row_profiles": row_profiles}}
+             "initial": initial, "schedule": SCHEDULE, "observables": {"row_profiles": row_profiles},
+             "numerics": numerics or {}}
     if disorder:
         scene["disorder"] = {"A": disorder}
     return rotorsweep.members(rotorsweep.run(scene, threads=threads, progress=False, quiet=True))
@@ -238,14 +245,17 @@ def run_patterns(rotorsweep, grid, threads):
         rows = [n for n in grid["rows"] if n % p.period == 0]
         bits = np.array(p.bits) if p.bits else None
         exact = {"kinds": ["exact"], "angles": list(p.angles)}
-        members += collect(sweep(rotorsweep, rows, grid["A"], exact, threads), p, "clean", "exact", bits)
+        members += collect(sweep(rotorsweep, rows, grid["A"], exact, threads, numerics=grid["numerics"]), p, "clean",
+                           "exact", bits)
         n = max(rows)
         members += collect(sweep(rotorsweep, [n], grid["A"], {**exact, "replicas": grid["disorder_replicas"]},
-                                 threads, disorder=DISORDER, row_profiles=True), p, "disordered", "exact", bits)
+                                 threads, disorder=DISORDER, row_profiles=True, numerics=grid["numerics"]),
+                           p, "disordered", "exact", bits)
         for _ in range(grid["near_draws"]):
             angles = np.tile(p.angles, n // p.period) + rng.uniform(-NEAR_NOISE, NEAR_NOISE, n)
             near = {"kinds": ["exact"], "angles": angles.tolist()}
-            members += collect(sweep(rotorsweep, [n], grid["A"], near, threads), p, "clean", "near", bits)
+            members += collect(sweep(rotorsweep, [n], grid["A"], near, threads, numerics=grid["numerics"]), p,
+                               "clean", "near", bits)
         if (i + 1) % 10 == 0 or i + 1 == len(found):
             print(f"patterns: {i + 1}/{len(found)} done", file=sys.stderr, flush=True)
     return found, members
@@ -256,18 +266,20 @@ def run_random(rotorsweep, grid, threads):
     members = []
     for ring, disorder in (("clean", 0.0), ("disordered", DISORDER)):
         initial = {"kinds": ["random"], "replicas": grid["random_replicas"]}
-        m = sweep(rotorsweep, grid["rows"], grid["random_A"], initial, threads, disorder, row_profiles=True)
+        m = sweep(rotorsweep, grid["rows"], grid["random_A"], initial, threads, disorder, row_profiles=True,
+                  numerics=grid["numerics"])
         members += collect(m, None, ring, "random")
         print(f"random starts: {ring} rings done", file=sys.stderr, flush=True)
     return members
 
 
-def run_reduction(rotorsweep, A, threads, replicas):
+def run_reduction(rotorsweep, A, threads, replicas, numerics):
     """The two-angle reduction at the same g: N = 2 from FM and AFM starts, clean and with the disordered rings' σ;
     {(ring, regime, A): mean D/N}."""
     sums = {}
     for ring, disorder in (("clean", 0.0), ("disordered", DISORDER)):
-        m = sweep(rotorsweep, [2], A, {"kinds": ["FM", "AFM"], "replicas": replicas}, threads, disorder)
+        m = sweep(rotorsweep, [2], A, {"kinds": ["FM", "AFM"], "replicas": replicas}, threads, disorder,
+                  numerics=numerics)
         for label, a, d in zip(m.attractor.values, m.A.values, m.dissipation.values):
             sums.setdefault((ring, str(label).split(":")[0], float(a)), []).append(float(d) / 2)
     return {key: float(np.mean(values)) for key, values in sums.items()}
@@ -276,7 +288,7 @@ def run_reduction(rotorsweep, A, threads, replicas):
 WALL_A = 4.0                   # the wall-motion diagnostic: above the frozen walls' end, below A_−
 
 
-def wall_motion(rotorsweep, rows, threads, periods=8):
+def wall_motion(rotorsweep, rows, threads, periods, numerics):
     """Sparse walls of period N = rows at A = WALL_A, clean and disordered: the slipping rows (D_j > SLIPPING_ROW) and
     the attractor label in each of the first periods, from runs that average period p after p − 1 of relaxation."""
     angles = [float(np.pi * b) for b in sparse_walls(rows)]
@@ -286,7 +298,8 @@ def wall_motion(rotorsweep, rows, threads, periods=8):
         for p in range(1, periods + 1):
             scene = {"model": {"rows": rows}, "drive": {"g": [G]}, "sweep": {"A": [WALL_A]},
                      "initial": {"kinds": ["exact"], "angles": angles},
-                     "schedule": {"relax_periods": p - 1, "average_periods": 1}, "observables": {"row_profiles": True}}
+                     "schedule": {"relax_periods": p - 1, "average_periods": 1}, "observables": {"row_profiles": True},
+                     "numerics": numerics}
             if disorder:
                 scene["disorder"] = {"A": disorder}
             m = rotorsweep.members(rotorsweep.run(scene, threads=threads, progress=False, quiet=True))
@@ -493,14 +506,14 @@ def plot_survival(axis, found, members):
     axis.legend(fontsize=7, title="family (patterns)", title_fontsize=7)
 
 
-def plot_friction(axis, rotorsweep, members, reduction):
+def plot_friction(axis, rotorsweep, members, reduction, J_points):
     """D/N of the exact starts' attractors against the clean reduction's branches (broken where a branch is absent)
-    and J(A)."""
+    and J(A) on J_points points."""
     A = np.array(sorted({a for ring, _, a in reduction if ring == "clean"}))
     for regime, colour in (("AFM", "tab:blue"), ("CP", "black"), ("FM", "tab:red")):
         d = np.array([reduction.get(("clean", regime, a), np.nan) for a in A])
         axis.plot(A, d, color=colour, lw=1.5, zorder=3, label=f"reduction (N = 2): {regime}")
-    fine = np.linspace(4.5, 9.0, 200)
+    fine = np.linspace(4.5, 9.0, J_points)
     J, _ = rotorsweep.quasi_static_friction(fine)
     axis.plot(fine[J > 0], J[J > 0], "k--", lw=1, zorder=3, label="J(A), g → 0")
     styles = (("kept", "o", None, "frozen in its own pattern"), ("frozen repeating", "s", "grey", "frozen in another"),
@@ -554,10 +567,10 @@ def main():
 
     grid = QUICK if args.quick else FULL
     reduction = run_reduction(rotorsweep, sorted(set(grid["A"]) | set(grid["random_A"]) | set(REDUCTION_A)),
-                              args.threads, grid["disorder_replicas"])
+                              args.threads, grid["disorder_replicas"], grid["numerics"])
     found, members = run_patterns(rotorsweep, grid, args.threads)
     members += run_random(rotorsweep, grid, args.threads)
-    wall_motion(rotorsweep, max(grid["rows"]), args.threads)
+    wall_motion(rotorsweep, max(grid["rows"]), args.threads, grid["wall_periods"], grid["numerics"])
 
     survival_table(found, members)
     friction_table(members, reduction)
@@ -567,7 +580,7 @@ def main():
 
     figure, axes = plt.subplots(2, 2, figsize=(11, 8))
     plot_survival(axes[0, 0], found, members)
-    plot_friction(axes[0, 1], rotorsweep, members, reduction)
+    plot_friction(axes[0, 1], rotorsweep, members, reduction, grid["J_points"])
     plot_basins(axes[1, 0], members, grid, max(grid["rows"]))
     plot_repeating(axes[1, 1], members, grid)
     study_command_line.save(figure, args.out, 90)
