@@ -10,7 +10,7 @@
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/lanes/lane_arena.hpp"
-#include "kernels/models/model_concept.hpp"
+#include "kernels/steppers/model_concept.hpp"
 #include "kernels/steppers/lane_state.hpp"
 
 namespace rotorsweep::ensemble {

@@ -8,7 +8,7 @@
 #include "ensemble/rows/row_profile_integral.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/lanes/lane_arena.hpp"
-#include "kernels/models/model_concept.hpp"
+#include "kernels/steppers/model_concept.hpp"
 
 namespace rotorsweep::ensemble {
 

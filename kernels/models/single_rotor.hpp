@@ -11,7 +11,7 @@
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/linear/diagonal_jacobian.hpp"
-#include "kernels/models/model_concept.hpp"
+#include "kernels/steppers/model_concept.hpp"
 #include "kernels/models/rows/integrals.hpp"
 
 namespace rotorsweep::kernels {

@@ -11,7 +11,7 @@
 #include "kernels/lanes/lane.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
-#include "kernels/models/model_concept.hpp"
+#include "kernels/steppers/model_concept.hpp"
 #include "kernels/steppers/lane_state.hpp"
 #include "kernels/steppers/step_control.hpp"
 

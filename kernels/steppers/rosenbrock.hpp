@@ -7,7 +7,7 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/lanes/lane_arena.hpp"
-#include "kernels/models/model_concept.hpp"
+#include "kernels/steppers/model_concept.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
 #include "kernels/steppers/stage_combination.hpp"
 

@@ -8,7 +8,7 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/lanes/lane_math.hpp"
-#include "kernels/models/model_concept.hpp"
+#include "kernels/steppers/model_concept.hpp"
 
 namespace rotorsweep::kernels {
 

@@ -12,7 +12,7 @@
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/linear/dense_symmetric.hpp"
-#include "kernels/models/model_concept.hpp"
+#include "kernels/steppers/model_concept.hpp"
 #include "kernels/models/rows/integrals.hpp"
 #include "kernels/models/rows/row_quadratures.hpp"
 

@@ -13,7 +13,7 @@
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/linear/cyclic_tridiagonal.hpp"
-#include "kernels/models/model_concept.hpp"
+#include "kernels/steppers/model_concept.hpp"
 #include "kernels/models/rows/integrals.hpp"
 #include "kernels/models/rows/row_quadratures.hpp"
 
@@ -29,7 +29,7 @@ namespace rotorsweep::kernels {
 ///
 /// It carries the quadratures of the Integrals given at construction (a scene's observables,
 /// chosen at run time). Scratch lives in a Workspace, the per-row factors in storage_size(N) lane
-/// values of caller-owned storage. It satisfies LaneModel (kernels/models/model_concept.hpp).
+/// values of caller-owned storage. It satisfies LaneModel (kernels/steppers/model_concept.hpp).
 template <class V>
 class NearestNeighbourRows : public CarriedRowQuadratures {
  public:

@@ -13,7 +13,7 @@
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/linear/second_order_jacobian.hpp"
-#include "kernels/models/model_concept.hpp"
+#include "kernels/steppers/model_concept.hpp"
 #include "kernels/models/slider/substrate_table.hpp"
 
 namespace rotorsweep::kernels {
