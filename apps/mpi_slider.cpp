@@ -1,9 +1,11 @@
-// `mpirun -np K rotorsweep slider SCENE`: rank r runs plan members r, r + K, r + 2K, ... into a file of
-// its own, and rank 0 joins the rows they finished into OUT.h5.partial and puts the result in place.
+// `mpirun -np K rotorsweep slider SCENE`: the ranks take members from one counter per group of the plan
+// on rank 0 (as `run` does per variant), stream them into a file each, and rank 0 joins the rows.
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <mutex>
+#include <vector>
 
 #include "build_info.hpp"
 #include "ensemble/engine/instruction_set.hpp"
@@ -37,25 +39,32 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
 
   const io::Provenance provenance{options.scene, version, revision, ensemble::slider_device_label(scene),
                                   ensemble::instruction_set().name};
-  std::vector<std::size_t> mine;
-  for (std::size_t i = std::size_t(mpi.rank()); i < scene.member_count(); i += std::size_t(mpi.size()))
-    mine.push_back(i);
+  std::vector<std::size_t> plan(scene.member_count());
+  for (std::size_t i = 0; i < plan.size(); ++i) plan[i] = i;
   std::string error;
   io::SliderStreamOutcome outcome;
   int signal_number = 0;
   {
+    SharedCounters counters(plan.size(), mpi.rank());  // one per group, at the group's first position
     if (root) {
       print_slider_header(options, scene, threads, std::nullopt);
-      std::fprintf(stderr, "MPI: %d ranks share the plan (members rank, rank + %d, ...)\n", mpi.size(),
-                   mpi.size());
+      std::fprintf(stderr, "MPI: %d ranks share the plan\n", mpi.size());
     }
-    ProgressLine progress(mine.size(), root && !options.quiet);  // rank 0's share
+    ProgressLine progress(plan.size(), root && !options.quiet);
+    std::mutex progress_lock;
+    const auto claim = [&](std::size_t begin, std::size_t end) {
+      const std::size_t k = begin + counters.take(begin);
+      if (root && progress_lock.try_lock()) {
+        progress.update(std::min(k, end));  // members taken by all ranks, groups in plan order
+        progress_lock.unlock();
+      }
+      return k;
+    };
     const StopOnSignals signals;
     try {
       const io::SliderResultFile file(rank_file(partial, mpi.rank()), scene, provenance);
-      outcome = io::stream_slider_scan(file, scene, mine,
-                                       {threads, [&](std::size_t done) { progress.update(done); },
-                                        [&] { return signals.flag()->load(); }});
+      outcome = io::stream_slider_scan(file, scene, plan,
+                                       {threads, {}, [&] { return signals.flag()->load(); }, claim});
       error = outcome.write_error;
     } catch (const std::bad_alloc&) {
       error = "out of memory (an allocation in a worker thread failed)";
@@ -69,6 +78,11 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
   if (!error.empty()) std::fprintf(stderr, "error: rank %d: %s\n", mpi.rank(), error.c_str());
   double wall = outcome.seconds;
   int failed = error.empty() ? 0 : 1, all_threads = threads;
+  std::vector<unsigned long long> per_rank(std::size_t(mpi.size()), 0);
+  per_rank[std::size_t(mpi.rank())] = outcome.written;
+  MPI_Allreduce(MPI_IN_PLACE, per_rank.data(), mpi.size(), MPI_UNSIGNED_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  std::string shares;
+  for (std::size_t r = 0; r < per_rank.size(); ++r) shares += (r ? ", " : "") + std::to_string(per_rank[r]);
   MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   MPI_Allreduce(MPI_IN_PLACE, &all_threads, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
@@ -89,15 +103,17 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
         out.finish(wall, all_threads);
         out.close();
         target->commit();
-        std::fprintf(stderr, "wrote %s: %zu members in %s (%d ranks)\n", path.c_str(), joined,
-                     format_duration(wall).c_str(), mpi.size());
+        std::fprintf(stderr, "wrote %s: %zu members in %s (members per rank: %s)\n", path.c_str(), joined,
+                     format_duration(wall).c_str(), shares.c_str());
       } else {
         out.keep_partial(joined, wall, all_threads);
         out.close();
         target->keep();
-        std::fprintf(stderr, "%s: %zu of %zu members done, kept in %s (complete = FALSE).\nresume with: %s\n",
+        std::fprintf(stderr,
+                     "%s: %zu of %zu members done (per rank: %s), kept in %s (complete = FALSE).\n"
+                     "resume with: %s\n",
                      failed ? "error: a rank failed" : "stopped", joined, scene.member_count(),
-                     partial.c_str(), resume_command("slider", options, "").c_str());
+                     shares.c_str(), partial.c_str(), resume_command("slider", options, "").c_str());
         code = failed ? 1 : 128 + (signal_number ? signal_number : SIGINT);
       }
     } catch (const std::exception& e) {

@@ -209,8 +209,10 @@ int run_slider(const SliderOptions& options) {
   {
     try {
       outcome = io::stream_slider_scan(*file, scene, to_run,
-                                       {threads, [&](std::size_t done) { progress.update(done); },
-                                        [&] { return signals.flag()->load(); }});
+                                       {threads,
+                                        [&](std::size_t done) { progress.update(done); },
+                                        [&] { return signals.flag()->load(); },
+                                        {}});
     } catch (const std::bad_alloc&) {
       sweep_error = "out of memory (an allocation in a worker thread failed)";
     } catch (const std::exception& e) {

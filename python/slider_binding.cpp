@@ -56,7 +56,7 @@ std::size_t run_slider(const std::string& scene_text, bool is_path, int threads,
       std::vector<std::size_t> all(scene.member_count());
       std::iota(all.begin(), all.end(), std::size_t(0));
       outcome = io::stream_slider_scan(
-          file, scene, all, {threads, [&](std::size_t now) { done = now; }, [&] { return stop.load(); }});
+          file, scene, all, {threads, [&](std::size_t now) { done = now; }, [&] { return stop.load(); }, {}});
     } catch (...) {
       error = std::current_exception();
     }

@@ -2,16 +2,14 @@
 // runs lane schedulers of that instantiation on OpenMP threads.
 #pragma once
 
-#include <omp.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <exception>
 #include <mutex>
 
 #include "ensemble/engine/compile_time_choice.hpp"
 #include "ensemble/engine/lane_scheduler.hpp"
+#include "ensemble/engine/stopping_threads.hpp"
 #include "ensemble/rows/row_problem.hpp"
 #include "ensemble/rows/row_setup.hpp"
 #include "ensemble/rows/sweep.hpp"
@@ -22,9 +20,8 @@
 
 namespace rotorsweep::ensemble {
 
-/// Runs the members of `range` (one variant) on `threads` lane schedulers that share one counter.
-/// An exception in one of them (an allocation that fails) stops the others like the stop flag and
-/// is rethrown here, after every finished member has reached the sink.
+/// Runs the members of `range` (one variant) on `threads` lane schedulers that share one counter
+/// (run_on_threads: an exception in one of them, an allocation that fails, stops the others).
 template <class Model, class Integrator, class Setup>
 SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, const Setup& setup,
                                  int threads, const SweepControl& control, const ResultSink& sink) {
@@ -36,46 +33,39 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, 
   std::mutex progress_lock, statistics_lock;
   const auto start = std::chrono::steady_clock::now();
   const Member variant = range.source->at(range.begin);
-  std::atomic<bool> failed{false};
-  std::exception_ptr failure;
-  const auto stopped = [&] { return failed.load(std::memory_order_relaxed) || control.stopped(); };
 
-#pragma omp parallel num_threads(threads)
-  try {
-    LaneScheduler<RowProblem<Model, Integrator, Setup>> scheduler(scene, variant, setup);
-    const auto next_member = [&]() -> std::optional<Member> {
-      if (stopped()) return std::nullopt;
-      const std::size_t k =
-          range.source->claim ? range.source->claim(range) : next.fetch_add(1, std::memory_order_relaxed);
-      if (k >= range.end) return std::nullopt;
-      return range.source->at(k);
-    };
-    const auto retire = [&](MemberResult&& result) {
-      sink(std::move(result));
-      const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
-      if (control.progress && progress_lock.try_lock()) {
-        control.progress(finished);
-        progress_lock.unlock();
-      }
-    };
-    const auto period_closed = [&] {  // progress within long members
-      if (!control.periods) return;
-      control.periods->fetch_add(1, std::memory_order_relaxed);
-      if (control.progress && progress_lock.try_lock()) {
-        control.progress(done.load(std::memory_order_relaxed));
-        progress_lock.unlock();
-      }
-    };
-    scheduler.run(next_member, retire, stopped, period_closed);
-    const std::lock_guard guard(statistics_lock);
-    stats.lane_steps_busy += scheduler.lane_steps_busy();
-    stats.lane_steps_total += scheduler.lane_steps_total();
-  } catch (...) {
-    const std::lock_guard guard(statistics_lock);
-    if (!failure) failure = std::current_exception();
-    failed = true;
-  }
-  if (failure) std::rethrow_exception(failure);
+  run_on_threads(
+      threads, [&] { return control.stopped(); },
+      [&](const auto& stopped) {
+        LaneScheduler<RowProblem<Model, Integrator, Setup>> scheduler(scene, variant, setup);
+        const auto next_member = [&]() -> std::optional<Member> {
+          if (stopped()) return std::nullopt;
+          const std::size_t k =
+              range.source->claim ? range.source->claim(range) : next.fetch_add(1, std::memory_order_relaxed);
+          if (k >= range.end) return std::nullopt;
+          return range.source->at(k);
+        };
+        const auto retire = [&](MemberResult&& result) {
+          sink(std::move(result));
+          const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
+          if (control.progress && progress_lock.try_lock()) {
+            control.progress(finished);
+            progress_lock.unlock();
+          }
+        };
+        const auto period_closed = [&] {  // progress within long members
+          if (!control.periods) return;
+          control.periods->fetch_add(1, std::memory_order_relaxed);
+          if (control.progress && progress_lock.try_lock()) {
+            control.progress(done.load(std::memory_order_relaxed));
+            progress_lock.unlock();
+          }
+        };
+        scheduler.run(next_member, retire, stopped, period_closed);
+        const std::lock_guard guard(statistics_lock);
+        stats.lane_steps_busy += scheduler.lane_steps_busy();
+        stats.lane_steps_total += scheduler.lane_steps_total();
+      });
   stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.interrupted = control.stopped();
   return outcome;

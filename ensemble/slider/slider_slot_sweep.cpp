@@ -87,17 +87,23 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
     const SliderSlotSchedule schedule = slider_slot_schedule(scene, first.speed, size, first_step_scale);
     const std::size_t capacity = std::max<std::size_t>(1, device.chunk_members(schedule));
     SliderSlotChunk chunk(scene, first.speed, schedule, std::min(capacity, end - begin));
-    for (std::size_t at = begin; at < end; at += chunk.capacity()) {
+    std::size_t next = begin;
+    std::vector<std::size_t> claimed;  // a chunk's plan indices, claimed from [begin, end)
+    for (;;) {
       if (control.stopped && control.stopped()) return true;
-      const std::size_t count = std::min(chunk.capacity(), end - at);
-      chunk.fill(
-          {plan_indices.begin() + std::ptrdiff_t(at), plan_indices.begin() + std::ptrdiff_t(at + count)},
-          views);
+      claimed.clear();
+      while (claimed.size() < chunk.capacity()) {
+        const std::size_t at = control.claim ? control.claim(begin, end) : next++;
+        if (at >= end) break;
+        claimed.push_back(plan_indices[at]);
+      }
+      if (claimed.empty()) break;
+      chunk.fill(claimed, views);
       device.run(chunk);
       std::vector<SliderMember> members;
-      for (std::size_t k = 0; k < count; ++k) members.push_back(chunk.member(k));
+      for (std::size_t k = 0; k < claimed.size(); ++k) members.push_back(chunk.member(k));
       finished(std::move(members));
-      done += count;
+      done += claimed.size();
       if (control.progress) control.progress(done);
     }
     begin = end;

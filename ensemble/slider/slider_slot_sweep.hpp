@@ -36,11 +36,11 @@ using SliderTableBuilder = std::function<kernels::SubstrateTable(const SliderSce
 /// The first-step scale of the scene's stepper at its tolerances (kernels::AdaptiveIntegrator's).
 double slider_first_step_scale(const SliderScene& scene);
 
-/// run_slider_members on `device`: members `plan_indices` (ascending) in chunks of one size and speed,
-/// each chunk's members to `finished` at once (series on the scene's timeline), their separations'
-/// tables (with SliderScene::forces also the four at shifted tracks) built by `build_table` on the
-/// control's threads; progress after each chunk, stopped() checked between chunks. Returns whether
-/// stopped() left members out.
+/// run_slider_members on `device`: members `plan_indices` (ascending) in chunks of one size and speed
+/// (claimed with control.claim where set), each chunk's members to `finished` at once (series on the scene's
+/// timeline), their separations' tables (with SliderScene::forces also the four at shifted tracks) built by
+/// `build_table` on the control's threads; progress after each chunk, stopped() checked between chunks.
+/// Returns whether stopped() left members out.
 bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                                  const SliderScanControl& control,
                                  const std::function<void(std::vector<SliderMember>&&)>& finished,

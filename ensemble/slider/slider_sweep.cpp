@@ -8,11 +8,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <exception>
 #include <memory>
 #include <optional>
 
 #include "ensemble/engine/lane_scheduler.hpp"
+#include "ensemble/engine/stopping_threads.hpp"
 #include "ensemble/gpu/gpu_slider.hpp"
 #include "ensemble/slider/slider_member_summary.hpp"
 #include "ensemble/slider/slider_problem.hpp"
@@ -26,62 +26,62 @@ namespace {
 
 using V = kernels::simd_lane;
 
-/// Runs the members of each size (`sizes`, plan indices) on lane schedulers, one per thread and
-/// size, with one counter per size: a thread whose size has no member left goes on to the next size
-/// while the others finish theirs. `grids`: each speed's sample grid. Each finished member goes to
-/// `finished` (one call at a time) with its series on `samples` columns. Returns whether stopped()
-/// left any out; an exception in a worker (std::bad_alloc) stops the others and is rethrown here.
+/// Runs the members of each size (`sizes`: runs [begin, end) of `plan_indices`) on lane schedulers,
+/// one per thread and size, with one claim per size (control.claim, else a counter): a thread whose
+/// size has no member left goes on to the next size while the others finish theirs. `grids`: each
+/// speed's sample grid. Each finished member goes to `finished` (one call at a time) with its series on
+/// `samples` columns. Returns whether a stop left any out; an exception in a worker (std::bad_alloc)
+/// stops the others and is rethrown here.
 template <bool Inertial>
 bool run_sizes(const SliderScene& scene, const std::vector<SliderSampleGrid>& grids, std::size_t samples,
-               const std::vector<std::vector<std::size_t>>& sizes, const SliderScanControl& control,
+               const std::vector<std::size_t>& plan_indices,
+               const std::vector<std::pair<std::size_t, std::size_t>>& sizes,
+               const SliderScanControl& control,
                const std::function<void(std::vector<SliderMember>&&)>& finished) {
   const int threads = control.threads > 0 ? control.threads : omp_get_max_threads();
   std::vector<std::atomic<std::size_t>> next(sizes.size());
-  std::size_t done = 0, planned = 0;
-  for (const auto& indices : sizes) planned += indices.size();
-  std::atomic<bool> failed{false}, stopped{false};
-  std::exception_ptr failure;
-  const auto stop = [&] {
-    if (!stopped && control.stopped && control.stopped()) stopped = true;
-    return stopped || failed;
+  for (std::size_t s = 0; s < sizes.size(); ++s) next[s] = sizes[s].first;
+  std::size_t done = 0, members = 0;
+  for (const auto& [begin, end] : sizes) members += end - begin;
+  std::atomic<bool> stop_asked{false};
+  const auto asked = [&] {  // once asked, for good
+    if (!stop_asked && control.stopped && control.stopped()) stop_asked = true;
+    return stop_asked.load();
   };
   kernels::with_stepper<kernels::SliderModel<V, Inertial>>(scene.stepper, [&]<class Stepper>(const auto&) {
-#pragma omp parallel num_threads(threads)
-    try {
-      for (std::size_t s = 0; s < sizes.size() && !stop(); ++s) {
-        const std::vector<std::size_t>& indices = sizes[s];
-        LaneScheduler<SliderProblem<V, Inertial, Stepper>> scheduler(
-            scene, grids, slider_plan_member(scene, indices.front()).size, std::function<bool()>(stop));
-        scheduler.run(
-            [&]() -> std::optional<std::size_t> {
-              if (stop()) return std::nullopt;
-              const std::size_t k = next[s].fetch_add(1, std::memory_order_relaxed);
-              if (k >= indices.size()) return std::nullopt;
-              return indices[k];
-            },
-            [&](SliderMember&& member) {
-              pad_to_timeline(member, samples);
-              std::vector<SliderMember> one;
-              one.push_back(std::move(member));
+    run_on_threads(threads, asked, [&](const auto& stop) {
+      try {
+        for (std::size_t s = 0; s < sizes.size() && !stop(); ++s) {
+          const auto [begin, end] = sizes[s];
+          LaneScheduler<SliderProblem<V, Inertial, Stepper>> scheduler(
+              scene, grids, slider_plan_member(scene, plan_indices[begin]).size, std::function<bool()>(stop));
+          scheduler.run(
+              [&]() -> std::optional<std::size_t> {
+                if (stop()) return std::nullopt;
+                const std::size_t k = control.claim ? control.claim(begin, end)
+                                                    : next[s].fetch_add(1, std::memory_order_relaxed);
+                if (k >= end) return std::nullopt;
+                return plan_indices[k];
+              },
+              [&](SliderMember&& member) {
+                pad_to_timeline(member, samples);
+                std::vector<SliderMember> one;
+                one.push_back(std::move(member));
 #pragma omp critical(slider_finished)
-              {
-                finished(std::move(one));
-                ++done;
-                if (control.progress) control.progress(done);
-              }
-            },
-            stop);
+                {
+                  finished(std::move(one));
+                  ++done;
+                  if (control.progress) control.progress(done);
+                }
+              },
+              stop);
+        }
+      } catch (const kernels::SubstrateTableStopped&) {
+        // a substrate table's build was stopped: this thread stops as the others do within a step
       }
-    } catch (const kernels::SubstrateTableStopped&) {
-      // a substrate table's build was stopped: this thread stops as the others do within a step
-    } catch (...) {
-#pragma omp critical(slider_failure)
-      if (!failure) failure = std::current_exception();
-      failed = true;
-    }
+    });
   });
-  if (failure) std::rethrow_exception(failure);
-  return done < planned;
+  return stop_asked && done < members;
 }
 
 }  // namespace
@@ -98,18 +98,17 @@ bool run_slider_members(const SliderScene& scene, const std::vector<std::size_t>
   std::vector<SliderSampleGrid> grids;
   for (std::size_t v = 0; v < scene.speeds.size(); ++v) grids.emplace_back(slider_variant(scene, v, 0));
   // the members of each size in turn (a lane scheduler's loop has one grid of rotors)
-  std::vector<std::vector<std::size_t>> sizes;
-  std::size_t last_size = 0;
-  for (const std::size_t i : plan_indices) {
-    const std::size_t size = slider_plan_member(scene, i).index.size;
-    if (sizes.empty() || size != last_size) sizes.emplace_back();
-    sizes.back().push_back(i);
-    last_size = size;
-  }
+  std::vector<std::pair<std::size_t, std::size_t>> sizes;
+  for (std::size_t k = 0; k < plan_indices.size(); ++k)
+    if (k == 0 || slider_plan_member(scene, plan_indices[k]).index.size !=
+                      slider_plan_member(scene, plan_indices[k - 1]).index.size)
+      sizes.emplace_back(k, k + 1);
+    else
+      sizes.back().second = k + 1;
   if (sizes.empty()) return false;
   const std::size_t samples = slider_timeline(scene).samples;
-  return scene.overdamped ? run_sizes<false>(scene, grids, samples, sizes, control, finished)
-                          : run_sizes<true>(scene, grids, samples, sizes, control, finished);
+  return scene.overdamped ? run_sizes<false>(scene, grids, samples, plan_indices, sizes, control, finished)
+                          : run_sizes<true>(scene, grids, samples, plan_indices, sizes, control, finished);
 }
 
 double slider_thread_bytes(const SliderScene& scene) {

@@ -63,11 +63,15 @@ double slider_thread_bytes(const SliderScene& scene);
 
 /// How a scan runs: on `threads` threads (0: all); `progress(done)` after each member with the
 /// members finished so far; once `stopped()` is true no member starts and the running ones are
-/// abandoned within one step.
+/// abandoned within one step. `claim` (optional, as MemberSource::claim for rows): the next position
+/// in [begin, end) of the plan indices — a group the scan runs together, one size (on the GPU one size
+/// and speed) — for this process to run (≥ end: none left), from a counter shared with other
+/// processes; called from any thread. Without it the threads share one counter per group.
 struct SliderScanControl {
   int threads = 0;
   std::function<void(std::size_t)> progress;
   std::function<bool()> stopped;
+  std::function<std::size_t(std::size_t begin, std::size_t end)> claim;
 };
 
 /// Runs the members `plan_indices` (ascending) in lane blocks of one size each and hands each block's

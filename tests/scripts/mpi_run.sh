@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `mpirun -np 2 rotorsweep run` and `... slider` against the single-process runs: every dataset equal
-# byte for byte, both ranks took members, the ranks' files are gone, and --shard under mpirun is exit code 2.
+# byte for byte, both ranks took members from the shared counters, the ranks' files are gone, and
+# --shard under mpirun is exit code 2.
 # Usage: mpi_run.sh ROTORSWEEP_EXECUTABLE SCRATCH_DIR
 set -euo pipefail
 exe=$1 scratch=$2
@@ -48,6 +49,10 @@ SCENE
 mpirun -np 2 "$exe" slider "$scratch/slider.toml" -q --threads 1 -o "$scratch/slider-mpi.h5" 2> "$scratch/slider-mpi.log"
 cat "$scratch/slider-mpi.log"
 if ls "$scratch"/*.rank-* > /dev/null 2>&1; then echo "a rank's slider file was left behind" >&2; exit 1; fi
+shares=$(sed -n 's/.*members per rank: \([0-9]*\), \([0-9]*\)).*/\1 \2/p' "$scratch/slider-mpi.log")
+read -r first second <<< "$shares"
+[ "${first:-0}" -gt 0 ] && [ "${second:-0}" -gt 0 ] && [ $((first + second)) -eq 42 ] ||
+  { echo "both ranks must take slider members, 42 in all: '$shares'" >&2; exit 1; }
 /usr/bin/python3 - "$scratch/single.h5" "$scratch/mpi.h5" "$scratch/slider-single.h5" "$scratch/slider-mpi.h5" <<'PY'
 import sys, h5py
 def datasets(f):
