@@ -137,6 +137,12 @@ int run_bench_gpu(const BenchGpuOptions& options) {
   const bool gpu = options.device == "gpu";
   std::printf("rotorsweep bench gpu: device %s, members × %.3g\n",
               gpu ? ensemble::gpu_info().name.c_str() : "cpu", options.scale);
+  if (gpu) {  // the context's creation, outside the first row's wall time
+    const auto t0 = std::chrono::steady_clock::now();
+    ensemble::use_gpu();
+    std::printf("CUDA context created in %.2f s (not in the rows' wall times)\n",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
   // replicas scaled, at least one per A value
   const auto scaled = [&](BenchScene s) {
     s.replicas = std::max(1, int(std::lround(s.replicas * options.scale)));

@@ -25,7 +25,9 @@ struct GpuInfo {
 /// probed once; made the calling thread's device by use_gpu().
 const GpuInfo& gpu_info();
 
-/// Makes gpu_info()'s device the calling thread's CUDA device (each thread that runs a sweep on it).
+/// Makes gpu_info()'s device the calling thread's CUDA device (each thread that runs a sweep on it);
+/// the process's first call creates the device's context (CUDA 12 and later do so in cudaSetDevice).
+/// Throws std::runtime_error where there is no GPU backend or no GPU.
 void use_gpu();
 
 /// "cpu", or for a scene with numerics.device = "gpu" the result file's "device": "gpu (<name>; 8

@@ -16,6 +16,8 @@ const GpuInfo& gpu_info() {
   return info;
 }
 
+void use_gpu() { throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why); }
+
 SweepOutcome run_gpu_row_sweep(const Scene&, const VariantRange&, int, const SweepControl&,
                                const ResultSink&) {
   throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why);
