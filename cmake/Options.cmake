@@ -10,17 +10,16 @@ endif()
 option(ROTORSWEEP_MPI "Let rotorsweep run share a plan between mpirun ranks (needs libopenmpi-dev; off when absent)" ON)
 option(ROTORSWEEP_CUDA "Build the GPU backend (numerics.device = \"gpu\"; needs nvcc, off when absent)" ON)
 # The register kernels' shapes (docs/architecture.md "Register kernels"): lanes x slots per lane, "d"
-# for disordered rows, "sS" for S stage vectors (tableaus of at most S stages; 8 without it); each is
-# a CUDA unit of its own. The default is the shape of N = 8 … 24 (the suite's and the examples');
-# the gpu preset compiles every shape it measures.
-set(ROTORSWEEP_GPU_REGISTER_SHAPES "8x3;8x3d" CACHE STRING "Register kernel shapes LxR[d][sS] for the GPU backend")
+# for disordered rows, "sS" for S stage vectors (tableaus of at most S stages; 8 without it), "bB" for
+# B blocks of 128 threads resident per multiprocessor (registers capped, the rest spilled; none
+# without it); each is a CUDA unit of its own. The default holds N = 8 … 24 (the suite's and the
+# examples'): six stage vectors at 3 blocks for rodas4 and rodas4p2 (the fastest measured,
+# docs/performance.md), eight for rodas5p, disordered rows; the gpu preset compiles every shape it measures.
+set(ROTORSWEEP_GPU_REGISTER_SHAPES "8x3s6b3;8x3;8x3d" CACHE STRING "Register kernel shapes LxR[d][sS][bB] for the GPU backend")
 # Shapes among them whose machine code must not spill (ptxas --warn-on-spills, an error): the gpu
 # preset lists those ptxas compiles without spills (docs/performance.md "Rows in registers: what
 # ptxas says"); a build of PTX alone runs no ptxas and checks nothing.
 set(ROTORSWEEP_GPU_SPILL_FREE_SHAPES "" CACHE STRING "Register kernel shapes whose machine code must not spill")
-# n > 0: the register kernels run n blocks of 128 threads per multiprocessor at least, their registers
-# capped at 65536 / (128 n) and the rest spilled (a trade of spills for resident warps to measure).
-set(ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS 0 CACHE STRING "Blocks per multiprocessor the register kernels are bounded to (0: none)")
 # test_gpu, the GPU backend's checks on a device (ctest gpu_backend): built by the gpu preset, which
 # is what a device runs; elsewhere it could only be skipped.
 option(ROTORSWEEP_DEVICE_TESTS "Build test_gpu, the GPU backend's tests on a device" OFF)

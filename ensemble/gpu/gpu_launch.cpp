@@ -2,9 +2,11 @@
 // environment, which scenes run on teams, and the team's size by N.
 #include "ensemble/gpu/gpu_launch.hpp"
 
+#include <cstddef>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <type_traits>
 
 #include "ensemble/gpu/device_drivers.hpp"
@@ -99,11 +101,13 @@ std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape
       std::size_t(kernels::stepper_method<kernels::RosenbrockTableau>(scene.stepper).stages);
   std::optional<RegisterShape> best;
   for (const RegisterShape& shape : shapes) {
-    if (shape.disordered != disordered || !shape.holds(rows) || shape.stages < stages) continue;
-    if (!best || shape.capacity() < best->capacity() ||
-        (shape.capacity() == best->capacity() &&
-         (shape.lanes > best->lanes || (shape.lanes == best->lanes && shape.stages < best->stages))))
-      best = shape;
+    if (shape.disordered != disordered || !shape.holds(rows) || shape.stages < stages ||
+        launch.threads_per_block > shape.max_threads_per_block())
+      continue;
+    const auto rank = [](const RegisterShape& s) {  // smaller is better
+      return std::tuple{s.capacity(), -std::ptrdiff_t(s.lanes), s.stages, -int(s.blocks)};
+    };
+    if (!best || rank(shape) < rank(*best)) best = shape;
   }
   return best;
 }

@@ -8,27 +8,18 @@
 #include <stdexcept>
 #include <string>
 
+#include "ensemble/gpu/gpu_registers.hpp"
 #include "ensemble/gpu/gpu_runner.cuh"
 #include "ensemble/gpu/register_member.hpp"
 #include "kernels/lanes/warp.hpp"
-
-/// The blocks of 128 threads per multiprocessor the register kernels are compiled for (CMake's
-/// ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS): n > 0 caps a thread's registers at 65 536 / (128 n), spilling
-/// the rest to local memory, to trade spills for resident warps (docs/performance.md "Rows in
-/// registers, measured on an H100"); 0 leaves the registers to ptxas.
-#if ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS > 0
-#define ROTORSWEEP_REGISTER_BOUNDS __launch_bounds__(128, ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS)
-#else
-#define ROTORSWEEP_REGISTER_BOUNDS
-#endif
 
 namespace rotorsweep::ensemble::gpu {
 
 /// Members of a chunk, one per L threads: the group's first thread claims the next member for all.
 template <std::size_t L, std::size_t R, bool PerRow, std::size_t S>
-__global__ void ROTORSWEEP_REGISTER_BOUNDS sweep_in_registers(const __grid_constant__ SlotSchedule schedule,
-                                                              SlotViews slots, unsigned long long count,
-                                                              unsigned long long* next) {
+__device__ __forceinline__ void take_members_in_registers(const SlotSchedule& schedule,
+                                                          const SlotViews& slots, unsigned long long count,
+                                                          unsigned long long* next) {
   using W = kernels::DeviceWarp<L>;
   for (;;) {
     unsigned long long k = 0;
@@ -39,9 +30,25 @@ __global__ void ROTORSWEEP_REGISTER_BOUNDS sweep_in_registers(const __grid_const
   }
 }
 
-/// The variant's members in registers on L lanes × R slots with S stage vectors (a shape of
-/// compiled_register_shapes that choose_register_shape picked for the scene).
+/// The register kernel of a shape without an occupancy bound: ptxas takes the registers it wants.
 template <std::size_t L, std::size_t R, bool PerRow, std::size_t S>
+__global__ void sweep_in_registers(const __grid_constant__ SlotSchedule schedule, SlotViews slots,
+                                   unsigned long long count, unsigned long long* next) {
+  take_members_in_registers<L, R, PerRow, S>(schedule, slots, count, next);
+}
+
+/// The same for a shape bounded to B blocks of 128 threads per multiprocessor (RegisterShape::blocks):
+/// at most 65 536 / (128 B) registers per thread, the rest spilled to local memory.
+template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B>
+__global__ void __launch_bounds__(128 * B)
+    sweep_in_registers_bounded(const __grid_constant__ SlotSchedule schedule, SlotViews slots,
+                               unsigned long long count, unsigned long long* next) {
+  take_members_in_registers<L, R, PerRow, S>(schedule, slots, count, next);
+}
+
+/// The variant's members in registers on L lanes × R slots with S stage vectors, bounded to B blocks
+/// (a shape of compiled_register_shapes that choose_register_shape picked for the scene and launch).
+template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B>
 SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, int host_threads,
                               const SweepControl& control, const ResultSink& sink) {
   using Integrator =
@@ -53,12 +60,15 @@ SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, int
   using Driver = RegisterMember<kernels::DeviceWarp<L>, R, PerRow, S>;
   if (!Driver::fits(schedule, register_quadratures) || std::size_t(schedule.methods.rosenbrock.stages) > S)
     throw std::logic_error("a register kernel cannot run this schedule");
-  const auto kernel = sweep_in_registers<L, R, PerRow, S>;
+  const auto kernel = [] {
+    if constexpr (B > 0)
+      return sweep_in_registers_bounded<L, R, PerRow, S, B>;
+    else
+      return sweep_in_registers<L, R, PerRow, S>;
+  }();
   const GpuLaunch launch = gpu_launch();
-  if (ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS > 0 && launch.threads_per_block > 128)
-    throw GpuLaunchError("ROTORSWEEP_GPU_BLOCK = " + std::to_string(launch.threads_per_block) +
-                         ": this build's register kernels run at most 128 threads per block "
-                         "(ROTORSWEEP_GPU_REGISTER_MIN_BLOCKS)");
+  if (launch.threads_per_block > RegisterShape{L, R, PerRow, S, B}.max_threads_per_block())
+    throw std::logic_error("a register kernel cannot run blocks of this size");
   ChunkGrid grid{resident_blocks(kernel, launch, 0), launch.threads_per_block, 0, 0};
   grid.resident = std::size_t(grid.blocks) * std::size_t(grid.threads_per_block) / L;
   return run_chunks(scene, range, schedule, grid, host_threads, control, sink,

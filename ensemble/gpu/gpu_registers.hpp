@@ -14,16 +14,21 @@
 namespace rotorsweep::ensemble {
 
 /// A register kernel's shape: a member on `lanes` threads of a warp with `slots` rows apiece, its
-/// rows uniform or disordered (each slot keeps three disorder factors), and the stage vectors it holds
+/// rows uniform or disordered (each slot keeps three disorder factors), the stage vectors it holds
 /// (tableaus of at most `stages` stages: 8 holds every Rosenbrock tableau, 6 rodas4 and rodas4p2 in
-/// fewer registers).
+/// fewer registers), and the occupancy it is compiled for: `blocks` > 0 makes ptxas keep blocks × 128
+/// threads resident per multiprocessor (registers capped at 65 536 / (128 blocks), the rest spilled;
+/// blocks of at most that many threads), 0 leaves the registers to ptxas.
 struct RegisterShape {
   std::size_t lanes = 0, slots = 0;
   bool disordered = false;
   std::size_t stages = kernels::RosenbrockTableau::max_stages;
+  unsigned blocks = 0;
   constexpr std::size_t capacity() const { return lanes * slots; }
   /// Whether N rows fit: at least one per lane, at most `slots` (kernels::WarpRowSlots::fits).
   constexpr bool holds(std::size_t rows) const { return rows >= lanes && rows <= capacity(); }
+  /// The most threads per block the kernel launches with (1024, a CUDA block's limit, unbounded).
+  constexpr int max_threads_per_block() const { return blocks ? int(128 * blocks) : 1024; }
   friend constexpr bool operator==(const RegisterShape&, const RegisterShape&) = default;
 };
 
@@ -38,7 +43,8 @@ std::span<const RegisterShape> gpu_register_shapes();
 /// T = 0, nearest neighbours, a linearly implicit stepper, no row profiles, the quadratures of
 /// register_quadratures at most, no ROTORSWEEP_GPU_TEAM (which asks for a thread or a team), and a
 /// shape that holds N, disordered where the scene has disorder, with stage vectors for the scene's
-/// stepper. Of those that fit, the fewest slots in all, then the most lanes, then the fewest stages.
+/// stepper, and whose occupancy bound admits the launch's threads per block. Of those that fit, the
+/// fewest slots in all, then the most lanes, then the fewest stages, then the most resident blocks.
 std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape> shapes, const Scene& scene,
                                                    std::size_t rows, const GpuLaunch& launch);
 

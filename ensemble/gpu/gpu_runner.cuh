@@ -277,7 +277,9 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
 /// How teams of `team` threads are launched with `kernel` (a sweep_slots_on_teams) when each keeps
 /// `per_team` values of scratch: a block's teams in its shared memory where they fit (or
 /// ROTORSWEEP_GPU_SCRATCH says so), else in `scratch`, a global buffer of which the resident teams take
-/// at most a quarter of the GPU's memory.
+/// at most a quarter of the GPU's memory. `automatic` is the choice without ROTORSWEEP_GPU_SCRATCH:
+/// shared where it fits, or global (the slider's, whose teams ran faster so on an H100: more of them
+/// resident, and the L1 cache left to the local arrays; docs/performance.md).
 struct TeamLaunch {
   ChunkGrid grid;
   std::size_t per_team = 0;
@@ -285,7 +287,8 @@ struct TeamLaunch {
   double* global() const { return scratch ? static_cast<double*>(scratch->data()) : nullptr; }
 };
 template <class Kernel>
-TeamLaunch team_launch(Kernel kernel, unsigned team, bool block_team, std::size_t per_team) {
+TeamLaunch team_launch(Kernel kernel, unsigned team, bool block_team, std::size_t per_team,
+                       GpuScratch automatic = GpuScratch::shared) {
   const GpuInfo& info = available_gpu();
   GpuLaunch launch = gpu_launch();
   if (block_team) launch.threads_per_block = int(team);  // one team per block
@@ -302,7 +305,8 @@ TeamLaunch team_launch(Kernel kernel, unsigned team, bool block_team, std::size_
                              " KiB, more than the " + std::to_string(shared_limit / 1024) +
                              " KiB of shared memory a block has; use fewer threads per block "
                              "(ROTORSWEEP_GPU_BLOCK) or global");
-  const bool shared = fits && launch.scratch != GpuScratch::global;
+  const GpuScratch wanted = launch.scratch == GpuScratch::automatic ? automatic : launch.scratch;
+  const bool shared = fits && wanted != GpuScratch::global;
   const std::size_t shared_bytes = exchange_bytes + (shared ? block_bytes : 0);
   check(cudaFuncSetAttribute(kernel, cudaFuncAttributeMaxDynamicSharedMemorySize, int(shared_bytes)),
         "reserving shared memory");

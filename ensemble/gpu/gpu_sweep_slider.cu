@@ -29,7 +29,7 @@ class GpuSliderDevice final : public SliderSlotDevice {
   std::size_t chunk_members(const SliderSlotSchedule& schedule) override {
     team_ = gpu_slider_team_size({schedule.grid.columns, schedule.grid.rows}, gpu_launch());
     launch_ = std::make_unique<TeamLaunch>(
-        team_launch(kernel(), team_, false, Driver::storage_size(schedule, team_)));
+        team_launch(kernel(), team_, false, Driver::storage_size(schedule, team_), GpuScratch::global));
     return std::max<std::size_t>(4 * launch_->grid.resident, 1024);
   }
 

@@ -265,3 +265,22 @@ TEST_CASE("under mpirun or srun each rank of a node takes the GPU of its local r
                                                          Catch::Contains("non-negative integer"));
   }
 }
+
+TEST_CASE(
+    "a register shape bounded to B blocks of 128 threads runs ahead of the unbounded one where the "
+    "launch's blocks fit",
+    "[gpu_launch]") {
+  using ensemble::RegisterShape;
+  const std::vector<RegisterShape> shapes{{8, 3, false, 6, 3}, {8, 3, false, 6, 0}};
+  const auto scene = scene_of("rows = 20");
+  ensemble::GpuLaunch launch;  // 128 threads per block
+  CHECK(ensemble::choose_register_shape(shapes, scene, 20, launch) == RegisterShape{8, 3, false, 6, 3});
+  launch.threads_per_block = 384;  // 3 × 128: still the bounded kernel's
+  CHECK(ensemble::choose_register_shape(shapes, scene, 20, launch) == RegisterShape{8, 3, false, 6, 3});
+  launch.threads_per_block = 512;  // beyond its bound: the unbounded kernel
+  CHECK(ensemble::choose_register_shape(shapes, scene, 20, launch) == RegisterShape{8, 3, false, 6, 0});
+  CHECK_FALSE(
+      ensemble::choose_register_shape(std::vector<RegisterShape>{{8, 3, false, 6, 3}}, scene, 20, launch));
+  CHECK(RegisterShape{8, 3, false, 6, 3}.max_threads_per_block() == 384);
+  CHECK(RegisterShape{8, 3, false, 6, 0}.max_threads_per_block() == 1024);
+}
