@@ -12,11 +12,12 @@
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
 #include "kernels/steppers/team_integrator.hpp"
 #include "kernels/steppers/team_rosenbrock.hpp"
+#include "support/parallel_members.hpp"
 
 namespace rotorsweep::testing {
 
 /// Chunks of slider slots on a host team of `ranks` with the scene's stepper (as the GPU's slider), at most
-/// `chunk` members at a time; tables stay where they are.
+/// `chunk` members at a time, on every core; tables stay where they are.
 template <bool Inertial>
 class HostTeamSliderDevice final : public ensemble::SliderSlotDevice {
  public:
@@ -36,11 +37,11 @@ class HostTeamSliderDevice final : public ensemble::SliderSlotDevice {
   }
   void run(ensemble::SliderSlotChunk& chunk) override {
     const ensemble::SliderSlotViews views = chunk.views();
-    std::vector<double> storage(Driver::storage_size(chunk.schedule(), ranks_));
-    for (std::size_t k = 0; k < chunk.count(); ++k) {
+    for_each_member_in_parallel(chunk.count(), [&](std::size_t k) {
+      std::vector<double> storage(Driver::storage_size(chunk.schedule(), ranks_));
       kernels::HostTeam crew(ranks_);
       Driver::run(crew, chunk.schedule(), views, k, storage.data(), storage.size());
-    }
+    });
   }
 
  private:

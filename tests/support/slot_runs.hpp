@@ -12,13 +12,16 @@
 #include "ensemble/rows/member_slots.hpp"
 #include "ensemble/rows/team_member.hpp"
 #include "kernels/lanes/team.hpp"
+#include "support/parallel_members.hpp"
 
 namespace rotorsweep::testing {
 
-/// Every member of the scene (one variant) through run(schedule, views, k) in one chunk of slots;
-/// the schedule's first-step scale is Integrator's.
+/// Every member of the scene (one variant) through run(schedule, views, k) in one chunk of slots, one
+/// after another, or with `parallel` on every core (for_each_member_in_parallel: no Catch2 assertion in
+/// run); the schedule's first-step scale is Integrator's.
 template <class Integrator, class Run>
-std::vector<ensemble::MemberResult> through_slots(const ensemble::Scene& scene, Run&& run) {
+std::vector<ensemble::MemberResult> through_slots(const ensemble::Scene& scene, Run&& run,
+                                                  bool parallel = false) {
   if (scene.variants().size() != 1) throw std::logic_error("through_slots: a scene of one variant");
   const ensemble::MemberPlan plan(scene);
   std::vector<ensemble::Member> members;
@@ -29,26 +32,31 @@ std::vector<ensemble::MemberResult> through_slots(const ensemble::Scene& scene, 
   ensemble::SlotChunk chunk(schedule, members.size());
   chunk.fill(scene, {&source, 0, members.size()}, 0, members.size());
   const ensemble::SlotViews views = chunk.views();
-  for (std::size_t k = 0; k < members.size(); ++k) run(schedule, views, k);
+  if (parallel)
+    for_each_member_in_parallel(members.size(), [&](std::size_t k) { run(schedule, views, k); });
+  else
+    for (std::size_t k = 0; k < members.size(); ++k) run(schedule, views, k);
   std::vector<ensemble::MemberResult> results;
   for (std::size_t k = 0; k < members.size(); ++k) results.push_back(chunk.result(scene, k));
   return results;
 }
 
 /// Every member of the scene on a host team of `ranks` with TeamIntegrator (its first-step scale that
-/// of Integrator, the same integrator on one lane): the bits a GPU team of that size gives
-/// (kernels/lanes/team.hpp).
+/// of Integrator, the same integrator on one lane), members on every core: the bits a GPU team of that
+/// size gives (kernels/lanes/team.hpp).
 template <class Integrator, class TeamIntegrator>
 std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& scene, std::size_t ranks) {
   using Team = ensemble::TeamMember<kernels::HostTeam, TeamIntegrator>;
   return through_slots<Integrator>(
-      scene, [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
+      scene,
+      [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
         if (!Team::team_schedule_fits(s))
           throw std::logic_error("on_host_team: a team cannot run this scene");
         std::vector<double> storage(Team::storage_size(s, ranks));
         kernels::HostTeam crew(ranks);
         Team::run(crew, s, v, k, storage.data(), storage.size());
-      });
+      },
+      true);
 }
 
 /// on_host_team with the scene's (linearly implicit) stepper on the scene's row model.
