@@ -118,9 +118,9 @@ class IntegrationLoop {
   /// The quadratures' integrands at the start of the last step attempt, in the lanes that stepped.
   const V* start_integrands() const { return integrator_.start_integrands(); }
 
-  /// Whether any running lane has reached the end of its period.
-  bool any_period_ended() const { return kernels::lane_any(state_.running() & (state_.t >= state_.t_stop)); }
-  bool period_ended(std::size_t lane) const {
+  /// Whether any running lane has reached its stop (the end of its period, or set_stop's time).
+  bool any_stop_reached() const { return kernels::lane_any(state_.running() & (state_.t >= state_.t_stop)); }
+  bool stop_reached(std::size_t lane) const {
     return state_.status[lane] == kernels::LaneStatus::ok &&
            kernels::lane_get(state_.t, lane) >= kernels::lane_get(state_.t_stop, lane);
   }

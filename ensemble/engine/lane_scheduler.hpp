@@ -1,5 +1,6 @@
 // The lane scheduler (docs/architecture.md "Layers"): takes a problem's members into the lanes of
-// its integration loop, closes their periods, and retires and refills lanes; it knows no model.
+// its integration loop, closes their stops (periods, samples), and retires and refills lanes; it knows
+// no model.
 #pragma once
 
 #include <cstddef>
@@ -14,12 +15,12 @@ namespace rotorsweep::ensemble {
 /// Runs the members of a Problem through its `width` lanes. The problem (ensemble/rows/row_problem.hpp
 /// for the row models) owns the integration loop and says what a member is and what it leaves:
 ///   Member, Result, width, refill();
-///   start(lane, member, queued) → the member's PeriodSchedule;  step();
-///   failed(lane), any_period_ended(), period_ended(lane);
-///   close_period(lane) → whether its steady test holds (read where the schedule has one);  next_period(lane);
+///   start(lane, member, queued) → the member's StopSchedule;  step();
+///   failed(lane), any_stop_reached(), stop_reached(lane);
+///   close_stop(lane) → whether its steady test holds (read where the schedule has one);  next_stop(lane);
 ///   finish(lane, progress, settled, retire): hands zero or one Result to retire();
 ///   take_queued() / has_queued(): members it adds itself (shadow runs), run before the plan's.
-/// Each lane owns its member and its MemberProgress (periods closed, steady state, when it retires:
+/// Each lane owns its member and its MemberProgress (stops closed, steady state, when it retires:
 /// the state machine DeviceMember keeps on a GPU thread); a member that finishes or fails retires
 /// at once and (with refill()) its lane takes the next.
 template <class Problem>
@@ -37,12 +38,12 @@ class LaneScheduler {
   /// Takes members from next_member() (a std::optional<Member>; empty when the plan is
   /// exhausted) until none is left and every lane has retired; hands each result to retire().
   /// Returns at once, abandoning the members in its lanes, when stopped() turns true.
-  /// period_closed() is called after each period a member closes.
+  /// stop_closed() is called after each stop a member closes.
   struct Nothing {
     void operator()() const {}
   };
-  template <class NextMember, class Retire, class Stopped, class PeriodClosed = Nothing>
-  void run(NextMember&& next_member, Retire&& retire, Stopped&& stopped, PeriodClosed&& period_closed = {}) {
+  template <class NextMember, class Retire, class Stopped, class StopClosed = Nothing>
+  void run(NextMember&& next_member, Retire&& retire, Stopped&& stopped, StopClosed&& stop_closed = {}) {
     for (;;) {
       if (stopped()) return;
       if (problem_.refill() || occupied_ == 0) fill_idle_lanes(next_member);
@@ -50,13 +51,13 @@ class LaneScheduler {
       problem_.step();
       busy_ += double(occupied_);
       total_ += double(width);
-      const bool period_ends = problem_.any_period_ended();
+      const bool stops_reached = problem_.any_stop_reached();
       for (std::size_t l = 0; l < width; ++l) {
         if (!lanes_[l].occupied) continue;
         if (problem_.failed(l))
           finish(l, false, retire);
-        else if (period_ends && problem_.period_ended(l))
-          close_period(l, retire, period_closed);
+        else if (stops_reached && problem_.stop_reached(l))
+          close_stop(l, retire, stop_closed);
       }
     }
   }
@@ -67,8 +68,8 @@ class LaneScheduler {
  private:
   struct Lane {
     bool occupied = false;
-    MemberProgress progress;  ///< periods closed, steady state
-    PeriodSchedule schedule;  ///< the member's (the scene's, or a shadow run's)
+    MemberProgress progress;  ///< stops closed, steady state
+    StopSchedule schedule;    ///< the member's (the scene's, or a shadow run's)
   };
 
   /// Idle lanes take the problem's queued members, then members of the plan.
@@ -95,15 +96,15 @@ class LaneScheduler {
     ++occupied_;
   }
 
-  template <class Retire, class PeriodClosed>
-  void close_period(std::size_t l, Retire& retire, PeriodClosed& period_closed) {
-    const bool steady = problem_.close_period(l);
-    period_closed();
-    if (lanes_[l].progress.close_period(lanes_[l].schedule, steady)) {
+  template <class Retire, class StopClosed>
+  void close_stop(std::size_t l, Retire& retire, StopClosed& stop_closed) {
+    const bool steady = problem_.close_stop(l);
+    stop_closed();
+    if (lanes_[l].progress.close_stop(lanes_[l].schedule, steady)) {
       finish(l, lanes_[l].progress.settled(), retire);
       return;
     }
-    problem_.next_period(l);
+    problem_.next_stop(l);
   }
 
   template <class Retire>

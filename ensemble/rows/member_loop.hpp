@@ -68,7 +68,7 @@ ROTORSWEEP_HD void run_member(Body& body, const SlotSchedule& s, const SlotViews
     const PeriodRecord record = device_period_record(
         s, [&](std::size_t p) { return body.quadrature(p); }, Body::period, body.t(), alignment, swing,
         swing_on, slips, stochastic);
-    const std::size_t closed = std::size_t(progress.periods());
+    const std::size_t closed = std::size_t(progress.stops());
     body.write_rows(slots.end_states + (k * s.end_capacity + closed % s.end_capacity) * n);
     if (s.row_profiles)
       body.profile_take(slots.profiles + (k * s.profile_capacity + closed % s.profile_capacity) * 2 * n);
@@ -76,13 +76,13 @@ ROTORSWEEP_HD void run_member(Body& body, const SlotSchedule& s, const SlotViews
       double* slot = slots.records + (k * s.record_capacity + closed % s.record_capacity) * channel_count;
       for (std::size_t c = 0; c < channel_count; ++c) slot[c] = record.values[c];
     });
-    if (progress.close_period(s.periods, steady.close(record.dissipation()))) break;
+    if (progress.close_stop(s.periods, steady.close(record.dissipation()))) break;
     body.next_period(s.wrap_angles);
   }
   body.one([&] {
     slots.status[k] = std::uint8_t(body.status());
     slots.settled[k] = progress.settled() ? 1 : 0;
-    slots.periods[k] = progress.periods();
+    slots.periods[k] = progress.stops();
     slots.steps[2 * k] = body.steps_accepted();
     slots.steps[2 * k + 1] = body.steps_rejected();
   });

@@ -22,7 +22,7 @@ namespace rotorsweep::ensemble {
 /// What every member of a variant shares: its schedule, tolerances and the record ring's size.
 struct SlotSchedule {
   std::size_t rows = 0;
-  PeriodSchedule periods{};
+  StopSchedule periods{};
   double steady_tol = 0;  ///< the steady test's tolerance (SteadyDissipation), with periods.steady_test
   bool wrap_angles = false;
   bool slips = false;          ///< the slip counter is on

@@ -85,7 +85,7 @@ class RowProblem {
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips), scene.slip_kinds),
         profiles_(variant.rows, scene.row_profiles),
         period_schedule_(scene.period_schedule()),
-        shadow_schedule_{0, scene.average_periods, 0, false},
+        shadow_schedule_{scene.average_periods, 0, false},
         shadows_on_(scene.runs_shadows() && !Loop::stochastic),
         slower_on_(scene.slip_kinds && !Loop::stochastic),
         symmetry_limited_(scene.symmetry_limited(variant.rtol)),
@@ -106,7 +106,7 @@ class RowProblem {
   bool has_queued() const { return !reruns_.empty(); }
 
   /// Puts `member` into lane l (a plan member or a queued rerun); returns its period schedule.
-  PeriodSchedule start(std::size_t l, const Member& member, bool) {
+  StopSchedule start(std::size_t l, const Member& member, bool) {
     const std::vector<double> y0 = setup_.initial_state(member);
     loop_.start(l, setup_.parameters(member, y0), y0);
     if (member.tolerance_scale != 1.0) loop_.set_tolerance_scale(l, member.tolerance_scale);
@@ -133,12 +133,12 @@ class RowProblem {
   }
 
   bool failed(std::size_t l) const { return loop_.failed(l); }
-  bool any_period_ended() const { return loop_.any_period_ended(); }
-  bool period_ended(std::size_t l) const { return loop_.period_ended(l); }
+  bool any_stop_reached() const { return loop_.any_stop_reached(); }
+  bool stop_reached(std::size_t l) const { return loop_.stop_reached(l); }
 
   /// Records the period lane l just closed; returns whether its dissipation agrees with the period
   /// before's (the steady test, SteadyDissipation).
-  bool close_period(std::size_t l) {
+  bool close_stop(std::size_t l) {
     PeriodRecord record;
     record_quadratures(
         channels_, carried_, record, [&](std::size_t p) { return loop_.quadrature(l, p); }, Loop::period,
@@ -165,9 +165,9 @@ class RowProblem {
   }
 
   /// Lane l goes on to its next period (wrapped with scene.wrap_angles).
-  void next_period(std::size_t l) { loop_.next_period(l, scene_.wrap_angles); }
+  void next_stop(std::size_t l) { loop_.next_period(l, scene_.wrap_angles); }
 
-  /// Retires lane l's member, which closed `progress.periods()` periods (`settled`: it met its
+  /// Retires lane l's member, which closed `progress.stops()` periods (`settled`: it met its
   /// schedule): its result goes to retire(), or, where it needs reruns, waits for them; a rerun's
   /// result completes its primary's, which retires with its last rerun.
   template <class Retire>
@@ -244,7 +244,7 @@ class RowProblem {
     retired.index = lane.member.index;
     retired.status = loop_.status(l);
     retired.settled = settled;
-    retired.periods = progress.periods();
+    retired.periods = progress.stops();
     retired.steps_accepted = loop_.steps_accepted(l);
     retired.steps_rejected = loop_.steps_rejected(l);
     retired.theta.resize(loop_.dimension());
@@ -275,8 +275,8 @@ class RowProblem {
                                       kernels::Integrals{})) observers_;
   SlipObserver<Loop> slips_;
   RowProfileObserver<Loop> profiles_;
-  PeriodSchedule period_schedule_;
-  PeriodSchedule shadow_schedule_;  ///< a shadow run's: the averaged periods, no steady test
+  StopSchedule period_schedule_;
+  StopSchedule shadow_schedule_;    ///< a shadow run's: the averaged periods, no steady test
   bool shadows_on_;                 ///< members whose averaged periods slip get shadow runs
   bool slower_on_;             ///< members that slip in every averaged period get slower reruns (slip_kinds)
   bool symmetry_limited_;      ///< no physical perturbation of the scene exceeds rtol

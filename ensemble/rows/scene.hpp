@@ -62,7 +62,10 @@ struct Scene {
   int average_periods = 2;
   double steady_tol = 0.0;  ///< > 0: retire a member once successive periods agree to this
   int max_periods = 50;
-  PeriodSchedule period_schedule() const { return {relax_periods, average_periods, max_periods, steady_tol > 0}; }
+  /// The periods as the engine's stops (relaxed and averaged; with a steady test up to max_periods).
+  StopSchedule period_schedule() const {
+    return {relax_periods + average_periods, max_periods, steady_tol > 0};
+  }
   bool refill = true;  ///< refill a retired member's lane at once (false: wait for the whole block)
 
   ObservableSet observables = ObservableSet::defaults();  ///< observables.<key> of each declaration

@@ -61,8 +61,8 @@ class SliderProblem {
   bool has_queued() const { return false; }
 
   /// Puts plan member `plan_index` into lane l: its substrate table, its speed's grid and damping, its
-  /// start; its schedule is one "period" per sample.
-  PeriodSchedule start(std::size_t l, Member plan_index, bool) {
+  /// start; its schedule is one stop per sample.
+  StopSchedule start(std::size_t l, Member plan_index, bool) {
     Lane& lane = lanes_[l];
     lane.member = slider_plan_member(scene_, plan_index);
     const SliderScene variant = slider_variant(scene_, lane.member.index.speed, lane.member.index.damping);
@@ -90,7 +90,7 @@ class SliderProblem {
     size_slider_series(lane.member, scene_, samples);
     lane.sample = 0;
     lane.boundaries = {};
-    return {0, int(samples), 0, false};
+    return {int(samples), 0, false};
   }
 
   void step() {
@@ -98,12 +98,12 @@ class SliderProblem {
     evaluated_ = false;
   }
   bool failed(std::size_t l) const { return loop_.failed(l); }
-  bool any_period_ended() const { return loop_.any_period_ended(); }
-  bool period_ended(std::size_t l) const { return loop_.period_ended(l); }
+  bool any_stop_reached() const { return loop_.any_stop_reached(); }
+  bool stop_reached(std::size_t l) const { return loop_.stop_reached(l); }
 
   /// Lane l reached its next sample: records it (and a period boundary's quadratures). A scan has no
   /// steady test: false.
-  bool close_period(std::size_t l) {
+  bool close_stop(std::size_t l) {
     Lane& lane = lanes_[l];
     const std::size_t k = lane.sample++;
     record_sample(l, k);
@@ -115,7 +115,7 @@ class SliderProblem {
     return false;
   }
 
-  void next_period(std::size_t l) { loop_.set_stop(l, lanes_[l].grid->stops[lanes_[l].sample]); }
+  void next_stop(std::size_t l) { loop_.set_stop(l, lanes_[l].grid->stops[lanes_[l].sample]); }
 
   /// Retires lane l's member: a failed member's remaining samples hold its frozen state (every
   /// observable over periods is NaN); then its summaries, in SI.
