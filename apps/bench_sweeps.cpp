@@ -96,7 +96,9 @@ std::string format_rate(double rate) {
 }
 
 /// One sweep (plan, device work, host summaries; no file) with mapping m: a table row; the kernel
-/// rate counts only the time the GPU's kernels ran (the wall's rate adds the host's fills and summaries).
+/// rate counts only the time the GPU's kernels ran (the wall's rate adds the host's fills and summaries),
+/// and on a GPU the host's part of the wall: its chunks' set-up, fills, waits for the GPU and deliveries
+/// (SweepStatistics; a sweep with shadow runs adds its second pass's).
 void run_row(const BenchScene& s, const BenchGpuOptions& options, const Mapping& m) {
   const auto scene = io::parse_scene_text(scene_text(s, options.device), "bench");
   const auto members = ensemble::plan_members(scene);
@@ -115,12 +117,17 @@ void run_row(const BenchScene& s, const BenchGpuOptions& options, const Mapping&
     const double n = double(members.size());
     const double kernel = outcome.statistics.kernel_seconds;
     const std::string kernel_rate = kernel > 0 ? format_rate(s.rows * attempts / kernel) : "—";
-    std::printf("| %d%s | %s | %s | %zu | %.2f | %.0f | %.3g | %.3g | %s | %zu |\n", s.rows,
+    const auto& st = outcome.statistics;
+    char host[96] = "—";
+    if (kernel > 0)
+      std::snprintf(host, sizeof host, "%.2f / %.2f / %.2f / %.2f", st.setup_seconds, st.fill_seconds,
+                    st.wait_seconds, st.deliver_seconds);
+    std::printf("| %d%s | %s | %s | %zu | %.2f | %.0f | %.3g | %.3g | %s | %s | %zu |\n", s.rows,
                 s.dipolar ? " dipolar" : "", s.stepper, label.c_str(), members.size(), wall, attempts / n,
-                attempts / wall, s.rows * attempts / wall, kernel_rate.c_str(), ok);
+                attempts / wall, s.rows * attempts / wall, kernel_rate.c_str(), host, ok);
   } catch (const std::runtime_error& e) {
-    std::printf("| %d%s | %s | %s | %zu | — | — | — | — | — | (%s) |\n", s.rows, s.dipolar ? " dipolar" : "",
-                s.stepper, label.c_str(), members.size(), e.what());
+    std::printf("| %d%s | %s | %s | %zu | — | — | — | — | — | — | (%s) |\n", s.rows,
+                s.dipolar ? " dipolar" : "", s.stepper, label.c_str(), members.size(), e.what());
   }
   set_mapping({});
   std::fflush(stdout);
@@ -150,8 +157,8 @@ int run_bench_gpu(const BenchGpuOptions& options) {
   };
   std::printf(
       "| N | stepper | mapping | members | wall s | attempts/member | member-attempts/s | rotor-attempts/s | "
-      "kernel rotor-attempts/s | ok |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+      "kernel rotor-attempts/s | host s: set-up / fill / wait / deliver | ok |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   if (!options.curve_only) {
     for (const BenchScene s : {BenchScene{2, "rodas4", 1000, 100}, BenchScene{2, "rodas4p2", 1000, 100},
                                BenchScene{20, "rodas4", 1000, 100}, BenchScene{20, "rodas5p", 1000, 100},

@@ -6,7 +6,6 @@
 #include <cuda_runtime.h>
 
 #include <stdexcept>
-#include <string>
 
 #include "ensemble/gpu/gpu_registers.hpp"
 #include "ensemble/gpu/gpu_runner.cuh"

@@ -174,7 +174,8 @@ int resident_blocks(Kernel kernel, const GpuLaunch& launch, std::size_t shared_b
 /// The variant's members in chunks, two in flight: while the GPU runs one chunk (launch(stream, views,
 /// count, counter)), the host fills the next, whose copies and kernel the stream queues behind it, and
 /// then summarizes the one before. Stops between chunks when control.stop is raised. The kernels'
-/// time (CUDA events) goes to statistics.kernel_seconds.
+/// time (CUDA events) goes to statistics.kernel_seconds, the host's parts to its setup, fill, wait and
+/// deliver seconds.
 template <class Launch>
 SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const SlotSchedule& schedule,
                         const ChunkGrid& grid, int host_threads, const SweepControl& control,
@@ -187,18 +188,25 @@ SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const Slo
   stats.threads = grid.blocks * grid.threads_per_block;
   stats.lane_width = 1;
   const auto start = std::chrono::steady_clock::now();
-  std::array<SlotChunk, 2> host{SlotChunk(schedule, chunk), SlotChunk(schedule, chunk)};
+  const auto seconds_since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  const std::size_t second = members > chunk ? chunk : 0;  // a sweep of one chunk needs no second
+  std::array<SlotChunk, 2> host{SlotChunk(schedule, chunk), SlotChunk(schedule, second)};
   RowDeviceChunk device0(host[0]), device1(host[1]);
   std::array<RowDeviceChunk*, 2> device{&device0, &device1};
   cudaStream_t stream = nullptr;
   check(cudaStreamCreate(&stream), "creating a stream");
   std::array<cudaEvent_t, 6> events{};  // per chunk: its kernel's start and end, its results arrived
   for (cudaEvent_t& e : events) check(cudaEventCreate(&e), "creating an event");
+  stats.setup_seconds = seconds_since(start);
 
   const auto launch_chunk = [&](std::size_t b, std::size_t first) {
     const std::size_t count = std::min(chunk, range.end - first);
+    const auto fill_start = std::chrono::steady_clock::now();
     host[b].fill(scene, range, first, count);
     device[b]->upload(host[b], stream);
+    stats.fill_seconds += seconds_since(fill_start);
     check(cudaEventRecord(events[3 * b], stream), "timing the sweep kernel");
     launch(stream, device[b]->views(), (unsigned long long)count, device[b]->counter());
     check(cudaGetLastError(), "launching the sweep kernel");
@@ -217,12 +225,16 @@ SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const Slo
     for (std::size_t first = range.begin, b = 0; first < range.end; first += chunk, b ^= 1) {
       const std::size_t next = first + chunk;
       if (next < range.end && !control.stopped()) launch_chunk(b ^ 1, next);
+      const auto wait_start = std::chrono::steady_clock::now();
       check(cudaEventSynchronize(events[3 * b + 2]), "running the sweep kernel");
+      stats.wait_seconds += seconds_since(wait_start);
       float kernel_ms = 0.0f;
       check(cudaEventElapsedTime(&kernel_ms, events[3 * b], events[3 * b + 1]), "timing the sweep kernel");
       stats.kernel_seconds += 1e-3 * double(kernel_ms);
+      const auto deliver_start = std::chrono::steady_clock::now();
       device[b]->take_results(host[b]);
       const double attempts = host[b].deliver(scene, host_threads, sink);
+      stats.deliver_seconds += seconds_since(deliver_start);
       stats.lane_steps_busy += attempts;
       stats.lane_steps_total += attempts;
       done += host[b].count();

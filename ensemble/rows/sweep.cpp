@@ -26,6 +26,10 @@ void SweepOutcome::append(SweepOutcome&& part) {
   finished.insert(finished.end(), part.finished.begin(), part.finished.end());
   statistics.wall_seconds += part.statistics.wall_seconds;
   statistics.kernel_seconds += part.statistics.kernel_seconds;
+  statistics.setup_seconds += part.statistics.setup_seconds;
+  statistics.fill_seconds += part.statistics.fill_seconds;
+  statistics.wait_seconds += part.statistics.wait_seconds;
+  statistics.deliver_seconds += part.statistics.deliver_seconds;
   statistics.lane_steps_busy += part.statistics.lane_steps_busy;
   statistics.lane_steps_total += part.statistics.lane_steps_total;
   statistics.threads = part.statistics.threads;

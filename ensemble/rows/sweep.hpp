@@ -16,6 +16,10 @@ namespace rotorsweep::ensemble {
 struct SweepStatistics {
   double wall_seconds = 0;
   double kernel_seconds = 0;    ///< on a GPU: the time its sweep kernels ran (CUDA events); 0 on the CPU
+  /// On a GPU, the host's side of the wall time: allocating a sweep's chunks (device and pinned host
+  /// buffers, stream, events), filling chunks, waiting for the GPU, and delivering the returned chunks'
+  /// results (summaries and the sink); 0 on the CPU.
+  double setup_seconds = 0, fill_seconds = 0, wait_seconds = 0, deliver_seconds = 0;
   double lane_steps_busy = 0;   ///< Σ over step attempts of lanes that held a member
   double lane_steps_total = 0;  ///< Σ over step attempts of all lanes
   int threads = 1;
