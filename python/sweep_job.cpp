@@ -2,7 +2,6 @@
 // writer as `rotorsweep run`, to the output path (through its partial file) or to an in-memory HDF5 image.
 #include "sweep_job.hpp"
 
-#include <chrono>
 #include <filesystem>
 
 #include "ensemble/engine/thread_count.hpp"
@@ -22,6 +21,7 @@ void refuse_earlier_partial(io::OutputTarget& target, bool force) {
 SweepJob::SweepJob(ensemble::Scene scene, int threads, const std::string& output, bool force,
                    const io::Provenance& provenance)
     : scene_(std::move(scene)), members_(ensemble::plan_members(scene_)) {
+  total_ = members_.size();
   const int count = ensemble::thread_count(threads, "threads");
   if (output.empty()) {
     file_.emplace(io::ResultFile::in_memory(scene_, provenance));
@@ -32,39 +32,33 @@ SweepJob::SweepJob(ensemble::Scene scene, int threads, const std::string& output
     file_.emplace(target_->temporary(), scene_, provenance);
     target_->claim_temporary();
   }
-  worker_ = std::thread([this, count] { run(count); });
-}
-
-SweepJob::~SweepJob() {
-  cancel();
-  if (worker_.joinable()) worker_.join();
+  start([this, count] { run(count); });
 }
 
 void SweepJob::run(int threads) {
-  try {
-    const auto outcome = ensemble::run_sweep(
-        scene_, members_, threads, [this](std::size_t done) { done_.store(done, std::memory_order_relaxed); },
-        &stop_, &periods_);
-    if (!outcome.interrupted) {
-      done_.store(members_.size(), std::memory_order_relaxed);
-      file_->write_sweep(members_, outcome);
-      if (target_) {
-        file_->close();
-        target_->commit();
-      } else {
-        image_ = file_->image();
-      }
-    } else if (target_) {
-      keep_finished(outcome);
+  struct Release {  // a failed file is closed and its temporary removed (a kept one stays), the locks
+                    // released
+    SweepJob& job;
+    ~Release() {
+      job.file_.reset();
+      job.target_.reset();
     }
-  } catch (...) {
-    error_ = std::current_exception();
+  } release{*this};
+  const auto outcome = ensemble::run_sweep(
+      scene_, members_, threads, [this](std::size_t done) { done_.store(done, std::memory_order_relaxed); },
+      &stop_, &periods_);
+  if (!outcome.interrupted) {
+    done_.store(members_.size(), std::memory_order_relaxed);
+    file_->write_sweep(members_, outcome);
+    if (target_) {
+      file_->close();
+      target_->commit();
+    } else {
+      image_ = file_->image();
+    }
+  } else if (target_) {
+    keep_finished(outcome);
   }
-  file_.reset();    // a failed file is closed ...
-  target_.reset();  // ... and its temporary removed (a kept one stays), the locks released
-  const std::lock_guard guard(lock_);
-  finished_ = true;
-  ended_.notify_all();
 }
 
 void SweepJob::keep_finished(const ensemble::SweepOutcome& outcome) {
@@ -79,19 +73,8 @@ void SweepJob::keep_finished(const ensemble::SweepOutcome& outcome) {
   kept_ = count;
 }
 
-bool SweepJob::wait(double seconds) {
-  std::unique_lock guard(lock_);
-  if (seconds < 0)
-    ended_.wait(guard, [this] { return finished_; });
-  else
-    ended_.wait_for(guard, std::chrono::duration<double>(seconds), [this] { return finished_; });
-  return finished_;
-}
-
 std::vector<unsigned char> SweepJob::take_image() {
-  if (!wait(0)) throw std::logic_error("the sweep is still running");
-  if (worker_.joinable()) worker_.join();
-  if (error_) std::rethrow_exception(error_);
+  rethrow();
   return std::move(image_);
 }
 

@@ -33,7 +33,7 @@ __all__ = ["run", "slider", "open", "members", "scene_text", "plan_axes", "criti
            "bifurcation_curve", "jump_events", "jump_friction", "quasi_static_friction", "two_angle_coefficients",
            "A_minus", "A_star", "paper_table"]
 
-#: how often run() looks at the sweep (progress line, Ctrl-C), in seconds
+#: how often run() and slider() look at their job (progress line, Ctrl-C), in seconds
 _POLL_SECONDS = 0.1
 
 
@@ -65,19 +65,7 @@ def run(scene, threads=None, progress=True, output=None, force=False, quiet=Fals
     job = _core.SweepJob(text, is_path, count, path, bool(force), _core.version, _core.revision)
     if not quiet:
         sys.stderr.write(_core.run_description(text, is_path, count))
-    line = _progress.ProgressLine(job.total, progress and not quiet)
-    try:
-        with _stop_on_sigterm():
-            while not job.wait(_POLL_SECONDS):
-                line.update(job.done, job.periods)
-    except BaseException:
-        job.cancel()
-        job.wait(-1)
-        line.finish()
-        if path and not quiet:
-            _progress.report_kept(job.kept, job.total, path, "run")
-        raise
-    line.finish()
+    _follow(job, progress and not quiet, path if not quiet else "", "run")
     image = job.take_image()
     with h5py.File(path if path else io.BytesIO(image), "r") as h5file:
         if not quiet:
@@ -105,19 +93,11 @@ def slider(scene, threads=None, progress=True, output=None, force=False):
         output = _core.slider_scene_info(text, is_path)["output_path"]
         if not output:
             raise ValueError("output=True: the scene has no output.path; give output a path")
-    line = _progress.ProgressLine(0, progress)
-
-    def report(done, total):
-        line.total = total
-        line.update(done)
 
     def run_into(path, replace, keep):
-        try:
-            with _stop_on_sigterm():
-                _core.run_slider(text, is_path, count, path, replace, keep, _core.version, _core.revision, report,
-                                 lambda kept, total: _progress.report_kept(kept, total, path, "slider"))
-        finally:
-            line.finish()
+        job = _core.SliderJob(text, is_path, count, path, replace, keep, _core.version, _core.revision)
+        _follow(job, progress, path if keep else "", "slider")
+        job.finish()
 
     if output is not None and output is not False:
         path = _output_path(output)
@@ -128,6 +108,26 @@ def slider(scene, threads=None, progress=True, output=None, force=False):
         run_into(path, True, False)
         with h5py.File(path, "r") as h5file:
             return _slider.from_hdf5(h5file).load()
+
+
+def _follow(job, progress, kept_path, command):
+    """Polls a job (SweepJob, SliderJob: the C++ side runs and streams, Python draws the progress line)
+    until it ends. Ctrl-C and SIGTERM (as SystemExit(143), see _stop_on_sigterm) cancel it, wait for it
+    to stop within one step, and are raised again, after saying what the partial file at kept_path
+    (where given) kept, as the command line (`command`) does."""
+    line = _progress.ProgressLine(job.total, progress)
+    try:
+        with _stop_on_sigterm():
+            while not job.wait(_POLL_SECONDS):
+                line.update(job.done, job.periods)
+    except BaseException:
+        job.cancel()
+        job.wait(-1)
+        line.finish()
+        if kept_path:
+            _progress.report_kept(job.kept, job.total, kept_path, command)
+        raise
+    line.finish()
 
 
 def _thread_count(threads):
