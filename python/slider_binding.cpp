@@ -9,6 +9,7 @@
 #include "ensemble/engine/instruction_set.hpp"
 #include "ensemble/gpu/gpu_slider.hpp"
 #include "io/slider_scene_parser.hpp"
+#include "job_binding.hpp"
 #include "slider_job.hpp"
 
 namespace py = pybind11;
@@ -35,8 +36,11 @@ void bind_slider(py::module_& m) {
       },
       py::arg("scene"), py::arg("is_path") = false,
       "The validated slider scene: its output.path ('' when not given) and member count.");
-  py::class_<SliderJob>(m, "SliderJob",
-                        "A slider scan on its own thread; poll wait(), read done/total, cancel() to stop.")
+  py::class_<SliderJob> slider_job(
+      m, "SliderJob",
+      "A slider scan on its own thread; poll wait(), read done/total, cancel() to "
+      "stop.");
+  bind_job_polling(slider_job)
       .def(py::init([](const std::string& scene, bool is_path, int threads, const std::string& output,
                        bool force, bool keep, const std::string& version, const std::string& revision) {
              const auto parsed = parse_slider(scene, is_path);
@@ -52,19 +56,6 @@ void bind_slider(py::module_& m) {
            "`rotorsweep slider -o output` writes it, through output.partial with `keep` (a cancelled "
            "scan's finished members stay there), else through a hidden temporary file. Bad scenes and "
            "outputs raise ValueError naming the key.")
-      .def("wait", &SliderJob::wait, py::arg("seconds"), py::call_guard<py::gil_scoped_release>(),
-           "Waits up to `seconds` (forever when negative) with the GIL released; True once ended.")
-      .def_property_readonly("done", &SliderJob::done)
-      .def_property_readonly("total", &SliderJob::total)
-      .def_property_readonly("periods", &SliderJob::periods, "0: a scan's progress counts members")
-      .def("cancel", &SliderJob::cancel)
-      .def_property_readonly(
-          "kept",
-          [](const SliderJob& job) -> py::object {
-            const auto kept = job.kept();
-            return kept ? py::object(py::int_(*kept)) : py::object(py::none());
-          },
-          "After a cancelled scan with keep: the members kept in OUTPUT.partial (None: no file kept).")
       .def("finish", &SliderJob::finish, "Raises the scan's error, if any, once it has ended.");
 }
 

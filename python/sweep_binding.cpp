@@ -11,6 +11,7 @@
 #include "ensemble/rows/paper_table.hpp"
 #include "io/run_description.hpp"
 #include "io/scene_parser.hpp"
+#include "job_binding.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "numpy_vector.hpp"
@@ -121,8 +122,11 @@ void bind_sweep(py::module_& m) {
   for (auto name : kernels::stepper_names) steppers.append(std::string(name));
   m.attr("steppers") = steppers;
 
-  py::class_<SweepJob>(m, "SweepJob",
-                       "A sweep on its own thread; poll wait(), read done/total/periods, cancel() to stop.")
+  py::class_<SweepJob> sweep_job(
+      m, "SweepJob",
+      "A sweep on its own thread; poll wait(), read done/total/periods, cancel() to "
+      "stop.");
+  bind_job_polling(sweep_job)
       .def(py::init([](const std::string& scene, bool is_path, int threads, const std::string& output,
                        bool force, const std::string& version, const std::string& revision) {
              const std::string source = is_path ? scene : std::string("<python>");
@@ -133,20 +137,6 @@ void bind_sweep(py::module_& m) {
            }),
            py::arg("scene"), py::arg("is_path"), py::arg("threads"), py::arg("output"), py::arg("force"),
            py::arg("version"), py::arg("revision"))
-      .def("wait", &SweepJob::wait, py::arg("seconds"), py::call_guard<py::gil_scoped_release>(),
-           "Waits up to `seconds` (forever when negative) with the GIL released; True once ended.")
-      .def_property_readonly("done", &SweepJob::done)
-      .def_property_readonly("total", &SweepJob::total)
-      .def_property_readonly("periods", &SweepJob::periods, "periods the members have closed so far")
-      .def("cancel", &SweepJob::cancel)
-      .def_property_readonly(
-          "kept",
-          [](const SweepJob& job) -> py::object {
-            const auto kept = job.kept();
-            return kept ? py::object(py::int_(*kept)) : py::object(py::none());
-          },
-          "After a cancelled sweep with an output path: the members kept in OUTPUT.partial (None: no file "
-          "kept).")
       .def(
           "take_image",
           [](SweepJob& job) {
