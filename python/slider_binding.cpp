@@ -36,10 +36,8 @@ void bind_slider(py::module_& m) {
       },
       py::arg("scene"), py::arg("is_path") = false,
       "The validated slider scene: its output.path ('' when not given) and member count.");
-  py::class_<SliderJob> slider_job(
-      m, "SliderJob",
-      "A slider scan on its own thread; poll wait(), read done/total, cancel() to "
-      "stop.");
+  py::class_<SliderJob> slider_job(m, "SliderJob",
+                                   "A slider scan on its own thread; poll wait(), read done/total, cancel().");
   bind_job_polling(slider_job)
       .def(py::init([](const std::string& scene, bool is_path, int threads, const std::string& output,
                        bool force, bool keep, const std::string& version, const std::string& revision) {

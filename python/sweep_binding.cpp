@@ -122,10 +122,8 @@ void bind_sweep(py::module_& m) {
   for (auto name : kernels::stepper_names) steppers.append(std::string(name));
   m.attr("steppers") = steppers;
 
-  py::class_<SweepJob> sweep_job(
-      m, "SweepJob",
-      "A sweep on its own thread; poll wait(), read done/total/periods, cancel() to "
-      "stop.");
+  py::class_<SweepJob> sweep_job(m, "SweepJob",
+                                 "A sweep on its own thread; poll wait(), read done/total/periods, cancel().");
   bind_job_polling(sweep_job)
       .def(py::init([](const std::string& scene, bool is_path, int threads, const std::string& output,
                        bool force, const std::string& version, const std::string& revision) {
