@@ -1,14 +1,21 @@
 // A slider scan on its own thread for the Python module (a BackgroundJob): stream_slider_scan with the
-// job's stop flag into the file `rotorsweep slider` writes, through its temporary or partial file.
+// job's stop flag into the file `rotorsweep slider` writes, through its temporary or partial file
+// (inline: the binding's unit compiles it, which keeps the module in one unity batch).
 #pragma once
 
+#include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "background_job.hpp"
+#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/slider/slider_scene.hpp"
+#include "ensemble/slider/slider_sweep.hpp"
 #include "io/output_target.hpp"
 #include "io/slider_result_file.hpp"
+#include "sweep_job.hpp"
 
 namespace rotorsweep::python {
 
@@ -35,5 +42,51 @@ class SliderJob final : public BackgroundJob {
   std::optional<io::OutputTarget> target_;
   std::optional<io::SliderResultFile> file_;
 };
+
+inline SliderJob::SliderJob(ensemble::SliderScene scene, int threads, const std::string& output, bool force,
+                            bool keep, const io::Provenance& provenance)
+    : scene_(std::move(scene)), output_(output), keep_(keep) {
+  total_ = scene_.member_count();
+  const int count = ensemble::thread_count(threads, "threads");
+  target_.emplace(output, std::vector<std::string>{provenance.scene_path}, io::Replaceable::hdf5, force,
+                  keep);
+  if (keep) refuse_earlier_partial(*target_, force);
+  file_.emplace(target_->temporary(), scene_, provenance);
+  target_->claim_temporary();
+  start([this, count] { run(count); });
+}
+
+inline void SliderJob::run(int threads) {
+  struct Release {  // the file closed, an unfinished temporary removed (a kept one stays), the locks released
+    SliderJob& job;
+    ~Release() {
+      job.file_.reset();
+      job.target_.reset();
+    }
+  } release{*this};
+  std::vector<std::size_t> all(scene_.member_count());
+  std::iota(all.begin(), all.end(), std::size_t(0));
+  const io::SliderStreamOutcome outcome =
+      io::stream_slider_scan(*file_, scene_, all,
+                             {threads,
+                              [this](std::size_t now) { done_.store(now, std::memory_order_relaxed); },
+                              [this] { return cancelled(); },
+                              {}});
+  if (cancelled()) {
+    if (keep_) {  // as `rotorsweep slider` keeps them, for --resume
+      file_->keep_partial(outcome.written, outcome.seconds, threads);
+      file_->close();
+      target_->keep();
+      kept_ = outcome.written;
+    }
+    return;
+  }
+  if (!outcome.write_error.empty())
+    throw std::runtime_error("writing " + output_ + " failed: " + outcome.write_error);
+  done_.store(scene_.member_count(), std::memory_order_relaxed);
+  file_->finish(outcome.seconds, threads);
+  file_->close();
+  target_->commit();
+}
 
 }  // namespace rotorsweep::python
