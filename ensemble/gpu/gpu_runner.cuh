@@ -17,6 +17,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "ensemble/engine/chunk_pipeline.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_slots.hpp"
@@ -150,7 +151,61 @@ class DeviceChunk {
   std::vector<void*> pointers_, pinned_;
   unsigned long long* counter_ = nullptr;
 };
-using RowDeviceChunk = DeviceChunk<SlotChunk, slot_views>;
+
+/// The device executor's two chunk slots on one stream, for any problem's chunk layout (Chunk, views_of
+/// as DeviceChunk's), driven by run_chunks_two_in_flight: start(host, slot, launch) queues the host
+/// chunk's inputs, its kernel (launch(stream, views, count, counter)) and the copy of its outputs;
+/// finish(host, slot) waits for them, puts them into the host chunk and returns the kernel's seconds
+/// (CUDA events). A slot's buffers are allocated at its first start, again after reset() (a layout of
+/// another size: the slider's next size and speed); a slot never started allocates nothing.
+template <class Chunk, auto views_of>
+class ChunkStream {
+ public:
+  ChunkStream() {
+    check(cudaStreamCreate(&stream_), "creating a stream");
+    for (cudaEvent_t& e : events_) check(cudaEventCreate(&e), "creating an event");
+  }
+  ChunkStream(const ChunkStream&) = delete;
+  ChunkStream& operator=(const ChunkStream&) = delete;
+  ~ChunkStream() {
+    cudaStreamSynchronize(stream_);
+    slots_ = {};
+    for (cudaEvent_t e : events_) cudaEventDestroy(e);
+    cudaStreamDestroy(stream_);
+  }
+
+  /// Waits for both slots and frees their buffers.
+  void reset() {
+    check(cudaStreamSynchronize(stream_), "running the sweep kernel");
+    slots_ = {};
+  }
+
+  template <class Launch>
+  void start(Chunk& host, std::size_t slot, Launch&& launch) {
+    if (!slots_[slot]) slots_[slot] = std::make_unique<DeviceChunk<Chunk, views_of>>(host);
+    DeviceChunk<Chunk, views_of>& device = *slots_[slot];
+    device.upload(host, stream_);
+    check(cudaEventRecord(events_[3 * slot], stream_), "timing the sweep kernel");
+    launch(stream_, device.views(), (unsigned long long)host.count(), device.counter());
+    check(cudaGetLastError(), "launching the sweep kernel");
+    check(cudaEventRecord(events_[3 * slot + 1], stream_), "timing the sweep kernel");
+    device.download(host, stream_);
+    check(cudaEventRecord(events_[3 * slot + 2], stream_), "copying member results");
+  }
+
+  double finish(Chunk& host, std::size_t slot) {
+    check(cudaEventSynchronize(events_[3 * slot + 2]), "running the sweep kernel");
+    float kernel_ms = 0.0f;
+    check(cudaEventElapsedTime(&kernel_ms, events_[3 * slot], events_[3 * slot + 1]), "timing the sweep kernel");
+    slots_[slot]->take_results(host);
+    return 1e-3 * double(kernel_ms);
+  }
+
+ private:
+  cudaStream_t stream_ = nullptr;
+  std::array<cudaEvent_t, 6> events_{};  // per slot: its kernel's start and end, its results arrived
+  std::array<std::unique_ptr<DeviceChunk<Chunk, views_of>>, 2> slots_;
+};
 
 /// How one chunk's kernel is launched: the grid, each block's dynamic shared memory, and how many
 /// members run at once (threads, or teams).
@@ -171,11 +226,11 @@ int resident_blocks(Kernel kernel, const GpuLaunch& launch, std::size_t shared_b
   return std::max(1, per_multiprocessor) * gpu_info().multiprocessors;
 }
 
-/// The variant's members in chunks, two in flight: while the GPU runs one chunk (launch(stream, views,
-/// count, counter)), the host fills the next, whose copies and kernel the stream queues behind it, and
-/// then summarizes the one before. Stops between chunks when control.stop is raised. The kernels'
-/// time (CUDA events) goes to statistics.kernel_seconds, the host's parts to its setup, fill, wait and
-/// deliver seconds.
+/// The variant's members in chunks, two in flight (run_chunks_two_in_flight on a ChunkStream): while the
+/// GPU runs one chunk (launch(stream, views, count, counter)), the host fills the next, whose copies
+/// and kernel the stream queues behind it, and then delivers the one before. Starts no chunk once
+/// control.stop is raised. The kernels' time (CUDA events) goes to statistics.kernel_seconds, the
+/// host's parts to its setup, fill (and queue), wait (and copy back) and deliver seconds.
 template <class Launch>
 SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const SlotSchedule& schedule,
                         const ChunkGrid& grid, int host_threads, const SweepControl& control,
@@ -193,61 +248,35 @@ SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const Slo
   };
   const std::size_t second = members > chunk ? chunk : 0;  // a sweep of one chunk needs no second
   std::array<SlotChunk, 2> host{SlotChunk(schedule, chunk), SlotChunk(schedule, second)};
-  RowDeviceChunk device0(host[0]), device1(host[1]);
-  std::array<RowDeviceChunk*, 2> device{&device0, &device1};
-  cudaStream_t stream = nullptr;
-  check(cudaStreamCreate(&stream), "creating a stream");
-  std::array<cudaEvent_t, 6> events{};  // per chunk: its kernel's start and end, its results arrived
-  for (cudaEvent_t& e : events) check(cudaEventCreate(&e), "creating an event");
+  ChunkStream<SlotChunk, slot_views> device;
   stats.setup_seconds = seconds_since(start);
 
-  const auto launch_chunk = [&](std::size_t b, std::size_t first) {
-    const std::size_t count = std::min(chunk, range.end - first);
-    const auto fill_start = std::chrono::steady_clock::now();
-    host[b].fill(scene, range, first, count);
-    device[b]->upload(host[b], stream);
-    stats.fill_seconds += seconds_since(fill_start);
-    check(cudaEventRecord(events[3 * b], stream), "timing the sweep kernel");
-    launch(stream, device[b]->views(), (unsigned long long)count, device[b]->counter());
-    check(cudaGetLastError(), "launching the sweep kernel");
-    check(cudaEventRecord(events[3 * b + 1], stream), "timing the sweep kernel");
-    device[b]->download(host[b], stream);
-    check(cudaEventRecord(events[3 * b + 2], stream), "copying member results");
-  };
-  const auto release = [&] {
-    cudaStreamSynchronize(stream);
-    for (cudaEvent_t e : events) cudaEventDestroy(e);
-    cudaStreamDestroy(stream);
-  };
-  std::size_t done = 0;
-  try {
-    launch_chunk(0, range.begin);
-    for (std::size_t first = range.begin, b = 0; first < range.end; first += chunk, b ^= 1) {
-      const std::size_t next = first + chunk;
-      if (next < range.end && !control.stopped()) launch_chunk(b ^ 1, next);
-      const auto wait_start = std::chrono::steady_clock::now();
-      check(cudaEventSynchronize(events[3 * b + 2]), "running the sweep kernel");
-      stats.wait_seconds += seconds_since(wait_start);
-      float kernel_ms = 0.0f;
-      check(cudaEventElapsedTime(&kernel_ms, events[3 * b], events[3 * b + 1]), "timing the sweep kernel");
-      stats.kernel_seconds += 1e-3 * double(kernel_ms);
-      const auto deliver_start = std::chrono::steady_clock::now();
-      device[b]->take_results(host[b]);
-      const double attempts = host[b].deliver(scene, host_threads, sink);
-      stats.deliver_seconds += seconds_since(deliver_start);
-      stats.lane_steps_busy += attempts;
-      stats.lane_steps_total += attempts;
-      done += host[b].count();
-      if (control.progress) control.progress(done);
-      if (control.stopped()) break;
-    }
-    check(cudaStreamSynchronize(stream), "running the sweep kernel");
-  } catch (...) {
-    release();
-    throw;
-  }
-  release();
-  stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::size_t next = range.begin, done = 0;
+  run_chunks_two_in_flight(
+      [&](std::size_t slot) {
+        if (next >= range.end) return false;
+        const std::size_t count = std::min(chunk, range.end - next);
+        const auto fill_start = std::chrono::steady_clock::now();
+        host[slot].fill(scene, range, next, count);
+        next += count;
+        device.start(host[slot], slot, launch);
+        stats.fill_seconds += seconds_since(fill_start);
+        return true;
+      },
+      [&](std::size_t slot) {
+        const auto wait_start = std::chrono::steady_clock::now();
+        stats.kernel_seconds += device.finish(host[slot], slot);
+        stats.wait_seconds += seconds_since(wait_start);
+        const auto deliver_start = std::chrono::steady_clock::now();
+        const double attempts = host[slot].deliver(scene, host_threads, sink);
+        stats.deliver_seconds += seconds_since(deliver_start);
+        stats.lane_steps_busy += attempts;
+        stats.lane_steps_total += attempts;
+        done += host[slot].count();
+        if (control.progress) control.progress(done);
+      },
+      [&] { return control.stopped(); });
+  stats.wall_seconds = seconds_since(start);
   outcome.interrupted = control.stopped();
   return outcome;
 }

@@ -18,8 +18,8 @@ template <bool Inertial>
 using SliderTeamIntegrator = kernels::TeamIntegrator<
     const kernels::WarpTeam, kernels::TeamRosenbrock<const kernels::WarpTeam, kernels::SliderModel<double, Inertial>>>;
 
-/// Chunks of slider slots on the GPU, a member per team of a warp's threads (gpu_slider_team_size of
-/// the chunk's size).
+/// Chunks of slider slots on the GPU, two in flight on the rows' ChunkStream, a member per team of a
+/// warp's threads (gpu_slider_team_size of the chunk's size).
 template <bool Inertial>
 class GpuSliderDevice final : public SliderSlotDevice {
  public:
@@ -27,6 +27,7 @@ class GpuSliderDevice final : public SliderSlotDevice {
   using Driver = SliderTeamMember<const kernels::WarpTeam, Integrator>;
 
   std::size_t chunk_members(const SliderSlotSchedule& schedule) override {
+    chunks_.reset();  // another size's buffers
     team_ = gpu_slider_team_size({schedule.grid.columns, schedule.grid.rows}, gpu_launch());
     launch_ = std::make_unique<TeamLaunch>(
         team_launch(kernel(), team_, false, Driver::storage_size(schedule, team_), GpuScratch::global));
@@ -53,18 +54,17 @@ class GpuSliderDevice final : public SliderSlotDevice {
     return views;
   }
 
-  void run(SliderSlotChunk& chunk) override {
-    DeviceChunk<SliderSlotChunk, slider_slot_views> device(chunk);
-    device.upload(chunk, nullptr);
+  void start(SliderSlotChunk& chunk, std::size_t slot) override {
     const TeamLaunch& l = *launch_;
-    kernel()<<<l.grid.blocks, l.grid.threads_per_block, l.grid.shared_bytes>>>(
-        chunk.schedule(), device.views(), (unsigned long long)chunk.count(), device.counter(), team_,
-        l.global(), l.per_team);
-    check(cudaGetLastError(), "launching the slider kernel");
-    device.download(chunk, nullptr);
-    check(cudaDeviceSynchronize(), "running the slider kernel");
-    device.take_results(chunk);
+    chunks_.start(chunk, slot,
+                  [&](cudaStream_t stream, const SliderSlotViews& views, unsigned long long count,
+                      unsigned long long* counter) {
+                    kernel()<<<l.grid.blocks, l.grid.threads_per_block, l.grid.shared_bytes, stream>>>(
+                        chunk.schedule(), views, count, counter, team_, l.global(), l.per_team);
+                  });
   }
+
+  void finish(SliderSlotChunk& chunk, std::size_t slot) override { chunks_.finish(chunk, slot); }
 
  private:
   static auto kernel() {
@@ -74,6 +74,7 @@ class GpuSliderDevice final : public SliderSlotDevice {
   unsigned team_ = 32;
   std::unique_ptr<TeamLaunch> launch_;
   std::vector<std::unique_ptr<DeviceBuffer>> tables_;
+  ChunkStream<SliderSlotChunk, slider_slot_views> chunks_;
 };
 
 }  // namespace gpu

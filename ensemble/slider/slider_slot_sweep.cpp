@@ -5,8 +5,10 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <optional>
 
+#include "ensemble/engine/chunk_pipeline.hpp"
 #include "kernels/models/slider/slider_model.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -65,6 +67,7 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
                                  SliderSlotDevice& device, const SliderTableBuilder& build_table) {
   const double first_step_scale = slider_first_step_scale(scene);
   const int threads = control.threads > 0 ? control.threads : omp_get_max_threads();
+  const auto stopped = [&] { return control.stopped && control.stopped(); };
   std::size_t done = 0;
   for (std::size_t begin = 0; begin < plan_indices.size();) {
     // a group: the consecutive members of one size and speed
@@ -76,7 +79,7 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
       if (at.size != first.size || at.speed != first.speed) break;
       used[at.separation] = true;
     }
-    if (control.stopped && control.stopped()) return true;
+    if (stopped()) return true;
 
     const SliderSize size = scene.sizes[first.size];
     const auto tables = group_tables(scene, first.speed, size, used, threads, build_table);
@@ -85,27 +88,35 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
     const std::vector<SliderTableViews> views = per_separation(device.place_tables(placed), scene.forces);
 
     const SliderSlotSchedule schedule = slider_slot_schedule(scene, first.speed, size, first_step_scale);
-    const std::size_t capacity = std::max<std::size_t>(1, device.chunk_members(schedule));
-    SliderSlotChunk chunk(scene, first.speed, schedule, std::min(capacity, end - begin));
+    const std::size_t capacity = std::min(std::max<std::size_t>(1, device.chunk_members(schedule)), end - begin);
+    std::array<std::optional<SliderSlotChunk>, 2> chunks;  // a slot's chunk made at its first start
     std::size_t next = begin;
     std::vector<std::size_t> claimed;  // a chunk's plan indices, claimed from [begin, end)
-    for (;;) {
-      if (control.stopped && control.stopped()) return true;
-      claimed.clear();
-      while (claimed.size() < chunk.capacity()) {
-        const std::size_t at = control.claim ? control.claim(begin, end) : next++;
-        if (at >= end) break;
-        claimed.push_back(plan_indices[at]);
-      }
-      if (claimed.empty()) break;
-      chunk.fill(claimed, views);
-      device.run(chunk);
-      std::vector<SliderMember> members;
-      for (std::size_t k = 0; k < claimed.size(); ++k) members.push_back(chunk.member(k));
-      finished(std::move(members));
-      done += claimed.size();
-      if (control.progress) control.progress(done);
-    }
+    const bool halted = run_chunks_two_in_flight(
+        [&](std::size_t slot) {
+          claimed.clear();
+          while (claimed.size() < capacity) {
+            const std::size_t at = control.claim ? control.claim(begin, end) : next++;
+            if (at >= end) break;
+            claimed.push_back(plan_indices[at]);
+          }
+          if (claimed.empty()) return false;
+          if (!chunks[slot]) chunks[slot].emplace(scene, first.speed, schedule, capacity);
+          chunks[slot]->fill(claimed, views);
+          device.start(*chunks[slot], slot);
+          return true;
+        },
+        [&](std::size_t slot) {
+          SliderSlotChunk& chunk = *chunks[slot];
+          device.finish(chunk, slot);
+          std::vector<SliderMember> members;
+          for (std::size_t k = 0; k < chunk.count(); ++k) members.push_back(chunk.member(k));
+          finished(std::move(members));
+          done += chunk.count();
+          if (control.progress) control.progress(done);
+        },
+        stopped);
+    if (halted) return true;
     begin = end;
   }
   return false;

@@ -13,18 +13,23 @@
 
 namespace rotorsweep::ensemble {
 
-/// What runs chunks of slider slots: the GPU (ensemble/gpu/gpu_slider.cu), or a host team.
+/// What runs chunks of slider slots: the GPU (ensemble/gpu/gpu_sweep_slider.cu), or a host team. Two
+/// chunks may be in flight (run_chunks_two_in_flight), one per slot.
 class SliderSlotDevice {
  public:
   virtual ~SliderSlotDevice() = default;
-  /// The most members one chunk of a slider of `grid` holds (enough to keep the device busy).
+  /// The most members one chunk of a slider of `grid` holds (enough to keep the device busy); chunks
+  /// of the schedule before are finished.
   virtual std::size_t chunk_members(const SliderSlotSchedule& schedule) = 0;
   /// Views of `tables` where the members read them (copies in device memory, kept until the next
   /// call), in their order; a null table gives an empty view.
   virtual std::vector<kernels::SubstrateTableView> place_tables(
       const std::vector<const kernels::SubstrateTable*>& tables) = 0;
-  /// Runs every member of `chunk` to its retirement: inputs from its buffers, outputs into them.
-  virtual void run(SliderSlotChunk& chunk) = 0;
+  /// Starts every member of `chunk` in `slot` (0 or 1), inputs from its buffers; may return before they
+  /// have finished.
+  virtual void start(SliderSlotChunk& chunk, std::size_t slot) = 0;
+  /// Waits for the members started in `slot`; their outputs are then in the chunk's buffers.
+  virtual void finish(SliderSlotChunk& chunk, std::size_t slot) = 0;
 };
 
 /// Builds the substrate table of a slider of `size` at separation h (m) over the scene's path, its
@@ -36,10 +41,11 @@ using SliderTableBuilder = std::function<kernels::SubstrateTable(const SliderSce
 /// The first-step scale of the scene's stepper at its tolerances (kernels::AdaptiveIntegrator's).
 double slider_first_step_scale(const SliderScene& scene);
 
-/// run_slider_members on `device`: members `plan_indices` (ascending) in chunks of one size and speed
-/// (claimed with control.claim where set), each chunk's members to `finished` at once (series on the scene's
-/// timeline), their separations' tables (with SliderScene::forces also the four at shifted tracks) built by
-/// `build_table` on the control's threads; progress after each chunk, stopped() checked between chunks.
+/// run_slider_members on `device`: members `plan_indices` (ascending) in chunks of one size and speed, two
+/// in flight (claimed with control.claim where set), each chunk's members to `finished` at once (series on
+/// the scene's timeline), their separations' tables (with SliderScene::forces also the four at shifted
+/// tracks) built by `build_table` on the control's threads; progress after each chunk, no chunk started
+/// once stopped() holds.
 /// Returns whether stopped() left members out.
 bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                                  const SliderScanControl& control,

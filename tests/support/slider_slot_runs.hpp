@@ -35,7 +35,7 @@ class HostTeamSliderDevice final : public ensemble::SliderSlotDevice {
     for (const auto* table : tables) views.push_back(table ? table->view() : kernels::SubstrateTableView{});
     return views;
   }
-  void run(ensemble::SliderSlotChunk& chunk) override {
+  void start(ensemble::SliderSlotChunk& chunk, std::size_t) override {
     const ensemble::SliderSlotViews views = chunk.views();
     for_each_member_in_parallel(chunk.count(), [&](std::size_t k) {
       std::vector<double> storage(Driver::storage_size(chunk.schedule(), ranks_));
@@ -43,6 +43,7 @@ class HostTeamSliderDevice final : public ensemble::SliderSlotDevice {
       Driver::run(crew, chunk.schedule(), views, k, storage.data(), storage.size());
     });
   }
+  void finish(ensemble::SliderSlotChunk&, std::size_t) override {}  // start ran the members
 
  private:
   std::size_t ranks_, chunk_;
