@@ -1,5 +1,6 @@
 // `mpirun -np K rotorsweep slider SCENE`: the ranks take members from one counter per group of the plan
 // on rank 0 (as `run` does per variant), stream them into a file each, and rank 0 joins the rows.
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include "build_info.hpp"
 #include "ensemble/engine/instruction_set.hpp"
 #include "ensemble/gpu/gpu_slider.hpp"
+#include "io/member_stream.hpp"
 #include "io/slider_result_file.hpp"
 #include "mpi_session.hpp"
 #include "progress_line.hpp"
@@ -42,7 +44,8 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
   std::vector<std::size_t> plan(scene.member_count());
   for (std::size_t i = 0; i < plan.size(); ++i) plan[i] = i;
   std::string error;
-  io::SliderStreamOutcome outcome;
+  std::size_t written = 0;
+  double wall = 0;
   int signal_number = 0;
   {
     SharedCounters counters(plan.size(), mpi.rank());  // one per group, at the group's first position
@@ -61,25 +64,33 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
       return k;
     };
     const StopOnSignals signals;
+    const auto start = std::chrono::steady_clock::now();
     try {
       const io::SliderResultFile file(rank_file(partial, mpi.rank()), scene, provenance);
-      outcome = io::stream_slider_scan(file, scene, plan,
-                                       {threads, {}, [&] { return signals.flag()->load(); }, claim});
-      error = outcome.write_error;
-    } catch (const std::bad_alloc&) {
-      error = "out of memory (an allocation in a worker thread failed)";
+      io::SliderMemberStream stream(file, [&signals] { signals.stop(); });
+      try {
+        ensemble::run_slider_members(
+            scene, plan, {threads, {}, [&] { return signals.flag()->load(); }, claim},
+            [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
+      } catch (const std::bad_alloc&) {
+        error = "out of memory (an allocation in a worker thread failed)";
+      } catch (const std::exception& e) {
+        error = e.what();
+      }
+      stream.flush();  // what the scan finished before it failed, or the write's error
+      written = stream.written();
     } catch (const std::exception& e) {
-      error = e.what();
+      if (error.empty()) error = e.what();
     }
+    wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     signal_number = signals.signal();
     MPI_Barrier(MPI_COMM_WORLD);
     progress.finish();
   }
   if (!error.empty()) std::fprintf(stderr, "error: rank %d: %s\n", mpi.rank(), error.c_str());
-  double wall = outcome.seconds;
   int failed = error.empty() ? 0 : 1, all_threads = threads;
   std::vector<unsigned long long> per_rank(std::size_t(mpi.size()), 0);
-  per_rank[std::size_t(mpi.rank())] = outcome.written;
+  per_rank[std::size_t(mpi.rank())] = written;
   MPI_Allreduce(MPI_IN_PLACE, per_rank.data(), mpi.size(), MPI_UNSIGNED_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
   std::string shares;
   for (std::size_t r = 0; r < per_rank.size(); ++r) shares += (r ? ", " : "") + std::to_string(per_rank[r]);

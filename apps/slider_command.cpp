@@ -3,6 +3,7 @@
 // SIGINT or SIGTERM keeps the finished members (exit 130 or 143), --resume, --shard and `merge`.
 
 #include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/gpu/gpu_slider.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
+#include "io/member_stream.hpp"
 #include "io/output_target.hpp"
 #include "io/slider_result_file.hpp"
 #include "io/slider_scene_parser.hpp"
@@ -203,35 +205,41 @@ int run_slider(const SliderOptions& options) {
                  to_run.size());
 
   ProgressLine progress(to_run.size(), !options.quiet);
-  io::SliderStreamOutcome outcome;
-  std::string sweep_error;
+  bool stopped = false;
+  std::string write_error, sweep_error;
   int signal_number = 0;
+  const auto start = std::chrono::steady_clock::now();
   {
+    io::SliderMemberStream stream(*file, [&signals] { signals.stop(); });
     try {
-      outcome = io::stream_slider_scan(*file, scene, to_run,
-                                       {threads,
-                                        [&](std::size_t done) { progress.update(done); },
-                                        [&] { return signals.flag()->load(); },
-                                        {}});
+      stopped = ensemble::run_slider_members(
+          scene, to_run,
+          {threads, [&](std::size_t done) { progress.update(done); }, [&] { return signals.flag()->load(); }, {}},
+          [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
     } catch (const std::bad_alloc&) {
       sweep_error = "out of memory (an allocation in a worker thread failed)";
     } catch (const std::exception& e) {
       sweep_error = e.what();
     }
     signal_number = signals.signal();
+    try {
+      stream.flush();
+    } catch (const std::exception& e) {
+      write_error = e.what();
+    }
+    done_before += stream.written();
   }
   progress.finish();
-  done_before += outcome.written;
-  const double seconds = earlier_seconds + outcome.seconds;
+  const double seconds =
+      earlier_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string resume = resume_command("slider", options, options.shard);
 
-  if (!outcome.write_error.empty() || !sweep_error.empty())
+  if (!write_error.empty() || !sweep_error.empty())
     return keep_failed_run(*target,
-                           outcome.write_error.empty()
-                               ? "the scan failed: " + sweep_error
-                               : "writing " + partial + " failed: " + outcome.write_error,
+                           write_error.empty() ? "the scan failed: " + sweep_error
+                                               : "writing " + partial + " failed: " + write_error,
                            done_before, rows, resume);
-  if (outcome.stopped)
+  if (stopped)
     return keep_stopped_run(
         *target,
         [&] {

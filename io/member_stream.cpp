@@ -1,41 +1,55 @@
-// MemberStream: a buffer under one lock, batches written under another by whichever worker
+// ResultStream: a buffer under one lock, batches written under another by whichever worker
 // thread finds a batch due and the writer free, so writing overlaps with computing.
 #include "io/member_stream.hpp"
 
 namespace rotorsweep::io {
 
-MemberStream::MemberStream(const ResultFile& file, const ensemble::MemberPlan& plan, FlushPolicy policy,
-                           std::function<void()> on_failure)
-    : file_(file),
-      plan_(plan),
+template <class Result>
+ResultStream<Result>::ResultStream(Writer write, FlushPolicy policy, std::function<void()> on_failure)
+    : writer_(std::move(write)),
       policy_(policy),
       on_failure_(std::move(on_failure)),
       last_write_(std::chrono::steady_clock::now()) {}
 
-bool MemberStream::due() const {
+template <class Result>
+bool ResultStream<Result>::due() const {
   return buffer_.size() >= policy_.members ||
          std::chrono::duration<double>(std::chrono::steady_clock::now() - last_write_).count() >=
              policy_.seconds;
 }
 
-void MemberStream::add(ensemble::MemberResult&& result) {
+template <class Result>
+void ResultStream<Result>::add(Result&& result) {
   std::unique_lock buffer(buffer_lock_);
   buffer_.push_back(std::move(result));
+  write_if_due(buffer);
+}
+
+template <class Result>
+void ResultStream<Result>::add(std::vector<Result>&& results) {
+  std::unique_lock buffer(buffer_lock_);
+  for (Result& r : results) buffer_.push_back(std::move(r));
+  write_if_due(buffer);
+}
+
+template <class Result>
+void ResultStream<Result>::write_if_due(std::unique_lock<std::mutex>& buffer) {
   if (!due()) return;
   std::unique_lock writer(write_lock_, std::try_to_lock);
   if (!writer.owns_lock()) return;  // another thread is writing; the next add takes the rest
-  std::vector<ensemble::MemberResult> batch;
+  std::vector<Result> batch;
   batch.swap(buffer_);
   last_write_ = std::chrono::steady_clock::now();
   buffer.unlock();
   write(std::move(batch));
 }
 
-void MemberStream::write(std::vector<ensemble::MemberResult> batch) {
+template <class Result>
+void ResultStream<Result>::write(std::vector<Result> batch) {
   if (failure_ || batch.empty()) return;
   const std::size_t count = batch.size();
   try {
-    file_.write_results(plan_, std::move(batch));
+    writer_(std::move(batch));
     const std::lock_guard buffer(buffer_lock_);
     written_ += count;
   } catch (...) {
@@ -44,9 +58,10 @@ void MemberStream::write(std::vector<ensemble::MemberResult> batch) {
   }
 }
 
-void MemberStream::flush() {
+template <class Result>
+void ResultStream<Result>::flush() {
   const std::lock_guard writer(write_lock_);
-  std::vector<ensemble::MemberResult> batch;
+  std::vector<Result> batch;
   {
     const std::lock_guard buffer(buffer_lock_);
     batch.swap(buffer_);
@@ -56,9 +71,25 @@ void MemberStream::flush() {
   if (failure_) std::rethrow_exception(failure_);
 }
 
-std::size_t MemberStream::written() const {
+template <class Result>
+std::size_t ResultStream<Result>::written() const {
   const std::lock_guard buffer(buffer_lock_);
   return written_;
 }
+
+template class ResultStream<ensemble::MemberResult>;
+template class ResultStream<ensemble::SliderMember>;
+
+MemberStream::MemberStream(const ResultFile& file, const ensemble::MemberPlan& plan, FlushPolicy policy,
+                           std::function<void()> on_failure)
+    : ResultStream(
+          [&file, &plan](std::vector<ensemble::MemberResult>&& batch) {
+            file.write_results(plan, std::move(batch));
+          },
+          policy, std::move(on_failure)) {}
+
+SliderMemberStream::SliderMemberStream(const SliderResultFile& file, std::function<void()> on_failure)
+    : ResultStream([&file](std::vector<ensemble::SliderMember>&& batch) { file.write_members(batch); },
+                   {0.0, 1}, std::move(on_failure)) {}
 
 }  // namespace rotorsweep::io

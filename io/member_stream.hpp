@@ -1,4 +1,4 @@
-// Finished members on their way into a ResultFile (README "Interrupting, resuming and splitting
+// Finished members on their way into a result file (README "Interrupting, resuming and splitting
 // a sweep"): buffered from the worker threads and written in batches at a bounded interval.
 #pragma once
 
@@ -11,7 +11,9 @@
 
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_result.hpp"
+#include "ensemble/slider/slider_sweep.hpp"
 #include "io/result_file.hpp"
+#include "io/slider_result_file.hpp"
 
 namespace rotorsweep::io {
 
@@ -21,34 +23,52 @@ struct FlushPolicy {
   std::size_t members = 4096;
 };
 
-/// Takes results from any thread (add) and writes them in batches; one thread writes while the
-/// others go on computing. A failed write calls on_failure once (to stop the sweep) and is thrown
-/// again by flush(). Memory: at most `members` waiting results plus those that finish while a
+/// Takes results from any thread (add) and writes them in batches through `write`; one thread writes
+/// while the others go on computing. A failed write calls on_failure once (to stop the sweep) and is
+/// thrown again by flush(). Memory: at most `members` waiting results plus those that finish while a
 /// batch is being written.
-class MemberStream {
+template <class Result>
+class ResultStream {
  public:
-  MemberStream(const ResultFile& file, const ensemble::MemberPlan& plan, FlushPolicy policy,
-               std::function<void()> on_failure);
-  void add(ensemble::MemberResult&& result);
+  using Writer = std::function<void(std::vector<Result>&&)>;
+  ResultStream(Writer write, FlushPolicy policy, std::function<void()> on_failure);
+  void add(Result&& result);
+  /// Several results at once (a device chunk's).
+  void add(std::vector<Result>&& results);
   /// Writes what is waiting (call when no thread adds any more); rethrows a failed write.
   void flush();
   /// Members written so far.
   std::size_t written() const;
 
  private:
+  /// Writes a batch if one is due and no other thread is writing (buffer_lock_ held by `buffer`).
+  void write_if_due(std::unique_lock<std::mutex>& buffer);
   bool due() const;
   /// Writes `batch` (holding write_lock_), or records the failure.
-  void write(std::vector<ensemble::MemberResult> batch);
+  void write(std::vector<Result> batch);
 
-  const ResultFile& file_;
-  const ensemble::MemberPlan& plan_;
+  Writer writer_;
   FlushPolicy policy_;
   std::function<void()> on_failure_;
   mutable std::mutex buffer_lock_, write_lock_;
-  std::vector<ensemble::MemberResult> buffer_;
+  std::vector<Result> buffer_;
   std::chrono::steady_clock::time_point last_write_;
   std::size_t written_ = 0;
   std::exception_ptr failure_;
+};
+
+/// A row sweep's results into its ResultFile (rows in plan order, then /members/done).
+class MemberStream : public ResultStream<ensemble::MemberResult> {
+ public:
+  MemberStream(const ResultFile& file, const ensemble::MemberPlan& plan, FlushPolicy policy,
+               std::function<void()> on_failure);
+};
+
+/// A slider scan's members into its SliderResultFile, each chunk's (or lane block's) members as they
+/// finish: a slider member carries its series, so none waits for a batch.
+class SliderMemberStream : public ResultStream<ensemble::SliderMember> {
+ public:
+  SliderMemberStream(const SliderResultFile& file, std::function<void()> on_failure);
 };
 
 }  // namespace rotorsweep::io

@@ -4,8 +4,6 @@
 #include "io/slider_result_file.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -403,30 +401,6 @@ void SliderResultFile::finish(double wall_seconds, int threads) const {
   file_.set_attribute("wall_seconds", wall_seconds);
   file_.set_attribute("threads", std::int64_t(threads));
   set_complete();
-}
-
-SliderStreamOutcome stream_slider_scan(const SliderResultFile& file, const ensemble::SliderScene& scene,
-                                       const std::vector<std::size_t>& plan_indices,
-                                       const ensemble::SliderScanControl& control) {
-  SliderStreamOutcome outcome;
-  std::atomic<bool> failed{false};
-  ensemble::SliderScanControl streaming = control;
-  streaming.stopped = [&] { return failed.load() || (control.stopped && control.stopped()); };
-  const auto start = std::chrono::steady_clock::now();
-  const bool stopped = ensemble::run_slider_members(scene, plan_indices, streaming,
-                                                    [&](std::vector<ensemble::SliderMember>&& block) {
-                                                      if (failed) return;
-                                                      try {
-                                                        file.write_members(block);
-                                                        outcome.written += block.size();
-                                                      } catch (const std::exception& e) {
-                                                        outcome.write_error = e.what();
-                                                        failed = true;
-                                                      }
-                                                    });
-  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  outcome.stopped = stopped || failed;
-  return outcome;
 }
 
 }  // namespace rotorsweep::io

@@ -57,18 +57,4 @@ class SliderResultFile : public MemberTableFile {
   std::vector<SliderColumn> columns_;
 };
 
-/// How a scan streamed into its file went.
-struct SliderStreamOutcome {
-  std::size_t written = 0;  ///< members written and marked done
-  bool stopped = false;     ///< control.stopped() or a failed write left members out
-  double seconds = 0;       ///< wall time of the scan
-  std::string write_error;  ///< why writing the file failed (the scan then stopped); empty if it did not
-};
-
-/// Runs the members `plan_indices` (ascending) of the file's scene and writes each member into
-/// `file` as it finishes (ensemble::run_slider_members).
-SliderStreamOutcome stream_slider_scan(const SliderResultFile& file, const ensemble::SliderScene& scene,
-                                       const std::vector<std::size_t>& plan_indices,
-                                       const ensemble::SliderScanControl& control);
-
 }  // namespace rotorsweep::io

@@ -1,8 +1,10 @@
-// A slider scan on its own thread for the Python module (a BackgroundJob): stream_slider_scan with the
-// job's stop flag into the file `rotorsweep slider` writes, through its temporary or partial file
+// A slider scan on its own thread for the Python module (a BackgroundJob): run_slider_members with the
+// job's stop flag, through a SliderMemberStream into the file `rotorsweep slider` writes, through its temporary or partial file
 // (inline: the binding's unit compiles it, which keeps the module in one unity batch).
 #pragma once
 
+#include <atomic>
+#include <chrono>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -13,6 +15,7 @@
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/slider/slider_scene.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
+#include "io/member_stream.hpp"
 #include "io/output_target.hpp"
 #include "io/slider_result_file.hpp"
 #include "sweep_job.hpp"
@@ -66,25 +69,34 @@ inline void SliderJob::run(int threads) {
   } release{*this};
   std::vector<std::size_t> all(scene_.member_count());
   std::iota(all.begin(), all.end(), std::size_t(0));
-  const io::SliderStreamOutcome outcome =
-      io::stream_slider_scan(*file_, scene_, all,
-                             {threads,
-                              [this](std::size_t now) { done_.store(now, std::memory_order_relaxed); },
-                              [this] { return cancelled(); },
-                              {}});
+  std::atomic<bool> write_failed{false};
+  io::SliderMemberStream stream(*file_, [&write_failed] { write_failed = true; });
+  const auto start = std::chrono::steady_clock::now();
+  ensemble::run_slider_members(
+      scene_, all,
+      {threads, [this](std::size_t now) { done_.store(now, std::memory_order_relaxed); },
+       [&] { return cancelled() || write_failed.load(); }, {}},
+      [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::string write_error;
+  try {
+    stream.flush();
+  } catch (const std::exception& e) {
+    write_error = e.what();
+  }
+  const std::size_t written = stream.written();
   if (cancelled()) {
     if (keep_) {  // as `rotorsweep slider` keeps them, for --resume
-      file_->keep_partial(outcome.written, outcome.seconds, threads);
+      file_->keep_partial(written, seconds, threads);
       file_->close();
       target_->keep();
-      kept_ = outcome.written;
+      kept_ = written;
     }
     return;
   }
-  if (!outcome.write_error.empty())
-    throw std::runtime_error("writing " + output_ + " failed: " + outcome.write_error);
+  if (!write_error.empty()) throw std::runtime_error("writing " + output_ + " failed: " + write_error);
   done_.store(scene_.member_count(), std::memory_order_relaxed);
-  file_->finish(outcome.seconds, threads);
+  file_->finish(seconds, threads);
   file_->close();
   target_->commit();
 }

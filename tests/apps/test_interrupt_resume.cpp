@@ -41,15 +41,6 @@ std::size_t rows_done(const fs::path& path) {
   return count;
 }
 
-/// The start of a command that mounts a private tmpfs of `size` at `at` (unshare -rm sh -c "mount … && ",
-/// the commands that follow close the quote), or "" where this machine cannot mount one.
-std::string private_tmpfs(const fs::path& at, const std::string& size) {
-  fs::create_directories(at);
-  const std::string mount =
-      "unshare -rm sh -c \"mount -t tmpfs -o size=" + size + " tmpfs '" + at.string() + "' && ";
-  return std::system((mount + "true\" 2>/dev/null").c_str()) == 0 ? mount : "";
-}
-
 }  // namespace
 
 TEST_CASE("an interrupted run resumes to the uninterrupted run's datasets", "[apps][run][resume]") {
@@ -196,19 +187,12 @@ TEST_CASE("a disk that fills up mid-run keeps the finished members for --resume"
   // of 100 members written every eighth of the way
   const std::string filled_after = std::to_string(whole.seconds / 3);
   INFO("whole run " << whole.seconds << " s, disk filled after " << filled_after << " s");
-  const auto log = dir / "full.txt";
-  const std::string command = mount + std::string(ROTORSWEEP_EXECUTABLE) + " run '" + scene.string() +
-                              "' -q --flush-members 100 -o '" + (small / "out.h5").string() + "' > '" +
-                              log.string() + "' 2>&1 & pid=\\$!; sleep " + filled_after + "; cat /dev/zero > '" +
-                              (small / "filler").string() + "' 2>/dev/null; wait \\$pid; rc=\\$?; cp '" +
-                              (small / "out.h5.partial").string() + "' '" +
-                              (dir / "out.h5.partial").string() + "'; ls '" + small.string() + "' >> '" +
-                              log.string() + "'; exit \\$rc\"";
-  const int status = std::system(command.c_str());
-  std::ifstream in(log);
-  const std::string output{std::istreambuf_iterator<char>(in), {}};
+  const auto full = run_cli_filling_disk(
+      mount, "run '" + scene.string() + "' -q --flush-members 100 -o '" + (small / "out.h5").string() + "'", small,
+      filled_after, "out.h5.partial", dir);
+  const std::string& output = full.output;
   INFO(output);
-  CHECK(WEXITSTATUS(status) == 1);
+  CHECK(full.exit_code == 1);
   CHECK_THAT(output, Catch::Contains("No space left on device") && Catch::Contains("--resume"));
   CHECK_THAT(output, !Catch::Contains("out.h5\n"));  // no complete file in the small file system
   REQUIRE(fs::exists(dir / "out.h5.partial"));

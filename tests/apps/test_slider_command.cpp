@@ -1,7 +1,8 @@
 // `rotorsweep slider` end to end (README "The experiment's slider"): scene in, complete HDF5 file out with
 // its datasets and units, `info` on it; bad keys, the wrong kind of scene and what the GPU does not run
 // as exit code 2, no file written;
-// SIGINT and SIGTERM keep the finished members for --resume, also while substrate tables are built; shards
+// SIGINT, SIGTERM and a full disk keep the finished members for --resume, also while substrate tables are
+// built; shards
 // merge to the single-process file; sample points, axes and memory bounded before any work.
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -132,6 +133,47 @@ TEST_CASE("an interrupted slider scan keeps its finished members and resumes to 
   CHECK_THAT(last.output, Catch::Contains("resuming from"));
   CHECK_FALSE(std::filesystem::exists(partial));
   check_same_datasets(whole, out);
+}
+
+TEST_CASE("a disk that fills up mid-scan keeps the slider's finished members for --resume",
+          "[apps][slider][resume][files]") {
+  // the interrupted scan's 384 members (a 0.9 MB file) on a 4 MiB file system of our own, filled by
+  // another writer a third of the way through the scan
+  const auto dir = scratch_directory("slider-disk-fills-up");
+  const auto scene = write_text(dir / "long.toml",
+                                "[slider]\ncolumns = 4\nrows = 4\n[drive]\nend = 2.5\n"
+                                "[sweep]\nseparation = { from = 5e-3, to = 13e-3, count = 384 }\n");
+  const auto small = dir / "small";
+  const std::string mount = private_tmpfs(small, "4m");
+  if (mount.empty()) {
+    WARN("skipped: no private tmpfs mount here (unshare -rm and mount -t tmpfs must work)");
+    return;
+  }
+  const auto whole = run_cli("slider -q '" + scene.string() + "' -o '" + (dir / "whole.h5").string() + "'", dir);
+  REQUIRE(whole.exit_code == 0);
+  const std::string filled_after = std::to_string(whole.seconds / 3);
+  INFO("whole scan " << whole.seconds << " s, disk filled after " << filled_after << " s");
+  const auto full = run_cli_filling_disk(
+      mount, "slider '" + scene.string() + "' -q -o '" + (small / "out.h5").string() + "'", small, filled_after,
+      "out.h5.partial", dir);
+  INFO(full.output);
+  CHECK(full.exit_code == 1);
+  CHECK_THAT(full.output, Catch::Contains("No space left on device") && Catch::Contains("--resume"));
+  CHECK_THAT(full.output, !Catch::Contains("out.h5\n"));  // no complete file in the small file system
+  const auto partial = dir / "out.h5.partial";
+  REQUIRE(std::filesystem::exists(partial));
+  {
+    const auto file = rotorsweep::io::Hdf5Location::open_file(partial.string());
+    CHECK_FALSE(file.attribute_flag("complete"));
+    std::size_t done = 0;
+    for (const auto flag : file.open_group("members").read_flags("done")) done += flag != 0;
+    CHECK(done < 384);
+  }
+  const auto resumed =
+      run_cli("slider -q '" + scene.string() + "' -o '" + (dir / "out.h5").string() + "' --resume", dir);
+  INFO(resumed.output);
+  REQUIRE(resumed.exit_code == 0);
+  check_same_datasets(dir / "whole.h5", dir / "out.h5");
 }
 
 TEST_CASE("slider shards merge to the single-process file", "[apps][slider][merge]") {

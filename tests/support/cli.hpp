@@ -1,5 +1,6 @@
 // Test support: runs the rotorsweep executable with arguments and returns its exit code, everything
-// it printed (stdout and stderr together) and its wall time, also when it is sent a signal mid-run.
+// it printed (stdout and stderr together) and its wall time, also when it is sent a signal mid-run or
+// its disk fills up.
 #pragma once
 
 #include <sys/wait.h>
@@ -61,6 +62,30 @@ inline CliResult run_cli_signalled(const std::string& arguments, const std::file
   return detail::run_logged(std::string(ROTORSWEEP_EXECUTABLE) + " " + arguments + " > '" + log.string() +
                                 "' 2>&1 & pid=$!; sleep " + delay + "; kill -" + signal + " $pid; wait $pid",
                             log);
+}
+
+/// The start of a command that mounts a private tmpfs of `size` at `at` (unshare -rm sh -c "mount … && ",
+/// the commands that follow close the quote), or "" where this machine cannot mount one.
+inline std::string private_tmpfs(const std::filesystem::path& at, const std::string& size) {
+  std::filesystem::create_directories(at);
+  const std::string mount =
+      "unshare -rm sh -c \"mount -t tmpfs -o size=" + size + " tmpfs '" + at.string() + "' && ";
+  return std::system((mount + "true\" 2>/dev/null").c_str()) == 0 ? mount : "";
+}
+
+/// Runs the executable with `arguments` in the mount namespace of `mount` (private_tmpfs's, at `disk`),
+/// another writer filling that disk after `delay` (a sleep(1) argument); then copies the file `kept` from
+/// the disk into `scratch` (where it exists) and appends the disk's listing to the output.
+inline CliResult run_cli_filling_disk(const std::string& mount, const std::string& arguments,
+                                      const std::filesystem::path& disk, const std::string& delay,
+                                      const std::string& kept, const std::filesystem::path& scratch) {
+  const auto log = scratch / "cli-output.txt";
+  const std::string command = mount + std::string(ROTORSWEEP_EXECUTABLE) + " " + arguments + " > '" +
+                              log.string() + "' 2>&1 & pid=\\$!; sleep " + delay + "; cat /dev/zero > '" +
+                              (disk / "filler").string() + "' 2>/dev/null; wait \\$pid; rc=\\$?; cp '" +
+                              (disk / kept).string() + "' '" + (scratch / kept).string() + "'; ls '" +
+                              disk.string() + "' >> '" + log.string() + "'; exit \\$rc\"";
+  return detail::run_logged(command, log);
 }
 
 }  // namespace rotorsweep::testing
