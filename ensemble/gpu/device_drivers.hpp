@@ -9,6 +9,7 @@
 #include "ensemble/rows/scene.hpp"
 #include "kernels/models/rows/coupled_rows.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/models/rows/row_models_on_teams.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/leimkuhler_matthews.hpp"
 #include "kernels/steppers/stepper_list.hpp"

@@ -7,6 +7,7 @@
 #include "ensemble/gpu/gpu_slider.hpp"
 #include "ensemble/slider/slider_slot_sweep.hpp"
 #include "ensemble/slider/slider_team_member.hpp"
+#include "kernels/models/slider/slider_on_teams.hpp"
 #include "kernels/steppers/team_rosenbrock.hpp"
 
 namespace rotorsweep::ensemble {

@@ -8,7 +8,7 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
-#include "kernels/steppers/team_evaluation.hpp"
+#include "kernels/models/rows/row_models_on_teams.hpp"
 #include "kernels/steppers/team_integrator.hpp"
 
 namespace rotorsweep::ensemble {

@@ -11,10 +11,9 @@
 #include "kernels/lanes/lane.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
-#include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/lane_status.hpp"
 #include "kernels/steppers/leimkuhler_matthews.hpp"
-#include "kernels/steppers/team_evaluation.hpp"
+#include "kernels/steppers/team_model_concept.hpp"
 #include "kernels/steppers/team_integrator.hpp"
 
 namespace rotorsweep::kernels {
@@ -23,10 +22,11 @@ namespace rotorsweep::kernels {
 /// or CoupledRows) on a team: the same steps (evened out to land on t_stop), the same ξ of row j at
 /// step k (normal number k N + j of the member's stream), so the rows' path has the lanes' bits; only
 /// the quadratures, left-point sums of the integrands, come from team sums in another order.
-template <class Team, class RowModel = NearestNeighbourRows<double>>
+template <class Team, class RowModel>
 class TeamLeimkuhlerMatthews {
  public:
   using Model = RowModel;
+  static_assert(TeamModel<Model, Team>, "a model's team header gives its team forms");
   using TeamType = Team;
   using Settings = typename LeimkuhlerMatthews<Model>::Settings;
   static constexpr bool stochastic = true;

@@ -7,16 +7,14 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
-#include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
 #include "kernels/steppers/stage_combination.hpp"
-#include "kernels/steppers/team_evaluation.hpp"
-#include "kernels/steppers/team_linearization.hpp"
+#include "kernels/steppers/team_model_concept.hpp"
 
 namespace rotorsweep::kernels {
 
-/// The stages of RosenbrockStepper for a model on the double lane (NearestNeighbourRows, CoupledRows
-/// or the slider) on a team of `ranks`: each rank forms its rows' arguments and right-hand sides and
+/// The stages of RosenbrockStepper for a LinearizableTeamModel on the double lane (NearestNeighbourRows,
+/// CoupledRows or the slider, with their team headers) on a team of `ranks`: each rank forms its rows' arguments and right-hand sides and
 /// evaluates the model over them (team_evaluate), the team solves with the model's TeamStageMatrix
 /// (TeamCyclicTridiagonal, TeamDenseSymmetric, TeamSecondOrderJacobian), and the quadratures' stage
 /// values come from team sums (identical on every rank, so each may keep its own copy); every
@@ -24,13 +22,17 @@ namespace rotorsweep::kernels {
 /// The tableau is data, as RosenbrockStepper's (combine_stages over each rank's rows). With the sums
 /// over the team in butterfly order (and for nearest neighbours without evaluate_displaced), its bits
 /// differ from the lanes' at rounding level (docs/numerics.md "The stage solve on a team").
-template <class Team, class TeamModel = NearestNeighbourRows<double>>
+template <class Team, class TeamModelType>
 class TeamRosenbrock {
  public:
-  using Model = TeamModel;
+  using Model = TeamModelType;
+  static_assert(LinearizableTeamModel<Model, Team>, "a model's team header gives its team forms");
   using Method = RosenbrockTableau;
   static constexpr int max_stages = RosenbrockTableau::max_stages;
-  static constexpr std::size_t quadratures = Integrals::max_count;  ///< at most
+  /// The most quadratures a team model carries (the row models' Integrals::max_count), and the values of
+  /// the ranks' partial sums per rank.
+  static constexpr std::size_t quadratures = 8;
+  static_assert(Model::max_quadratures <= quadratures);
 
   /// `table` outlives the stepper (on a device: the kernel's parameters, read where they are).
   ROTORSWEEP_HD TeamRosenbrock(const Model& model, std::size_t ranks, const RosenbrockTableau& table,

@@ -14,8 +14,10 @@
 #include "kernels/linear/team_second_order_jacobian.hpp"
 #include "kernels/models/rows/coupled_rows.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/models/rows/row_models_on_teams.hpp"
 #include "kernels/models/rows/warp_rows.hpp"
 #include "kernels/models/slider/slider_model.hpp"
+#include "kernels/models/slider/slider_on_teams.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "kernels/steppers/team_integrator.hpp"
@@ -90,7 +92,7 @@ __global__ void solve_on_teams(double* storage, std::size_t per_team, std::size_
 __global__ void advance_on_teams(const __grid_constant__ RosenbrockTableau method, double* storage, std::size_t per_team,
                                  std::size_t rows, unsigned team_size, const double* A, double* theta,
                                  double* drive) {
-  using Stepper = TeamRosenbrock<const WarpTeam>;
+  using Stepper = TeamRosenbrock<const WarpTeam, Model>;
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
   LaneArena<double> arena(storage + team * per_team, per_team);
@@ -143,7 +145,7 @@ __global__ void run_thermal_members_on_teams(rotorsweep::ensemble::SlotSchedule 
                                              std::size_t per_team, unsigned team_size) {
   const std::size_t team = (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / team_size;
   const WarpTeam crew(team_size);
-  rotorsweep::ensemble::TeamMember<const WarpTeam, TeamLeimkuhlerMatthews<const WarpTeam>>::run(
+  rotorsweep::ensemble::TeamMember<const WarpTeam, TeamLeimkuhlerMatthews<const WarpTeam, Model>>::run(
       crew, schedule, slots, team, storage + team * per_team, per_team);
 }
 
@@ -152,7 +154,7 @@ __global__ void run_members_on_blocks(rotorsweep::ensemble::SlotSchedule schedul
                                       rotorsweep::ensemble::SlotViews slots, double* storage,
                                       std::size_t per_team) {
   extern __shared__ double exchange[];
-  using Stepper = TeamRosenbrock<const BlockTeam>;
+  using Stepper = TeamRosenbrock<const BlockTeam, Model>;
   const BlockTeam crew(exchange);
   rotorsweep::ensemble::TeamMember<const BlockTeam, TeamIntegrator<const BlockTeam, Stepper>>::run(
       crew, schedule, slots, blockIdx.x, storage + blockIdx.x * per_team, per_team);

@@ -15,6 +15,7 @@
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "kernels/models/rows/row_models_on_teams.hpp"
 #include "kernels/steppers/leimkuhler_matthews.hpp"
 #include "kernels/steppers/team_leimkuhler_matthews.hpp"
 #include "support/same_results.hpp"
@@ -189,7 +190,7 @@ TEST_CASE(
     using Model = kernels::NearestNeighbourRows<double>;
     const auto host =
         testing::on_host_team<kernels::LeimkuhlerMatthews<Model>,
-                              kernels::TeamLeimkuhlerMatthews<kernels::HostTeam>>(thermal, std::size_t(team));
+                              kernels::TeamLeimkuhlerMatthews<kernels::HostTeam, Model>>(thermal, std::size_t(team));
     std::string first;
     INFO("T > 0, team " << team);
     CHECK(testing::count_differences(host, gpu, first) == 0);

@@ -9,6 +9,7 @@
 #include "ensemble/slider/slider_team_member.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/models/slider/slider_model.hpp"
+#include "kernels/models/slider/slider_on_teams.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
 #include "kernels/steppers/team_integrator.hpp"
 #include "kernels/steppers/team_rosenbrock.hpp"

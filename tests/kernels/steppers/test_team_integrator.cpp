@@ -10,6 +10,7 @@
 
 #include "kernels/lanes/team.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/models/rows/row_models_on_teams.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
 #include "kernels/steppers/team_integrator.hpp"
@@ -19,7 +20,7 @@
 
 using namespace rotorsweep::kernels;
 using Model = NearestNeighbourRows<double>;
-using TeamStepper = TeamRosenbrock<HostTeam>;
+using TeamStepper = TeamRosenbrock<HostTeam, NearestNeighbourRows<double>>;
 using Lanes = AdaptiveIntegrator<Model, RosenbrockStepper<Model>>;
 using Team = TeamIntegrator<HostTeam, TeamStepper>;
 

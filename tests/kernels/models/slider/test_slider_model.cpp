@@ -12,6 +12,7 @@
 
 #include "kernels/lanes/team.hpp"
 #include "kernels/models/slider/slider_model.hpp"
+#include "kernels/models/slider/slider_on_teams.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
 #include "kernels/steppers/team_integrator.hpp"
