@@ -284,9 +284,8 @@ int main(int argc, char** argv) {
   gpu_cmd
       ->add_option(
           "--teams", bench_gpu.teams,
-          "Threads per member to measure on the GPU (1: a member per thread; 2 … 32: a team of a warp; "
-          "64 … 1024: a block's)")
-      ->check(CLI::IsMember({1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024}))
+          "Threads per member to measure on the GPU (1: a member per thread; 2 … 32: a team of a warp)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16, 32}))
       ->delimiter(',')
       ->capture_default_str();
   gpu_cmd->add_option("--scratch", bench_gpu.scratch, "Where a team's scratch lives: shared, global or both")

@@ -61,10 +61,10 @@ GpuLaunch gpu_launch() {
     throw GpuLaunchError("ROTORSWEEP_GPU_BLOCK: must be a multiple of 32 from 32 to 1024");
   launch.blocks = positive_from_environment("ROTORSWEEP_GPU_BLOCKS", 0);
   const int team = positive_from_environment("ROTORSWEEP_GPU_TEAM", 0);
-  if (team > 1024 || (team & (team - 1)) != 0)
+  if (team > 32 || (team & (team - 1)) != 0)
     throw GpuLaunchError("ROTORSWEEP_GPU_TEAM = " + std::to_string(team) +
-                         ": allowed: a power of two up to 1024 (1: a member per thread, 2 … 32: a team of "
-                         "a warp, 64 … 1024: a whole block)");
+                         ": allowed: 1, 2, 4, 8, 16 or 32 (1: a member per thread, 2 … 32: a team of a "
+                         "warp's threads)");
   launch.team = unsigned(team);
   launch.scratch = scratch_from_environment();
   return launch;

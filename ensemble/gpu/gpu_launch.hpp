@@ -1,5 +1,5 @@
 // How the GPU backend lays a variant's members on threads (docs/architecture.md "Teams"): a member per
-// thread or per team of a warp's or a block's threads, the team's size by N, and the launch shape.
+// thread or per team of a warp's threads, the team's size by N, and the launch shape.
 #pragma once
 
 #include <cstddef>
@@ -31,8 +31,7 @@ struct GpuLaunch {
 };
 
 /// The launch in use: the defaults, or from the environment ROTORSWEEP_GPU_BLOCK (a multiple of 32 up
-/// to 1024), ROTORSWEEP_GPU_BLOCKS, ROTORSWEEP_GPU_TEAM (a power of two up to 1024; above 32 a team is
-/// a whole block, whose size it sets) and
+/// to 1024), ROTORSWEEP_GPU_BLOCKS, ROTORSWEEP_GPU_TEAM (a power of two up to 32) and
 /// ROTORSWEEP_GPU_SCRATCH (shared or global); a bad value throws GpuLaunchError naming it.
 GpuLaunch gpu_launch();
 

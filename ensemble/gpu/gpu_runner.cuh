@@ -14,7 +14,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "ensemble/engine/chunk_pipeline.hpp"
@@ -45,37 +44,23 @@ __global__ void sweep_slots(SlotSchedule schedule, SlotViews slots, unsigned lon
   }
 }
 
-/// A member per team (Driver<Team, TeamIntegrator>: TeamMember, SliderTeamMember): of `team` threads of
-/// a warp (WarpTeam), or of the whole block (BlockTeam, team = blockDim.x: its exchange is the first
-/// blockDim.x values of the shared memory). The team's first thread takes the next member from the
-/// counter for all; the team's scratch is its part of the block's shared memory or, where `scratch` is
-/// given, of that global buffer (per_team values each).
+/// A member per team of `team` threads of a warp (WarpTeam; Driver<const WarpTeam, TeamIntegrator>:
+/// TeamMember, SliderTeamMember). The team's first thread takes the next member from the counter for
+/// all; the team's scratch is its part of the block's shared memory or, where `scratch` is given, of
+/// that global buffer (per_team values each).
 template <template <class, class> class Driver, class TeamIntegrator, class Schedule, class Views>
 __global__ void sweep_slots_on_teams(const __grid_constant__ Schedule schedule, Views slots, unsigned long long count,
                                      unsigned long long* next, unsigned team, double* scratch,
                                      std::size_t per_team) {
-  using Team = std::remove_const_t<typename TeamIntegrator::TeamType>;
   extern __shared__ double shared_scratch[];
-  std::size_t teams = 1, mine = 0;
-  double* shared_storage = shared_scratch;
-  if constexpr (std::is_same_v<Team, kernels::BlockTeam>) {
-    shared_storage += blockDim.x;
-  } else {
-    teams = blockDim.x / team;
-    mine = threadIdx.x / team;
-  }
-  const Team crew = [&] {
-    if constexpr (std::is_same_v<Team, kernels::BlockTeam>)
-      return kernels::BlockTeam(shared_scratch);
-    else
-      return kernels::WarpTeam(team);
-  }();
+  const std::size_t teams = blockDim.x / team, mine = threadIdx.x / team;
+  const kernels::WarpTeam crew(team);
   double* storage = scratch ? scratch + (std::size_t(blockIdx.x) * teams + mine) * per_team
-                            : shared_storage + mine * per_team;
+                            : shared_scratch + mine * per_team;
   for (;;) {
     const unsigned long long k = crew.first([&] { return atomicAdd(next, 1ull); });
     if (k >= count) return;
-    Driver<const Team, TeamIntegrator>::run(crew, schedule, slots, std::size_t(k), storage, per_team);
+    Driver<const kernels::WarpTeam, TeamIntegrator>::run(crew, schedule, slots, std::size_t(k), storage, per_team);
     crew.sync();
   }
 }
@@ -328,27 +313,24 @@ struct TeamLaunch {
   double* global() const { return scratch ? static_cast<double*>(scratch->data()) : nullptr; }
 };
 template <class Kernel>
-TeamLaunch team_launch(Kernel kernel, unsigned team, bool block_team, std::size_t per_team,
-                       GpuScratch automatic = GpuScratch::shared) {
+TeamLaunch team_launch(Kernel kernel, unsigned team, std::size_t per_team, GpuScratch automatic = GpuScratch::shared) {
   const GpuInfo& info = available_gpu();
-  GpuLaunch launch = gpu_launch();
-  if (block_team) launch.threads_per_block = int(team);  // one team per block
+  const GpuLaunch launch = gpu_launch();
   const std::size_t teams_per_block = std::size_t(launch.threads_per_block) / team;
-  const std::size_t exchange_bytes = block_team ? team * sizeof(double) : 0;
   const std::size_t block_bytes = teams_per_block * per_team * sizeof(double);
   int shared_limit = 0;
   check(cudaDeviceGetAttribute(&shared_limit, cudaDevAttrMaxSharedMemoryPerBlockOptin, 0),
         "querying the shared memory");
-  const bool fits = exchange_bytes + block_bytes <= std::size_t(shared_limit);
+  const bool fits = block_bytes <= std::size_t(shared_limit);
   if (launch.scratch == GpuScratch::shared && !fits)
     throw std::runtime_error("ROTORSWEEP_GPU_SCRATCH = shared: a block's " + std::to_string(teams_per_block) +
-                             " teams need " + std::to_string((exchange_bytes + block_bytes) / 1024) +
+                             " teams need " + std::to_string(block_bytes / 1024) +
                              " KiB, more than the " + std::to_string(shared_limit / 1024) +
                              " KiB of shared memory a block has; use fewer threads per block "
                              "(ROTORSWEEP_GPU_BLOCK) or global");
   const GpuScratch wanted = launch.scratch == GpuScratch::automatic ? automatic : launch.scratch;
   const bool shared = fits && wanted != GpuScratch::global;
-  const std::size_t shared_bytes = exchange_bytes + (shared ? block_bytes : 0);
+  const std::size_t shared_bytes = shared ? block_bytes : 0;
   check(cudaFuncSetAttribute(kernel, cudaFuncAttributeMaxDynamicSharedMemorySize, int(shared_bytes)),
         "reserving shared memory");
 
@@ -366,20 +348,21 @@ TeamLaunch team_launch(Kernel kernel, unsigned team, bool block_team, std::size_
   return out;
 }
 
-/// run_slots_on_teams for one kind of team (TeamIntegrator's).
+/// The variant's members, one per team of `team` threads of a warp with TeamIntegrator (TeamMember on
+/// const WarpTeam; the schedule's first-step scale is Integrator's, the same integrator on one lane).
+/// A block's teams keep their scratch in its shared memory where it fits (or ROTORSWEEP_GPU_SCRATCH
+/// says so), else in global memory, of which the resident teams take at most a quarter.
 template <class Integrator, class TeamIntegrator>
-SweepOutcome run_teams(const Scene& scene, const VariantRange& range, unsigned team, int host_threads,
-                       const SweepControl& control, const ResultSink& sink) {
-  using Team = typename TeamIntegrator::TeamType;
-  constexpr bool block_team = std::is_same_v<std::remove_const_t<Team>, kernels::BlockTeam>;
-  using Driver = TeamMember<Team, TeamIntegrator>;
+SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team, int host_threads,
+                                const SweepControl& control, const ResultSink& sink) {
+  using Driver = TeamMember<const kernels::WarpTeam, TeamIntegrator>;
   const Member variant = range.source->at(range.begin);
   const SlotSchedule schedule =
       slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
   if (!Driver::team_schedule_fits(schedule)) throw std::logic_error("a team cannot run this schedule");
 
   const auto kernel = sweep_slots_on_teams<TeamMember, TeamIntegrator, SlotSchedule, SlotViews>;
-  const TeamLaunch teams = team_launch(kernel, team, block_team, Driver::storage_size(schedule, team));
+  const TeamLaunch teams = team_launch(kernel, team, Driver::storage_size(schedule, team));
   return run_chunks(
       scene, range, schedule, teams.grid, host_threads, control, sink,
       [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
@@ -387,21 +370,6 @@ SweepOutcome run_teams(const Scene& scene, const VariantRange& range, unsigned t
         kernel<<<teams.grid.blocks, teams.grid.threads_per_block, teams.grid.shared_bytes, stream>>>(
             schedule, views, count, counter, team, teams.global(), teams.per_team);
       });
-}
-
-/// The variant's members, one per team of `team` threads with TeamIntegratorFor<Team> (TeamMember; the
-/// schedule's first-step scale is Integrator's, the same integrator on one lane): teams of a warp up
-/// to 32 threads, a block's team above. A block's teams keep their scratch in its shared memory where
-/// it fits (or ROTORSWEEP_GPU_SCRATCH says so), else in global memory, of which the resident teams
-/// take at most a quarter.
-template <class Integrator, template <class> class TeamIntegratorFor>
-SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team,
-                                int host_threads, const SweepControl& control, const ResultSink& sink) {
-  if (team > 32)
-    return run_teams<Integrator, TeamIntegratorFor<const kernels::BlockTeam>>(scene, range, team,
-                                                                              host_threads, control, sink);
-  return run_teams<Integrator, TeamIntegratorFor<const kernels::WarpTeam>>(scene, range, team, host_threads,
-                                                                           control, sink);
 }
 
 }  // namespace rotorsweep::ensemble::gpu

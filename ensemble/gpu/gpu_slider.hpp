@@ -15,7 +15,7 @@
 namespace rotorsweep::ensemble {
 
 /// Threads per slider member of `size`: launch.team where set (2 … 32; the slider has no member per
-/// thread and no block team), else the smallest power of two ≥ rotors/3 (two or three rotors per
+/// thread), else the smallest power of two ≥ rotors/3 (two or three rotors per
 /// thread), at most a warp. A team size outside 2 … 32 throws GpuLaunchError naming it.
 unsigned gpu_slider_team_size(SliderSize size, const GpuLaunch& launch);
 

@@ -5,20 +5,13 @@
 
 namespace rotorsweep::ensemble::gpu {
 
-/// The Langevin stepper for Model on a team of kind Team.
-template <class Model>
-struct LangevinOnTeams {
-  template <class Team>
-  using type = kernels::TeamLeimkuhlerMatthews<Team, Model>;
-};
-
 SweepOutcome run_langevin(const Scene& scene, const VariantRange& range, int host_threads,
                           const SweepControl& control, const ResultSink& sink) {
   return with_device_model(scene, [&]<class Model>() {
     using Integrator = kernels::LeimkuhlerMatthews<Model>;
     const unsigned team = gpu_team_size(scene, range.source->at(range.begin).rows, gpu_launch());
     if (team > 1)
-      return run_slots_on_teams<Integrator, LangevinOnTeams<Model>::template type>(
+      return run_slots_on_teams<Integrator, kernels::TeamLeimkuhlerMatthews<const kernels::WarpTeam, Model>>(
           scene, range, team, host_threads, control, sink);
     return run_slots<Model, Integrator>(scene, range, host_threads, control, sink);
   });

@@ -31,7 +31,7 @@ class GpuSliderDevice final : public SliderSlotDevice {
     chunks_.reset();  // another size's buffers
     team_ = gpu_slider_team_size({schedule.grid.columns, schedule.grid.rows}, gpu_launch());
     launch_ = std::make_unique<TeamLaunch>(
-        team_launch(kernel(), team_, false, Driver::storage_size(schedule, team_), GpuScratch::global));
+        team_launch(kernel(), team_, Driver::storage_size(schedule, team_), GpuScratch::global));
     return std::max<std::size_t>(4 * launch_->grid.resident, 1024);
   }
 

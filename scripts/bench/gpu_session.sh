@@ -45,7 +45,7 @@ step gpu_registers 30 "$bin/test_gpu" -d yes "[registers]"
 step gpu_mappings 40 "$bin/test_gpu" -d yes "[mappings]"
 step gpu_tests 90 "$bin/test_gpu" -d yes "~[registers]~[mappings]~[.]"
 step bench_2_20 40 "$bin/rotorsweep" bench gpu --rows 2,20 --teams 1 --no-curve
-step bench_128_1024 50 "$bin/rotorsweep" bench gpu --rows 128,1024 --teams 1,32,128 --scratch shared --no-curve \
+step bench_128_1024 50 "$bin/rotorsweep" bench gpu --rows 128,1024 --teams 1,32 --scratch shared --no-curve \
   --scale 0.2
 step bench_host 20 "$bin/rotorsweep" bench host --rows 2,20 --scratch "$scratch"
 step curve_run 30 "$bin/rotorsweep" run examples/friction_curve_gpu.toml -o "$scratch/curve.h5"

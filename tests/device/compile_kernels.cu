@@ -1,5 +1,5 @@
 // The kernels compiled for a GPU (nvcc, no GPU needed): the row model and both stepper families on the
-// double lane, and on warp and block teams the stage solves (ring, dense, slider) and whole members
+// double lane, and on warp teams the stage solves (ring, dense, slider) and whole members
 // (nearest neighbours at T = 0 and T > 0, a coupling table at T = 0, the slider's), and members in a
 // warp's registers.
 #include "ensemble/rows/team_member.hpp"
@@ -147,17 +147,6 @@ __global__ void run_thermal_members_on_teams(rotorsweep::ensemble::SlotSchedule 
   const WarpTeam crew(team_size);
   rotorsweep::ensemble::TeamMember<const WarpTeam, TeamLeimkuhlerMatthews<const WarpTeam, Model>>::run(
       crew, schedule, slots, team, storage + team * per_team, per_team);
-}
-
-/// Members, one per block team of blockDim.x threads (several warps; kernels/lanes/team.hpp BlockTeam).
-__global__ void run_members_on_blocks(rotorsweep::ensemble::SlotSchedule schedule,
-                                      rotorsweep::ensemble::SlotViews slots, double* storage,
-                                      std::size_t per_team) {
-  extern __shared__ double exchange[];
-  using Stepper = TeamRosenbrock<const BlockTeam, Model>;
-  const BlockTeam crew(exchange);
-  rotorsweep::ensemble::TeamMember<const BlockTeam, TeamIntegrator<const BlockTeam, Stepper>>::run(
-      crew, schedule, slots, blockIdx.x, storage + blockIdx.x * per_team, per_team);
 }
 
 /// Members of disordered nearest-neighbour rows in registers, each on L threads of a warp with R rows

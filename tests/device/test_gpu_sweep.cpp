@@ -197,22 +197,6 @@ TEST_CASE(
     INFO(first);
     CHECK(first.empty());
   }
-  auto wide = io::parse_scene_text(
-      "[model]\nrows = 128\n[drive]\ng = [0.0011]\n[sweep]\nA = [1, 6, 12]\n[initial]\nkinds = [\"AFM\"]\n"
-      "noise = 0.01\n[disorder]\nA = 1e-6\n[schedule]\nrelax_periods = 1\naverage_periods = 1\n"
-      "[numerics]\nrtol = 1e-8\natol = 1e-11\n",
-      "block-teams");
-  wide.shadow_runs = false;
-  for (const int team : {64}) {  // a team of several warps (BlockTeam)
-    const ScopedVariable mapping("ROTORSWEEP_GPU_TEAM", std::to_string(team));
-    const auto gpu = run_on(wide, ensemble::Device::gpu, ensemble::plan_members(wide));
-    const auto host = testing::on_host_team(wide, std::size_t(team));
-    std::string first;
-    INFO("N = 128, team " << team);
-    CHECK(testing::count_differences(host, gpu, first) == 0);
-    INFO(first);
-    CHECK(first.empty());
-  }
   check_sizes.template operator()<*kernels::parse_stepper("rodas5p")>(
       io::parse_scene_text(curve_scene("rodas5p", 20, "1e-8", 8), "teams"), {8});
 }
