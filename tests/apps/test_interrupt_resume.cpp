@@ -13,6 +13,7 @@
 #include "support/cli.hpp"
 #include "support/result_datasets.hpp"
 #include "support/scene_text.hpp"
+#include "test_paths.hpp"
 
 using rotorsweep::io::Hdf5Location;
 using namespace rotorsweep::testing;

@@ -12,6 +12,7 @@
 #include "support/cli.hpp"
 #include "support/result_datasets.hpp"
 #include "support/scene_text.hpp"
+#include "test_paths.hpp"
 
 using namespace rotorsweep::testing;
 

@@ -10,6 +10,7 @@
 #include "io/slider_scene_parser.hpp"
 #include "support/scoped_variable.hpp"
 #include "support/slider_slot_runs.hpp"
+#include "test_paths.hpp"
 
 using namespace rotorsweep;
 using ensemble::SliderMember;

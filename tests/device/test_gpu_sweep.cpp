@@ -21,6 +21,7 @@
 #include "support/same_results.hpp"
 #include "support/scoped_variable.hpp"
 #include "support/slot_runs.hpp"
+#include "test_paths.hpp"
 
 using namespace rotorsweep;
 

@@ -13,6 +13,8 @@
 #include <random>
 #include <string>
 
+#include "test_paths.hpp"
+
 namespace rotorsweep::testing {
 
 struct CliResult {

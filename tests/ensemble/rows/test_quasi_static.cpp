@@ -11,6 +11,7 @@
 #include "io/scene_parser.hpp"
 #include "landscape/jump_friction.hpp"
 #include "landscape/quasi_static_cycle.hpp"
+#include "test_paths.hpp"
 
 using namespace rotorsweep::ensemble;
 

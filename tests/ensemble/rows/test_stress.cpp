@@ -7,6 +7,7 @@
 
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "test_paths.hpp"
 
 using namespace rotorsweep::ensemble;
 using rotorsweep::kernels::LaneStatus;

@@ -23,6 +23,7 @@
 #include "kernels/steppers/team_rosenbrock.hpp"
 #include "support/member_follows.hpp"
 #include "support/slot_runs.hpp"
+#include "test_paths.hpp"
 
 using namespace rotorsweep;
 using Catch::Detail::Approx;

@@ -13,6 +13,7 @@
 #include "ensemble/slider/slider_sweep.hpp"
 #include "io/slider_scene_parser.hpp"
 #include "support/slider_slot_runs.hpp"
+#include "test_paths.hpp"
 
 using namespace rotorsweep;
 using ensemble::SliderMember;
