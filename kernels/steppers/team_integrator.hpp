@@ -64,6 +64,7 @@ class TeamIntegrator {
   static constexpr bool stochastic = false;
 
   using Method = typename Stepper::Method;  ///< the stepper's tableau
+  static_assert(Stepper::quadratures <= TeamMemberState::max_quadratures);
 
   ROTORSWEEP_HD TeamIntegrator(const Model& model, std::size_t ranks, const Method& method, Tolerances tol,
                                StepLimits limits, double first_step_scale, LaneArena<double>& arena)
@@ -84,7 +85,7 @@ class TeamIntegrator {
     const double remaining = s.t_stop - s.t;
     const bool clipped = s.h >= remaining;
     const double h = s.h < remaining ? s.h : remaining;
-    double q_new[TeamMemberState::max_quadratures] = {}, q_error[TeamMemberState::max_quadratures] = {};
+    double q_new[Stepper::quadratures] = {}, q_error[Stepper::quadratures] = {};
     const bool resolved =
         stepper_.attempt(team, model, s.t, h, s.y, s.quad, y_new_, q_new, y_error_, q_error);
     const double squares = team.sum([&](std::size_t r) {
@@ -125,7 +126,7 @@ class TeamIntegrator {
   /// h = min(h_max, first_step_scale / max_j |f_j|), and no previous error (AdaptiveIntegrator's).
   ROTORSWEEP_HD void propose_first_step(Team& team, const Model& model, TeamMemberState& s) {
     error_previous_ = 1.0;
-    double qdot[TeamMemberState::max_quadratures] = {};
+    double qdot[Stepper::quadratures] = {};
     stepper_.evaluate(team, model, s.y, s.t, qdot);
     const double* f = stepper_.rate();
     double rate = team.max([&](std::size_t r) {

@@ -29,10 +29,10 @@ class TeamRosenbrock {
   static_assert(LinearizableTeamModel<Model, Team>, "a model's team header gives its team forms");
   using Method = RosenbrockTableau;
   static constexpr int max_stages = RosenbrockTableau::max_stages;
-  /// The most quadratures a team model carries (the row models' Integrals::max_count), and the values of
-  /// the ranks' partial sums per rank.
-  static constexpr std::size_t quadratures = 8;
-  static_assert(Model::max_quadratures <= quadratures);
+  /// The most quadratures the model carries (the row models' 8, the slider's 2): the stage arrays' size,
+  /// and the values per rank of the partial sums, which hold what its team_evaluate and team_linearize
+  /// leave per rank (the rows 5 and 8, the slider 2 and 2).
+  static constexpr std::size_t quadratures = Model::max_quadratures;
 
   /// `table` outlives the stepper (on a device: the kernel's parameters, read where they are).
   ROTORSWEEP_HD TeamRosenbrock(const Model& model, std::size_t ranks, const RosenbrockTableau& table,
