@@ -40,7 +40,7 @@ struct BenchGpuOptions {
   bool curve = true;           ///< also the 10⁶-member friction curve
   bool curve_only = false;
   std::vector<int> rows{2, 20, 48, 128, 1024};               ///< the scenes' N to measure (48: dipolar)
-  std::vector<int> teams{1, 2, 4, 8, 16, 32};  ///< threads per member to measure on the GPU
+  std::vector<int> teams{1, 2, 4, 8, 16, 32};                ///< threads per member to measure on the GPU
   std::string scratch = "both";                              ///< a team's scratch: shared, global or both
 };
 int run_bench_gpu(const BenchGpuOptions& options);

@@ -214,7 +214,10 @@ int run_slider(const SliderOptions& options) {
     try {
       stopped = ensemble::run_slider_members(
           scene, to_run,
-          {threads, [&](std::size_t done) { progress.update(done); }, [&] { return signals.flag()->load(); }, {}},
+          {threads,
+           [&](std::size_t done) { progress.update(done); },
+           [&] { return signals.flag()->load(); },
+           {}},
           [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
     } catch (const std::bad_alloc&) {
       sweep_error = "out of memory (an allocation in a worker thread failed)";

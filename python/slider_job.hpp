@@ -1,6 +1,7 @@
 // A slider scan on its own thread for the Python module (a BackgroundJob): run_slider_members with the
-// job's stop flag, through a SliderMemberStream into the file `rotorsweep slider` writes, through its temporary or partial file
-// (inline: the binding's unit compiles it, which keeps the module in one unity batch).
+// job's stop flag, through a SliderMemberStream into the file `rotorsweep slider` writes, through its
+// temporary or partial file (inline: the binding's unit compiles it, which keeps the module in one unity
+// batch).
 #pragma once
 
 #include <atomic>
@@ -74,8 +75,10 @@ inline void SliderJob::run(int threads) {
   const auto start = std::chrono::steady_clock::now();
   ensemble::run_slider_members(
       scene_, all,
-      {threads, [this](std::size_t now) { done_.store(now, std::memory_order_relaxed); },
-       [&] { return cancelled() || write_failed.load(); }, {}},
+      {threads,
+       [this](std::size_t now) { done_.store(now, std::memory_order_relaxed); },
+       [&] { return cancelled() || write_failed.load(); },
+       {}},
       [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::string write_error;

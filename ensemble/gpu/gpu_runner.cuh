@@ -49,9 +49,9 @@ __global__ void sweep_slots(SlotSchedule schedule, SlotViews slots, unsigned lon
 /// all; the team's scratch is its part of the block's shared memory or, where `scratch` is given, of
 /// that global buffer (per_team values each).
 template <template <class, class> class Driver, class TeamIntegrator, class Schedule, class Views>
-__global__ void sweep_slots_on_teams(const __grid_constant__ Schedule schedule, Views slots, unsigned long long count,
-                                     unsigned long long* next, unsigned team, double* scratch,
-                                     std::size_t per_team) {
+__global__ void sweep_slots_on_teams(const __grid_constant__ Schedule schedule, Views slots,
+                                     unsigned long long count, unsigned long long* next, unsigned team,
+                                     double* scratch, std::size_t per_team) {
   extern __shared__ double shared_scratch[];
   const std::size_t teams = blockDim.x / team, mine = threadIdx.x / team;
   const kernels::WarpTeam crew(team);
@@ -60,7 +60,8 @@ __global__ void sweep_slots_on_teams(const __grid_constant__ Schedule schedule, 
   for (;;) {
     const unsigned long long k = crew.first([&] { return atomicAdd(next, 1ull); });
     if (k >= count) return;
-    Driver<const kernels::WarpTeam, TeamIntegrator>::run(crew, schedule, slots, std::size_t(k), storage, per_team);
+    Driver<const kernels::WarpTeam, TeamIntegrator>::run(crew, schedule, slots, std::size_t(k), storage,
+                                                         per_team);
     crew.sync();
   }
 }
@@ -181,7 +182,8 @@ class ChunkStream {
   double finish(Chunk& host, std::size_t slot) {
     check(cudaEventSynchronize(events_[3 * slot + 2]), "running the sweep kernel");
     float kernel_ms = 0.0f;
-    check(cudaEventElapsedTime(&kernel_ms, events_[3 * slot], events_[3 * slot + 1]), "timing the sweep kernel");
+    check(cudaEventElapsedTime(&kernel_ms, events_[3 * slot], events_[3 * slot + 1]),
+          "timing the sweep kernel");
     slots_[slot]->take_results(host);
     return 1e-3 * double(kernel_ms);
   }
@@ -313,7 +315,8 @@ struct TeamLaunch {
   double* global() const { return scratch ? static_cast<double*>(scratch->data()) : nullptr; }
 };
 template <class Kernel>
-TeamLaunch team_launch(Kernel kernel, unsigned team, std::size_t per_team, GpuScratch automatic = GpuScratch::shared) {
+TeamLaunch team_launch(Kernel kernel, unsigned team, std::size_t per_team,
+                       GpuScratch automatic = GpuScratch::shared) {
   const GpuInfo& info = available_gpu();
   const GpuLaunch launch = gpu_launch();
   const std::size_t teams_per_block = std::size_t(launch.threads_per_block) / team;
@@ -324,8 +327,8 @@ TeamLaunch team_launch(Kernel kernel, unsigned team, std::size_t per_team, GpuSc
   const bool fits = block_bytes <= std::size_t(shared_limit);
   if (launch.scratch == GpuScratch::shared && !fits)
     throw std::runtime_error("ROTORSWEEP_GPU_SCRATCH = shared: a block's " + std::to_string(teams_per_block) +
-                             " teams need " + std::to_string(block_bytes / 1024) +
-                             " KiB, more than the " + std::to_string(shared_limit / 1024) +
+                             " teams need " + std::to_string(block_bytes / 1024) + " KiB, more than the " +
+                             std::to_string(shared_limit / 1024) +
                              " KiB of shared memory a block has; use fewer threads per block "
                              "(ROTORSWEEP_GPU_BLOCK) or global");
   const GpuScratch wanted = launch.scratch == GpuScratch::automatic ? automatic : launch.scratch;
@@ -353,8 +356,8 @@ TeamLaunch team_launch(Kernel kernel, unsigned team, std::size_t per_team, GpuSc
 /// A block's teams keep their scratch in its shared memory where it fits (or ROTORSWEEP_GPU_SCRATCH
 /// says so), else in global memory, of which the resident teams take at most a quarter.
 template <class Integrator, class TeamIntegrator>
-SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team, int host_threads,
-                                const SweepControl& control, const ResultSink& sink) {
+SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team,
+                                int host_threads, const SweepControl& control, const ResultSink& sink) {
   using Driver = TeamMember<const kernels::WarpTeam, TeamIntegrator>;
   const Member variant = range.source->at(range.begin);
   const SlotSchedule schedule =

@@ -88,7 +88,8 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
     const std::vector<SliderTableViews> views = per_separation(device.place_tables(placed), scene.forces);
 
     const SliderSlotSchedule schedule = slider_slot_schedule(scene, first.speed, size, first_step_scale);
-    const std::size_t capacity = std::min(std::max<std::size_t>(1, device.chunk_members(schedule)), end - begin);
+    const std::size_t capacity =
+        std::min(std::max<std::size_t>(1, device.chunk_members(schedule)), end - begin);
     std::array<std::optional<SliderSlotChunk>, 2> chunks;  // a slot's chunk made at its first start
     std::size_t next = begin;
     std::vector<std::size_t> claimed;  // a chunk's plan indices, claimed from [begin, end)

@@ -13,8 +13,8 @@
 #include "kernels/lanes/team.hpp"
 #include "kernels/steppers/lane_status.hpp"
 #include "kernels/steppers/leimkuhler_matthews.hpp"
-#include "kernels/steppers/team_model_concept.hpp"
 #include "kernels/steppers/team_integrator.hpp"
+#include "kernels/steppers/team_model_concept.hpp"
 
 namespace rotorsweep::kernels {
 

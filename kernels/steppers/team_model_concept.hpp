@@ -31,11 +31,10 @@ concept TeamModel = requires(Team& team, const Model& model, typename Model::Wor
 ///   team_linearize(team, model, work, y, f, J, df_dt, scratch, dq_dy, partial, stride, t)  J into the
 ///                      stage matrix, ∂f/∂t and the carried integrands' gradients, after team_evaluate
 template <class Model, class Team>
-concept LinearizableTeamModel =
-    TeamModel<Model, Team> && requires(Team& team, const Model& model, const typename Model::Workspace& work,
-                                       const double* y, double* out, TeamStageMatrix<Model, Team>& J,
-                                       std::size_t stride, double t) {
-      team_linearize(team, model, work, y, out, J, out, out, out, out, stride, t);
-    };
+concept LinearizableTeamModel = TeamModel<Model, Team> &&
+    requires(Team& team, const Model& model, const typename Model::Workspace& work, const double* y,
+             double* out, TeamStageMatrix<Model, Team>& J, std::size_t stride, double t) {
+  team_linearize(team, model, work, y, out, J, out, out, out, out, stride, t);
+};
 
 }  // namespace rotorsweep::kernels

@@ -14,14 +14,14 @@
 namespace rotorsweep::kernels {
 
 /// The stages of RosenbrockStepper for a LinearizableTeamModel on the double lane (NearestNeighbourRows,
-/// CoupledRows or the slider, with their team headers) on a team of `ranks`: each rank forms its rows' arguments and right-hand sides and
-/// evaluates the model over them (team_evaluate), the team solves with the model's TeamStageMatrix
-/// (TeamCyclicTridiagonal, TeamDenseSymmetric, TeamSecondOrderJacobian), and the quadratures' stage
-/// values come from team sums (identical on every rank, so each may keep its own copy); every
-/// quadrature the model carries (R, W, S, ρ̄, H, the moments; the slider's impulse and dissipation).
-/// The tableau is data, as RosenbrockStepper's (combine_stages over each rank's rows). With the sums
-/// over the team in butterfly order (and for nearest neighbours without evaluate_displaced), its bits
-/// differ from the lanes' at rounding level (docs/numerics.md "The stage solve on a team").
+/// CoupledRows or the slider, with their team headers) on a team of `ranks`: each rank forms its rows'
+/// arguments and right-hand sides and evaluates the model over them (team_evaluate), the team solves with the
+/// model's TeamStageMatrix (TeamCyclicTridiagonal, TeamDenseSymmetric, TeamSecondOrderJacobian), and the
+/// quadratures' stage values come from team sums (identical on every rank, so each may keep its own copy);
+/// every quadrature the model carries (R, W, S, ρ̄, H, the moments; the slider's impulse and dissipation). The
+/// tableau is data, as RosenbrockStepper's (combine_stages over each rank's rows). With the sums over the
+/// team in butterfly order (and for nearest neighbours without evaluate_displaced), its bits differ from the
+/// lanes' at rounding level (docs/numerics.md "The stage solve on a team").
 template <class Team, class TeamModelType>
 class TeamRosenbrock {
  public:

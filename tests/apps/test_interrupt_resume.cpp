@@ -11,6 +11,7 @@
 
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
+#include "support/full_disk.hpp"
 #include "support/result_datasets.hpp"
 #include "support/scene_text.hpp"
 #include "test_paths.hpp"
@@ -175,35 +176,8 @@ TEST_CASE("a disk that fills up mid-run keeps the finished members for --resume"
   const auto dir = scratch_directory("disk-fills-up");
   const auto scene = dir / "long.toml";
   write_text(scene, long_scene);
-  const auto small = dir / "small";
-  // a 4 MiB file system of our own (a private mount namespace), filled by another writer mid-run
-  const std::string mount = private_tmpfs(small, "4m");
-  if (mount.empty()) {
-    WARN("skipped: no private tmpfs mount here (unshare -rm and mount -t tmpfs must work)");
-    return;
-  }
-  const auto whole = run_cli("run '" + scene.string() + "' -q -o '" + (dir / "whole.h5").string() + "'", dir);
-  REQUIRE(whole.exit_code == 0);
-  // the disk fills a third of the way through the run (on as many threads as the whole run), with a batch
-  // of 100 members written every eighth of the way
-  const std::string filled_after = std::to_string(whole.seconds / 3);
-  INFO("whole run " << whole.seconds << " s, disk filled after " << filled_after << " s");
-  const auto full = run_cli_filling_disk(
-      mount, "run '" + scene.string() + "' -q --flush-members 100 -o '" + (small / "out.h5").string() + "'", small,
-      filled_after, "out.h5.partial", dir);
-  const std::string& output = full.output;
-  INFO(output);
-  CHECK(full.exit_code == 1);
-  CHECK_THAT(output, Catch::Contains("No space left on device") && Catch::Contains("--resume"));
-  CHECK_THAT(output, !Catch::Contains("out.h5\n"));  // no complete file in the small file system
-  REQUIRE(fs::exists(dir / "out.h5.partial"));
-  CHECK_FALSE(Hdf5Location::open_file((dir / "out.h5.partial").string()).attribute_flag("complete"));
-  CHECK(rows_done(dir / "out.h5.partial") < long_scene_members);
-  const auto resumed =
-      run_cli("run '" + scene.string() + "' -q -o '" + (dir / "out.h5").string() + "' --resume", dir);
-  INFO(resumed.output);
-  REQUIRE(resumed.exit_code == 0);
-  check_same_datasets(dir / "whole.h5", dir / "out.h5");
+  // a batch of 100 members written every eighth of the way
+  check_full_disk_resumes("run", scene, "--flush-members 100", long_scene_members, dir);
 }
 
 TEST_CASE("a second writer of a running run's output is refused and the first run is untouched",

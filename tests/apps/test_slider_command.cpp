@@ -10,6 +10,7 @@
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "io/hdf5_file.hpp"
 #include "support/cli.hpp"
+#include "support/full_disk.hpp"
 #include "support/result_datasets.hpp"
 #include "support/scene_text.hpp"
 #include "test_paths.hpp"
@@ -21,6 +22,14 @@ namespace {
 const std::string small_slider =
     "[slider]\ncolumns = 3\nrows = 2\n[substrate]\ncolumns = 9\nrows = 9\n[drive]\nrest = 0.5\nend = 2.5\n"
     "[sweep]\nseparation = { from = 7e-3, to = 9e-3, count = 3 }\n[observables]\nangles = true\n";
+
+/// A 4 × 4 slider over one period of sliding at `separations` separations, members of some 9
+/// CPU-milliseconds (384: about 2 s on two cores, 3.5 s on one).
+std::string short_slider(int separations) {
+  return "[slider]\ncolumns = 4\nrows = 4\n[drive]\nend = 2.5\n"
+         "[sweep]\nseparation = { from = 5e-3, to = 13e-3, count = " +
+         std::to_string(separations) + " }\n";
+}
 
 }  // namespace
 
@@ -90,14 +99,11 @@ TEST_CASE("slider refuses bad scenes with exit code 2 and writes nothing", "[app
 
 TEST_CASE("an interrupted slider scan keeps its finished members and resumes to the whole scan's datasets",
           "[apps][slider][resume]") {
-  // a 4 × 4 slider over one period of sliding at 384 separations, members of some 9 CPU-milliseconds:
-  // about 2 s on two cores, 3.5 s on one; the runs to be interrupted run on one thread and are signalled
-  // after 10 to 20 % of the whole scan's wall time on two (random_delay)
-  const auto dir = scratch_directory("slider-resume");
-  const auto scene = write_text(dir / "long.toml",
-                                "[slider]\ncolumns = 4\nrows = 4\n[drive]\nend = 2.5\n"
-                                "[sweep]\nseparation = { from = 5e-3, to = 13e-3, count = 384 }\n");
+  // the runs to be interrupted run on one thread and are signalled after 10 to 20 % of the whole scan's
+  // wall time on two (random_delay)
   const std::size_t members = 384;
+  const auto dir = scratch_directory("slider-resume");
+  const auto scene = write_text(dir / "long.toml", short_slider(int(members)));
   const auto whole = dir / "whole.h5", out = dir / "out.h5";
   const auto whole_run = run_cli("slider -q '" + scene.string() + "' -o '" + whole.string() + "'", dir);
   REQUIRE(whole_run.exit_code == 0);
@@ -138,43 +144,9 @@ TEST_CASE("an interrupted slider scan keeps its finished members and resumes to 
 
 TEST_CASE("a disk that fills up mid-scan keeps the slider's finished members for --resume",
           "[apps][slider][resume][files]") {
-  // 192 members of the interrupted scan's kind (about 1 s on two cores, a 0.5 MB file) on a 4 MiB file
-  // system of our own, filled by another writer a third of the way through the scan
   const auto dir = scratch_directory("slider-disk-fills-up");
-  const auto scene = write_text(dir / "long.toml",
-                                "[slider]\ncolumns = 4\nrows = 4\n[drive]\nend = 2.5\n"
-                                "[sweep]\nseparation = { from = 5e-3, to = 13e-3, count = 192 }\n");
-  const auto small = dir / "small";
-  const std::string mount = private_tmpfs(small, "4m");
-  if (mount.empty()) {
-    WARN("skipped: no private tmpfs mount here (unshare -rm and mount -t tmpfs must work)");
-    return;
-  }
-  const auto whole = run_cli("slider -q '" + scene.string() + "' -o '" + (dir / "whole.h5").string() + "'", dir);
-  REQUIRE(whole.exit_code == 0);
-  const std::string filled_after = std::to_string(whole.seconds / 3);
-  INFO("whole scan " << whole.seconds << " s, disk filled after " << filled_after << " s");
-  const auto full = run_cli_filling_disk(
-      mount, "slider '" + scene.string() + "' -q -o '" + (small / "out.h5").string() + "'", small, filled_after,
-      "out.h5.partial", dir);
-  INFO(full.output);
-  CHECK(full.exit_code == 1);
-  CHECK_THAT(full.output, Catch::Contains("No space left on device") && Catch::Contains("--resume"));
-  CHECK_THAT(full.output, !Catch::Contains("out.h5\n"));  // no complete file in the small file system
-  const auto partial = dir / "out.h5.partial";
-  REQUIRE(std::filesystem::exists(partial));
-  {
-    const auto file = rotorsweep::io::Hdf5Location::open_file(partial.string());
-    CHECK_FALSE(file.attribute_flag("complete"));
-    std::size_t done = 0;
-    for (const auto flag : file.open_group("members").read_flags("done")) done += flag != 0;
-    CHECK(done < 192);
-  }
-  const auto resumed =
-      run_cli("slider -q '" + scene.string() + "' -o '" + (dir / "out.h5").string() + "' --resume", dir);
-  INFO(resumed.output);
-  REQUIRE(resumed.exit_code == 0);
-  check_same_datasets(dir / "whole.h5", dir / "out.h5");
+  const auto scene = write_text(dir / "long.toml", short_slider(192));  // a 0.5 MB file
+  check_full_disk_resumes("slider", scene, "", 192, dir);
 }
 
 TEST_CASE("slider shards merge to the single-process file", "[apps][slider][merge]") {

@@ -9,10 +9,10 @@
 #include <tuple>
 #include <vector>
 
+#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/paper_table.hpp"
-#include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/models/rows/row_models_on_teams.hpp"
@@ -189,9 +189,9 @@ TEST_CASE(
     const ScopedVariable mapping("ROTORSWEEP_GPU_TEAM", std::to_string(team));
     const auto gpu = run_on(thermal, ensemble::Device::gpu, members);
     using Model = kernels::NearestNeighbourRows<double>;
-    const auto host =
-        testing::on_host_team<kernels::LeimkuhlerMatthews<Model>,
-                              kernels::TeamLeimkuhlerMatthews<kernels::HostTeam, Model>>(thermal, std::size_t(team));
+    const auto host = testing::on_host_team<kernels::LeimkuhlerMatthews<Model>,
+                                            kernels::TeamLeimkuhlerMatthews<kernels::HostTeam, Model>>(
+        thermal, std::size_t(team));
     std::string first;
     INFO("T > 0, team " << team);
     CHECK(testing::count_differences(host, gpu, first) == 0);

@@ -15,9 +15,9 @@
 
 namespace rotorsweep::kernels {
 
-/// Whether Model is a row model that runs on a team.
+/// A row model that runs on a team.
 template <class Model>
-inline constexpr bool row_model_on_teams =
+concept RowModelOnTeams =
     std::is_same_v<Model, NearestNeighbourRows<double>> || std::is_same_v<Model, CoupledRows<double>>;
 
 template <class Team>
@@ -30,8 +30,7 @@ struct TeamStageMatrixOf<CoupledRows<double>, Team> {
 };
 
 /// A team splits a row model's rows.
-template <class Model>
-  requires row_model_on_teams<Model>
+template <RowModelOnTeams Model>
 ROTORSWEEP_HD std::size_t team_units(const Model& model) {
   return model.dimension();
 }
@@ -46,8 +45,7 @@ concept TrigonometryFirst = requires(const Model& model, typename Model::Workspa
 
 /// Each rank's rows' trigonometry at (y, t) where Model's range forms read it across ranks; nothing
 /// (and no barrier) otherwise.
-template <class Team, class Model>
-  requires row_model_on_teams<Model>
+template <class Team, RowModelOnTeams Model>
 ROTORSWEEP_HD void team_trigonometry(Team& team, const Model& model, typename Model::Workspace& work,
                                      const double* y, double t) {
   if constexpr (TrigonometryFirst<Model>)
@@ -59,8 +57,7 @@ ROTORSWEEP_HD void team_trigonometry(Team& team, const Model& model, typename Mo
 
 /// f(y, t) into f, each rank its rows (evaluate_range), and the integrands into qdot from the team's
 /// sums of the ranks' parts, which each rank leaves at partial + stride · rank (5 values).
-template <class Team, class Model>
-  requires row_model_on_teams<Model>
+template <class Team, RowModelOnTeams Model>
 ROTORSWEEP_HD void team_evaluate(Team& team, const Model& model, typename Model::Workspace& work,
                                  const double* y, double t, double* f, double* partial, std::size_t stride,
                                  double* qdot) {
@@ -97,16 +94,17 @@ ROTORSWEEP_HD void team_evaluate(Team& team, const Model& model, typename Model:
 template <class Team>
 ROTORSWEEP_HD void team_linearize(Team& team, const NearestNeighbourRows<double>& model,
                                   const NearestNeighbourRows<double>::Workspace& work, const double*,
-                                  const double* f, TeamCyclicTridiagonal<Team>& J, double* df_dt, double* scratch,
-                                  double* dq_dy, double* partial, std::size_t stride, double t) {
+                                  const double* f, TeamCyclicTridiagonal<Team>& J, double* df_dt,
+                                  double* scratch, double* dq_dy, double* partial, std::size_t stride,
+                                  double t) {
   team.each([&](std::size_t r) {
     const TeamRows rows = team_rows(model.dimension(), team.size(), r);
     model.jacobian_range(work, J.diagonal(), J.links(), df_dt, rows.begin, rows.end);
   });
   team.each([&](std::size_t r) {
     const TeamRows rows = team_rows(model.dimension(), team.size(), r);
-    model.integrand_gradient_range(work, f, J.diagonal(), J.links(), df_dt, scratch, dq_dy, partial + stride * r,
-                                   t, rows.begin, rows.end);
+    model.integrand_gradient_range(work, f, J.diagonal(), J.links(), df_dt, scratch, dq_dy,
+                                   partial + stride * r, t, rows.begin, rows.end);
   });
 }
 

@@ -56,9 +56,10 @@ ROTORSWEEP_HD void team_evaluate(Team& team, const SliderModel<double, Inertial>
 /// rotors, its gradients from its own rows of K, its parts of the time sums at partial + stride · rank.
 template <class Team, bool Inertial>
 ROTORSWEEP_HD void team_linearize(Team& team, const SliderModel<double, Inertial>& model,
-                                  const typename SliderModel<double, Inertial>::Workspace& work, const double* y,
-                                  const double*, TeamSecondOrderJacobian<Team, Inertial>& J, double* df_dt,
-                                  double*, double* dq_dy, double* partial, std::size_t stride, double t) {
+                                  const typename SliderModel<double, Inertial>::Workspace& work,
+                                  const double* y, const double*, TeamSecondOrderJacobian<Team, Inertial>& J,
+                                  double* df_dt, double*, double* dq_dy, double* partial, std::size_t stride,
+                                  double t) {
   team.each([&](std::size_t r) {
     const TeamRows rows = team_rows(model.rotors(), team.size(), r);
     model.jacobian_range(work, y, t, J, df_dt, dq_dy, partial + stride * r, rows.begin, rows.end);
