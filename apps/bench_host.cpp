@@ -1,6 +1,6 @@
 // `rotorsweep bench host`: the host's share of a GPU sweep per member, measured without a GPU: a chunk's
 // fill, the members' summaries, and the summaries with the result file's writes (as `rotorsweep run`), the
-// rows in order and scattered as a GPU's two passes deliver them.
+// rows in order and scattered as a GPU sweep delivers them (shadowed members after their shadows).
 #include <unistd.h>
 
 #include <algorithm>
@@ -102,7 +102,7 @@ HostSteps time_host_steps(int rows, std::size_t members, int threads, int repeat
     leave_finished_members(chunk);
 
     start = std::chrono::steady_clock::now();
-    chunk.deliver(scene, threads, [](ensemble::MemberResult&&) {});
+    chunk.deliver(scene, threads, [](const ensemble::Member&, ensemble::MemberResult&&) {});
     summaries.push_back(seconds_since(start));
 
     std::filesystem::remove(path);
@@ -110,14 +110,15 @@ HostSteps time_host_steps(int rows, std::size_t members, int threads, int repeat
       const io::ResultFile file(path.string(), scene, io::Provenance{"bench host", "", "", "cpu", ""});
       io::MemberStream stream(file, plan, {}, [] {});
       start = std::chrono::steady_clock::now();
-      chunk.deliver(scene, threads, [&](ensemble::MemberResult&& r) { stream.add(std::move(r)); });
+      chunk.deliver(scene, threads,
+                    [&](const ensemble::Member&, ensemble::MemberResult&& r) { stream.add(std::move(r)); });
       stream.flush();
       writes.push_back(seconds_since(start));
     }
 
     std::vector<ensemble::MemberResult> results;
     std::mutex lock;
-    chunk.deliver(scene, threads, [&](ensemble::MemberResult&& r) {
+    chunk.deliver(scene, threads, [&](const ensemble::Member&, ensemble::MemberResult&& r) {
       const std::lock_guard guard(lock);
       results.push_back(std::move(r));
     });

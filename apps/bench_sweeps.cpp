@@ -98,7 +98,7 @@ std::string format_rate(double rate) {
 /// One sweep (plan, device work, host summaries; no file) with mapping m: a table row; the kernel
 /// rate counts only the time the GPU's kernels ran (the wall's rate adds the host's fills and summaries),
 /// and on a GPU the host's part of the wall: its chunks' set-up, fills, waits for the GPU and deliveries
-/// (SweepStatistics; a sweep with shadow runs adds its second pass's).
+/// (SweepStatistics; its chunks of shadow runs included).
 void run_row(const BenchScene& s, const BenchGpuOptions& options, const Mapping& m) {
   const auto scene = io::parse_scene_text(scene_text(s, options.device), "bench");
   const auto members = ensemble::plan_members(scene);

@@ -320,10 +320,11 @@ bool select_rows(hid_t space, int rank, const hsize_t dims[3], const hsize_t* fi
 }  // namespace
 
 // HDF5 1.10 unites k hyperslabs in more than k² steps (per column of a 10⁶-row dataset, every fourth
-// row: 1 000 take 9 ms, 16 000 7.4 s, 64 000 528 s), and the GPU's two passes leave batches of
-// scattered rows. So a batch of more than 16 runs goes as points where a row holds a few values (HDF5
-// selects points in linear time: 0.16 µs per one-value row) and otherwise in parts of 16 runs, one
-// H5Dwrite each (3.4 µs per 128-value row, against 16 µs as points); docs/performance.md.
+// row: 1 000 take 9 ms, 16 000 7.4 s, 64 000 528 s), and a GPU sweep, whose shadowed members follow
+// their shadows' chunks, leaves batches of scattered rows. So a batch of more than 16 runs goes as
+// points where a row holds a few values (HDF5 selects points in linear time: 0.16 µs per one-value
+// row) and otherwise in parts of 16 runs, one H5Dwrite each (3.4 µs per 128-value row, against 16 µs
+// as points); docs/performance.md.
 void Hdf5Location::write_selected_rows(const std::string& name, const std::vector<hsize_t>& rows,
                                        hid_t memory_type, const void* data) const {
   constexpr std::size_t runs_per_part = 16, most_values_as_points = 8;

@@ -71,9 +71,9 @@ SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, int
   ChunkGrid grid{resident_blocks(kernel, launch, 0), launch.threads_per_block, 0, 0};
   grid.resident = std::size_t(grid.blocks) * std::size_t(grid.threads_per_block) / L;
   return run_chunks(scene, range, schedule, grid, host_threads, control, sink,
-                    [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
-                        unsigned long long* counter) {
-                      kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(schedule, views, count,
+                    [&](cudaStream_t stream, const SlotSchedule& chunk_schedule, const SlotViews& views,
+                        unsigned long long count, unsigned long long* counter) {
+                      kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(chunk_schedule, views, count,
                                                                                  counter);
                     });
 }

@@ -20,6 +20,7 @@
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_slots.hpp"
+#include "ensemble/rows/row_chunks.hpp"
 #include "ensemble/rows/team_member.hpp"
 #include "kernels/lanes/team.hpp"
 
@@ -213,58 +214,41 @@ int resident_blocks(Kernel kernel, const GpuLaunch& launch, std::size_t shared_b
   return std::max(1, per_multiprocessor) * gpu_info().multiprocessors;
 }
 
-/// The variant's members in chunks, two in flight (run_chunks_two_in_flight on a ChunkStream): while the
-/// GPU runs one chunk (launch(stream, views, count, counter)), the host fills the next, whose copies
-/// and kernel the stream queues behind it, and then delivers the one before. Starts no chunk once
-/// control.stop is raised. The kernels' time (CUDA events) goes to statistics.kernel_seconds, the
-/// host's parts to its setup, fill (and queue), wait (and copy back) and deliver seconds.
+/// The GPU as a RowSlotDevice: a ChunkStream whose chunks run launch(stream, schedule, views, count,
+/// counter), the chunk's schedule (a plan's or its shadow runs') as the kernel's argument.
+template <class Launch>
+class GpuRowDevice {
+ public:
+  explicit GpuRowDevice(Launch& launch) : launch_(launch) {}
+  void start(SlotChunk& chunk, std::size_t slot) {
+    stream_.start(
+        chunk, slot,
+        [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
+            unsigned long long* counter) { launch_(stream, chunk.schedule(), views, count, counter); });
+  }
+  double finish(SlotChunk& chunk, std::size_t slot) { return stream_.finish(chunk, slot); }
+
+ private:
+  Launch& launch_;
+  ChunkStream<SlotChunk, slot_views> stream_;
+};
+
+/// The variant's members on the GPU with `launch` (GpuRowDevice) through run_row_chunks: chunks of
+/// 8 × the members resident at once, at least 65 536; the stream's and events' creation counts as
+/// set-up.
 template <class Launch>
 SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const SlotSchedule& schedule,
                         const ChunkGrid& grid, int host_threads, const SweepControl& control,
                         const ResultSink& sink, Launch&& launch) {
+  const auto start = std::chrono::steady_clock::now();
   const std::size_t members = range.end - range.begin;
   const std::size_t chunk = std::min(members, std::max<std::size_t>(8 * grid.resident, 1 << 16));
-
-  SweepOutcome outcome;
-  auto& stats = outcome.statistics;
-  stats.threads = grid.blocks * grid.threads_per_block;
-  stats.lane_width = 1;
-  const auto start = std::chrono::steady_clock::now();
-  const auto seconds_since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
-  const std::size_t second = members > chunk ? chunk : 0;  // a sweep of one chunk needs no second
-  std::array<SlotChunk, 2> host{SlotChunk(schedule, chunk), SlotChunk(schedule, second)};
-  ChunkStream<SlotChunk, slot_views> device;
-  stats.setup_seconds = seconds_since(start);
-
-  std::size_t next = range.begin, done = 0;
-  run_chunks_two_in_flight(
-      [&](std::size_t slot) {
-        if (next >= range.end) return false;
-        const std::size_t count = std::min(chunk, range.end - next);
-        const auto fill_start = std::chrono::steady_clock::now();
-        host[slot].fill(scene, range, next, count);
-        next += count;
-        device.start(host[slot], slot, launch);
-        stats.fill_seconds += seconds_since(fill_start);
-        return true;
-      },
-      [&](std::size_t slot) {
-        const auto wait_start = std::chrono::steady_clock::now();
-        stats.kernel_seconds += device.finish(host[slot], slot);
-        stats.wait_seconds += seconds_since(wait_start);
-        const auto deliver_start = std::chrono::steady_clock::now();
-        const double attempts = host[slot].deliver(scene, host_threads, sink);
-        stats.deliver_seconds += seconds_since(deliver_start);
-        stats.lane_steps_busy += attempts;
-        stats.lane_steps_total += attempts;
-        done += host[slot].count();
-        if (control.progress) control.progress(done);
-      },
-      [&] { return control.stopped(); });
-  stats.wall_seconds = seconds_since(start);
-  outcome.interrupted = control.stopped();
+  GpuRowDevice device(launch);
+  const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  SweepOutcome outcome = run_row_chunks(scene, range, schedule, chunk, host_threads, control, sink, device);
+  outcome.statistics.threads = grid.blocks * grid.threads_per_block;
+  outcome.statistics.setup_seconds += setup;
+  outcome.statistics.wall_seconds += setup;
   return outcome;
 }
 
@@ -295,9 +279,9 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
   ChunkGrid grid{resident_blocks(kernel, launch, 0), launch.threads_per_block, 0, 0};
   grid.resident = std::size_t(grid.blocks) * std::size_t(grid.threads_per_block);
   return run_chunks(scene, range, schedule, grid, host_threads, control, sink,
-                    [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
-                        unsigned long long* counter) {
-                      kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(schedule, views, count,
+                    [&](cudaStream_t stream, const SlotSchedule& chunk_schedule, const SlotViews& views,
+                        unsigned long long count, unsigned long long* counter) {
+                      kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(chunk_schedule, views, count,
                                                                                  counter);
                     });
 }
@@ -368,10 +352,10 @@ SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, u
   const TeamLaunch teams = team_launch(kernel, team, Driver::storage_size(schedule, team));
   return run_chunks(
       scene, range, schedule, teams.grid, host_threads, control, sink,
-      [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
-          unsigned long long* counter) {
+      [&](cudaStream_t stream, const SlotSchedule& chunk_schedule, const SlotViews& views,
+          unsigned long long count, unsigned long long* counter) {
         kernel<<<teams.grid.blocks, teams.grid.threads_per_block, teams.grid.shared_bytes, stream>>>(
-            schedule, views, count, counter, team, teams.global(), teams.per_team);
+            chunk_schedule, views, count, counter, team, teams.global(), teams.per_team);
       });
 }
 

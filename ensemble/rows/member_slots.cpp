@@ -4,6 +4,8 @@
 #include "ensemble/rows/member_slots.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <tuple>
 
 #include "ensemble/rows/disorder.hpp"
 #include "ensemble/rows/member_plan.hpp"
@@ -58,10 +60,17 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   return s;
 }
 
+SlotSchedule shadow_slot_schedule(const Scene& scene, const SlotSchedule& primary) {
+  SlotSchedule s = primary;
+  s.periods = scene.shadow_schedule();
+  s.steady_tol = 0;
+  return s;
+}
+
 SlotChunk::SlotChunk(const SlotSchedule& schedule, std::size_t capacity)
     : schedule_(schedule),
       capacity_(capacity),
-      index_(capacity),
+      members_(capacity),
       A_(capacity),
       g_(capacity),
       y0_(capacity * schedule.rows),
@@ -86,9 +95,8 @@ void SlotChunk::fill(const Scene& scene, const VariantRange& range, std::size_t 
   const std::size_t n = schedule_.rows;
   count_ = count;
   for (std::size_t k = 0; k < count; ++k) {
-    const Member member = range.source->at(first + k);
+    const Member& member = members_[k] = range.source->at(first + k);
     const std::vector<double> y0 = member_initial_angles(scene, member);
-    index_[k] = member.index;
     A_[k] = member.A;
     g_[k] = member.g;
     tolerance_scale_[k] = member.tolerance_scale;
@@ -114,7 +122,7 @@ void SlotChunk::fill(const Scene& scene, const VariantRange& range, std::size_t 
 MemberResult SlotChunk::result(const Scene& scene, std::size_t k) const {
   const std::size_t n = schedule_.rows, ring = schedule_.record_capacity;
   RetiredLane lane;
-  lane.index = index_[k];
+  lane.index = members_[k].index;
   lane.status = kernels::LaneStatus(status_[k]);
   lane.settled = settled_[k] != 0;
   lane.periods = periods_[k];
@@ -145,12 +153,21 @@ MemberResult SlotChunk::result(const Scene& scene, std::size_t k) const {
       std::move(lane), summary_rules(scene, schedule_.stochastic, kernels::two_pi, schedule_.row_profiles));
 }
 
-double SlotChunk::deliver(const Scene& scene, int threads, const ResultSink& sink) const {
+void SlotChunk::set_schedule(const SlotSchedule& schedule) {
+  const auto layout = [](const SlotSchedule& s) {
+    return std::tuple(s.rows, s.record_capacity, s.end_capacity, s.profile_capacity, s.links, s.A_rows,
+                      s.anisotropy_rows, s.coupling_rows, s.stochastic, s.coupling_range);
+  };
+  if (layout(schedule) != layout(schedule_)) throw std::logic_error("SlotChunk: a schedule of other slots");
+  schedule_ = schedule;
+}
+
+double SlotChunk::deliver(const Scene& scene, int threads, const Sink& sink) const {
   double attempts = 0;
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64) reduction(+ : attempts)
   for (std::size_t k = 0; k < count_; ++k) {
     attempts += steps_[2 * k] + steps_[2 * k + 1];
-    sink(result(scene, k));
+    sink(members_[k], result(scene, k));
   }
   return attempts;
 }

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "ensemble/engine/member_progress.hpp"
@@ -130,10 +131,15 @@ class SlotChunk {
 
   /// Fills the inputs of members [first, first + count) of `range` (count ≤ capacity).
   void fill(const Scene& scene, const VariantRange& range, std::size_t first, std::size_t count);
-  /// The result of chunk member k, read from the outputs.
+  /// The schedule the next members run (another of the variant's: a shadow run's, shadow_slot_schedule).
+  void set_schedule(const SlotSchedule& schedule);
+  /// Chunk member k, and its result read from the outputs.
+  const Member& member(std::size_t k) const { return members_[k]; }
   MemberResult result(const Scene& scene, std::size_t k) const;
-  /// Hands every member's result to `sink` (on `threads` host threads); returns their step attempts.
-  double deliver(const Scene& scene, int threads, const ResultSink& sink) const;
+  /// Hands every member and its result to sink(member, result) (on `threads` host threads); returns
+  /// their step attempts.
+  using Sink = std::function<void(const Member&, MemberResult&&)>;
+  double deliver(const Scene& scene, int threads, const Sink& sink) const;
 
   /// Views of these host buffers (for the host run of the device driver, and for copies).
   SlotViews views();
@@ -148,7 +154,7 @@ class SlotChunk {
  private:
   SlotSchedule schedule_;
   std::size_t capacity_, count_ = 0;
-  std::vector<std::size_t> index_;  ///< plan index of each chunk member
+  std::vector<Member> members_;  ///< each chunk member (its plan index, a rerun's kind)
   std::vector<double> A_, g_, y0_, tolerance_scale_, A_rows_, anisotropy_rows_, coupling_rows_;
   std::vector<std::uint64_t> noise_key_;
   std::vector<double> table_b_, table_c_;  ///< the coupling table, filled once
@@ -161,5 +167,7 @@ class SlotChunk {
 /// The schedule of a variant's members: the scene's schedule with the variant's tolerances,
 /// `first_step_scale` the stepper's first-step scale at them (0 for the Langevin stepper).
 SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double first_step_scale);
+/// The schedule of the shadow runs of `primary`'s members (Scene::shadow_schedule): the same slots.
+SlotSchedule shadow_slot_schedule(const Scene& scene, const SlotSchedule& primary);
 
 }  // namespace rotorsweep::ensemble

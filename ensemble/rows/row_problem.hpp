@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <deque>
 #include <limits>
-#include <map>
 #include <memory>
 #include <optional>
 #include <tuple>
@@ -21,11 +20,8 @@
 #include "ensemble/rows/member_summary.hpp"
 #include "ensemble/rows/observables.hpp"
 #include "ensemble/rows/row_profile_observer.hpp"
+#include "ensemble/rows/row_reruns.hpp"
 #include "ensemble/rows/scene.hpp"
-#include "ensemble/rows/shadow_attractor.hpp"
-#include "ensemble/rows/shadow_run.hpp"
-#include "ensemble/rows/slip_kinds.hpp"
-#include "ensemble/rows/smooth_alternation_window.hpp"
 #include "ensemble/rows/steady_dissipation.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
@@ -60,10 +56,9 @@ typename Integrator::Settings integrator_settings(const Scene& scene, const Memb
 /// arguments after the dimension and the arena (model_arguments(), a tuple: the row models'
 /// quadratures) and turns a member into the model's parameters and its initial state:
 /// initial_state(member) and parameters(member, y0), and with a stochastic integrator its noise
-/// stream: noise_key(member). The model reports the quadratures it carries (integrals()). A member
-/// whose averaged periods slip (with shadow runs on) is held and its shadow run queued, and one that
-/// slips in every averaged period (with observables.slip_kinds) its slower rerun: the reruns' results
-/// complete it (ensemble/rows/shadow_run.hpp, slip_kinds.hpp).
+/// stream: noise_key(member). The model reports the quadratures it carries (integrals()). A finished
+/// member may be held for its reruns (RowReruns: shadow run, slower rerun), which are queued for the
+/// next free lane and complete it.
 template <kernels::LaneModel Model, class Integrator, class Setup>
 class RowProblem {
  public:
@@ -85,10 +80,8 @@ class RowProblem {
         slips_(variant.rows, scene.slip_rate, scene.has(Observable::slips), scene.slip_kinds),
         profiles_(variant.rows, scene.row_profiles),
         period_schedule_(scene.period_schedule()),
-        shadow_schedule_{scene.average_periods, 0, false},
-        shadows_on_(scene.runs_shadows() && !Loop::stochastic),
-        slower_on_(scene.slip_kinds && !Loop::stochastic),
-        symmetry_limited_(scene.symmetry_limited(variant.rtol)),
+        shadow_schedule_(scene.shadow_schedule()),
+        reruns_(scene, Loop::stochastic, variant.rtol),
         end_capacity_(end_state_capacity(scene.average_periods)),
         rules_(summary_rules(scene, Loop::stochastic, Loop::period, profiles_.enabled())),
         lanes_(width) {}
@@ -97,13 +90,8 @@ class RowProblem {
   bool refill() const { return scene_.refill; }
 
   /// A rerun waiting for a lane, taken before the plan's next member.
-  std::optional<Member> take_queued() {
-    if (reruns_.empty()) return std::nullopt;
-    Member rerun = std::move(reruns_.front());
-    reruns_.pop_front();
-    return rerun;
-  }
-  bool has_queued() const { return !reruns_.empty(); }
+  std::optional<Member> take_queued() { return reruns_.take_queued(); }
+  bool has_queued() const { return reruns_.queued() > 0; }
 
   /// Puts `member` into lane l (a plan member or a queued rerun); returns its period schedule.
   StopSchedule start(std::size_t l, const Member& member, bool) {
@@ -173,43 +161,10 @@ class RowProblem {
   template <class Retire>
   void finish(std::size_t l, const MemberProgress& progress, bool settled, Retire& retire) {
     MemberResult result = summarize_lane(l, progress, settled);
-    const Member& member = lanes_[l].member;
+    const Member member = std::move(lanes_[l].member);
     release_lane(l);
-    if (member.rerun != Rerun::none) {  // its primary waits for it
-      const auto at = held_.find(member.index);
-      Held& held = at->second;
-      if (member.rerun == Rerun::shadow)
-        complete_with_shadow(held.primary, result, symmetry_limited_);
-      else
-        take_slower_rerun(held.primary, result, smooth_alternation_possible(scene_, member.A));
-      if (--held.pending > 0) return;
-      MemberResult primary = std::move(held.primary);
-      held_.erase(at);
-      retire(std::move(primary));
-      return;
-    }
-    int pending = 0;
-    if (shadows_on_ && needs_shadow(result)) {
-      Member shadow = member;
-      shadow.rerun = Rerun::shadow;
-      shadow.tolerance_scale = shadow_tolerance_scale;
-      shadow.start = std::make_shared<const std::vector<double>>(
-          result.averaging_start.empty() ? setup_.initial_state(member) : result.averaging_start);
-      reruns_.push_back(std::move(shadow));
-      ++pending;
-    }
-    if (slower_on_ && needs_slower_rerun(result)) {
-      Member slower = member;  // the same start, disorder and schedule
-      slower.rerun = Rerun::slower;
-      slower.g *= slower_damping_scale;
-      reruns_.push_back(std::move(slower));
-      ++pending;
-    }
-    if (pending == 0) {
-      retire(std::move(result));
-      return;
-    }
-    held_.emplace(member.index, Held{std::move(result), pending});
+    reruns_.finish(member, std::move(result), retire,
+                   [&](const Member& m) { return setup_.initial_state(m); });
   }
 
  private:
@@ -276,17 +231,8 @@ class RowProblem {
   SlipObserver<Loop> slips_;
   RowProfileObserver<Loop> profiles_;
   StopSchedule period_schedule_;
-  StopSchedule shadow_schedule_;    ///< a shadow run's: the averaged periods, no steady test
-  bool shadows_on_;                 ///< members whose averaged periods slip get shadow runs
-  bool slower_on_;             ///< members that slip in every averaged period get slower reruns (slip_kinds)
-  bool symmetry_limited_;      ///< no physical perturbation of the scene exceeds rtol
-  std::deque<Member> reruns_;  ///< reruns waiting for a lane
-  /// A primary waiting for its reruns (`pending` of them still running).
-  struct Held {
-    MemberResult primary;
-    int pending = 0;
-  };
-  std::map<std::size_t, Held> held_;
+  StopSchedule shadow_schedule_;  ///< a shadow run's: the averaged periods, no steady test
+  RowReruns reruns_;              ///< queued reruns, primaries waiting for them
   std::size_t end_capacity_;  ///< period ends a lane keeps (end_state_capacity)
   SummaryRules rules_;        ///< how a retired lane becomes a result
   std::vector<Lane> lanes_;

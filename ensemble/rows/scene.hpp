@@ -66,6 +66,8 @@ struct Scene {
   StopSchedule period_schedule() const {
     return {relax_periods + average_periods, max_periods, steady_tol > 0};
   }
+  /// A shadow run's stops: its primary's averaged periods again, without a steady test.
+  StopSchedule shadow_schedule() const { return {average_periods, 0, false}; }
   bool refill = true;  ///< refill a retired member's lane at once (false: wait for the whole block)
 
   ObservableSet observables = ObservableSet::defaults();  ///< observables.<key> of each declaration

@@ -1,17 +1,11 @@
 // run_sweep: variant by variant, dispatch from the scene's stepper to its family's instantiation (one
 // generated translation unit per family of kernels::steppers), or to the Langevin stepper at T > 0;
-// on the GPU, members whose averaged periods slip get their shadow runs in a second pass (docs/numerics.md).
+// each backend runs the reruns of its members itself (RowReruns: LaneScheduler, run_row_chunks).
 #include "ensemble/rows/sweep.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <map>
-#include <memory>
-#include <mutex>
 
 #include "ensemble/gpu/gpu_backend.hpp"
-#include "ensemble/rows/shadow_attractor.hpp"
-#include "ensemble/rows/shadow_run.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -49,66 +43,6 @@ SweepOutcome run_range(const Scene& scene, const VariantRange& range, int thread
   });
 }
 
-/// On the GPU (whose threads run a member from start to retirement) the members of one variant's range
-/// whose averaged periods slipped wait for their shadow runs, which a second pass runs; the CPU lanes
-/// run a shadow as soon as its primary retires (LaneScheduler).
-class ShadowedRange {
- public:
-  ShadowedRange(const Scene& scene, const VariantRange& range)
-      : on_(scene.runs_shadows() && scene.device == Device::gpu), plan_(scene) {
-    if (range.end > range.begin) limited_ = scene.symmetry_limited(range.source->at(range.begin).rtol);
-  }
-
-  /// Hands `result` to `sink`, or holds it for its shadow run.
-  void take(MemberResult&& result, const ResultSink& sink) {
-    if (!on_ || !needs_shadow(result)) return sink(std::move(result));
-    const std::lock_guard guard(lock_);
-    held_.emplace(result.index, std::move(result));
-  }
-  std::size_t held() const {
-    const std::lock_guard guard(lock_);
-    return held_.size();
-  }
-
-  /// The shadow runs of the held members: each integrates its primary's averaged periods again, from
-  /// where they began, and its result completes its primary, which goes to `sink`.
-  SweepOutcome run_shadows(const Scene& scene, int threads, const SweepControl& control,
-                           const ResultSink& sink) {
-    std::vector<Member> members;
-    for (const auto& [index, primary] : held_) {
-      Member m = plan_[index];
-      m.rerun = Rerun::shadow;
-      m.tolerance_scale = shadow_tolerance_scale;
-      if (!primary.averaging_start.empty())
-        m.start = std::make_shared<const std::vector<double>>(primary.averaging_start);
-      members.push_back(std::move(m));
-    }
-    Scene averaged_periods = scene;
-    averaged_periods.relax_periods = 0;
-    averaged_periods.steady_tol = 0;
-    const MemberSource shadows{members.size(), [&](std::size_t k) { return members[k]; }, {}};
-    return run_range(averaged_periods, {&shadows, 0, members.size()}, threads, control,
-                     [&](MemberResult&& shadow) {
-                       MemberResult primary;
-                       {
-                         const std::lock_guard guard(lock_);
-                         const auto at = held_.find(shadow.index);
-                         primary = std::move(at->second);
-                         held_.erase(at);
-                       }
-                       complete_with_shadow(primary, shadow, limited_);
-                       sink(std::move(primary));
-                     });
-  }
-
- private:
-  bool on_;
-  bool limited_ = false;
-  MemberPlan plan_;
-  mutable std::mutex lock_;
-  std::map<std::size_t, MemberResult> held_;
-};
-
 }  // namespace
 
 SweepOutcome run_members(const Scene& scene, const MemberSource& source, int threads,
@@ -132,24 +66,13 @@ SweepOutcome run_members(const Scene& scene, const MemberSource& source, int thr
       outcome.interrupted = true;
       break;
     }
-    // progress counts the members handed to the sink: a held member counts once its shadow is done
-    ShadowedRange shadowed(scene, range);
+    // progress counts the members handed to the sink, a held member once its reruns are done
     const std::size_t before = done_before;
-    const SweepControl first_pass{[&](std::size_t done) {
-                                    if (control.progress) control.progress(before + done - shadowed.held());
-                                  },
-                                  control.stop, control.periods};
-    outcome.append(run_range(scene, range, threads, first_pass,
-                             [&](MemberResult&& result) { shadowed.take(std::move(result), sink); }));
-    const std::size_t held = shadowed.held();
-    if (held > 0 && !outcome.interrupted) {
-      const std::size_t delivered = before + (range.end - range.begin) - held;
-      const SweepControl second_pass{[&](std::size_t done) {
-                                       if (control.progress) control.progress(delivered + done);
-                                     },
-                                     control.stop, control.periods};
-      outcome.append(shadowed.run_shadows(scene, threads, second_pass, sink));
-    }
+    const SweepControl part{[&](std::size_t done) {
+                              if (control.progress) control.progress(before + done);
+                            },
+                            control.stop, control.periods};
+    outcome.append(run_range(scene, range, threads, part, sink));
     done_before += range.end - range.begin;
   }
   return outcome;

@@ -50,7 +50,7 @@ void check_gpu_matches_cpu(const ensemble::Scene& scene) {
 
 /// 12 × `points` members over the curve; one relaxed and one averaged period and no shadow runs
 /// (global_error "local"; the paper's case keeps them), since a GPU thread takes a member's whole run at
-/// its own pace and the shadows' pass is a second such run (a case's time is its slowest member's on
+/// its own pace and the shadows' chunks are a second such run (a case's time is its slowest member's on
 /// one thread: H100, 2 + 2 periods with shadows, "every stepper" 66 s, the mappings 61 s; 1 + 1 without
 /// shadows 16 s and 27 s).
 std::string curve_scene(const std::string& stepper, int rows, const std::string& rtol, int points = 32) {

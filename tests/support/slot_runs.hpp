@@ -1,9 +1,11 @@
 // Test support: a scene's members run on the host through one chunk of member slots, as the GPU
-// backend runs them: by one thread's driver (DeviceMember), or by a host team (TeamMember).
+// backend runs them: by one thread's driver (DeviceMember), or by a host team (TeamMember); a host
+// device for the GPU's chunk loop (run_row_chunks).
 #pragma once
 
 #include <cstddef>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "ensemble/gpu/device_drivers.hpp"
@@ -70,6 +72,23 @@ inline std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& s
                         kernels::TeamIntegrator<kernels::HostTeam, Stepper>>(scene, ranks);
   });
 }
+
+/// A RowSlotDevice on the host (ensemble/rows/row_chunks.hpp): start runs every member of the chunk
+/// with run(schedule, views, k) on every core; it records each started chunk's stops (a plan chunk's
+/// periods, a shadow chunk's averaged periods) and members, in order.
+template <class Run>
+struct HostSlotDevice {
+  Run run;
+  std::vector<std::pair<int, std::size_t>> chunks;
+
+  void start(ensemble::SlotChunk& chunk, std::size_t) {
+    chunks.emplace_back(chunk.schedule().periods.stops, chunk.count());
+    const ensemble::SlotSchedule schedule = chunk.schedule();
+    const ensemble::SlotViews views = chunk.views();
+    for_each_member_in_parallel(chunk.count(), [&](std::size_t k) { run(schedule, views, k); });
+  }
+  double finish(ensemble::SlotChunk&, std::size_t) { return 0.0; }
+};
 
 /// Every member of the scene one by one with DeviceMember<Model, Integrator>: the CPU lanes' bits.
 template <class Model, class Integrator>

@@ -1,6 +1,7 @@
 // The GPU backend's member driver compiled for the host: run member by member through member slots,
 // it gives the CPU lanes' (scalar and SIMD) results bit for bit, for every stepper, schedule and
 // scene kind (disorder, temperature, coupling tables, open rows, row profiles).
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -12,12 +13,12 @@
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_slots.hpp"
-#include "ensemble/rows/shadow_attractor.hpp"
-#include "ensemble/rows/shadow_run.hpp"
+#include "ensemble/rows/row_chunks.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "support/same_results.hpp"
+#include "support/slot_runs.hpp"
 
 using namespace rotorsweep;
 
@@ -59,8 +60,8 @@ std::string scene_text(const std::string& stepper, int rows, const std::string& 
          schedule + "\n[numerics]\nstepper = \"" + stepper + "\"\n" + tolerances(stepper) + extra;
 }
 
-/// The members' own runs on both backends (the shadow runs of slipping members are a second pass
-/// over the same driver, ShadowedRange in sweep.cpp, and off here).
+/// The members' own runs on both backends (the shadow runs of slipping members are chunks of their
+/// own through the same driver, run_row_chunks, and off here).
 void check_backends_agree(ensemble::Scene scene) {
   scene.shadow_runs = false;
   const ensemble::MemberPlan plan(scene);
@@ -151,49 +152,56 @@ TEST_CASE("the device member driver runs a shadow run as the CPU does: its toler
   CHECK(testing::count_differences(plain.results, slots, first) > 0);
 }
 
-TEST_CASE("the GPU's second pass of shadow runs gives the CPU lanes' errors and flags",
+TEST_CASE("the device's chunks run shadow runs between the plan's and give the CPU lanes' errors and flags",
           "[device_member][shadow]") {
   // random starts without disorder at N = 6: CP members, symmetry-limited, some of whose shadows fall
-  // into the strict-FM set; the GPU runs the primaries, then their shadows from where their averaged
-  // periods began, and completes each as ShadowedRange (ensemble/rows/sweep.cpp) does
+  // into the strict-FM set; the GPU's chunk loop (run_row_chunks) on a host device, chunks of 3 members
   const auto scene = io::parse_scene_text(
       "[model]\nrows = 6\n[drive]\ng = [0.002]\n[sweep]\nA = [6.0, 8.1, 9.3]\n"
       "[initial]\nkinds = [\"random\", \"AFM\"]\nreplicas = 3\n[numerics]\nrtol = 1e-7\natol = 1e-10\n",
-      "device-member-shadow-pass");
+      "device-member-shadow-chunks");
   const auto members = ensemble::plan_members(scene);
   const auto cpu = ensemble::run_sweep(scene, members, 2, {}).results;
 
-  ensemble::Scene primaries = scene;
-  primaries.shadow_runs = false;
-  const ensemble::MemberSource all{members.size(), [&](std::size_t k) { return members[k]; }, {}};
-  auto gpu = run_through_slots(primaries, all);
-  std::vector<ensemble::Member> shadows;
-  std::vector<std::size_t> of;
-  for (std::size_t i = 0; i < gpu.size(); ++i) {
-    if (!ensemble::needs_shadow(gpu[i])) continue;
-    ensemble::Member m = members[i];
-    m.rerun = ensemble::Rerun::shadow;
-    m.tolerance_scale = ensemble::shadow_tolerance_scale;
-    m.start = std::make_shared<const std::vector<double>>(gpu[i].averaging_start);
-    shadows.push_back(std::move(m));
-    of.push_back(i);
-  }
-  REQUIRE_FALSE(shadows.empty());
-  ensemble::Scene averaged = scene;
-  averaged.relax_periods = 0;
-  averaged.steady_tol = 0;
-  const ensemble::MemberSource second{shadows.size(), [&](std::size_t k) { return shadows[k]; }, {}};
-  const auto shadow_results = run_through_slots(averaged, second);
-  for (std::size_t k = 0; k < of.size(); ++k)
-    ensemble::complete_with_shadow(gpu[of[k]], shadow_results[k], scene.symmetry_limited(members[0].rtol));
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  std::vector<ensemble::MemberResult> gpu(members.size());
+  std::vector<std::pair<int, std::size_t>> chunks;  // (stops, members) of each chunk started
+  std::size_t progress = 0;
+  ensemble::with_device_driver(scene, [&]<class Model, class Integrator>() {
+    using Driver = ensemble::DeviceMember<Model, Integrator>;
+    testing::HostSlotDevice device{
+        [](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
+          std::vector<double> storage(Driver::storage_size(s));
+          Driver::run(s, v, k, storage.data(), storage.size());
+        }};
+    const auto schedule = ensemble::slot_schedule(
+        scene, members[0], ensemble::device_first_step_scale<Integrator>(scene, members[0]));
+    const ensemble::SweepControl control{[&](std::size_t done) { progress = done; }};
+    ensemble::run_row_chunks(
+        scene, {&source, 0, members.size()}, schedule, 3, 2, control,
+        [&](ensemble::MemberResult&& r) { gpu.at(r.index) = std::move(r); }, device);
+    chunks = device.chunks;
+  });
+  CHECK(progress == members.size());
 
-  std::size_t departed = 0;
+  std::size_t departed = 0, shadowed = 0;
   for (std::size_t i = 0; i < cpu.size(); ++i) {
     INFO("member " << i);
     CHECK(testing::result_difference(cpu[i], gpu[i]) == "");  // the error, the shadow's D and the flags too
     departed += cpu[i].shadow_departed;
+    shadowed += ensemble::needs_shadow(cpu[i]);
   }
   CHECK(departed > 0);  // the test covers a departed shadow
+  // six plan chunks of 3 (4 periods each) and chunks of the shadows (2 averaged periods), the first
+  // of them started before the plan's last
+  std::size_t plan = 0, shadows = 0, last_plan = 0, first_shadows = chunks.size();
+  for (std::size_t c = 0; c < chunks.size(); ++c) {
+    if (chunks[c].first == 4) plan += chunks[c].second, last_plan = c;
+    if (chunks[c].first == 2) shadows += chunks[c].second, first_shadows = std::min(first_shadows, c);
+  }
+  CHECK(plan == members.size());
+  CHECK(shadows == shadowed);
+  CHECK(first_shadows < last_plan);
 }
 
 TEST_CASE("the device member driver with disorder: drawn and given per row", "[device_member][disorder]") {
