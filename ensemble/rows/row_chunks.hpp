@@ -34,11 +34,13 @@ concept RowSlotDevice = requires(Device device, SlotChunk& chunk, std::size_t sl
 
 /// The members of `range` with `schedule` in chunks of up to `capacity` on `device`, two in flight
 /// (run_chunks_two_in_flight): while the device runs one chunk the host fills the next and delivers
-/// the one before (summaries on `host_threads`). A member that needs a shadow run is held (RowReruns)
-/// and its shadow queued; the queued shadows run as a chunk of their own (shadow_slot_schedule) once
-/// they fill one or the plan has run out, and each completes its primary, which then goes to `sink`.
-/// Progress counts the members handed to `sink`; no chunk starts once control.stop is raised (held
-/// primaries are then left out). Statistics: the device's seconds, the host's fill, wait and delivery.
+/// the one before (summaries on `host_threads`). Members are taken in plan order, or one by one through
+/// the source's claim where it has one (the ranks of mpirun, each with its device). A member that needs a
+/// shadow run is held (RowReruns) and its shadow queued; the queued shadows run as a chunk of their own
+/// (shadow_slot_schedule) once they fill one or the plan has run out, and each completes its primary, which
+/// then goes to `sink`. Progress counts the members handed to `sink`; no chunk starts once control.stop is
+/// raised (held primaries are then left out). Statistics: the device's seconds, the host's fill, wait and
+/// delivery.
 template <RowSlotDevice Device>
 SweepOutcome run_row_chunks(const Scene& scene, const VariantRange& range, const SlotSchedule& schedule,
                             std::size_t capacity, int host_threads, const SweepControl& control,
@@ -56,29 +58,33 @@ SweepOutcome run_row_chunks(const Scene& scene, const VariantRange& range, const
   RowReruns reruns(scene, schedule.stochastic, schedule.rtol);
   std::mutex reruns_lock;                          // deliver hands results over on several threads
   std::array<std::optional<SlotChunk>, 2> chunks;  // a slot's chunk made at its first start
-  std::vector<Member> queued;                      // the shadows a chunk takes, as its source
+  std::vector<Member> members;                     // the next chunk's, as its source
   std::size_t next = range.begin;
+  bool plan_left = true;
   std::atomic<std::size_t> delivered = 0;
 
   run_chunks_two_in_flight(
       [&](std::size_t slot) {
         const auto fill_start = std::chrono::steady_clock::now();
-        const bool plan_left = next < range.end;
-        if (!plan_left && reruns.queued() == 0) return false;
+        members.clear();
+        bool shadows = reruns.queued() >= capacity;
+        while (!shadows && plan_left && members.size() < capacity) {
+          const std::size_t k = range.source->claim ? range.source->claim(range) : next++;
+          if (k < range.end)
+            members.push_back(range.source->at(k));
+          else
+            plan_left = false;
+        }
+        if (members.empty()) {
+          if (reruns.queued() == 0) return false;
+          shadows = true;
+          while (members.size() < capacity && reruns.queued() > 0) members.push_back(*reruns.take_queued());
+        }
         if (!chunks[slot]) chunks[slot].emplace(schedule, capacity);
         SlotChunk& chunk = *chunks[slot];
-        if (reruns.queued() >= capacity || !plan_left) {
-          queued.clear();
-          while (queued.size() < capacity && reruns.queued() > 0) queued.push_back(*reruns.take_queued());
-          const MemberSource source{queued.size(), [&](std::size_t k) { return queued[k]; }, {}};
-          chunk.set_schedule(shadow_schedule);
-          chunk.fill(scene, {&source, 0, queued.size()}, 0, queued.size());
-        } else {
-          const std::size_t count = std::min(capacity, range.end - next);
-          chunk.set_schedule(schedule);
-          chunk.fill(scene, range, next, count);
-          next += count;
-        }
+        const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+        chunk.set_schedule(shadows ? shadow_schedule : schedule);
+        chunk.fill(scene, {&source, 0, members.size()}, 0, members.size());
         device.start(chunk, slot);
         stats.fill_seconds += seconds_since(fill_start);
         return true;

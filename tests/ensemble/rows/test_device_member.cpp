@@ -1,12 +1,17 @@
 // The GPU backend's member driver compiled for the host: run member by member through member slots,
 // it gives the CPU lanes' (scalar and SIMD) results bit for bit, for every stepper, schedule and
-// scene kind (disorder, temperature, coupling tables, open rows, row profiles).
+// scene kind (disorder, temperature, coupling tables, open rows, row profiles); and the GPU's chunk
+// loop on a host device: shadow runs between chunks, members claimed by two devices.
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include "ensemble/gpu/device_drivers.hpp"
@@ -152,21 +157,20 @@ TEST_CASE("the device member driver runs a shadow run as the CPU does: its toler
   CHECK(testing::count_differences(plain.results, slots, first) > 0);
 }
 
-TEST_CASE("the device's chunks run shadow runs between the plan's and give the CPU lanes' errors and flags",
-          "[device_member][shadow]") {
-  // random starts without disorder at N = 6: CP members, symmetry-limited, some of whose shadows fall
-  // into the strict-FM set; the GPU's chunk loop (run_row_chunks) on a host device, chunks of 3 members
-  const auto scene = io::parse_scene_text(
-      "[model]\nrows = 6\n[drive]\ng = [0.002]\n[sweep]\nA = [6.0, 8.1, 9.3]\n"
-      "[initial]\nkinds = [\"random\", \"AFM\"]\nreplicas = 3\n[numerics]\nrtol = 1e-7\natol = 1e-10\n",
-      "device-member-shadow-chunks");
-  const auto members = ensemble::plan_members(scene);
-  const auto cpu = ensemble::run_sweep(scene, members, 2, {}).results;
-
-  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
-  std::vector<ensemble::MemberResult> gpu(members.size());
-  std::vector<std::pair<int, std::size_t>> chunks;  // (stops, members) of each chunk started
+/// The members of `source` through the GPU's chunk loop (run_row_chunks) on a host device that runs
+/// DeviceMember, in chunks of `capacity`: results by plan index (an index not run keeps its default),
+/// the last progress count, and each chunk's (stops, members).
+struct HostChunkRun {
+  std::vector<ensemble::MemberResult> results;
+  std::vector<char> delivered;
   std::size_t progress = 0;
+  std::vector<std::pair<int, std::size_t>> chunks;
+};
+HostChunkRun run_host_chunks(const ensemble::Scene& scene, const ensemble::MemberSource& source,
+                             std::size_t plan_size, std::size_t capacity) {
+  HostChunkRun run;
+  run.results.resize(plan_size);
+  run.delivered.assign(plan_size, 0);
   ensemble::with_device_driver(scene, [&]<class Model, class Integrator>() {
     using Driver = ensemble::DeviceMember<Model, Integrator>;
     testing::HostSlotDevice device{
@@ -174,34 +178,84 @@ TEST_CASE("the device's chunks run shadow runs between the plan's and give the C
           std::vector<double> storage(Driver::storage_size(s));
           Driver::run(s, v, k, storage.data(), storage.size());
         }};
-    const auto schedule = ensemble::slot_schedule(
-        scene, members[0], ensemble::device_first_step_scale<Integrator>(scene, members[0]));
-    const ensemble::SweepControl control{[&](std::size_t done) { progress = done; }};
+    const ensemble::Member first = source.at(0);
+    const auto schedule =
+        ensemble::slot_schedule(scene, first, ensemble::device_first_step_scale<Integrator>(scene, first));
+    const ensemble::SweepControl control{[&](std::size_t done) { run.progress = done; }};
     ensemble::run_row_chunks(
-        scene, {&source, 0, members.size()}, schedule, 3, 2, control,
-        [&](ensemble::MemberResult&& r) { gpu.at(r.index) = std::move(r); }, device);
-    chunks = device.chunks;
+        scene, {&source, 0, source.count}, schedule, capacity, 2, control,
+        [&](ensemble::MemberResult&& r) {
+          run.delivered.at(r.index) += 1;
+          run.results.at(r.index) = std::move(r);
+        },
+        device);
+    run.chunks = device.chunks;
   });
-  CHECK(progress == members.size());
+  return run;
+}
+
+/// Random starts without disorder at N = 6: CP members, symmetry-limited, some of whose shadows fall into
+/// the strict-FM set.
+ensemble::Scene shadowed_scene() {
+  return io::parse_scene_text(
+      "[model]\nrows = 6\n[drive]\ng = [0.002]\n[sweep]\nA = [6.0, 8.1, 9.3]\n"
+      "[initial]\nkinds = [\"random\", \"AFM\"]\nreplicas = 3\n[numerics]\nrtol = 1e-7\natol = 1e-10\n",
+      "device-member-shadow-chunks");
+}
+
+TEST_CASE("the device's chunks run shadow runs between the plan's and give the CPU lanes' errors and flags",
+          "[device_member][shadow]") {
+  const auto scene = shadowed_scene();
+  const auto members = ensemble::plan_members(scene);
+  const auto cpu = ensemble::run_sweep(scene, members, 2, {}).results;
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const HostChunkRun gpu = run_host_chunks(scene, source, members.size(), 3);
+  CHECK(gpu.progress == members.size());
 
   std::size_t departed = 0, shadowed = 0;
   for (std::size_t i = 0; i < cpu.size(); ++i) {
     INFO("member " << i);
-    CHECK(testing::result_difference(cpu[i], gpu[i]) == "");  // the error, the shadow's D and the flags too
+    CHECK(int(gpu.delivered[i]) == 1);
+    CHECK(testing::result_difference(cpu[i], gpu.results[i]) == "");  // the error, the shadow's D, the flags
     departed += cpu[i].shadow_departed;
     shadowed += ensemble::needs_shadow(cpu[i]);
   }
   CHECK(departed > 0);  // the test covers a departed shadow
   // six plan chunks of 3 (4 periods each) and chunks of the shadows (2 averaged periods), the first
   // of them started before the plan's last
-  std::size_t plan = 0, shadows = 0, last_plan = 0, first_shadows = chunks.size();
-  for (std::size_t c = 0; c < chunks.size(); ++c) {
-    if (chunks[c].first == 4) plan += chunks[c].second, last_plan = c;
-    if (chunks[c].first == 2) shadows += chunks[c].second, first_shadows = std::min(first_shadows, c);
+  std::size_t plan = 0, shadows = 0, last_plan = 0, first_shadows = gpu.chunks.size();
+  for (std::size_t c = 0; c < gpu.chunks.size(); ++c) {
+    const auto [stops, count] = gpu.chunks[c];
+    if (stops == 4) plan += count, last_plan = c;
+    if (stops == 2) shadows += count, first_shadows = std::min(first_shadows, c);
   }
   CHECK(plan == members.size());
   CHECK(shadows == shadowed);
   CHECK(first_shadows < last_plan);
+}
+
+TEST_CASE("two devices claiming members from one counter run each member once, with the CPU lanes' bits",
+          "[device_member][claim]") {
+  // as two ranks of mpirun with a GPU each: every claim takes the counter's next member
+  const auto scene = shadowed_scene();
+  const auto members = ensemble::plan_members(scene);
+  const auto cpu = ensemble::run_sweep(scene, members, 2, {}).results;
+  std::atomic<std::size_t> counter = 0;
+  const ensemble::MemberSource shared{
+      members.size(), [&](std::size_t k) { return members[k]; },
+      [&](const ensemble::VariantRange& range) { return range.begin + counter++; }};
+  std::array<HostChunkRun, 2> ranks;
+  std::array<std::thread, 2> threads;
+  for (std::size_t r = 0; r < 2; ++r)
+    threads[r] = std::thread([&, r] { ranks[r] = run_host_chunks(scene, shared, members.size(), 2); });
+  for (auto& t : threads) t.join();
+
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    INFO("member " << i);
+    REQUIRE(int(ranks[0].delivered[i]) + int(ranks[1].delivered[i]) == 1);
+    CHECK(testing::result_difference(cpu[i], ranks[ranks[0].delivered[i] ? 0 : 1].results[i]) == "");
+  }
+  CHECK(ranks[0].progress + ranks[1].progress == members.size());
 }
 
 TEST_CASE("the device member driver with disorder: drawn and given per row", "[device_member][disorder]") {
