@@ -55,7 +55,7 @@ struct DeviceMember {
 
     ROTORSWEEP_HD Parts(const SlotSchedule& s, kernels::LaneArena<double>& arena)
         : settings(integrator_settings(s)),
-          model(s.rows, arena, s.quadratures),
+          model(slot_model<Model>(s, arena)),
           integrator(make_integrator(model, s, settings, arena)),
           state(s.rows, nq, arena),
           theta_before(arena.take(s.rows)),
@@ -124,16 +124,21 @@ struct DeviceMember {
     }
     ROTORSWEEP_HD double steps_accepted() const { return parts.state.steps_accepted; }
     ROTORSWEEP_HD double steps_rejected() const { return parts.state.steps_rejected; }
+    // the row profile, for a model that reports one (as RowProfileObserver on the CPU)
+    static constexpr bool profiles = kernels::ReportsRowProfile<Model>;
     ROTORSWEEP_HD void profile_start() {
-      parts.profile.start(parts.model, parts.profile_work, parts.state, 0);
+      if constexpr (profiles) parts.profile.start(parts.model, parts.profile_work, parts.state, 0);
     }
     ROTORSWEEP_HD void profile_before() {
-      parts.profile.before_step(parts.model, parts.profile_work, parts.state);
+      if constexpr (profiles) parts.profile.before_step(parts.model, parts.profile_work, parts.state);
     }
     ROTORSWEEP_HD void profile_after(bool accepted) {
-      parts.profile.after_step(parts.model, parts.profile_work, parts.state, accepted);
+      if constexpr (profiles)
+        parts.profile.after_step(parts.model, parts.profile_work, parts.state, accepted);
     }
-    ROTORSWEEP_HD void profile_take(double* out) { parts.profile.take_period(0, out); }
+    ROTORSWEEP_HD void profile_take(double* out) {
+      if constexpr (profiles) parts.profile.take_period(0, out);
+    }
   };
 
   ROTORSWEEP_HD static typename Integrator::Settings integrator_settings(const SlotSchedule& s) {

@@ -16,6 +16,7 @@
 #include "ensemble/rows/scene.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "kernels/lanes/host_device.hpp"
+#include "kernels/lanes/lane_arena.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -77,22 +78,33 @@ struct SlotViews {
   double* profiles = nullptr;  ///< [(k · profile_capacity + r) · 2 rows + j], r = period mod profile_capacity
 };
 
+/// The model of a chunk's members on one lane's arena: a row model carries the quadratures of the
+/// scene's observables; another model (SingleRotor) is made from its size alone.
+template <class Model>
+ROTORSWEEP_HD Model slot_model(const SlotSchedule& s, kernels::LaneArena<double>& arena) {
+  if constexpr (requires { Model(s.rows, arena, s.quadratures); })
+    return Model(s.rows, arena, s.quadratures);
+  else
+    return Model(s.rows, arena);
+}
+
 /// The parameters of chunk member k for Model (NearestNeighbourRows with its disorder, or
-/// CoupledRows with the chunk's table), as RowSetup gives them on the CPU.
+/// CoupledRows with the chunk's table), as RowSetup gives them on the CPU; a model without the
+/// strict-FM mark or disorder takes A and g alone.
 template <class Model>
 ROTORSWEEP_HD typename Model::Parameters slot_parameters(const SlotSchedule& s, const SlotViews& v,
                                                          std::size_t k) {
   typename Model::Parameters p{};
   p.A = v.A[k];
   p.g = v.g[k];
-  p.strict_fm = v.strict_fm[k] != 0;
+  if constexpr (requires { p.strict_fm; }) p.strict_fm = v.strict_fm[k] != 0;
   if constexpr (requires { p.range; }) {
     p.a = s.coupling_a;
     p.b = v.table_b;
     p.c = v.table_c;
     p.range = s.coupling_range;
     p.open = s.open;
-  } else {
+  } else if constexpr (requires { p.A_rows; }) {
     const std::size_t at = k * s.rows;
     p.A_rows = s.A_rows ? v.A_rows + at : nullptr;
     p.anisotropy_rows = s.anisotropy_rows ? v.anisotropy_rows + at : nullptr;

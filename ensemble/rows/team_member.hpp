@@ -58,7 +58,7 @@ struct TeamMember {
     TeamRowProfileIntegral<Team, Model, stochastic> profile;  ///< sized only where the schedule asks for it
 
     ROTORSWEEP_HD Parts(const SlotSchedule& s, std::size_t ranks, kernels::LaneArena<double>& arena)
-        : model(s.rows, arena, s.quadratures),
+        : model(slot_model<Model>(s, arena)),
           integrator(make_integrator(model, s, ranks, arena)),
           theta(arena.take(s.rows)),
           theta_before(arena.take(s.rows)),

@@ -1,17 +1,25 @@
 // The engine with a second model: one overdamped rotor in a rotating field (kernels/models/single_rotor.hpp,
-// docs/model.md §1) through the same lane scheduler as the row model, against its closed form.
+// docs/model.md §1) through the same lane scheduler as the row model, against its closed form, and
+// through the GPU's member driver and chunk loop on the host, against the lanes' bits
+// (docs/architecture.md "Worked example: adding a model").
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <tuple>
 #include <vector>
 
 #include "ensemble/engine/lane_scheduler.hpp"
+#include "ensemble/gpu/device_drivers.hpp"
+#include "ensemble/rows/device_member.hpp"
+#include "ensemble/rows/row_chunks.hpp"
 #include "ensemble/rows/row_problem.hpp"
 #include "kernels/models/single_rotor.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
 #include "kernels/steppers/stepper_list.hpp"
+#include "support/same_results.hpp"
+#include "support/slot_runs.hpp"
 
 using namespace rotorsweep;
 using ensemble::Channel;
@@ -29,11 +37,11 @@ double closed_form_theta(double A, double g, double psi0, double t) {
   return t + pi + 2 * std::atan(v - a);
 }
 
+/// How a member of the rotor enters a lane: its start is Member::start (θ0 = π + ψ0), A and g its own.
 template <class V>
 struct RotorSetup {
-  std::vector<double> psi0;                            ///< per member index
   std::tuple<> model_arguments() const { return {}; }  ///< the model needs none beyond its size
-  std::vector<double> initial_state(const ensemble::Member& m) const { return {pi + psi0[m.index]}; }
+  std::vector<double> initial_state(const ensemble::Member& m) const { return *m.start; }
   typename kernels::SingleRotor<V>::Parameters parameters(const ensemble::Member& m,
                                                           const std::vector<double>&) const {
     return {m.A, m.g};
@@ -41,13 +49,15 @@ struct RotorSetup {
 };
 
 template <class V>
+using RotorIntegrator =
+    kernels::AdaptiveIntegrator<kernels::SingleRotor<V>, kernels::RosenbrockStepper<kernels::SingleRotor<V>>>;
+
+/// The members on lanes of type V (LaneScheduler, as `rotorsweep run` runs the row models).
+template <class V>
 std::vector<ensemble::MemberResult> run(const ensemble::Scene& scene,
-                                        const std::vector<ensemble::Member>& members,
-                                        const std::vector<double>& psi0) {
-  using Model = kernels::SingleRotor<V>;
-  using Problem =
-      ensemble::RowProblem<Model, kernels::AdaptiveIntegrator<Model, kernels::RosenbrockStepper<Model>>, RotorSetup<V>>;
-  ensemble::LaneScheduler<Problem> scheduler(scene, members.front(), RotorSetup<V>{psi0});
+                                        const std::vector<ensemble::Member>& members) {
+  using Problem = ensemble::RowProblem<kernels::SingleRotor<V>, RotorIntegrator<V>, RotorSetup<V>>;
+  ensemble::LaneScheduler<Problem> scheduler(scene, members.front(), RotorSetup<V>{});
   std::vector<ensemble::MemberResult> results(members.size());
   std::size_t next = 0;
   scheduler.run(
@@ -56,6 +66,27 @@ std::vector<ensemble::MemberResult> run(const ensemble::Scene& scene,
         return members[next++];
       },
       [&](ensemble::MemberResult&& r) { results[r.index] = std::move(r); }, [] { return false; });
+  return results;
+}
+
+/// The members as the GPU runs them, on the host: DeviceMember on one double lane each, through
+/// run_row_chunks in chunks of 4 (two in flight).
+std::vector<ensemble::MemberResult> run_on_device_member(const ensemble::Scene& scene,
+                                                         const std::vector<ensemble::Member>& members) {
+  using Driver = ensemble::DeviceMember<kernels::SingleRotor<double>, RotorIntegrator<double>>;
+  testing::HostSlotDevice device{
+      [](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
+        std::vector<double> storage(Driver::storage_size(s));
+        Driver::run(s, v, k, storage.data(), storage.size());
+      }};
+  const auto schedule = ensemble::slot_schedule(
+      scene, members.front(),
+      ensemble::device_first_step_scale<RotorIntegrator<double>>(scene, members.front()));
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  std::vector<ensemble::MemberResult> results(members.size());
+  ensemble::run_row_chunks(
+      scene, {&source, 0, members.size()}, schedule, 4, 2, {},
+      [&](ensemble::MemberResult&& r) { results.at(r.index) = std::move(r); }, device);
   return results;
 }
 
@@ -82,13 +113,15 @@ TEST_CASE("a second model through the same scheduler: the single rotor's closed 
     member.A = A;
     member.g = g;
     member.kind = ensemble::InitialKind::exact;
+    member.start = std::make_shared<const std::vector<double>>(std::vector<double>{pi + psi0.back()});
     member.rows = 1;
     member.rtol = 1e-10;
     member.atol = 1e-12;
     members.push_back(member);
   }
-  const auto scalar = run<double>(scene, members, psi0);
-  const auto simd = run<kernels::simd_lane>(scene, members, psi0);
+  const auto scalar = run<double>(scene, members);
+  const auto simd = run<kernels::simd_lane>(scene, members);
+  const auto device = run_on_device_member(scene, members);
   for (std::size_t i = 0; i < members.size(); ++i) {
     const double A = members[i].A, start = psi0[i];
     INFO("member " << i << ": A/g = " << A / g << ", psi0 = " << start);
@@ -106,6 +139,8 @@ TEST_CASE("a second model through the same scheduler: the single rotor's closed 
     CHECK(simd[i].theta_final[0] == scalar[i].theta_final[0]);
     CHECK(simd[i].dissipation() == scalar[i].dissipation());
     CHECK(simd[i].steps_accepted == scalar[i].steps_accepted);
+    // and so does the GPU's driver, period by period
+    CHECK(testing::result_difference(scalar[i], device[i]) == "");
   }
   // locked state: R per period → 2π g
   CHECK(scalar.back().periods.back()[Channel::dissipation] == Approx(2 * pi * g).epsilon(1e-6));
