@@ -33,7 +33,7 @@ struct RegisterShape {
 };
 
 /// What a register kernel carries: R and ρ̄'s integral, the default observables' quadratures (a scene
-/// that asks for W, S, H or the moments runs on teams).
+/// that asks for W, S, H or the moments runs on teams or a member per thread).
 inline constexpr kernels::Integrals register_quadratures{true, false, false, true, false, false};
 
 /// The shapes this build compiled (CMake's ROTORSWEEP_GPU_REGISTER_SHAPES; none without CUDA).

@@ -44,7 +44,8 @@ struct StepperList {
   static constexpr std::array<double, size> swing_error_factors{Entries::swing_error_factor...};
 };
 
-// Adding a stepper: its tableau, and one entry here (the build makes a translation unit per entry).
+// Adding a stepper: its tableau, and one entry here (the build makes a translation unit per family, the
+// tableau its data).
 using steppers = StepperList<StepperEntry<rodas4_tableau, 0.25>, StepperEntry<ros2_tableau>,
                              StepperEntry<dormand_prince5_tableau>, StepperEntry<rodas4p2_tableau, 0.125>,
                              StepperEntry<rodas5p_tableau>>;
