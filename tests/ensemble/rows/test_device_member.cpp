@@ -159,37 +159,50 @@ TEST_CASE("the device member driver runs a shadow run as the CPU does: its toler
 
 /// The members of `source` through the GPU's chunk loop (run_row_chunks) on a host device that runs
 /// DeviceMember, in chunks of `capacity`: results by plan index (an index not run keeps its default),
-/// the last progress count, and each chunk's (stops, members).
+/// the last progress count, each chunk's (stops, members), whether it was stopped and what it started
+/// after; `stop_after`: the stop flag rises once that many members were delivered.
 struct HostChunkRun {
   std::vector<ensemble::MemberResult> results;
   std::vector<char> delivered;
   std::size_t progress = 0;
   std::vector<std::pair<int, std::size_t>> chunks;
+  bool interrupted = false;
+  std::size_t started_after_stop = 0;  ///< members of chunks started once it was stopped
 };
 HostChunkRun run_host_chunks(const ensemble::Scene& scene, const ensemble::MemberSource& source,
-                             std::size_t plan_size, std::size_t capacity) {
+                             std::size_t plan_size, std::size_t capacity,
+                             std::size_t stop_after = std::size_t(-1)) {
   HostChunkRun run;
   run.results.resize(plan_size);
   run.delivered.assign(plan_size, 0);
   ensemble::with_device_driver(scene, [&]<class Model, class Integrator>() {
     using Driver = ensemble::DeviceMember<Model, Integrator>;
+    std::atomic<bool> stop = false;
+    std::atomic<std::size_t> started_after_stop = 0;
     testing::HostSlotDevice device{
-        [](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
+        [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
+          if (stop) ++started_after_stop;
           std::vector<double> storage(Driver::storage_size(s));
           Driver::run(s, v, k, storage.data(), storage.size());
         }};
     const ensemble::Member first = source.at(0);
     const auto schedule =
         ensemble::slot_schedule(scene, first, ensemble::device_first_step_scale<Integrator>(scene, first));
-    const ensemble::SweepControl control{[&](std::size_t done) { run.progress = done; }};
-    ensemble::run_row_chunks(
-        scene, {&source, 0, source.count}, schedule, capacity, 2, control,
-        [&](ensemble::MemberResult&& r) {
-          run.delivered.at(r.index) += 1;
-          run.results.at(r.index) = std::move(r);
-        },
-        device);
+    const ensemble::SweepControl control{[&](std::size_t done) {
+                                           run.progress = done;
+                                           if (done >= stop_after) stop = true;
+                                         },
+                                         &stop};
+    run.interrupted = ensemble::run_row_chunks(
+                          scene, {&source, 0, source.count}, schedule, capacity, 2, control,
+                          [&](ensemble::MemberResult&& r) {
+                            run.delivered.at(r.index) += 1;
+                            run.results.at(r.index) = std::move(r);
+                          },
+                          device)
+                          .interrupted;
     run.chunks = device.chunks;
+    run.started_after_stop = started_after_stop;
   });
   return run;
 }
@@ -232,6 +245,25 @@ TEST_CASE("the device's chunks run shadow runs between the plan's and give the C
   CHECK(plan == members.size());
   CHECK(shadows == shadowed);
   CHECK(first_shadows < last_plan);
+}
+
+TEST_CASE("a stopped device loop starts no chunk more and hands over no primary without its shadow",
+          "[device_member][shadow]") {
+  const auto scene = shadowed_scene();
+  const auto members = ensemble::plan_members(scene);
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const HostChunkRun gpu = run_host_chunks(scene, source, members.size(), 3, 1);
+  CHECK(gpu.interrupted);
+  CHECK(gpu.started_after_stop == 0);  // the chunk in flight when the flag rose was finished, none started
+  std::size_t delivered = 0;
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    if (!gpu.delivered[i]) continue;
+    ++delivered;
+    INFO("member " << i);
+    if (ensemble::needs_shadow(gpu.results[i])) CHECK_FALSE(std::isnan(gpu.results[i].dissipation_shadow));
+  }
+  CHECK(delivered == gpu.progress);
+  CHECK(delivered < members.size());
 }
 
 TEST_CASE("two devices claiming members from one counter run each member once, with the CPU lanes' bits",
