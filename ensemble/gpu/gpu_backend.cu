@@ -19,7 +19,7 @@ template <kernels::StepperFamily family>
 SweepOutcome run_stepper_family(const Scene&, const VariantRange&, int, const SweepControl&,
                                 const ResultSink&);
 SweepOutcome run_langevin(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
-template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B>
+template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B, bool Q>
 SweepOutcome run_in_registers(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
 
 /// run_in_registers for `shape`, the i-th compiled shape or a later one.
@@ -30,7 +30,8 @@ SweepOutcome run_registers(const RegisterShape& shape, const Scene& scene, const
     constexpr RegisterShape compiled = compiled_register_shapes[i];
     if (shape == compiled)
       return run_in_registers<compiled.lanes, compiled.slots, compiled.disordered, compiled.stages,
-                              compiled.blocks>(scene, range, host_threads, control, sink);
+                              compiled.blocks, compiled.every_quadrature>(scene, range, host_threads, control,
+                                                                          sink);
     return run_registers<i + 1>(shape, scene, range, host_threads, control, sink);
   } else {
     throw std::logic_error("no register kernel of this shape was compiled");

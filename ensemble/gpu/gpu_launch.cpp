@@ -93,7 +93,6 @@ std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape
                                                    std::size_t rows, const GpuLaunch& launch) {
   const kernels::Integrals q = scene.observables.quadratures();
   if (launch.team || scene.thermal.on() || !scene.couplings.nearest_neighbour() || scene.row_profiles ||
-      (q | register_quadratures) != register_quadratures ||
       kernels::stepper_family(scene.stepper) != kernels::StepperFamily::rosenbrock)
     return std::nullopt;
   const bool disordered = scene.disorder.any();
@@ -102,10 +101,11 @@ std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape
   std::optional<RegisterShape> best;
   for (const RegisterShape& shape : shapes) {
     if (shape.disordered != disordered || !shape.holds(rows) || shape.stages < stages ||
+        (q | shape.carriable()) != shape.carriable() ||
         launch.threads_per_block > shape.max_threads_per_block())
       continue;
     const auto rank = [](const RegisterShape& s) {  // smaller is better
-      return std::tuple{s.capacity(), -std::ptrdiff_t(s.lanes), s.stages, -int(s.blocks)};
+      return std::tuple{s.capacity(), -std::ptrdiff_t(s.lanes), s.stages, s.every_quadrature, -int(s.blocks)};
     };
     if (!best || rank(shape) < rank(*best)) best = shape;
   }

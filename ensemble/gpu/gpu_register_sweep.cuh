@@ -15,7 +15,7 @@
 namespace rotorsweep::ensemble::gpu {
 
 /// Members of a chunk, one per L threads: the group's first thread claims the next member for all.
-template <std::size_t L, std::size_t R, bool PerRow, std::size_t S>
+template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, bool Q>
 __device__ __forceinline__ void take_members_in_registers(const SlotSchedule& schedule,
                                                           const SlotViews& slots, unsigned long long count,
                                                           unsigned long long* next) {
@@ -25,29 +25,30 @@ __device__ __forceinline__ void take_members_in_registers(const SlotSchedule& sc
     if (W::rank() == 0) k = atomicAdd(next, 1ull);
     k = __shfl_sync(W::group(), k, 0, int(L));
     if (k >= count) return;
-    RegisterMember<W, R, PerRow, S>::run(schedule, slots, std::size_t(k));
+    RegisterMember<W, R, PerRow, S, Q>::run(schedule, slots, std::size_t(k));
   }
 }
 
 /// The register kernel of a shape without an occupancy bound: ptxas takes the registers it wants.
-template <std::size_t L, std::size_t R, bool PerRow, std::size_t S>
+template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, bool Q>
 __global__ void sweep_in_registers(const __grid_constant__ SlotSchedule schedule, SlotViews slots,
                                    unsigned long long count, unsigned long long* next) {
-  take_members_in_registers<L, R, PerRow, S>(schedule, slots, count, next);
+  take_members_in_registers<L, R, PerRow, S, Q>(schedule, slots, count, next);
 }
 
 /// The same for a shape bounded to B blocks of 128 threads per multiprocessor (RegisterShape::blocks):
 /// at most 65 536 / (128 B) registers per thread, the rest spilled to local memory.
-template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B>
+template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B, bool Q>
 __global__ void __launch_bounds__(128 * B)
     sweep_in_registers_bounded(const __grid_constant__ SlotSchedule schedule, SlotViews slots,
                                unsigned long long count, unsigned long long* next) {
-  take_members_in_registers<L, R, PerRow, S>(schedule, slots, count, next);
+  take_members_in_registers<L, R, PerRow, S, Q>(schedule, slots, count, next);
 }
 
-/// The variant's members in registers on L lanes × R slots with S stage vectors, bounded to B blocks
-/// (a shape of compiled_register_shapes that choose_register_shape picked for the scene and launch).
-template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B>
+/// The variant's members in registers on L lanes × R slots with S stage vectors, bounded to B blocks,
+/// carrying every quadrature where Q (a shape of compiled_register_shapes that choose_register_shape
+/// picked for the scene and launch).
+template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B, bool Q>
 SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, int host_threads,
                               const SweepControl& control, const ResultSink& sink) {
   using Integrator =
@@ -56,17 +57,18 @@ SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, int
   const Member variant = range.source->at(range.begin);
   const SlotSchedule schedule =
       slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
-  using Driver = RegisterMember<kernels::DeviceWarp<L>, R, PerRow, S>;
-  if (!Driver::fits(schedule, register_quadratures) || std::size_t(schedule.methods.rosenbrock.stages) > S)
+  using Driver = RegisterMember<kernels::DeviceWarp<L>, R, PerRow, S, Q>;
+  constexpr RegisterShape shape{L, R, PerRow, S, B, Q};
+  if (!Driver::fits(schedule, shape.carriable()) || std::size_t(schedule.methods.rosenbrock.stages) > S)
     throw std::logic_error("a register kernel cannot run this schedule");
   const auto kernel = [] {
     if constexpr (B > 0)
-      return sweep_in_registers_bounded<L, R, PerRow, S, B>;
+      return sweep_in_registers_bounded<L, R, PerRow, S, B, Q>;
     else
-      return sweep_in_registers<L, R, PerRow, S>;
+      return sweep_in_registers<L, R, PerRow, S, Q>;
   }();
   const GpuLaunch launch = gpu_launch();
-  if (launch.threads_per_block > RegisterShape{L, R, PerRow, S, B}.max_threads_per_block())
+  if (launch.threads_per_block > shape.max_threads_per_block())
     throw std::logic_error("a register kernel cannot run blocks of this size");
   ChunkGrid grid{resident_blocks(kernel, launch, 0), launch.threads_per_block, 0, 0};
   grid.resident = std::size_t(grid.blocks) * std::size_t(grid.threads_per_block) / L;

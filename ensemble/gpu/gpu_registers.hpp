@@ -13,18 +13,27 @@
 
 namespace rotorsweep::ensemble {
 
+/// What a register kernel carries: R and ρ̄'s integral, the default observables' quadratures; a shape
+/// with every_quadrature carries any of them (W, S, H, the moments too), in more registers.
+inline constexpr kernels::Integrals register_quadratures{true, false, false, true, false, false};
+
 /// A register kernel's shape: a member on `lanes` threads of a warp with `slots` rows apiece, its
 /// rows uniform or disordered (each slot keeps three disorder factors), the stage vectors it holds
 /// (tableaus of at most `stages` stages: 8 holds every Rosenbrock tableau, 6 rodas4 and rodas4p2 in
-/// fewer registers), and the occupancy it is compiled for: `blocks` > 0 makes ptxas keep blocks × 128
-/// threads resident per multiprocessor (registers capped at 65 536 / (128 blocks), the rest spilled;
-/// blocks of at most that many threads), 0 leaves the registers to ptxas.
+/// fewer registers), the occupancy it is compiled for (`blocks` > 0 makes ptxas keep blocks × 128
+/// threads resident per multiprocessor: registers capped at 65 536 / (128 blocks), the rest spilled;
+/// blocks of at most that many threads; 0 leaves the registers to ptxas), and the quadratures it can
+/// carry (register_quadratures, or with `every_quadrature` all of them).
 struct RegisterShape {
   std::size_t lanes = 0, slots = 0;
   bool disordered = false;
   std::size_t stages = kernels::RosenbrockTableau::max_stages;
   unsigned blocks = 0;
+  bool every_quadrature = false;
   constexpr std::size_t capacity() const { return lanes * slots; }
+  constexpr kernels::Integrals carriable() const {
+    return every_quadrature ? kernels::all_integrals : register_quadratures;
+  }
   /// Whether N rows fit: at least one per lane, at most `slots` (kernels::WarpRowSlots::fits).
   constexpr bool holds(std::size_t rows) const { return rows >= lanes && rows <= capacity(); }
   /// The most threads per block the kernel launches with (1024, a CUDA block's limit, unbounded).
@@ -32,19 +41,15 @@ struct RegisterShape {
   friend constexpr bool operator==(const RegisterShape&, const RegisterShape&) = default;
 };
 
-/// What a register kernel carries: R and ρ̄'s integral, the default observables' quadratures (a scene
-/// that asks for W, S, H or the moments runs on teams or a member per thread).
-inline constexpr kernels::Integrals register_quadratures{true, false, false, true, false, false};
-
 /// The shapes this build compiled (CMake's ROTORSWEEP_GPU_REGISTER_SHAPES; none without CUDA).
 std::span<const RegisterShape> gpu_register_shapes();
 
 /// The shape among `shapes` that runs members of N = `rows` of the scene in registers, or none:
-/// T = 0, nearest neighbours, a linearly implicit stepper, no row profiles, the quadratures of
-/// register_quadratures at most, no ROTORSWEEP_GPU_TEAM (which asks for a thread or a team), and a
-/// shape that holds N, disordered where the scene has disorder, with stage vectors for the scene's
-/// stepper, and whose occupancy bound admits the launch's threads per block. Of those that fit, the
-/// fewest slots in all, then the most lanes, then the fewest stages, then the most resident blocks.
+/// T = 0, nearest neighbours, a linearly implicit stepper, no row profiles, no ROTORSWEEP_GPU_TEAM (which
+/// asks for a thread or a team), and a shape that holds N, disordered where the scene has disorder, with
+/// stage vectors for the scene's stepper, that can carry the scene's quadratures and whose occupancy
+/// bound admits the launch's threads per block. Of those that fit, the fewest slots in all, then the
+/// most lanes, then the fewest stages, then the fewest quadratures, then the most resident blocks.
 std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape> shapes, const Scene& scene,
                                                    std::size_t rows, const GpuLaunch& launch);
 

@@ -14,16 +14,18 @@
 
 namespace rotorsweep::ensemble {
 
-/// The rows of a member on the lanes of W with R slots apiece, disordered where PerRow.
-template <class W, std::size_t R, bool PerRow>
-using RegisterRows = kernels::WarpRows<W, R, PerRow, register_quadratures>;
+/// The rows of a member on the lanes of W with R slots apiece, disordered where PerRow, carrying
+/// register_quadratures or, with Q, every quadrature (RegisterShape::carriable).
+template <class W, std::size_t R, bool PerRow, bool Q = false>
+using RegisterRows = kernels::WarpRows<W, R, PerRow, RegisterShape{.every_quadrature = Q}.carriable()>;
 
 /// A member of RegisterRows from its start to its retirement, any Rosenbrock tableau of at most S
 /// stages.
-template <class W, std::size_t R, bool PerRow, std::size_t S = kernels::RosenbrockTableau::max_stages>
+template <class W, std::size_t R, bool PerRow, std::size_t S = kernels::RosenbrockTableau::max_stages,
+          bool Q = false>
 using RegisterMember =
-    WarpMember<RegisterRows<W, R, PerRow>,
-               kernels::WarpIntegrator<RegisterRows<W, R, PerRow>,
-                                       kernels::WarpRosenbrock<RegisterRows<W, R, PerRow>, S>>>;
+    WarpMember<RegisterRows<W, R, PerRow, Q>,
+               kernels::WarpIntegrator<RegisterRows<W, R, PerRow, Q>,
+                                       kernels::WarpRosenbrock<RegisterRows<W, R, PerRow, Q>, S>>>;
 
 }  // namespace rotorsweep::ensemble

@@ -9,7 +9,7 @@
 # bench-results/gpu)]. Writes summary.txt (one line per step: exit code, seconds) and log.txt (every
 # step's output, as it comes) to OUT, result files to a scratch folder it removes; prints each step's
 # line as the step ends, so a session stopped early still shows what it measured. The limits add up
-# to 360 s (a step that ignores its stop is killed 10 s later); on an H100 the register test took 18 s
+# to 370 s (a step that ignores its stop is killed 10 s later); on an H100 the register test took 18 s
 # for twelve shapes (its host emulation then on one core), the mappings 25 s, the curve 11 s and the
 # scan 22 s (docs/performance.md). test_gpu's hidden "[long]" cases (the examples against the CPU)
 # are left to a session with time to spare: `test_gpu -d yes "[long]"`.
@@ -44,7 +44,7 @@ fi
 step gpu_registers 30 "$bin/test_gpu" -d yes "[registers]"
 step gpu_mappings 40 "$bin/test_gpu" -d yes "[mappings]"
 step gpu_tests 90 "$bin/test_gpu" -d yes "~[registers]~[mappings]~[.]"
-step bench_2_20 40 "$bin/rotorsweep" bench gpu --rows 2,20 --teams 1 --no-curve
+step bench_2_20 50 "$bin/rotorsweep" bench gpu --rows 2,20 --teams 1 --no-curve
 step bench_128_1024 50 "$bin/rotorsweep" bench gpu --rows 128,1024 --teams 1,32 --scratch shared --no-curve \
   --scale 0.2
 step bench_host 20 "$bin/rotorsweep" bench host --rows 2,20 --scratch "$scratch"

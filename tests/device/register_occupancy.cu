@@ -5,10 +5,10 @@
 
 namespace rotorsweep::ensemble::gpu {
 
-template __global__ void sweep_in_registers<8, 3, false, 6>(const __grid_constant__ SlotSchedule, SlotViews,
-                                                            unsigned long long, unsigned long long*);
-template __global__ void sweep_in_registers_bounded<8, 3, false, 6, 3>(const __grid_constant__ SlotSchedule,
-                                                                       SlotViews, unsigned long long,
-                                                                       unsigned long long*);
+template __global__ void sweep_in_registers<8, 3, false, 6, false>(const __grid_constant__ SlotSchedule,
+                                                                   SlotViews, unsigned long long,
+                                                                   unsigned long long*);
+template __global__ void sweep_in_registers_bounded<8, 3, false, 6, 3, false>(
+    const __grid_constant__ SlotSchedule, SlotViews, unsigned long long, unsigned long long*);
 
 }  // namespace rotorsweep::ensemble::gpu

@@ -40,8 +40,8 @@ std::string stepper_for(const ensemble::RegisterShape& shape) {
 }
 
 /// AFM, CP and FM members from random and noisy AFM starts, one period each side, rtol 1e-8, the
-/// shape's stepper; no shadow runs (the host's run through one chunk has none; they run the same
-/// kernel again).
+/// shape's stepper, every quadrature where the shape carries them; no shadow runs (the host's run
+/// through one chunk has none; they run the same kernel again).
 std::string scene_text(const ensemble::RegisterShape& shape) {
   return "[model]\nrows = " + std::to_string(rows_for(shape)) +
          "\n[drive]\ng = [0.01]\n[sweep]\nA = {from = 0.5, to = 14, count = 8}\n[initial]\nkinds = "
@@ -49,7 +49,8 @@ std::string scene_text(const ensemble::RegisterShape& shape) {
          "= 1\n[numerics]\nrtol = 1e-8\natol = 1e-11\nglobal_error = \"local\"\ndevice = \"gpu\"\nstepper = "
          "\"" +
          stepper_for(shape) + "\"\n" +
-         (shape.disordered ? "[disorder]\nA = 1e-3\nanisotropy = 1e-3\ncoupling = 1e-3\n" : "");
+         (shape.disordered ? "[disorder]\nA = 1e-3\nanisotropy = 1e-3\ncoupling = 1e-3\n" : "") +
+         (shape.every_quadrature ? "[observables]\nestimators = true\nenergy = true\nmoments = true\n" : "");
 }
 
 template <std::size_t i = 0>
@@ -59,12 +60,13 @@ void check_compiled_shapes() {
     const auto scene = io::parse_scene_text(scene_text(shape), "registers");
     const std::size_t rows = rows_for(shape);
     INFO(shape.lanes << " × " << shape.slots << (shape.disordered ? " disordered" : "") << ", "
-                     << shape.stages << " stages, " << shape.blocks << " blocks bound, N = " << rows);
+                     << shape.stages << " stages, " << shape.blocks << " blocks bound"
+                     << (shape.every_quadrature ? ", every quadrature" : "") << ", N = " << rows);
     REQUIRE(ensemble::choose_register_shape(ensemble::compiled_register_shapes, scene, rows, {}) == shape);
     const auto members = ensemble::plan_members(scene);
     const auto gpu = ensemble::run_sweep(scene, members, ensemble::thread_count(0), {}).results;
-    using Driver =
-        ensemble::RegisterMember<kernels::HostWarp<shape.lanes>, shape.slots, shape.disordered, shape.stages>;
+    using Driver = ensemble::RegisterMember<kernels::HostWarp<shape.lanes>, shape.slots, shape.disordered,
+                                            shape.stages, shape.every_quadrature>;
     using Integrator = ensemble::DeviceAdaptiveIntegrator<kernels::StepperFamily::rosenbrock,
                                                           kernels::NearestNeighbourRows<double>>;
     const auto host = testing::through_slots<Integrator>(

@@ -196,6 +196,25 @@ TEST_CASE("a register kernel runs the T = 0 nearest-neighbour scenes whose N a c
   CHECK_FALSE(ensemble::choose_register_shape(shapes, uniform, 20, team));
 }
 
+TEST_CASE("a register shape with every quadrature runs the scenes asking for W, S, H or the moments",
+          "[gpu_launch]") {
+  using ensemble::RegisterShape;
+  const std::vector<RegisterShape> shapes{{8, 3, false, 6, 3, true}, {8, 3, false, 6, 3, false}};
+  const auto chosen = [&](const char* observables) {
+    return ensemble::choose_register_shape(shapes, scene_of("rows = 20", observables), 20, {});
+  };
+  // R and ρ̄ alone: the shape that carries no more (fewer registers)
+  CHECK(chosen("") == RegisterShape{8, 3, false, 6, 3, false});
+  for (const char* asks : {"[observables]\nenergy = true\n", "[observables]\nestimators = true\n",
+                           "[observables]\nmoments = true\n"}) {
+    INFO(asks);
+    CHECK(chosen(asks) == RegisterShape{8, 3, false, 6, 3, true});
+    CHECK_FALSE(ensemble::choose_register_shape(std::vector<RegisterShape>{{8, 3, false, 6, 3, false}},
+                                                scene_of("rows = 20", asks), 20, {}));
+  }
+  CHECK(RegisterShape{.every_quadrature = true}.carriable() == kernels::all_integrals);
+}
+
 TEST_CASE("a register shape with six stage vectors runs the six-stage tableaus, eight the rest",
           "[gpu_launch]") {
   using ensemble::RegisterShape;

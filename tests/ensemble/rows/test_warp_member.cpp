@@ -168,4 +168,17 @@ TEST_CASE("the emulation counts what a member in registers asks of its threads",
       double(count.arithmetic) / attempts, double(count.division) / attempts,
       double(count.square_root) / attempts, double(count.other) / attempts, double(count.shuffle) / attempts,
       attempts);
+  // every quadrature (what a shape with every_quadrature carries): more arithmetic per attempt
+  const auto every = io::parse_scene_text(
+      uniform + "[observables]\nestimators = true\nenergy = true\nmoments = true\n", "warp-counts-every");
+  double every_attempts = 0.0;
+  const auto all = counted<8, 3, false>(every, every_attempts);
+  REQUIRE(every_attempts > 0.0);
+  CHECK(double(all.arithmetic) / every_attempts > double(count.arithmetic) / attempts);
+  std::printf(
+      "the same with every quadrature: per attempt and thread %.0f FP64 +-*, %.1f /, %.1f sqrt, %.0f other, "
+      "%.0f shuffles (%.0f attempts)\n",
+      double(all.arithmetic) / every_attempts, double(all.division) / every_attempts,
+      double(all.square_root) / every_attempts, double(all.other) / every_attempts,
+      double(all.shuffle) / every_attempts, every_attempts);
 }
