@@ -3,7 +3,6 @@
 
 #include <atomic>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -29,6 +28,7 @@
 #include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
 #include "run_support.hpp"
+#include "streamed_run.hpp"
 #include "usable_memory.hpp"
 
 namespace rotorsweep::apps {
@@ -217,45 +217,6 @@ std::string resume_command(const std::string& command, const SceneCommandOptions
   return line + " --resume";
 }
 
-bool partial_lost(const io::OutputTarget& target, std::size_t done) {
-  if (target.temporary_is_ours()) return false;
-  std::fprintf(stderr,
-               "error: %s is no longer the file this run wrote (another process replaced or removed it): the "
-               "%zu members done are lost\n",
-               target.temporary().c_str(), done);
-  return true;
-}
-
-int keep_failed_run(io::OutputTarget& target, const std::string& what, std::size_t done, std::size_t rows,
-                    const std::string& resume) {
-  target.keep();  // the rows marked done are on disk: keep them for --resume, and say so
-  std::fprintf(stderr, "error: %s\n", what.c_str());
-  if (partial_lost(target, done)) return 1;
-  std::fprintf(stderr,
-               "%zu of %zu members are kept in %s (not a result: complete = FALSE); once the cause is fixed, "
-               "resume with: %s\n",
-               done, rows, target.temporary().c_str(), resume.c_str());
-  return 1;
-}
-
-int keep_stopped_run(io::OutputTarget& target, const std::function<void()>& keep_partial, int signal_number,
-                     std::size_t done, std::size_t rows, const std::string& resume) {
-  const char* name = signal_number == SIGTERM ? "SIGTERM" : "SIGINT";
-  try {
-    keep_partial();
-  } catch (const std::exception& e) {
-    std::cerr << "\nstopped by " << name << "; closing " << target.temporary() << " failed: " << e.what()
-              << "\n";
-  }
-  target.keep();
-  if (partial_lost(target, done)) return 128 + (signal_number ? signal_number : SIGINT);
-  std::fprintf(stderr,
-               "\nstopped by %s: %zu of %zu members done, kept in %s (not a result: complete = FALSE).\n"
-               "resume with: %s\n",
-               name, done, rows, target.temporary().c_str(), resume.c_str());
-  return 128 + (signal_number ? signal_number : SIGINT);
-}
-
 int run_sweep_command(const RunOptions& options) {
   ensemble::Scene scene;
   try {
@@ -315,26 +276,13 @@ int run_sweep_command(const RunOptions& options) {
 
   // the members to run, as plan indices: all of the plan or the shard, less those done before
   const ensemble::MemberPlan plan(scene);
-  const auto plan_index_of_row = [&](std::size_t row) {
-    return shard ? shard->index - 1 + row * shard->count : row;
-  };
   std::optional<io::ResultFile> file;
   std::vector<std::size_t> remaining;  // resume only: plan indices of the rows not done
   std::size_t done_before = 0;
   double earlier_seconds = 0;
   if (options.resume) {
     try {
-      const auto done =
-          check_partial(partial, scene.text, shard, earlier_seconds,
-                        [&](const io::Hdf5Location& f) { io::ResultFile::check_file(f, scene); });
-      file.emplace(io::ResultFile::reopen(partial, scene));
-      target->claim_temporary();
-      file->add_writer_isa(ensemble::instruction_set().name);
-      for (std::size_t row = 0; row < done.size(); ++row)
-        if (done[row])
-          ++done_before;
-        else
-          remaining.push_back(plan_index_of_row(row));
+      remaining = reopen_partial(file, *target, scene, shard, done_before, earlier_seconds);
     } catch (const std::exception& e) {
       std::cerr << "error: " << e.what() << "\n";
       target->keep();  // the file is not touched
@@ -356,7 +304,7 @@ int run_sweep_command(const RunOptions& options) {
   const std::size_t rows = file->rows();
   const std::size_t to_run = options.resume ? remaining.size() : rows;
   const ensemble::MemberSource source{
-      to_run, [&](std::size_t k) { return plan[options.resume ? remaining[k] : plan_index_of_row(k)]; }, {}};
+      to_run, [&](std::size_t k) { return plan[options.resume ? remaining[k] : file->plan_index_of(k)]; }, {}};
 
   print_header(options, scene, rows, threads, shard);
   if (options.resume)
@@ -365,28 +313,17 @@ int run_sweep_command(const RunOptions& options) {
   ProgressLine progress(to_run, !options.quiet);
   std::atomic<std::size_t> periods{0};
   ensemble::SweepOutcome outcome;
-  int signal_number = 0;
-  std::string write_error, sweep_error;
+  StreamedSweep streamed;
   {
     io::MemberStream stream(*file, plan, {options.flush_seconds, options.flush_members},
                             [&signals] { signals.stop(); });
-    try {
+    streamed = stream_sweep(stream, signals, [&] {
       outcome = ensemble::run_members(
           scene, source, threads,
           {[&](std::size_t count) { progress.update(count, periods.load(std::memory_order_relaxed)); },
            signals.flag(), &periods},
           [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); });
-    } catch (const std::bad_alloc&) {
-      sweep_error = "out of memory (an allocation in a worker thread failed)";
-    } catch (const std::exception& e) {
-      sweep_error = e.what();
-    }
-    signal_number = signals.signal();
-    try {
-      stream.flush();
-    } catch (const std::exception& e) {
-      write_error = e.what();
-    }
+    });
     done_before += stream.written();
   }
   progress.finish();
@@ -394,33 +331,23 @@ int run_sweep_command(const RunOptions& options) {
   stats.wall_seconds += earlier_seconds;
 
   const std::string resume = resume_command("run", options, options.shard);
-  if (!write_error.empty() || !sweep_error.empty())
-    return keep_failed_run(*target,
-                           write_error.empty() ? "the sweep failed: " + sweep_error
-                                               : "writing " + partial + " failed: " + write_error,
-                           done_before, rows, resume);
-  if (outcome.interrupted)
-    return keep_stopped_run(
-        *target,
-        [&] {
-          file->keep_partial(done_before, stats);
-          file->close();
-        },
-        signal_number, done_before, rows, resume);
-
-  try {
-    file->finish(stats);
-    file->close();
-    report_outcome(io::Hdf5Location::open_file(partial), scene);
-    target->commit();
-  } catch (const std::exception& e) {
-    target->keep();
-    std::cerr << "error: finishing " << path << " failed: " << e.what() << "\n";
-    if (!partial_lost(*target, rows))
-      std::cerr << "the members are kept in " << partial << " (complete = FALSE); resume with: " << resume
-                << "\n";
+  if (const auto code = end_unfinished_run(
+          *target, streamed, outcome.interrupted, "the sweep",
+          [&] {
+            file->keep_partial(done_before, stats);
+            file->close();
+          },
+          done_before, rows, resume))
+    return *code;
+  if (!finish_streamed_run(
+          *target,
+          [&] {
+            file->finish(stats);
+            file->close();
+            report_outcome(io::Hdf5Location::open_file(partial), scene);
+          },
+          path, rows, resume))
     return 1;
-  }
   std::fprintf(stderr, "wrote %s%s: %zu members in %s (%s, lane occupancy %.1f %%)\n", path.c_str(),
                target->replaced() ? " (replacing the previous file)" : "", rows,
                format_duration(stats.wall_seconds).c_str(),

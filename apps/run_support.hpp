@@ -30,17 +30,6 @@ std::optional<io::ShardLabel> parse_shard(const std::string& text, std::size_t p
 std::vector<char> check_partial(const std::string& partial, const std::string& scene_text,
                                 const std::optional<io::ShardLabel>& shard, double& earlier_seconds,
                                 const std::function<void(const io::Hdf5Location&)>& check_file);
-/// Says so and returns true when the partial file is no longer the one this run wrote (another process
-/// replaced or removed it), so that its `done` members are lost.
-bool partial_lost(const io::OutputTarget& target, std::size_t done);
-/// A streamed run that failed (`what`): its rows marked done stay in the partial file for --resume;
-/// says so and how to resume, and returns exit code 1.
-int keep_failed_run(io::OutputTarget& target, const std::string& what, std::size_t done, std::size_t rows,
-                    const std::string& resume);
-/// A streamed run stopped by SIGINT or SIGTERM: keep_partial() writes its counts and closes the file,
-/// which stays for --resume; says what is kept and how to resume, and returns 128 + the signal.
-int keep_stopped_run(io::OutputTarget& target, const std::function<void()>& keep_partial, int signal_number,
-                     std::size_t done, std::size_t rows, const std::string& resume);
 /// Checks `path` and takes it (OutputTarget with OUT.h5.partial), refusing a partial file of an
 /// earlier run unless `resume` or --force; says why and returns false when the command must exit 2.
 bool open_resumable_target(const SceneCommandOptions& options, bool resume, const std::string& path,

@@ -26,6 +26,7 @@
 #include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
 #include "run_support.hpp"
+#include "streamed_run.hpp"
 #include "usable_memory.hpp"
 
 namespace rotorsweep::apps {
@@ -174,17 +175,7 @@ int run_slider(const SliderOptions& options) {
   double earlier_seconds = 0;
   try {
     if (options.resume) {
-      const auto done =
-          check_partial(partial, scene.text, shard, earlier_seconds,
-                        [&](const io::Hdf5Location& f) { io::SliderResultFile::check_file(f, scene); });
-      file.emplace(io::SliderResultFile::reopen(partial, scene));
-      target->claim_temporary();
-      file->add_writer_isa(ensemble::instruction_set().name);
-      for (std::size_t row = 0; row < done.size(); ++row)
-        if (done[row])
-          ++done_before;
-        else
-          to_run.push_back(file->plan_index_of(row));
+      to_run = reopen_partial(file, *target, scene, shard, done_before, earlier_seconds);
     } else {
       file.emplace(partial, scene,
                    io::Provenance{options.scene, version, revision, ensemble::slider_device_label(scene),
@@ -206,12 +197,11 @@ int run_slider(const SliderOptions& options) {
 
   ProgressLine progress(to_run.size(), !options.quiet);
   bool stopped = false;
-  std::string write_error, sweep_error;
-  int signal_number = 0;
+  StreamedSweep streamed;
   const auto start = std::chrono::steady_clock::now();
   {
     io::SliderMemberStream stream(*file, [&signals] { signals.stop(); });
-    try {
+    streamed = stream_sweep(stream, signals, [&] {
       stopped = ensemble::run_slider_members(
           scene, to_run,
           {threads,
@@ -219,17 +209,7 @@ int run_slider(const SliderOptions& options) {
            [&] { return signals.flag()->load(); },
            {}},
           [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
-    } catch (const std::bad_alloc&) {
-      sweep_error = "out of memory (an allocation in a worker thread failed)";
-    } catch (const std::exception& e) {
-      sweep_error = e.what();
-    }
-    signal_number = signals.signal();
-    try {
-      stream.flush();
-    } catch (const std::exception& e) {
-      write_error = e.what();
-    }
+    });
     done_before += stream.written();
   }
   progress.finish();
@@ -237,33 +217,24 @@ int run_slider(const SliderOptions& options) {
       earlier_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string resume = resume_command("slider", options, options.shard);
 
-  if (!write_error.empty() || !sweep_error.empty())
-    return keep_failed_run(*target,
-                           write_error.empty() ? "the scan failed: " + sweep_error
-                                               : "writing " + partial + " failed: " + write_error,
-                           done_before, rows, resume);
-  if (stopped)
-    return keep_stopped_run(
-        *target,
-        [&] {
-          file->keep_partial(done_before, seconds, threads);
-          file->close();
-        },
-        signal_number, done_before, rows, resume);
+  if (const auto code = end_unfinished_run(
+          *target, streamed, stopped, "the scan",
+          [&] {
+            file->keep_partial(done_before, seconds, threads);
+            file->close();
+          },
+          done_before, rows, resume))
+    return *code;
   std::string steps;
-  try {
-    file->finish(seconds, threads);
-    file->close();
-    report_slider_outcome(io::Hdf5Location::open_file(partial), steps);
-    target->commit();
-  } catch (const std::exception& e) {
-    target->keep();
-    std::cerr << "error: finishing " << path << " failed: " << e.what() << "\n";
-    if (!partial_lost(*target, rows))
-      std::cerr << "the members are kept in " << partial << " (complete = FALSE); resume with: " << resume
-                << "\n";
+  if (!finish_streamed_run(
+          *target,
+          [&] {
+            file->finish(seconds, threads);
+            file->close();
+            report_slider_outcome(io::Hdf5Location::open_file(partial), steps);
+          },
+          path, rows, resume))
     return 1;
-  }
   std::fprintf(stderr, "wrote %s%s: %zu members in %s (%s)\n", path.c_str(),
                target->replaced() ? " (replacing the previous file)" : "", rows,
                format_duration(seconds).c_str(), steps.c_str());
