@@ -91,13 +91,13 @@ HostSteps time_host_steps(int rows, std::size_t members, int threads, int repeat
                           const std::filesystem::path& path) {
   const auto scene = io::parse_scene_text(curve_scene(rows), "bench host");
   const ensemble::MemberPlan plan(scene);
-  const ensemble::MemberSource source{scene.member_count(), [&](std::size_t k) { return plan[k]; }, {}};
-  const ensemble::VariantRange range{&source, 0, source.count};
   ensemble::SlotChunk chunk(ensemble::slot_schedule(scene, plan[0], 1.0), members);
   std::vector<double> fill, summaries, writes, ordered, scattered;
   for (int repeat = 0; repeat < repeats; ++repeat) {
     auto start = std::chrono::steady_clock::now();
-    chunk.fill(scene, range, 0, members);
+    std::vector<ensemble::Member> chunk_members;  // decoded from the plan, as the GPU's loop does
+    for (std::size_t k = 0; k < members; ++k) chunk_members.push_back(plan[k]);
+    chunk.fill(scene, chunk_members);
     fill.push_back(seconds_since(start));
     leave_finished_members(chunk);
 

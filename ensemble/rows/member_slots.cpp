@@ -91,11 +91,11 @@ SlotChunk::SlotChunk(const SlotSchedule& schedule, std::size_t capacity)
       end_states_(capacity * schedule.end_capacity * schedule.rows),
       profiles_(capacity * schedule.profile_capacity * 2 * schedule.rows) {}
 
-void SlotChunk::fill(const Scene& scene, const VariantRange& range, std::size_t first, std::size_t count) {
+void SlotChunk::fill(const Scene& scene, std::span<const Member> members) {
   const std::size_t n = schedule_.rows;
-  count_ = count;
-  for (std::size_t k = 0; k < count; ++k) {
-    const Member& member = members_[k] = range.source->at(first + k);
+  count_ = members.size();
+  for (std::size_t k = 0; k < count_; ++k) {
+    const Member& member = members_[k] = members[k];
     const std::vector<double> y0 = member_initial_angles(scene, member);
     A_[k] = member.A;
     g_[k] = member.g;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "ensemble/engine/member_progress.hpp"
@@ -141,12 +142,11 @@ class SlotChunk {
  public:
   SlotChunk(const SlotSchedule& schedule, std::size_t capacity);
 
-  /// Fills the inputs of members [first, first + count) of `range` (count ≤ capacity).
-  void fill(const Scene& scene, const VariantRange& range, std::size_t first, std::size_t count);
+  /// Fills the inputs of `members` (at most capacity, all of one variant).
+  void fill(const Scene& scene, std::span<const Member> members);
   /// The schedule the next members run (another of the variant's: a shadow run's, shadow_slot_schedule).
   void set_schedule(const SlotSchedule& schedule);
-  /// Chunk member k, and its result read from the outputs.
-  const Member& member(std::size_t k) const { return members_[k]; }
+  /// The result of chunk member k, read from the outputs.
   MemberResult result(const Scene& scene, std::size_t k) const;
   /// Hands every member and its result to sink(member, result) (on `threads` host threads); returns
   /// their step attempts.

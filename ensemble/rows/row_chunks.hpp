@@ -58,7 +58,7 @@ SweepOutcome run_row_chunks(const Scene& scene, const VariantRange& range, const
   RowReruns reruns(scene, schedule.stochastic, schedule.rtol);
   std::mutex reruns_lock;                          // deliver hands results over on several threads
   std::array<std::optional<SlotChunk>, 2> chunks;  // a slot's chunk made at its first start
-  std::vector<Member> members;                     // the next chunk's, as its source
+  std::vector<Member> members;                     // the next chunk's
   std::size_t next = range.begin;
   bool plan_left = true;
   std::atomic<std::size_t> delivered = 0;
@@ -82,9 +82,8 @@ SweepOutcome run_row_chunks(const Scene& scene, const VariantRange& range, const
         }
         if (!chunks[slot]) chunks[slot].emplace(schedule, capacity);
         SlotChunk& chunk = *chunks[slot];
-        const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
         chunk.set_schedule(shadows ? shadow_schedule : schedule);
-        chunk.fill(scene, {&source, 0, members.size()}, 0, members.size());
+        chunk.fill(scene, members);
         device.start(chunk, slot);
         stats.fill_seconds += seconds_since(fill_start);
         return true;

@@ -28,11 +28,10 @@ std::vector<ensemble::MemberResult> through_slots(const ensemble::Scene& scene, 
   const ensemble::MemberPlan plan(scene);
   std::vector<ensemble::Member> members;
   for (std::size_t i = 0; i < plan.size(); ++i) members.push_back(plan[i]);
-  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
   const auto schedule = ensemble::slot_schedule(
       scene, members.front(), ensemble::device_first_step_scale<Integrator>(scene, members.front()));
   ensemble::SlotChunk chunk(schedule, members.size());
-  chunk.fill(scene, {&source, 0, members.size()}, 0, members.size());
+  chunk.fill(scene, members);
   const ensemble::SlotViews views = chunk.views();
   if (parallel)
     for_each_member_in_parallel(members.size(), [&](std::size_t k) { run(schedule, views, k); });

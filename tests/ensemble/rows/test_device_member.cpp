@@ -38,8 +38,10 @@ std::vector<ensemble::MemberResult> run_through_slots(const ensemble::Scene& sce
     const ensemble::Member variant = source.at(0);
     const auto schedule = ensemble::slot_schedule(
         scene, variant, ensemble::device_first_step_scale<Integrator>(scene, variant));
+    std::vector<ensemble::Member> members;
+    for (std::size_t k = 0; k < source.count; ++k) members.push_back(source.at(k));
     ensemble::SlotChunk chunk(schedule, source.count);
-    chunk.fill(scene, {&source, 0, source.count}, 0, source.count);
+    chunk.fill(scene, members);
     std::vector<double> storage(Driver::storage_size(schedule));
     const ensemble::SlotViews views = chunk.views();
     for (std::size_t k = 0; k < source.count; ++k)
