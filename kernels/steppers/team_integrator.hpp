@@ -1,5 +1,5 @@
-// Adaptive integration of one member on a team of threads (docs/architecture.md "Teams"): the step
-// control of AdaptiveIntegrator for one lane, its error norm summed over the ranks' rows.
+// Adaptive integration of one member on a team of threads (docs/architecture.md "Teams"): AdaptiveSteps
+// with sums over the ranks' rows; the same decisions for a member in registers (control_member_step).
 #pragma once
 
 #include <cmath>
@@ -8,6 +8,7 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
+#include "kernels/steppers/adaptive_steps.hpp"
 #include "kernels/steppers/lane_status.hpp"
 #include "kernels/steppers/step_control.hpp"
 
@@ -30,8 +31,8 @@ struct TeamMemberState {
 /// s.t_stop) has the error norm `err`: whether it is accepted (finite err and `checksum`, the sum of the
 /// new state and quadratures; every unstable direction resolved; err ≤ 1), then s's time, next step
 /// size, counts and failure status, and `error_previous` for the PI controller. The caller takes the
-/// new state where it returns true. Every member driver that decides alike on all its threads (a team,
-/// a member in registers) takes its decisions here.
+/// new state where it returns true: AdaptiveSteps' decisions for one member, written out for a member in
+/// registers (WarpIntegrator), whose vectors are no arrays to hand a form.
 template <class State>
 ROTORSWEEP_HD bool control_member_step(const StepLimits& limits, int embedded_order, double err, double checksum,
                                        bool resolved, double h, bool clipped, double& error_previous, State& s) {
@@ -53,99 +54,85 @@ ROTORSWEEP_HD bool control_member_step(const StepLimits& limits, int embedded_or
   return accept;
 }
 
-/// AdaptiveIntegrator::attempt for one member on a team with a team stepper (TeamRosenbrock): the
-/// same proposal of the first step, error norm (its state part a team sum), acceptance, step-size
-/// control and failure flags, decided alike on every rank from team sums.
-template <class Team, class Stepper>
-class TeamIntegrator {
+/// AdaptiveSteps' form for one member on a team (TeamIntegrator): each rank its rows, the error norm's state
+/// part, the checksum and a first step's rate from team sums (every rank decides alike), the rate through
+/// the stepper's evaluate.
+template <class Team, class Model>
+class TeamMemberForm {
  public:
-  using Model = typename Stepper::Model;
-  using TeamType = Team;
-  static constexpr bool stochastic = false;
+  using value_type = double;
+  using State = TeamMemberState;
+  struct Context {
+    Team& team;
+    const Model& model;
+  };
+  static constexpr std::size_t max_quadratures = Model::max_quadratures;
+  static_assert(max_quadratures <= TeamMemberState::max_quadratures);
 
-  using Method = typename Stepper::Method;  ///< the stepper's tableau
-  static_assert(Stepper::quadratures <= TeamMemberState::max_quadratures);
+  ROTORSWEEP_HD TeamMemberForm(std::size_t n, LaneArena<double>&, const Model&, std::size_t ranks)
+      : n_(n), ranks_(ranks) {}
 
-  ROTORSWEEP_HD TeamIntegrator(const Model& model, std::size_t ranks, const Method& method, Tolerances tol,
-                               StepLimits limits, double first_step_scale, LaneArena<double>& arena)
-      : n_(model.dimension()),
-        ranks_(ranks),
-        tol_(tol),
-        limits_(limits),
-        first_step_scale_(first_step_scale),
-        stepper_(model, ranks, method, arena),
-        y_new_(arena.take(n_)),
-        y_error_(arena.take(n_)) {}
-
-  /// One step attempt, clipped to land on t_stop, where the member steps; returns whether it
-  /// accepted one.
-  ROTORSWEEP_HD bool attempt(Team& team, const Model& model, TeamMemberState& s) {
-    if (!s.stepping()) return false;
-    if (s.h <= 0.0) propose_first_step(team, model, s);
-    const double remaining = s.t_stop - s.t;
-    const bool clipped = s.h >= remaining;
-    const double h = s.h < remaining ? s.h : remaining;
-    double q_new[Stepper::quadratures] = {}, q_error[Stepper::quadratures] = {};
-    const bool resolved =
-        stepper_.attempt(team, model, s.t, h, s.y, s.quad, y_new_, q_new, y_error_, q_error);
-    const double squares = team.sum([&](std::size_t r) {
+  ROTORSWEEP_HD static const Model& model(Context c) { return c.model; }
+  template <class Part>
+  ROTORSWEEP_HD void rows(Context c, Part&& part) const {
+    c.team.each([&](std::size_t r) {
       const TeamRows rows = team_rows(n_, ranks_, r);
-      return state_error_squares(model, tol_, s.y, y_new_, y_error_, rows.begin, rows.end);
+      part(rows.begin, rows.end);
     });
-    const double err =
-        quadrature_error_norm(model, tol_, squares, s.quad, q_new, q_error) / s.tolerance_scale;
-    const std::size_t carried = stepper_.quadrature_count();
-    double checksum = team.sum([&](std::size_t r) {
+  }
+  template <class Part>
+  ROTORSWEEP_HD double sum(Context c, Part&& part) const {
+    return c.team.sum([&](std::size_t r) {
       const TeamRows rows = team_rows(n_, ranks_, r);
-      double sum = 0.0;
-      for (std::size_t k = rows.begin; k < rows.end; ++k) sum += y_new_[k];
-      return sum;
+      return part(rows.begin, rows.end);
     });
-    for (std::size_t p = 0; p < carried; ++p) checksum += q_new[p];
-    const bool accept = control_member_step(limits_, stepper_.embedded_order(), err, checksum, resolved, h,
-                                            clipped, error_previous_, s);
-    if (accept) {
-      team.each([&](std::size_t r) {
-        const TeamRows rows = team_rows(n_, ranks_, r);
-        for (std::size_t k = rows.begin; k < rows.end; ++k) s.y[k] = y_new_[k];
-      });
-      for (std::size_t p = 0; p < carried; ++p) s.quad[p] = q_new[p];
-    }
-    return accept;
   }
-
-  /// Attempts steps until the member reaches its t_stop or fails.
-  ROTORSWEEP_HD void advance(Team& team, const Model& model, TeamMemberState& s) {
-    while (s.stepping()) attempt(team, model, s);
+  template <class Stepper, class... Arguments>
+  ROTORSWEEP_HD bool step(Stepper& stepper, Context c, Arguments... arguments) const {
+    return stepper.attempt(c.team, c.model, arguments...);
   }
-
-  /// The quadratures' integrands at the start of the last attempt.
-  ROTORSWEEP_HD const double* start_integrands() const { return stepper_.start_integrands(); }
-
- private:
-  /// h = min(h_max, first_step_scale / max_j |f_j|), and no previous error (AdaptiveIntegrator's).
-  ROTORSWEEP_HD void propose_first_step(Team& team, const Model& model, TeamMemberState& s) {
-    error_previous_ = 1.0;
-    double qdot[Stepper::quadratures] = {};
-    stepper_.evaluate(team, model, s.y, s.t, qdot);
-    const double* f = stepper_.rate();
-    double rate = team.max([&](std::size_t r) {
+  template <class Stepper>
+  ROTORSWEEP_HD double first_rate(Context c, Stepper& stepper, const State& s, double*, double*) const {
+    double qdot[max_quadratures] = {};
+    stepper.evaluate(c.team, c.model, s.y, s.t, qdot);
+    const double* f = stepper.rate();
+    return c.team.max([&](std::size_t r) {
       const TeamRows rows = team_rows(n_, ranks_, r);
       double m = 1e-300;
       for (std::size_t k = rows.begin; k < rows.end; ++k) m = std::fabs(f[k]) > m ? std::fabs(f[k]) : m;
       return m;
     });
-    const double h0 = first_step_scale_ / rate < limits_.h_max ? first_step_scale_ / rate : limits_.h_max;
-    s.h = std::isfinite(h0) ? h0 : limits_.h_max;
   }
+  ROTORSWEEP_HD static LaneStatus& status(State& s, std::size_t) { return s.status; }
 
+ private:
   std::size_t n_, ranks_;
-  Tolerances tol_;
-  StepLimits limits_;
-  double first_step_scale_;
-  double error_previous_ = 1.0;  ///< the last accepted step's error (PI controller); alike on every rank
-  Stepper stepper_;
-  double *y_new_, *y_error_;
+};
+
+/// One member's adaptive steps on a team with a team stepper (TeamRosenbrock): AdaptiveIntegrator's
+/// proposal of the first step, error norm, acceptance, step-size control and failure flags
+/// (AdaptiveSteps), decided alike on every rank from team sums.
+template <class Team, class Stepper>
+class TeamIntegrator : public AdaptiveSteps<TeamMemberForm<Team, typename Stepper::Model>, Stepper> {
+  using Steps = AdaptiveSteps<TeamMemberForm<Team, typename Stepper::Model>, Stepper>;
+
+ public:
+  using Model = typename Stepper::Model;
+  using TeamType = Team;
+
+  ROTORSWEEP_HD TeamIntegrator(const Model& model, std::size_t ranks, const typename Steps::Method& method,
+                               Tolerances tol, StepLimits limits, double first_step_scale, LaneArena<double>& arena)
+      : Steps(model.dimension(), method, tol, limits, first_step_scale, arena, model, ranks) {}
+
+  /// One step attempt, clipped to land on t_stop, where the member steps; returns whether it
+  /// accepted one.
+  ROTORSWEEP_HD bool attempt(Team& team, const Model& model, TeamMemberState& s) {
+    return Steps::attempt({team, model}, s);
+  }
+  /// Attempts steps until the member reaches its t_stop or fails.
+  ROTORSWEEP_HD void advance(Team& team, const Model& model, TeamMemberState& s) {
+    Steps::advance({team, model}, s);
+  }
 };
 
 }  // namespace rotorsweep::kernels

@@ -77,6 +77,7 @@ inline std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& s
 /// periods, a shadow chunk's averaged periods) and members, in order.
 template <class Run>
 struct HostSlotDevice {
+  explicit HostSlotDevice(Run r) : run(std::move(r)) {}
   Run run;
   std::vector<std::pair<int, std::size_t>> chunks;
 
