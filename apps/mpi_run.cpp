@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <iostream>
 #include <mutex>
 
 #include "build_info.hpp"
@@ -16,6 +15,7 @@
 #include "io/member_stream.hpp"
 #include "io/output_target.hpp"
 #include "io/result_reader.hpp"
+#include "mpi_join.hpp"
 #include "mpi_session.hpp"
 #include "progress_line.hpp"
 #include "run_support.hpp"
@@ -29,28 +29,23 @@ bool launched_by_mpi() {
 
 namespace {
 
-/// Rank 0: the rows each rank marked done, read back a block at a time into `out`; returns the
-/// members joined and removes the rank files.
-std::size_t join_rank_files(const io::ResultFile& out, const ensemble::Scene& scene,
-                            const ensemble::MemberPlan& plan, const std::string& partial, int ranks,
-                            std::vector<std::size_t>& per_rank) {
+/// Rank 0: the rows a rank's file marks done, read back a block at a time into `out`; returns how many,
+/// and removes the file.
+std::size_t join_rank_file(const io::ResultFile& out, const ensemble::Scene& scene, const ensemble::MemberPlan& plan,
+                           const std::string& path) {
   constexpr std::size_t block = 4096;
   std::size_t joined = 0;
-  for (int r = 0; r < ranks; ++r) {
-    const std::string path = rank_file(partial, r);
-    {
-      const auto file = io::Hdf5Location::open_file(path);
-      const auto done = io::read_done(file);
-      for (std::size_t first = 0; first < done.size(); first += block) {
-        const std::size_t count = std::min(block, done.size() - first);
-        auto results = io::read_member_rows(file, scene, plan, first, count, done.data() + first);
-        per_rank[std::size_t(r)] += results.size();
-        joined += results.size();
-        out.write_results(plan, std::move(results));
-      }
+  {
+    const auto file = io::Hdf5Location::open_file(path);
+    const auto done = io::read_done(file);
+    for (std::size_t first = 0; first < done.size(); first += block) {
+      const std::size_t count = std::min(block, done.size() - first);
+      auto results = io::read_member_rows(file, scene, plan, first, count, done.data() + first);
+      joined += results.size();
+      out.write_results(plan, std::move(results));
     }
-    std::filesystem::remove(path);
   }
+  std::filesystem::remove(path);
   return joined;
 }
 
@@ -115,59 +110,35 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
     MPI_Barrier(MPI_COMM_WORLD);  // every rank is done with the counters
     progress.finish();
   }
-  if (!error.empty()) std::fprintf(stderr, "error: rank %d: %s\n", mpi.rank(), error.c_str());
-
-  // the run's statistics over all ranks
+  // the run's statistics over all ranks (end_mpi_run takes the wall time's maximum and the threads' sum)
   auto stats = outcome.statistics;
-  double busy = stats.lane_steps_busy, total = stats.lane_steps_total, wall = stats.wall_seconds;
-  int rank_threads = stats.threads, failed = error.empty() ? 0 : 1;
+  double busy = stats.lane_steps_busy, total = stats.lane_steps_total;
   MPI_Allreduce(MPI_IN_PLACE, &busy, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
   MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Allreduce(MPI_IN_PLACE, &rank_threads, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
-  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Allreduce(MPI_IN_PLACE, &signal_number, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   stats.lane_steps_busy = busy;
   stats.lane_steps_total = total;
-  stats.wall_seconds = wall;
-  stats.threads = rank_threads;
+  char occupancy[64];
+  std::snprintf(occupancy, sizeof occupancy, "; lane occupancy %.1f %%", 100 * stats.occupancy());
 
-  int code = 0;
-  if (root) {
-    std::vector<std::size_t> per_rank(std::size_t(mpi.size()), 0);
-    try {
-      io::ResultFile out(partial, scene, provenance);
-      target->claim_temporary();
-      const std::size_t joined = join_rank_files(out, scene, plan, partial, mpi.size(), per_rank);
-      std::string shares;
-      for (std::size_t r = 0; r < per_rank.size(); ++r)
-        shares += (r ? ", " : "") + std::to_string(per_rank[r]);
-      if (joined == plan.size() && !failed) {
-        out.finish(stats);
-        out.close();
-        report_outcome(io::Hdf5Location::open_file(partial), scene);
-        target->commit();
-        std::fprintf(stderr, "wrote %s: %zu members in %s (members per rank: %s; lane occupancy %.1f %%)\n",
-                     path.c_str(), plan.size(), format_duration(stats.wall_seconds).c_str(), shares.c_str(),
-                     100 * stats.occupancy());
-      } else {
-        out.keep_partial(joined, stats);
-        out.close();
-        target->keep();
-        std::fprintf(stderr,
-                     "%s: %zu of %zu members done (per rank: %s), kept in %s (complete = FALSE).\n"
-                     "resume with: %s\n",
-                     failed ? "error: a rank failed" : "stopped", joined, plan.size(), shares.c_str(),
-                     partial.c_str(), resume_command("run", options, "").c_str());
-        code = failed ? 1 : 128 + (signal_number ? signal_number : SIGINT);
-      }
-    } catch (const std::exception& e) {
-      std::cerr << "error: joining the ranks' files into " << partial << " failed: " << e.what() << "\n";
-      target->keep();
-      code = 1;
-    }
-  }
-  return mpi.broadcast(code);
+  std::optional<io::ResultFile> out;
+  const auto with_totals = [&stats](double wall, int threads) {
+    stats.wall_seconds = wall;
+    stats.threads = threads;
+    return stats;
+  };
+  return end_mpi_run(mpi, {error, signal_number, stats.wall_seconds, stats.threads}, target ? &*target : nullptr,
+                     path, partial, plan.size(), "run", options, occupancy,
+                     {[&] { out.emplace(partial, scene, provenance); },
+                      [&](int r) { return join_rank_file(*out, scene, plan, rank_file(partial, r)); },
+                      [&](double wall, int threads) {
+                        out->finish(with_totals(wall, threads));
+                        out->close();
+                        report_outcome(io::Hdf5Location::open_file(partial), scene);
+                      },
+                      [&](std::size_t joined, double wall, int threads) {
+                        out->keep_partial(joined, with_totals(wall, threads));
+                        out->close();
+                      }});
 }
 
 }  // namespace rotorsweep::apps

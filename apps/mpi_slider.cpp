@@ -1,10 +1,8 @@
 // `mpirun -np K rotorsweep slider SCENE`: the ranks take members from one counter per group of the plan
 // on rank 0 (as `run` does per variant), stream them into a file each, and rank 0 joins the rows.
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 #include <mutex>
 #include <vector>
 
@@ -13,6 +11,7 @@
 #include "ensemble/gpu/gpu_slider.hpp"
 #include "io/member_stream.hpp"
 #include "io/slider_result_file.hpp"
+#include "mpi_join.hpp"
 #include "mpi_session.hpp"
 #include "progress_line.hpp"
 #include "run_support.hpp"
@@ -44,7 +43,6 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
   std::vector<std::size_t> plan(scene.member_count());
   for (std::size_t i = 0; i < plan.size(); ++i) plan[i] = i;
   std::string error;
-  std::size_t written = 0;
   double wall = 0;
   int signal_number = 0;
   {
@@ -78,7 +76,6 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
         error = e.what();
       }
       stream.flush();  // what the scan finished before it failed, or the write's error
-      written = stream.written();
     } catch (const std::exception& e) {
       if (error.empty()) error = e.what();
     }
@@ -87,53 +84,25 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
     MPI_Barrier(MPI_COMM_WORLD);
     progress.finish();
   }
-  if (!error.empty()) std::fprintf(stderr, "error: rank %d: %s\n", mpi.rank(), error.c_str());
-  int failed = error.empty() ? 0 : 1, all_threads = threads;
-  std::vector<unsigned long long> per_rank(std::size_t(mpi.size()), 0);
-  per_rank[std::size_t(mpi.rank())] = written;
-  MPI_Allreduce(MPI_IN_PLACE, per_rank.data(), mpi.size(), MPI_UNSIGNED_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
-  std::string shares;
-  for (std::size_t r = 0; r < per_rank.size(); ++r) shares += (r ? ", " : "") + std::to_string(per_rank[r]);
-  MPI_Allreduce(MPI_IN_PLACE, &wall, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Allreduce(MPI_IN_PLACE, &all_threads, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
-  MPI_Allreduce(MPI_IN_PLACE, &signal_number, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-
-  int code = 0;
-  if (root) {
-    try {
-      io::SliderResultFile out(partial, scene, provenance);
-      target->claim_temporary();
-      std::size_t joined = 0;
-      for (int r = 0; r < mpi.size(); ++r) {
-        const std::string from = rank_file(partial, r);
-        if (std::filesystem::exists(from)) joined += out.copy_done_rows(io::Hdf5Location::open_file(from));
-        std::filesystem::remove(from);
-      }
-      if (joined == scene.member_count() && !failed) {
-        out.finish(wall, all_threads);
-        out.close();
-        target->commit();
-        std::fprintf(stderr, "wrote %s: %zu members in %s (members per rank: %s)\n", path.c_str(), joined,
-                     format_duration(wall).c_str(), shares.c_str());
-      } else {
-        out.keep_partial(joined, wall, all_threads);
-        out.close();
-        target->keep();
-        std::fprintf(stderr,
-                     "%s: %zu of %zu members done (per rank: %s), kept in %s (complete = FALSE).\n"
-                     "resume with: %s\n",
-                     failed ? "error: a rank failed" : "stopped", joined, scene.member_count(),
-                     shares.c_str(), partial.c_str(), resume_command("slider", options, "").c_str());
-        code = failed ? 1 : 128 + (signal_number ? signal_number : SIGINT);
-      }
-    } catch (const std::exception& e) {
-      std::cerr << "error: joining the ranks' files into " << partial << " failed: " << e.what() << "\n";
-      target->keep();
-      code = 1;
-    }
-  }
-  return mpi.broadcast(code);
+  std::optional<io::SliderResultFile> out;
+  return end_mpi_run(mpi, {error, signal_number, wall, threads}, target ? &*target : nullptr, path, partial,
+                     scene.member_count(), "slider", options, "",
+                     {[&] { out.emplace(partial, scene, provenance); },
+                      [&](int r) {
+                        const std::string from = rank_file(partial, r);
+                        std::size_t joined = 0;
+                        if (std::filesystem::exists(from)) joined = out->copy_done_rows(io::Hdf5Location::open_file(from));
+                        std::filesystem::remove(from);
+                        return joined;
+                      },
+                      [&](double all_wall, int all_threads) {
+                        out->finish(all_wall, all_threads);
+                        out->close();
+                      },
+                      [&](std::size_t joined, double all_wall, int all_threads) {
+                        out->keep_partial(joined, all_wall, all_threads);
+                        out->close();
+                      }});
 }
 
 }  // namespace rotorsweep::apps

@@ -1,10 +1,31 @@
 #!/usr/bin/env bash
 # `mpirun -np 2 rotorsweep run` and `... slider` against the single-process runs: every dataset equal
 # byte for byte, both ranks took members from the shared counters, the ranks' files are gone, and
-# --shard under mpirun is exit code 2.
+# --shard under mpirun is exit code 2. Stopped by SIGINT under mpirun, each command keeps the partial file
+# (exit 130, the resume command named), which one process resumes to the single-process run's bytes.
 # Usage: mpi_run.sh ROTORSWEEP_EXECUTABLE SCRATCH_DIR
 set -euo pipefail
 exe=$1 scratch=$2
+
+# mpirun -np 2 COMMAND SCENE into OUT, SIGINT to both ranks once their files exist; then the stop's
+# report, exit 130 and no rank's file left, and `COMMAND SCENE --resume` in one process finishes OUT.
+stopped_and_resumed() {
+  local command=$1 scene=$2 out=$3 code=0
+  mpirun -np 2 "$exe" "$command" "$scene" -q --threads 1 -o "$out" 2> "$out.log" &
+  local launcher=$!
+  for _ in $(seq 400); do
+    [ "$(ls "$out".partial.rank-* 2> /dev/null | wc -l)" -ge 2 ] && break
+    sleep 0.05
+  done
+  pkill -INT -f "^$exe $command $scene -q --threads 1 -o $out\$" || true
+  wait "$launcher" || code=$?
+  cat "$out.log"
+  [ "$code" -eq 130 ] || { echo "$command stopped under mpirun: exit $code, not 130" >&2; exit 1; }
+  grep -q "^stopped: .* members done (per rank: .*), kept in $out.partial (complete = FALSE)" "$out.log" &&
+    grep -q "^resume with: .*--resume" "$out.log" || { echo "$command: no stop report" >&2; exit 1; }
+  if ls "$out".partial.rank-* > /dev/null 2>&1; then echo "$command: a rank's file was left behind" >&2; exit 1; fi
+  "$exe" "$command" "$scene" -q --resume -o "$out"
+}
 rm -rf "$scratch" && mkdir -p "$scratch"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 cat > "$scratch/curve.toml" <<'SCENE'
@@ -30,6 +51,7 @@ mpirun -np 2 "$exe" run "$scratch/curve.toml" -q --shard 1/2 -o "$scratch/shard.
 code=$?
 set -e
 [ "$code" -eq 2 ] && grep -q "one process" "$scratch/shard.log" || { cat "$scratch/shard.log"; echo "--shard under mpirun: exit $code" >&2; exit 1; }
+stopped_and_resumed run "$scratch/curve.toml" "$scratch/stopped.h5"
 cat > "$scratch/slider.toml" <<'SCENE'
 [slider]
 columns = [3, 4]
@@ -53,7 +75,12 @@ shares=$(sed -n 's/.*members per rank: \([0-9]*\), \([0-9]*\)).*/\1 \2/p' "$scra
 read -r first second <<< "$shares"
 [ "${first:-0}" -gt 0 ] && [ "${second:-0}" -gt 0 ] && [ $((first + second)) -eq 42 ] ||
   { echo "both ranks must take slider members, 42 in all: '$shares'" >&2; exit 1; }
-/usr/bin/python3 - "$scratch/single.h5" "$scratch/mpi.h5" "$scratch/slider-single.h5" "$scratch/slider-mpi.h5" <<'PY'
+# the stopped scan drives five times longer, so that the signal reaches the ranks before its end
+sed 's/^end = 4.5$/end = 24.5/' "$scratch/slider.toml" > "$scratch/slider-long.toml"
+"$exe" slider "$scratch/slider-long.toml" -q -o "$scratch/slider-long.h5"
+stopped_and_resumed slider "$scratch/slider-long.toml" "$scratch/slider-stopped.h5"
+/usr/bin/python3 - "$scratch/single.h5" "$scratch/mpi.h5" "$scratch/slider-single.h5" "$scratch/slider-mpi.h5" \
+  "$scratch/single.h5" "$scratch/stopped.h5" "$scratch/slider-long.h5" "$scratch/slider-stopped.h5" <<'PY'
 import sys, h5py
 def datasets(f):
     names = []
@@ -66,5 +93,5 @@ for single_path, mpi_path in zip(sys.argv[1::2], sys.argv[2::2]):
     differing = [n for n in names if single[n][()].tobytes() != mpi[n][()].tobytes()]
     assert not differing, differing
     assert mpi.attrs["complete"]
-    print(f"mpirun -np 2: {len(names)} datasets of {mpi_path} equal to the single-process run")
+    print(f"{len(names)} datasets of {mpi_path} equal to the single-process run")
 PY
