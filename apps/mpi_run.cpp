@@ -71,6 +71,7 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
   ensemble::SweepOutcome outcome;
   int signal_number = 0;
   {
+    const StopOnSignals signals;  // before the rank's file: a signal from now on stops the run, keeping it
     std::optional<io::ResultFile> file;
     try {
       file.emplace(rank_file(partial, mpi.rank()), scene, provenance);
@@ -92,7 +93,6 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
           }
           return k;
         }};
-    const StopOnSignals signals;
     if (file) {
       io::MemberStream stream(*file, plan, {options.flush_seconds, options.flush_members},
                               [&signals] { signals.stop(); });

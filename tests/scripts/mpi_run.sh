@@ -17,7 +17,8 @@ stopped_and_resumed() {
     [ "$(ls "$out".partial.rank-* 2> /dev/null | wc -l)" -ge 2 ] && break
     sleep 0.05
   done
-  pkill -INT -f "^$exe $command $scene -q --threads 1 -o $out\$" || true
+  # the ranks, not mpirun: their first word is the binary (the launcher's choice of it, or $exe itself)
+  pkill -INT -f "^[^ ]*rotorsweep[^ ]* $command $scene -q --threads 1 -o $out\$" || true
   wait "$launcher" || code=$?
   cat "$out.log"
   [ "$code" -eq 130 ] || { echo "$command stopped under mpirun: exit $code, not 130" >&2; exit 1; }
