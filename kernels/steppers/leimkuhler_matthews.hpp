@@ -3,7 +3,7 @@
 #pragma once
 
 #include "kernels/lanes/lane_arena.hpp"
-#include "kernels/steppers/adaptive_integrator.hpp"
+#include "kernels/steppers/lane_member_form.hpp"
 #include "kernels/steppers/langevin_steps.hpp"
 #include "kernels/steppers/model_concept.hpp"
 

@@ -9,7 +9,7 @@
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/steppers/langevin_steps.hpp"
-#include "kernels/steppers/team_integrator.hpp"
+#include "kernels/steppers/team_member_form.hpp"
 #include "kernels/steppers/team_model_concept.hpp"
 
 namespace rotorsweep::kernels {
@@ -23,7 +23,8 @@ class TeamLangevinForm : public TeamMemberForm<Team, Model> {
   static constexpr double period = Model::period;
   static constexpr std::size_t partial_stride = 5;  ///< team_evaluate's values per rank
 
-  ROTORSWEEP_HD TeamLangevinForm(std::size_t n, LaneArena<double>& arena, const Model& model, std::size_t ranks)
+  ROTORSWEEP_HD TeamLangevinForm(std::size_t n, LaneArena<double>& arena, const Model& model,
+                                 std::size_t ranks)
       : TeamMemberForm<Team, Model>(n, arena, model, ranks),
         work_(n, arena),
         partial_(arena.take(partial_stride * ranks)) {}
@@ -53,7 +54,9 @@ class TeamLeimkuhlerMatthews : public LangevinSteps<TeamLangevinForm<Team, RowMo
       : Steps(model.dimension(), settings, arena, model, ranks) {}
 
   /// A member starts: its noise stream key, its g and its curvature bound κ (LangevinSteps::start_lane).
-  ROTORSWEEP_HD void start(std::uint64_t key, double g, double curvature) { Steps::start_lane(0, key, g, curvature); }
+  ROTORSWEEP_HD void start(std::uint64_t key, double g, double curvature) {
+    Steps::start_lane(0, key, g, curvature);
+  }
   /// The member's step (period / steps per period).
   ROTORSWEEP_HD double step_size() const { return Steps::step_size(0); }
   /// One step where the member steps; returns whether it took one (a non-finite step flags it).

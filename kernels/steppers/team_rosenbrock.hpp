@@ -8,6 +8,7 @@
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/steppers/rosenbrock_stages.hpp"
+#include "kernels/steppers/team_member_form.hpp"
 #include "kernels/steppers/team_model_concept.hpp"
 
 namespace rotorsweep::kernels {
@@ -21,41 +22,29 @@ namespace rotorsweep::kernels {
 /// team in butterfly order (and for nearest neighbours without evaluate_displaced), its bits differ from the
 /// lanes' at rounding level (docs/numerics.md "The stage solve on a team").
 template <class Team, class Model>
-class TeamStageForm {
+class TeamStageForm : public TeamMemberForm<Team, Model> {
+  using Base = TeamMemberForm<Team, Model>;
+
  public:
   static_assert(LinearizableTeamModel<Model, Team>, "a model's team header gives its team forms");
-  using value_type = double;
+  using typename Base::Context;
   using resolved_type = bool;
-  struct Context {
-    Team& team;
-    const Model& model;
-  };
-  /// The most quadratures the model carries (the row models' 8, the slider's 2), and the values per rank
-  /// of the partial sums, which hold what its team_evaluate and team_linearize leave per rank.
-  static constexpr std::size_t max_quadratures = Model::max_quadratures;
+  /// The partial sums per rank hold max_quadratures values (what team_evaluate and team_linearize leave).
+  using Base::max_quadratures;
   static constexpr bool displaced = false;
   static constexpr bool copies_table = false;
 
   ROTORSWEEP_HD TeamStageForm(std::size_t n, LaneArena<double>& arena, std::size_t ranks)
-      : n_(n),
-        ranks_(ranks),
+      : Base(n, arena, ranks),
         work_(n, arena),
         jacobian_(n, ranks, arena),
         scratch_(arena.take(n)),
         partial_(arena.take(max_quadratures * ranks)) {}
 
-  template <class Part>
-  ROTORSWEEP_HD void rows(Context c, Part&& part) const {
-    c.team.each([&](std::size_t r) {
-      const TeamRows rows = team_rows(n_, ranks_, r);
-      part(rows.begin, rows.end);
-    });
-  }
-  ROTORSWEEP_HD double add_dot(Context c, double sum, const double* a, const double* b) const {
-    return sum + c.team.sum([&](std::size_t r) {
-      const TeamRows rows = team_rows(n_, ranks_, r);
+  ROTORSWEEP_HD double add_dot(Context c, double running, const double* a, const double* b) const {
+    return running + this->sum(c, [&](std::size_t begin, std::size_t end) {
       double partial = 0.0;
-      for (std::size_t k = rows.begin; k < rows.end; ++k) partial += a[k] * b[k];
+      for (std::size_t k = begin; k < end; ++k) partial += a[k] * b[k];
       return partial;
     });
   }
@@ -69,7 +58,8 @@ class TeamStageForm {
   ROTORSWEEP_HD void linearize(Context c, const double* y, double t, double* f, double* qdot, double* df_dt,
                                double* dq_dy, double* dq_dt) {
     evaluate(c, y, t, f, qdot);
-    team_linearize(c.team, c.model, work_, y, f, jacobian_, df_dt, scratch_, dq_dy, partial_, max_quadratures, t);
+    team_linearize(c.team, c.model, work_, y, f, jacobian_, df_dt, scratch_, dq_dy, partial_, max_quadratures,
+                   t);
     double time_sums[max_quadratures] = {};
     for (std::size_t p = 0; p < c.model.quadrature_count(); ++p)
       time_sums[p] = c.team.sum([&](std::size_t r) { return partial_[max_quadratures * r + p]; });
@@ -83,7 +73,6 @@ class TeamStageForm {
   ROTORSWEEP_HD bool resolved(double) const { return jacobian_.positive_definite(); }
 
  private:
-  std::size_t n_, ranks_;
   typename Model::Workspace work_;
   TeamStageMatrix<Model, Team> jacobian_;
   double* scratch_;  ///< J x for the gradients
@@ -105,7 +94,8 @@ class TeamRosenbrock : public RosenbrockStages<TeamStageForm<Team, TeamModelType
 
   /// One step of size h from (t, y, q); y and y_new are the team's (RosenbrockStages::attempt).
   ROTORSWEEP_HD bool attempt(Team& team, const Model& model, double t, double h, const double* y,
-                             const double* q, double* y_new, double* q_new, double* y_error, double* q_error) {
+                             const double* q, double* y_new, double* q_new, double* y_error,
+                             double* q_error) {
     return Stages::attempt({team, model}, t, h, y, q, y_new, q_new, y_error, q_error);
   }
   /// f at (y, t) over the team (rate()), with the quadratures' integrands (the first step's rate).
