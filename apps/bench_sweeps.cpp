@@ -109,7 +109,7 @@ void run_row(const BenchScene& s, const BenchGpuOptions& options, const Mapping&
   const std::string label = mapping_label(m, scene, s.rows, options);
   try {
     const auto t0 = std::chrono::steady_clock::now();
-    const auto outcome = ensemble::run_sweep(scene, members, options.threads, {});
+    const auto outcome = ensemble::run_sweep(scene, members, {.threads = options.threads});
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     double attempts = 0;
     std::size_t ok = 0;

@@ -83,21 +83,21 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
     if (root) std::fprintf(stderr, "MPI: %d ranks share the plan\n", mpi.size());
     ProgressLine progress(plan.size(), root && !options.quiet);
     std::mutex progress_lock;
-    ensemble::MemberSource source{
-        plan.size(), [&](std::size_t k) { return plan[k]; },
-        [&](const ensemble::VariantRange& range) {
-          const std::size_t k = range.begin + counters.take(plan[range.begin].variant);
-          if (root && progress_lock.try_lock()) {
-            progress.update(std::min(k, plan.size()));  // members taken by all ranks
-            progress_lock.unlock();
-          }
-          return k;
-        }};
+    const ensemble::MemberSource source{plan.size(), [&](std::size_t k) { return plan[k]; }};
+    const auto claim = [&](std::size_t begin, std::size_t) {
+      const std::size_t k = begin + counters.take(plan[begin].variant);
+      if (root && progress_lock.try_lock()) {
+        progress.update(std::min(k, plan.size()));  // members taken by all ranks
+        progress_lock.unlock();
+      }
+      return k;
+    };
     if (file) {
       io::MemberStream stream(*file, plan, {options.flush_seconds, options.flush_members},
                               [&signals] { signals.stop(); });
-      outcome = ensemble::run_members(scene, source, threads, {{}, signals.flag()},
-                                      [&stream](ensemble::MemberResult&& r) { stream.add(std::move(r)); });
+      outcome = ensemble::run_members(
+          scene, source, {.threads = threads, .stop = [&] { return signals.stopped(); }, .claim = claim},
+          [&stream](ensemble::MemberResult&& r) { stream.add(std::move(r)); });
       try {
         stream.flush();
         file->keep_partial(stream.written(), outcome.statistics);

@@ -68,7 +68,7 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
       io::SliderMemberStream stream(file, [&signals] { signals.stop(); });
       try {
         ensemble::run_slider_members(
-            scene, plan, {threads, {}, [&] { return signals.flag()->load(); }, claim},
+            scene, plan, {.threads = threads, .stop = [&] { return signals.stopped(); }, .claim = claim},
             [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
       } catch (const std::bad_alloc&) {
         error = "out of memory (an allocation in a worker thread failed)";

@@ -29,15 +29,16 @@ std::string format_duration(double seconds) {
   return text;
 }
 
-ProgressLine::ProgressLine(std::size_t total, bool enabled, std::string unit)
+ProgressLine::ProgressLine(std::size_t total, bool enabled, std::string unit, std::string stops)
     : total_(total),
       enabled_(enabled),
       terminal_(isatty(STDERR_FILENO) != 0),
       unit_(std::move(unit)),
+      stops_(std::move(stops)),
       start_(clock::now()),
       last_draw_(start_) {}
 
-void ProgressLine::update(std::size_t done, std::size_t periods) {
+void ProgressLine::update(std::size_t done, std::size_t stops) {
   if (!enabled_) return;
   const auto now = clock::now();
   const double since_draw = std::chrono::duration<double>(now - last_draw_).count();
@@ -49,8 +50,9 @@ void ProgressLine::update(std::size_t done, std::size_t periods) {
   char line[200];
   int width = std::snprintf(line, sizeof line, "  %zu / %zu %s  %.1f %s/s  ETA %s", done, total_,
                             unit_.c_str(), rate, unit_.c_str(), eta.c_str());
-  if (periods > 0 && width > 0 && std::size_t(width) < sizeof line)
-    width += std::snprintf(line + width, sizeof line - std::size_t(width), "  (%zu periods closed)", periods);
+  if (stops > 0 && width > 0 && std::size_t(width) < sizeof line)
+    width +=
+        std::snprintf(line + width, sizeof line - std::size_t(width), "  (%zu %s)", stops, stops_.c_str());
   if (terminal_) {
     std::fprintf(stderr, "\r%s%*s", line, int(last_width_ > std::size_t(width) ? last_width_ - width : 0),
                  "");

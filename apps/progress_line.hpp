@@ -10,10 +10,12 @@ namespace rotorsweep::apps {
 
 class ProgressLine {
  public:
-  ProgressLine(std::size_t total, bool enabled, std::string unit = "members");
-  /// Reports `done` items (and, where it helps with long members, the periods they closed);
+  /// `stops`: what update's second count says (a row member's periods, a slider member's samples).
+  ProgressLine(std::size_t total, bool enabled, std::string unit = "members",
+               std::string stops = "periods closed");
+  /// Reports `done` items (and, where it helps with long members, the stops they closed);
   /// draws only if enough time has passed since the last draw.
-  void update(std::size_t done, std::size_t periods = 0);
+  void update(std::size_t done, std::size_t stops = 0);
   /// Clears the in-place line (terminal) before the closing message.
   void finish();
 
@@ -21,7 +23,7 @@ class ProgressLine {
   using clock = std::chrono::steady_clock;
   std::size_t total_;
   bool enabled_, terminal_;
-  std::string unit_;
+  std::string unit_, stops_;
   clock::time_point start_, last_draw_;
   std::size_t last_width_ = 0;
 };

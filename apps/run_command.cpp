@@ -304,7 +304,7 @@ int run_sweep_command(const RunOptions& options) {
   const std::size_t rows = file->rows();
   const std::size_t to_run = options.resume ? remaining.size() : rows;
   const ensemble::MemberSource source{
-      to_run, [&](std::size_t k) { return plan[options.resume ? remaining[k] : file->plan_index_of(k)]; }, {}};
+      to_run, [&](std::size_t k) { return plan[options.resume ? remaining[k] : file->plan_index_of(k)]; }};
 
   print_header(options, scene, rows, threads, shard);
   if (options.resume)
@@ -319,9 +319,12 @@ int run_sweep_command(const RunOptions& options) {
                             [&signals] { signals.stop(); });
     streamed = stream_sweep(stream, signals, [&] {
       outcome = ensemble::run_members(
-          scene, source, threads,
-          {[&](std::size_t count) { progress.update(count, periods.load(std::memory_order_relaxed)); },
-           signals.flag(), &periods},
+          scene, source,
+          {.threads = threads,
+           .progress =
+               [&](std::size_t count) { progress.update(count, periods.load(std::memory_order_relaxed)); },
+           .stop = [&] { return signals.stopped(); },
+           .stops = &periods},
           [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); });
     });
     done_before += stream.written();

@@ -81,7 +81,8 @@ class StopOnSignals {
   }
   StopOnSignals(const StopOnSignals&) = delete;
   StopOnSignals& operator=(const StopOnSignals&) = delete;
-  const std::atomic<bool>* flag() const { return &stop_; }
+  /// Whether a signal came or stop() was called: the run's stop (ensemble::RunControl::stop).
+  bool stopped() const { return stop_.load(std::memory_order_relaxed); }
   /// Stops the sweep as a signal would, for another reason (signal() stays 0).
   void stop() const { stop_ = true; }
   int signal() const { return signal_; }

@@ -3,6 +3,7 @@
 // SIGINT or SIGTERM keeps the finished members (exit 130 or 143), --resume, --shard and `merge`.
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -195,7 +196,8 @@ int run_slider(const SliderOptions& options) {
     std::fprintf(stderr, "resuming from %s: %zu members done, %zu to run\n", partial.c_str(), done_before,
                  to_run.size());
 
-  ProgressLine progress(to_run.size(), !options.quiet);
+  ProgressLine progress(to_run.size(), !options.quiet, "members", "samples taken");
+  std::atomic<std::size_t> samples{0};
   bool stopped = false;
   StreamedSweep streamed;
   const auto start = std::chrono::steady_clock::now();
@@ -203,12 +205,13 @@ int run_slider(const SliderOptions& options) {
     io::SliderMemberStream stream(*file, [&signals] { signals.stop(); });
     streamed = stream_sweep(stream, signals, [&] {
       stopped = ensemble::run_slider_members(
-          scene, to_run,
-          {threads,
-           [&](std::size_t done) { progress.update(done); },
-           [&] { return signals.flag()->load(); },
-           {}},
-          [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
+                    scene, to_run,
+                    {.threads = threads,
+                     .progress = [&](std::size_t done) { progress.update(done, samples.load()); },
+                     .stop = [&] { return signals.stopped(); },
+                     .stops = &samples},
+                    [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); })
+                    .interrupted;
     });
     done_before += stream.written();
   }

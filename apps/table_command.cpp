@@ -117,7 +117,7 @@ ensemble::SweepOutcome integrate(const ensemble::Scene& scene) {
   const double rtol = scene.rtol_values.front();
   std::vector<ensemble::Member> members;
   for (const auto& entry : paper::entries) members.push_back(paper_member(members.size(), entry, rtol, 0));
-  return ensemble::run_sweep(scene, members, 1, {});
+  return ensemble::run_sweep(scene, members, {.threads = 1});
 }
 
 /// The CP entries over `replicas` noise draws of `seed` (draw r with the disorder's realization r), with
@@ -135,7 +135,7 @@ void print_cp_draws(kernels::StepperId stepper, double rtol, const ensemble::Dis
     for (int r = 0; r < replicas; ++r)
       members.push_back(paper_member(members.size(), entry, rtol, std::size_t(r)));
   }
-  const auto outcome = ensemble::run_sweep(scene, members, ensemble::thread_count(0), {});
+  const auto outcome = ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)});
   std::printf(
       "\nCP entries over %d noise draws (seed %llu; the table's draw is draw 0):\n%5s %4s %14s %11s %11s "
       "%12s %11s %s\n",

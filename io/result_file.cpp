@@ -73,14 +73,6 @@ void ResultFile::write_results(const ensemble::MemberPlan& plan,
   write_rows(std::move(rows), members, results);
 }
 
-void ResultFile::write_sweep(const std::vector<ensemble::Member>& members,
-                             const ensemble::SweepOutcome& outcome) const {
-  std::vector<hsize_t> rows;
-  for (const auto& m : members) rows.push_back(row_of(m.index));
-  write_rows(std::move(rows), members, outcome.results);
-  finish(outcome.statistics);
-}
-
 void ResultFile::write_statistics(const ensemble::SweepStatistics& statistics) const {
   file_.set_attribute("wall_seconds", statistics.wall_seconds);
   file_.set_attribute("threads", std::int64_t(statistics.threads));

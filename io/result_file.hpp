@@ -46,8 +46,6 @@ class ResultFile : public MemberTableFile {
   /// Run statistics and members_done of a run that stopped early; complete stays FALSE. Like every
   /// write before finish(), it changes bytes in place and allocates nothing.
   void keep_partial(std::size_t members_done, const ensemble::SweepStatistics& statistics) const;
-  /// Every member of the file at once (results held in memory), then finish().
-  void write_sweep(const std::vector<ensemble::Member>& members, const ensemble::SweepOutcome& outcome) const;
 
  private:
   ResultFile(Hdf5Location file, const ensemble::Scene& scene, std::optional<ShardLabel> shard);

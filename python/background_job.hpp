@@ -11,6 +11,7 @@
 #include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 namespace rotorsweep::python {
@@ -68,6 +69,27 @@ class BackgroundJob {
     if (!wait(0)) throw std::logic_error("the job is still running");
     if (worker_.joinable()) worker_.join();
     if (error_) std::rethrow_exception(error_);
+  }
+
+  /// The end of a job that streamed its members into a file: flushes `stream`; a cancelled job hands
+  /// keep() the members written (to keep its partial file for --resume, where it keeps one) and returns
+  /// false; a failed write throws "writing <what> failed: …"; else done() becomes total() and it returns
+  /// true (the caller then finishes its file).
+  template <class Stream, class Keep>
+  bool end_stream(Stream& stream, const std::string& what, Keep&& keep) {
+    std::string write_error;
+    try {
+      stream.flush();
+    } catch (const std::exception& e) {
+      write_error = e.what();
+    }
+    if (cancelled()) {
+      keep(stream.written());
+      return false;
+    }
+    if (!write_error.empty()) throw std::runtime_error("writing " + what + " failed: " + write_error);
+    done_.store(total_, std::memory_order_relaxed);
+    return true;
   }
 
   std::atomic<bool> stop_{false};

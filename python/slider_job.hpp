@@ -5,7 +5,6 @@
 #pragma once
 
 #include <atomic>
-#include <chrono>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -72,33 +71,21 @@ inline void SliderJob::run(int threads) {
   std::iota(all.begin(), all.end(), std::size_t(0));
   std::atomic<bool> write_failed{false};
   io::SliderMemberStream stream(*file_, [&write_failed] { write_failed = true; });
-  const auto start = std::chrono::steady_clock::now();
-  ensemble::run_slider_members(
+  const auto outcome = ensemble::run_slider_members(
       scene_, all,
-      {threads,
-       [this](std::size_t now) { done_.store(now, std::memory_order_relaxed); },
-       [&] { return cancelled() || write_failed.load(); },
-       {}},
+      {.threads = threads,
+       .progress = [this](std::size_t now) { done_.store(now, std::memory_order_relaxed); },
+       .stop = [&] { return cancelled() || write_failed.load(); }},
       [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::string write_error;
-  try {
-    stream.flush();
-  } catch (const std::exception& e) {
-    write_error = e.what();
-  }
-  const std::size_t written = stream.written();
-  if (cancelled()) {
-    if (keep_) {  // as `rotorsweep slider` keeps them, for --resume
-      file_->keep_partial(written, seconds, threads);
-      file_->close();
-      target_->keep();
-      kept_ = written;
-    }
-    return;
-  }
-  if (!write_error.empty()) throw std::runtime_error("writing " + output_ + " failed: " + write_error);
-  done_.store(scene_.member_count(), std::memory_order_relaxed);
+  const double seconds = outcome.statistics.wall_seconds;
+  const bool finished = end_stream(stream, output_, [&](std::size_t written) {
+    if (!keep_) return;  // as `rotorsweep slider` keeps them, for --resume
+    file_->keep_partial(written, seconds, threads);
+    file_->close();
+    target_->keep();
+    kept_ = written;
+  });
+  if (!finished) return;
   file_->finish(seconds, threads);
   file_->close();
   target_->commit();

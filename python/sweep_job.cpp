@@ -1,11 +1,13 @@
-// The Python module's sweep thread: plan, run_sweep with a stop flag, and the same ResultFile
-// writer as `rotorsweep run`, to the output path (through its partial file) or to an in-memory HDF5 image.
+// The Python module's sweep thread: the plan's members streamed into the same ResultFile `rotorsweep run`
+// writes, on the output path (through its partial file) or in an in-memory HDF5 image.
 #include "sweep_job.hpp"
 
+#include <atomic>
 #include <filesystem>
 
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/sweep.hpp"
+#include "io/member_stream.hpp"
 
 namespace rotorsweep::python {
 
@@ -20,8 +22,8 @@ void refuse_earlier_partial(io::OutputTarget& target, bool force) {
 
 SweepJob::SweepJob(ensemble::Scene scene, int threads, const std::string& output, bool force,
                    const io::Provenance& provenance)
-    : scene_(std::move(scene)), members_(ensemble::plan_members(scene_)) {
-  total_ = members_.size();
+    : scene_(std::move(scene)) {
+  total_ = ensemble::MemberPlan(scene_).size();
   const int count = ensemble::thread_count(threads, "threads");
   if (output.empty()) {
     file_.emplace(io::ResultFile::in_memory(scene_, provenance));
@@ -44,33 +46,33 @@ void SweepJob::run(int threads) {
       job.target_.reset();
     }
   } release{*this};
-  const auto outcome = ensemble::run_sweep(
-      scene_, members_, threads, [this](std::size_t done) { done_.store(done, std::memory_order_relaxed); },
-      &stop_, &periods_);
-  if (!outcome.interrupted) {
-    done_.store(members_.size(), std::memory_order_relaxed);
-    file_->write_sweep(members_, outcome);
-    if (target_) {
-      file_->close();
-      target_->commit();
-    } else {
-      image_ = file_->image();
-    }
-  } else if (target_) {
-    keep_finished(outcome);
+  const ensemble::MemberPlan plan(scene_);
+  const ensemble::MemberSource source{plan.size(), [&plan](std::size_t k) { return plan[k]; }};
+  std::atomic<bool> write_failed{false};
+  io::MemberStream stream(*file_, plan, {}, [&write_failed] { write_failed = true; });
+  const auto outcome = ensemble::run_members(
+      scene_, source,
+      {.threads = threads,
+       .progress = [this](std::size_t done) { done_.store(done, std::memory_order_relaxed); },
+       .stop = [&] { return cancelled() || write_failed.load(); },
+       .stops = &periods_},
+      [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); });
+  const bool finished =
+      end_stream(stream, target_ ? target_->temporary() : "the result", [&](std::size_t written) {
+        if (!target_) return;  // as `rotorsweep run` keeps them, for --resume
+        file_->keep_partial(written, outcome.statistics);
+        file_->close();
+        target_->keep();
+        kept_ = written;
+      });
+  if (!finished) return;
+  file_->finish(outcome.statistics);
+  if (target_) {
+    file_->close();
+    target_->commit();
+  } else {
+    image_ = file_->image();
   }
-}
-
-void SweepJob::keep_finished(const ensemble::SweepOutcome& outcome) {
-  std::vector<ensemble::MemberResult> finished;
-  for (std::size_t i = 0; i < outcome.results.size(); ++i)
-    if (outcome.finished[i]) finished.push_back(outcome.results[i]);
-  const std::size_t count = finished.size();
-  file_->write_results(ensemble::MemberPlan(scene_), std::move(finished));
-  file_->keep_partial(count, outcome.statistics);
-  file_->close();
-  target_->keep();
-  kept_ = count;
 }
 
 std::vector<unsigned char> SweepJob::take_image() {

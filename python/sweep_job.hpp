@@ -1,5 +1,5 @@
-// A row sweep on its own thread for the Python module (a BackgroundJob): the plan, run_sweep with the
-// job's stop flag, and the writer `rotorsweep run` uses, to the output path or an in-memory HDF5 image.
+// A row sweep on its own thread for the Python module (a BackgroundJob): the plan's members streamed, as
+// `rotorsweep run` streams them, into its file on the output path or an in-memory HDF5 image.
 #pragma once
 
 #include <optional>
@@ -37,11 +37,8 @@ class SweepJob final : public BackgroundJob {
 
  private:
   void run(int threads);
-  /// The finished members of a cancelled sweep into the partial file, which stays for --resume.
-  void keep_finished(const ensemble::SweepOutcome& outcome);
 
   ensemble::Scene scene_;
-  std::vector<ensemble::Member> members_;
   std::optional<io::OutputTarget> target_;
   std::optional<io::ResultFile> file_;
   std::vector<unsigned char> image_;

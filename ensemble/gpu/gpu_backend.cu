@@ -16,23 +16,21 @@ namespace rotorsweep::ensemble {
 
 namespace gpu {
 template <kernels::StepperFamily family>
-SweepOutcome run_stepper_family(const Scene&, const VariantRange&, int, const SweepControl&,
-                                const ResultSink&);
-SweepOutcome run_langevin(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
+SweepOutcome run_stepper_family(const Scene&, const VariantRange&, const RunControl&, const ResultSink&);
+SweepOutcome run_langevin(const Scene&, const VariantRange&, const RunControl&, const ResultSink&);
 template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B, bool Q>
-SweepOutcome run_in_registers(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
+SweepOutcome run_in_registers(const Scene&, const VariantRange&, const RunControl&, const ResultSink&);
 
 /// run_in_registers for `shape`, the i-th compiled shape or a later one.
 template <std::size_t i = 0>
 SweepOutcome run_registers(const RegisterShape& shape, const Scene& scene, const VariantRange& range,
-                           int host_threads, const SweepControl& control, const ResultSink& sink) {
+                           const RunControl& control, const ResultSink& sink) {
   if constexpr (i < compiled_register_shapes.size()) {
     constexpr RegisterShape compiled = compiled_register_shapes[i];
     if (shape == compiled)
       return run_in_registers<compiled.lanes, compiled.slots, compiled.disordered, compiled.stages,
-                              compiled.blocks, compiled.every_quadrature>(scene, range, host_threads, control,
-                                                                          sink);
-    return run_registers<i + 1>(shape, scene, range, host_threads, control, sink);
+                              compiled.blocks, compiled.every_quadrature>(scene, range, control, sink);
+    return run_registers<i + 1>(shape, scene, range, control, sink);
   } else {
     throw std::logic_error("no register kernel of this shape was compiled");
   }
@@ -79,14 +77,14 @@ void use_gpu() {
     throw std::runtime_error("cannot use CUDA device " + std::to_string(gpu_info().index));
 }
 
-SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, int host_threads,
-                               const SweepControl& control, const ResultSink& sink) {
-  if (scene.thermal.on()) return gpu::run_langevin(scene, range, host_threads, control, sink);
+SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, const RunControl& control,
+                               const ResultSink& sink) {
+  if (scene.thermal.on()) return gpu::run_langevin(scene, range, control, sink);
   const std::size_t rows = range.source->at(range.begin).rows;
   if (const auto shape = choose_register_shape(gpu_register_shapes(), scene, rows, gpu_launch()))
-    return gpu::run_registers(*shape, scene, range, host_threads, control, sink);
+    return gpu::run_registers(*shape, scene, range, control, sink);
   return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
-    return gpu::run_stepper_family<family>(scene, range, host_threads, control, sink);
+    return gpu::run_stepper_family<family>(scene, range, control, sink);
   });
 }
 

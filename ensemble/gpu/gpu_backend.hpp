@@ -52,7 +52,7 @@ std::size_t gpu_max_rows(const Scene& scene);
 
 /// Runs the members of `range` (one variant) on the GPU; results go to `sink` as each chunk
 /// returns. Throws std::runtime_error where there is no GPU backend or no GPU.
-SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, int host_threads,
-                               const SweepControl& control, const ResultSink& sink);
+SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, const RunControl& control,
+                               const ResultSink& sink);
 
 }  // namespace rotorsweep::ensemble

@@ -18,14 +18,13 @@ const GpuInfo& gpu_info() {
 
 void use_gpu() { throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why); }
 
-SweepOutcome run_gpu_row_sweep(const Scene&, const VariantRange&, int, const SweepControl&,
-                               const ResultSink&) {
+SweepOutcome run_gpu_row_sweep(const Scene&, const VariantRange&, const RunControl&, const ResultSink&) {
   throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why);
 }
 
-bool run_gpu_slider_members(const SliderScene&, const std::vector<std::size_t>&, const SliderScanControl&,
-                            const std::function<void(std::vector<SliderMember>&&)>&,
-                            const SliderTableBuilder&) {
+RunOutcome run_gpu_slider_members(const SliderScene&, const std::vector<std::size_t>&, const RunControl&,
+                                  const std::function<void(std::vector<SliderMember>&&)>&,
+                                  const SliderTableBuilder&) {
   throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why);
 }
 

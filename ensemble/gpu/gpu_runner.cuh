@@ -16,7 +16,6 @@
 #include <string>
 #include <vector>
 
-#include "ensemble/engine/chunk_pipeline.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_slots.hpp"
@@ -217,16 +216,16 @@ int resident_blocks(Kernel kernel, const GpuLaunch& launch, std::size_t shared_b
 /// The GPU as a RowSlotDevice: a ChunkStream whose chunks run launch(stream, schedule, views, count,
 /// counter), the chunk's schedule (a plan's or its shadow runs') as the kernel's argument.
 template <class Launch>
-class GpuRowDevice {
+class GpuRowDevice final : public RowSlotDevice {
  public:
   explicit GpuRowDevice(Launch& launch) : launch_(launch) {}
-  void start(SlotChunk& chunk, std::size_t slot) {
+  void start(SlotChunk& chunk, std::size_t slot) override {
     stream_.start(
         chunk, slot,
         [&](cudaStream_t stream, const SlotViews& views, unsigned long long count,
             unsigned long long* counter) { launch_(stream, chunk.schedule(), views, count, counter); });
   }
-  double finish(SlotChunk& chunk, std::size_t slot) { return stream_.finish(chunk, slot); }
+  double finish(SlotChunk& chunk, std::size_t slot) override { return stream_.finish(chunk, slot); }
 
  private:
   Launch& launch_;
@@ -238,14 +237,14 @@ class GpuRowDevice {
 /// set-up.
 template <class Launch>
 SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const SlotSchedule& schedule,
-                        const ChunkGrid& grid, int host_threads, const SweepControl& control,
-                        const ResultSink& sink, Launch&& launch) {
+                        const ChunkGrid& grid, const RunControl& control, const ResultSink& sink,
+                        Launch&& launch) {
   const auto start = std::chrono::steady_clock::now();
   const std::size_t members = range.end - range.begin;
   const std::size_t chunk = std::min(members, std::max<std::size_t>(8 * grid.resident, 1 << 16));
   GpuRowDevice device(launch);
   const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  SweepOutcome outcome = run_row_chunks(scene, range, schedule, chunk, host_threads, control, sink, device);
+  SweepOutcome outcome = run_row_chunks(scene, range, schedule, chunk, control, sink, device);
   outcome.statistics.threads = grid.blocks * grid.threads_per_block;
   outcome.statistics.setup_seconds += setup;
   outcome.statistics.wall_seconds += setup;
@@ -262,8 +261,8 @@ inline const GpuInfo& available_gpu() {
 
 /// The variant's members, one per thread (DeviceMember<Model, Integrator>, the CPU lanes' bits).
 template <class Model, class Integrator>
-SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_threads,
-                       const SweepControl& control, const ResultSink& sink) {
+SweepOutcome run_slots(const Scene& scene, const VariantRange& range, const RunControl& control,
+                       const ResultSink& sink) {
   using Driver = DeviceMember<Model, Integrator>;
   available_gpu();
   const Member variant = range.source->at(range.begin);
@@ -278,7 +277,7 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, int host_t
   const GpuLaunch launch = gpu_launch();
   ChunkGrid grid{resident_blocks(kernel, launch, 0), launch.threads_per_block, 0, 0};
   grid.resident = std::size_t(grid.blocks) * std::size_t(grid.threads_per_block);
-  return run_chunks(scene, range, schedule, grid, host_threads, control, sink,
+  return run_chunks(scene, range, schedule, grid, control, sink,
                     [&](cudaStream_t stream, const SlotSchedule& chunk_schedule, const SlotViews& views,
                         unsigned long long count, unsigned long long* counter) {
                       kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(chunk_schedule, views, count,
@@ -341,7 +340,7 @@ TeamLaunch team_launch(Kernel kernel, unsigned team, std::size_t per_team,
 /// says so), else in global memory, of which the resident teams take at most a quarter.
 template <class Integrator, class TeamIntegrator>
 SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team,
-                                int host_threads, const SweepControl& control, const ResultSink& sink) {
+                                const RunControl& control, const ResultSink& sink) {
   using Driver = TeamMember<const kernels::WarpTeam, TeamIntegrator>;
   const Member variant = range.source->at(range.begin);
   const SlotSchedule schedule =
@@ -351,7 +350,7 @@ SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, u
   const auto kernel = sweep_slots_on_teams<TeamMember, TeamIntegrator, SlotSchedule, SlotViews>;
   const TeamLaunch teams = team_launch(kernel, team, Driver::storage_size(schedule, team));
   return run_chunks(
-      scene, range, schedule, teams.grid, host_threads, control, sink,
+      scene, range, schedule, teams.grid, control, sink,
       [&](cudaStream_t stream, const SlotSchedule& chunk_schedule, const SlotViews& views,
           unsigned long long count, unsigned long long* counter) {
         kernel<<<teams.grid.blocks, teams.grid.threads_per_block, teams.grid.shared_bytes, stream>>>(

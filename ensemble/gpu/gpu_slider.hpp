@@ -26,9 +26,9 @@ std::string slider_device_label(const SliderScene& scene);
 /// run_slider_members on the GPU: members `plan_indices` (ascending) in chunks of one size and speed,
 /// each chunk's members to `finished` as it returns, the substrate tables built by `build_table` on
 /// the host. Throws std::runtime_error where there is no GPU backend or no GPU.
-bool run_gpu_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
-                            const SliderScanControl& control,
-                            const std::function<void(std::vector<SliderMember>&&)>& finished,
-                            const SliderTableBuilder& build_table);
+RunOutcome run_gpu_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                                  const RunControl& control,
+                                  const std::function<void(std::vector<SliderMember>&&)>& finished,
+                                  const SliderTableBuilder& build_table);
 
 }  // namespace rotorsweep::ensemble

@@ -65,7 +65,7 @@ class GpuSliderDevice final : public SliderSlotDevice {
                   });
   }
 
-  void finish(SliderSlotChunk& chunk, std::size_t slot) override { chunks_.finish(chunk, slot); }
+  double finish(SliderSlotChunk& chunk, std::size_t slot) override { return chunks_.finish(chunk, slot); }
 
  private:
   static auto kernel() {
@@ -80,10 +80,10 @@ class GpuSliderDevice final : public SliderSlotDevice {
 
 }  // namespace gpu
 
-bool run_gpu_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
-                            const SliderScanControl& control,
-                            const std::function<void(std::vector<SliderMember>&&)>& finished,
-                            const SliderTableBuilder& build_table) {
+RunOutcome run_gpu_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                                  const RunControl& control,
+                                  const std::function<void(std::vector<SliderMember>&&)>& finished,
+                                  const SliderTableBuilder& build_table) {
   gpu::available_gpu();
   if (scene.overdamped) {
     gpu::GpuSliderDevice<false> device;

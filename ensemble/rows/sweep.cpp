@@ -11,42 +11,32 @@
 namespace rotorsweep::ensemble {
 
 template <kernels::StepperFamily family>
-SweepOutcome run_row_sweep(const Scene&, const VariantRange&, int, const SweepControl&, const ResultSink&);
-SweepOutcome run_thermal_row_sweep(const Scene&, const VariantRange&, int, const SweepControl&,
-                                   const ResultSink&);
+SweepOutcome run_row_sweep(const Scene&, const VariantRange&, const RunControl&, const ResultSink&);
+SweepOutcome run_thermal_row_sweep(const Scene&, const VariantRange&, const RunControl&, const ResultSink&);
 
 void SweepOutcome::append(SweepOutcome&& part) {
   for (auto& r : part.results) results.push_back(std::move(r));
   finished.insert(finished.end(), part.finished.begin(), part.finished.end());
-  statistics.wall_seconds += part.statistics.wall_seconds;
-  statistics.kernel_seconds += part.statistics.kernel_seconds;
-  statistics.setup_seconds += part.statistics.setup_seconds;
-  statistics.fill_seconds += part.statistics.fill_seconds;
-  statistics.wait_seconds += part.statistics.wait_seconds;
-  statistics.deliver_seconds += part.statistics.deliver_seconds;
-  statistics.lane_steps_busy += part.statistics.lane_steps_busy;
-  statistics.lane_steps_total += part.statistics.lane_steps_total;
-  statistics.threads = part.statistics.threads;
-  statistics.lane_width = part.statistics.lane_width;
+  statistics.add(part.statistics);
   interrupted = interrupted || part.interrupted;
 }
 
 namespace {
 
 /// The members of `range` on the scene's backend.
-SweepOutcome run_range(const Scene& scene, const VariantRange& range, int threads,
-                       const SweepControl& control, const ResultSink& sink) {
-  if (scene.device == Device::gpu) return run_gpu_row_sweep(scene, range, threads, control, sink);
-  if (scene.thermal.on()) return run_thermal_row_sweep(scene, range, threads, control, sink);
+SweepOutcome run_range(const Scene& scene, const VariantRange& range, const RunControl& control,
+                       const ResultSink& sink) {
+  if (scene.device == Device::gpu) return run_gpu_row_sweep(scene, range, control, sink);
+  if (scene.thermal.on()) return run_thermal_row_sweep(scene, range, control, sink);
   return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
-    return run_row_sweep<family>(scene, range, threads, control, sink);
+    return run_row_sweep<family>(scene, range, control, sink);
   });
 }
 
 }  // namespace
 
-SweepOutcome run_members(const Scene& scene, const MemberSource& source, int threads,
-                         const SweepControl& control, const ResultSink& sink) {
+SweepOutcome run_members(const Scene& scene, const MemberSource& source, const RunControl& control,
+                         const ResultSink& sink) {
   SweepOutcome outcome;
   std::size_t done_before = 0;
   for (std::size_t begin = 0; begin < source.count;) {
@@ -68,24 +58,20 @@ SweepOutcome run_members(const Scene& scene, const MemberSource& source, int thr
     }
     // progress counts the members handed to the sink, a held member once its reruns are done
     const std::size_t before = done_before;
-    const SweepControl part{[&](std::size_t done) {
-                              if (control.progress) control.progress(before + done);
-                            },
-                            control.stop, control.periods};
-    outcome.append(run_range(scene, range, threads, part, sink));
+    RunControl part = control;
+    if (control.progress) part.progress = [&](std::size_t done) { control.progress(before + done); };
+    outcome.append(run_range(scene, range, part, sink));
     done_before += range.end - range.begin;
   }
   return outcome;
 }
 
-SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, int threads,
-                       const ProgressCallback& progress, const std::atomic<bool>* stop,
-                       std::atomic<std::size_t>* periods) {
+SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, const RunControl& control) {
   std::vector<MemberResult> results(members.size());
   std::vector<char> finished(members.size(), 0);
-  const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
   auto outcome =
-      run_members(scene, source, threads, SweepControl{progress, stop, periods}, [&](MemberResult&& result) {
+      run_members(scene, source, control, [&](MemberResult&& result) {
         // members are in plan order (sorted by index): find the result's position
         const auto at = std::lower_bound(members.begin(), members.end(), result.index,
                                          [](const Member& m, std::size_t index) { return m.index < index; });

@@ -2,14 +2,11 @@
 // runs lane schedulers of that instantiation on OpenMP threads.
 #pragma once
 
-#include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <mutex>
+#include <optional>
 
 #include "ensemble/engine/compile_time_choice.hpp"
+#include "ensemble/engine/lane_groups.hpp"
 #include "ensemble/engine/lane_scheduler.hpp"
-#include "ensemble/engine/stopping_threads.hpp"
 #include "ensemble/rows/row_problem.hpp"
 #include "ensemble/rows/row_setup.hpp"
 #include "ensemble/rows/sweep.hpp"
@@ -20,54 +17,31 @@
 
 namespace rotorsweep::ensemble {
 
-/// Runs the members of `range` (one variant) on `threads` lane schedulers that share one counter
-/// (run_on_threads: an exception in one of them, an allocation that fails, stops the others).
+/// Runs the members of `range` (one variant) on the control's threads, a lane scheduler each
+/// (run_lane_groups: positions through the control's claim or one shared counter, an exception in
+/// one thread, an allocation that fails, stops the others).
 template <class Model, class Integrator, class Setup>
 SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, const Setup& setup,
-                                 int threads, const SweepControl& control, const ResultSink& sink) {
-  SweepOutcome outcome;
-  auto& stats = outcome.statistics;
-  stats.threads = threads;
-  stats.lane_width = kernels::lane_width<typename Model::lane_type>;
-  std::atomic<std::size_t> next{range.begin}, done{0};
-  std::mutex progress_lock, statistics_lock;
-  const auto start = std::chrono::steady_clock::now();
+                                 const RunControl& control, const ResultSink& sink) {
   const Member variant = range.source->at(range.begin);
-
-  run_on_threads(
-      threads, [&] { return control.stopped(); },
-      [&](const auto& stopped) {
+  SweepOutcome outcome;
+  static_cast<RunOutcome&>(outcome) = run_lane_groups(
+      {{range.begin, range.end}}, control, kernels::lane_width<typename Model::lane_type>,
+      [&](std::size_t, const auto& next, const auto& retired, const auto& stopped, const auto& stop_closed) {
         LaneScheduler<RowProblem<Model, Integrator, Setup>> scheduler(scene, variant, setup);
-        const auto next_member = [&]() -> std::optional<Member> {
-          if (stopped()) return std::nullopt;
-          const std::size_t k =
-              range.source->claim ? range.source->claim(range) : next.fetch_add(1, std::memory_order_relaxed);
-          if (k >= range.end) return std::nullopt;
-          return range.source->at(k);
-        };
-        const auto retire = [&](MemberResult&& result) {
-          sink(std::move(result));
-          const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
-          if (control.progress && progress_lock.try_lock()) {
-            control.progress(finished);
-            progress_lock.unlock();
-          }
-        };
-        const auto period_closed = [&] {  // progress within long members
-          if (!control.periods) return;
-          control.periods->fetch_add(1, std::memory_order_relaxed);
-          if (control.progress && progress_lock.try_lock()) {
-            control.progress(done.load(std::memory_order_relaxed));
-            progress_lock.unlock();
-          }
-        };
-        scheduler.run(next_member, retire, stopped, period_closed);
-        const std::lock_guard guard(statistics_lock);
-        stats.lane_steps_busy += scheduler.lane_steps_busy();
-        stats.lane_steps_total += scheduler.lane_steps_total();
+        scheduler.run(
+            [&]() -> std::optional<Member> {
+              const auto k = next();
+              if (!k) return std::nullopt;
+              return range.source->at(*k);
+            },
+            [&](MemberResult&& result) {
+              sink(std::move(result));
+              retired();
+            },
+            stopped, stop_closed);
+        return LaneSteps{scheduler.lane_steps_busy(), scheduler.lane_steps_total()};
       });
-  stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  outcome.interrupted = control.stopped();
   return outcome;
 }
 
@@ -88,12 +62,12 @@ decltype(auto) with_row_model(const Scene& scene, F&& f) {
 /// One variant's members on the row model with the scene's stepper, of family `family` (its tableau
 /// is data: RowProblem's integrator settings).
 template <kernels::StepperFamily family>
-SweepOutcome run_row_sweep(const Scene& scene, const VariantRange& range, int threads,
-                           const SweepControl& control, const ResultSink& sink) {
+SweepOutcome run_row_sweep(const Scene& scene, const VariantRange& range, const RunControl& control,
+                           const ResultSink& sink) {
   return with_row_model(scene, [&]<class Model>() {
     using Stepper = kernels::family_stepper<family, Model>;
     return run_lane_schedulers<Model, kernels::AdaptiveIntegrator<Model, Stepper>>(
-        scene, range, RowSetup<Model>(&scene), threads, control, sink);
+        scene, range, RowSetup<Model>(&scene), control, sink);
   });
 }
 

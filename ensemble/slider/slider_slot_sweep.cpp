@@ -2,10 +2,10 @@
 // separations' substrate tables (docs/model.md §9 "Substrate field") built once, chunks on the device.
 #include "ensemble/slider/slider_slot_sweep.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <optional>
 
 #include "ensemble/engine/chunk_pipeline.hpp"
@@ -61,13 +61,21 @@ double slider_first_step_scale(const SliderScene& scene) {
   });
 }
 
-bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
-                                 const SliderScanControl& control,
-                                 const std::function<void(std::vector<SliderMember>&&)>& finished,
-                                 SliderSlotDevice& device, const SliderTableBuilder& build_table) {
+RunOutcome run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                                       const RunControl& control,
+                                       const std::function<void(std::vector<SliderMember>&&)>& finished,
+                                       SliderSlotDevice& device, const SliderTableBuilder& build_table) {
+  const auto start = std::chrono::steady_clock::now();
   const double first_step_scale = slider_first_step_scale(scene);
-  const int threads = control.threads > 0 ? control.threads : omp_get_max_threads();
-  const auto stopped = [&] { return control.stopped && control.stopped(); };
+  RunOutcome outcome;
+  SweepStatistics& stats = outcome.statistics;
+  stats.threads = control.thread_count();
+  const auto stopped = [&] { return control.stopped(); };
+  const auto end_run = [&](bool halted) {
+    stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    outcome.interrupted = halted;
+    return outcome;
+  };
   std::size_t done = 0;
   for (std::size_t begin = 0; begin < plan_indices.size();) {
     // a group: the consecutive members of one size and speed
@@ -79,10 +87,10 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
       if (at.size != first.size || at.speed != first.speed) break;
       used[at.separation] = true;
     }
-    if (stopped()) return true;
+    if (stopped()) return end_run(true);
 
     const SliderSize size = scene.sizes[first.size];
-    const auto tables = group_tables(scene, first.speed, size, used, threads, build_table);
+    const auto tables = group_tables(scene, first.speed, size, used, stats.threads, build_table);
     std::vector<const kernels::SubstrateTable*> placed;
     for (const auto& t : tables) placed.push_back(t ? &*t : nullptr);
     const std::vector<SliderTableViews> views = per_separation(device.place_tables(placed), scene.forces);
@@ -91,13 +99,13 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
     const std::size_t capacity =
         std::min(std::max<std::size_t>(1, device.chunk_members(schedule)), end - begin);
     std::array<std::optional<SliderSlotChunk>, 2> chunks;  // a slot's chunk made at its first start
-    std::size_t next = begin;
+    std::atomic<std::size_t> next{begin};
     std::vector<std::size_t> claimed;  // a chunk's plan indices, claimed from [begin, end)
     const bool halted = run_chunks_two_in_flight(
         [&](std::size_t slot) {
           claimed.clear();
           while (claimed.size() < capacity) {
-            const std::size_t at = control.claim ? control.claim(begin, end) : next++;
+            const std::size_t at = control.next(begin, end, next);
             if (at >= end) break;
             claimed.push_back(plan_indices[at]);
           }
@@ -109,7 +117,7 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
         },
         [&](std::size_t slot) {
           SliderSlotChunk& chunk = *chunks[slot];
-          device.finish(chunk, slot);
+          stats.kernel_seconds += device.finish(chunk, slot);
           std::vector<SliderMember> members;
           for (std::size_t k = 0; k < chunk.count(); ++k) members.push_back(chunk.member(k));
           finished(std::move(members));
@@ -117,10 +125,10 @@ bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std
           if (control.progress) control.progress(done);
         },
         stopped);
-    if (halted) return true;
+    if (halted) return end_run(true);
     begin = end;
   }
-  return false;
+  return end_run(false);
 }
 
 }  // namespace rotorsweep::ensemble

@@ -6,6 +6,8 @@
 #include <functional>
 #include <vector>
 
+#include "ensemble/engine/run_control.hpp"
+#include "ensemble/engine/slot_device.hpp"
 #include "ensemble/slider/slider_scene.hpp"
 #include "ensemble/slider/slider_slots.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
@@ -13,23 +15,17 @@
 
 namespace rotorsweep::ensemble {
 
-/// What runs chunks of slider slots: the GPU (ensemble/gpu/gpu_sweep_slider.cu), or a host team. Two
-/// chunks may be in flight (run_chunks_two_in_flight), one per slot.
-class SliderSlotDevice {
+/// What runs chunks of slider slots: the GPU (ensemble/gpu/gpu_sweep_slider.cu), or a host team; besides
+/// running chunks it sizes them and places the substrate tables where its members read them.
+class SliderSlotDevice : public SlotDevice<SliderSlotChunk> {
  public:
-  virtual ~SliderSlotDevice() = default;
-  /// The most members one chunk of a slider of `grid` holds (enough to keep the device busy); chunks
+  /// The most members one chunk of a slider of `schedule` holds (enough to keep the device busy); chunks
   /// of the schedule before are finished.
   virtual std::size_t chunk_members(const SliderSlotSchedule& schedule) = 0;
   /// Views of `tables` where the members read them (copies in device memory, kept until the next
   /// call), in their order; a null table gives an empty view.
   virtual std::vector<kernels::SubstrateTableView> place_tables(
       const std::vector<const kernels::SubstrateTable*>& tables) = 0;
-  /// Starts every member of `chunk` in `slot` (0 or 1), inputs from its buffers; may return before they
-  /// have finished.
-  virtual void start(SliderSlotChunk& chunk, std::size_t slot) = 0;
-  /// Waits for the members started in `slot`; their outputs are then in the chunk's buffers.
-  virtual void finish(SliderSlotChunk& chunk, std::size_t slot) = 0;
 };
 
 /// Builds the substrate table of a slider of `size` at separation h (m) over the scene's path, its
@@ -45,11 +41,10 @@ double slider_first_step_scale(const SliderScene& scene);
 /// in flight (claimed with control.claim where set), each chunk's members to `finished` at once (series on
 /// the scene's timeline), their separations' tables (with SliderScene::forces also the four at shifted
 /// tracks) built by `build_table` on the control's threads; progress after each chunk, no chunk started
-/// once stopped() holds.
-/// Returns whether stopped() left members out.
-bool run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
-                                 const SliderScanControl& control,
-                                 const std::function<void(std::vector<SliderMember>&&)>& finished,
-                                 SliderSlotDevice& device, const SliderTableBuilder& build_table);
+/// once a stop holds. Statistics: the wall time and the device's.
+RunOutcome run_slider_members_in_slots(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                                       const RunControl& control,
+                                       const std::function<void(std::vector<SliderMember>&&)>& finished,
+                                       SliderSlotDevice& device, const SliderTableBuilder& build_table);
 
 }  // namespace rotorsweep::ensemble

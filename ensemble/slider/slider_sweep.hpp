@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ensemble/engine/run_control.hpp"
 #include "ensemble/slider/slider_scene.hpp"
 
 namespace rotorsweep::ensemble {
@@ -61,34 +62,22 @@ SliderTimeline slider_timeline(const SliderScene& scene);
 /// and the longest path.
 double slider_thread_bytes(const SliderScene& scene);
 
-/// How a scan runs: on `threads` threads (0: all); `progress(done)` after each member with the
-/// members finished so far; once `stopped()` is true no member starts and the running ones are
-/// abandoned within one step. `claim` (optional, as MemberSource::claim for rows): the next position
-/// in [begin, end) of the plan indices — a group the scan runs together, one size (on the GPU one size
-/// and speed) — for this process to run (≥ end: none left), from a counter shared with other
-/// processes; called from any thread. Without it the threads share one counter per group.
-struct SliderScanControl {
-  int threads = 0;
-  std::function<void(std::size_t)> progress;
-  std::function<bool()> stopped;
-  std::function<std::size_t(std::size_t begin, std::size_t end)> claim;
-};
-
-/// Runs the members `plan_indices` (ascending) in lane blocks of one size each and hands each block's
-/// members to `finished` as the block ends (one call at a time, blocks in any order). A member's
-/// results do not depend on which members share its block. Returns whether stopped() left members out;
-/// an exception in a worker (std::bad_alloc) stops the other blocks and is rethrown here. With
+/// Runs the members `plan_indices` (ascending) in lane blocks of one size each and hands the finished
+/// members to `finished` (one call at a time, in any order). A member's results do not depend on which
+/// members share its block. control.claim, where set, is asked for positions in plan_indices within a
+/// group run together (one size; on the GPU one size and speed); control.stops counts the samples members
+/// take. An exception in a worker (std::bad_alloc) stops the other blocks and is rethrown here. With
 /// SliderScene::device = gpu the members run on the GPU (run_gpu_slider_members), a chunk at a time.
-bool run_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
-                        const SliderScanControl& control,
-                        const std::function<void(std::vector<SliderMember>&&)>& finished);
+RunOutcome run_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                              const RunControl& control,
+                              const std::function<void(std::vector<SliderMember>&&)>& finished);
 
 /// Every member of the scene's plan, held in memory.
 struct SliderResult {
   SliderTimeline timeline;
-  std::vector<SliderMember> members;  ///< in plan order; members left out by stopped() are empty
-  bool stopped = false;               ///< stopped() turned true
+  std::vector<SliderMember> members;  ///< in plan order; members left out by a stop are empty
+  RunOutcome outcome;
 };
-SliderResult run_slider_scan(const SliderScene& scene, const SliderScanControl& control = {});
+SliderResult run_slider_scan(const SliderScene& scene, const RunControl& control = {});
 
 }  // namespace rotorsweep::ensemble

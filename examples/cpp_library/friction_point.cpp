@@ -29,7 +29,7 @@ atol = 1e-11
 )",
                                                      "example");
   const auto members = ensemble::plan_members(scene);
-  const auto outcome = ensemble::run_sweep(scene, members, 1, nullptr);
+  const auto outcome = ensemble::run_sweep(scene, members, {.threads = 1});
   const double paper[] = {2.018948e-3, 1.654868e-1};  // the paper's table, FM starts
   for (std::size_t i = 0; i < members.size(); ++i)
     std::printf("A = %4.1f  D = %.6e  paper %.6e\n", members[i].A, outcome.results[i].dissipation(),

@@ -64,7 +64,7 @@ void check_compiled_shapes() {
                      << (shape.every_quadrature ? ", every quadrature" : "") << ", N = " << rows);
     REQUIRE(ensemble::choose_register_shape(ensemble::compiled_register_shapes, scene, rows, {}) == shape);
     const auto members = ensemble::plan_members(scene);
-    const auto gpu = ensemble::run_sweep(scene, members, ensemble::thread_count(0), {}).results;
+    const auto gpu = ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)}).results;
     using Driver = ensemble::RegisterMember<kernels::HostWarp<shape.lanes>, shape.slots, shape.disordered,
                                             shape.stages, shape.every_quadrature>;
     using Integrator = ensemble::DeviceAdaptiveIntegrator<kernels::StepperFamily::rosenbrock,

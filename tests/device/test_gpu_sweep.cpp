@@ -33,7 +33,7 @@ using testing::ScopedVariable;
 std::vector<ensemble::MemberResult> run_on(ensemble::Scene scene, ensemble::Device device,
                                            const std::vector<ensemble::Member>& members) {
   scene.device = device;
-  return ensemble::run_sweep(scene, members, ensemble::thread_count(0), {}).results;
+  return ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)}).results;
 }
 
 /// A member per GPU thread against the CPU lanes: the same bits.
@@ -242,10 +242,11 @@ TEST_CASE("a member that fails on the GPU leaves the others' bits alone", "[gpu]
   auto scene = io::parse_scene_text(curve_scene("rodas4", 20, "1e-6"), "failure");
   scene.device = ensemble::Device::gpu;
   auto members = ensemble::plan_members(scene);
-  const auto clean = ensemble::run_sweep(scene, members, ensemble::thread_count(0), {}).results;
+  const auto clean = ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)}).results;
   const std::size_t broken = members.size() / 3;
   members[broken].A = std::numeric_limits<double>::quiet_NaN();
-  const auto with_failure = ensemble::run_sweep(scene, members, ensemble::thread_count(0), {}).results;
+  const auto with_failure =
+      ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)}).results;
   CHECK(with_failure[broken].status == kernels::LaneStatus::non_finite);
   CHECK(std::isnan(with_failure[broken].dissipation()));
   std::size_t differ = 0;

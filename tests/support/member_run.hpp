@@ -51,7 +51,7 @@ inline ensemble::MemberResult run_member(std::size_t rows, double A, double g, S
   member.rtol = rtol;
   member.atol = atol;
   const std::vector<ensemble::Member> members{member};
-  return ensemble::run_sweep(scene, members, 1, {}).results.front();
+  return ensemble::run_sweep(scene, members, {.threads = 1}).results.front();
 }
 
 }  // namespace rotorsweep::testing

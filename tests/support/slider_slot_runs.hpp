@@ -44,7 +44,7 @@ class HostTeamSliderDevice final : public ensemble::SliderSlotDevice {
       Driver::run(crew, chunk.schedule(), views, k, storage.data(), storage.size());
     });
   }
-  void finish(ensemble::SliderSlotChunk&, std::size_t) override {}  // start ran the members
+  double finish(ensemble::SliderSlotChunk&, std::size_t) override { return 0.0; }  // start ran the members
 
  private:
   std::size_t ranks_, chunk_;

@@ -12,6 +12,7 @@
 #include "ensemble/rows/device_member.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_slots.hpp"
+#include "ensemble/rows/row_chunks.hpp"
 #include "ensemble/rows/team_member.hpp"
 #include "kernels/lanes/team.hpp"
 #include "support/parallel_members.hpp"
@@ -76,18 +77,18 @@ inline std::vector<ensemble::MemberResult> on_host_team(const ensemble::Scene& s
 /// with run(schedule, views, k) on every core; it records each started chunk's stops (a plan chunk's
 /// periods, a shadow chunk's averaged periods) and members, in order.
 template <class Run>
-struct HostSlotDevice {
+struct HostSlotDevice final : ensemble::RowSlotDevice {
   explicit HostSlotDevice(Run r) : run(std::move(r)) {}
   Run run;
   std::vector<std::pair<int, std::size_t>> chunks;
 
-  void start(ensemble::SlotChunk& chunk, std::size_t) {
+  void start(ensemble::SlotChunk& chunk, std::size_t) override {
     chunks.emplace_back(chunk.schedule().periods.stops, chunk.count());
     const ensemble::SlotSchedule schedule = chunk.schedule();
     const ensemble::SlotViews views = chunk.views();
     for_each_member_in_parallel(chunk.count(), [&](std::size_t k) { run(schedule, views, k); });
   }
-  double finish(ensemble::SlotChunk&, std::size_t) { return 0.0; }
+  double finish(ensemble::SlotChunk&, std::size_t) override { return 0.0; }
 };
 
 /// Every member of the scene one by one with DeviceMember<Model, Integrator>: the CPU lanes' bits.

@@ -42,7 +42,7 @@ struct Run {
 Run run(const SceneText& scene_text, int threads) {
   const auto scene = io::parse_scene_text(scene_text.text(), "invariance");
   Run r{ensemble::plan_members(scene), {}};
-  r.results = ensemble::run_sweep(scene, r.members, threads, {}).results;
+  r.results = ensemble::run_sweep(scene, r.members, {.threads = threads}).results;
   return r;
 }
 

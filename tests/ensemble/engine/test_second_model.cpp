@@ -82,10 +82,10 @@ std::vector<ensemble::MemberResult> run_on_device_member(const ensemble::Scene& 
   const auto schedule = ensemble::slot_schedule(
       scene, members.front(),
       ensemble::device_first_step_scale<RotorIntegrator<double>>(scene, members.front()));
-  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
   std::vector<ensemble::MemberResult> results(members.size());
   ensemble::run_row_chunks(
-      scene, {&source, 0, members.size()}, schedule, 4, 2, {},
+      scene, {&source, 0, members.size()}, schedule, 4, {.threads = 2},
       [&](ensemble::MemberResult&& r) { results.at(r.index) = std::move(r); }, device);
   return results;
 }

@@ -17,7 +17,7 @@ namespace {
 
 std::vector<MemberResult> sweep(const std::string& text, int threads = 1) {
   const auto scene = rotorsweep::io::parse_scene_text(text, "coupled-test");
-  return run_sweep(scene, plan_members(scene), threads, {}).results;
+  return run_sweep(scene, plan_members(scene), {.threads = threads}).results;
 }
 
 const std::string grid =

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <string>
 #include <thread>
@@ -19,6 +20,7 @@
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_slots.hpp"
 #include "ensemble/rows/row_chunks.hpp"
+#include "ensemble/rows/shadow_run.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -74,12 +76,12 @@ void check_backends_agree(ensemble::Scene scene) {
   const ensemble::MemberPlan plan(scene);
   std::vector<ensemble::Member> members;
   for (std::size_t i = 0; i < plan.size(); ++i) members.push_back(plan[i]);
-  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
   const auto slots = run_through_slots(scene, source);
   for (const auto lanes : {ensemble::LaneKind::scalar, ensemble::LaneKind::simd}) {
     ensemble::Scene cpu = scene;
     cpu.lanes = lanes;
-    const auto outcome = ensemble::run_sweep(cpu, members, 2, {});
+    const auto outcome = ensemble::run_sweep(cpu, members, {.threads = 2});
     std::string first;
     INFO((lanes == ensemble::LaneKind::simd ? "simd lanes" : "scalar lanes"));
     CHECK(testing::count_differences(outcome.results, slots, first) == 0);
@@ -147,22 +149,22 @@ TEST_CASE("the device member driver runs a shadow run as the CPU does: its toler
     m.start = std::make_shared<const std::vector<double>>(std::move(start));
     members.push_back(std::move(m));
   }
-  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
   const auto slots = run_through_slots(scene, source);
-  const auto cpu = ensemble::run_sweep(scene, members, 2, {});
+  const auto cpu = ensemble::run_sweep(scene, members, {.threads = 2});
   std::string first;
   CHECK(testing::count_differences(cpu.results, slots, first) == 0);
   INFO(first);
   CHECK(first.empty());
   // and the scale and the start took effect: the plain members give other results
-  const auto plain = ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {});
+  const auto plain = ensemble::run_sweep(scene, ensemble::plan_members(scene), {.threads = 2});
   CHECK(testing::count_differences(plain.results, slots, first) > 0);
 }
 
 /// The members of `source` through the GPU's chunk loop (run_row_chunks) on a host device that runs
 /// DeviceMember, in chunks of `capacity`: results by plan index (an index not run keeps its default),
 /// the last progress count, each chunk's (stops, members), whether it was stopped and what it started
-/// after; `stop_after`: the stop flag rises once that many members were delivered.
+/// after; `stop_after`: the stop flag rises once that many members were delivered; `claim`: the control's.
 struct HostChunkRun {
   std::vector<ensemble::MemberResult> results;
   std::vector<char> delivered;
@@ -173,7 +175,8 @@ struct HostChunkRun {
 };
 HostChunkRun run_host_chunks(const ensemble::Scene& scene, const ensemble::MemberSource& source,
                              std::size_t plan_size, std::size_t capacity,
-                             std::size_t stop_after = std::size_t(-1)) {
+                             std::size_t stop_after = std::size_t(-1),
+                             std::function<std::size_t(std::size_t, std::size_t)> claim = {}) {
   HostChunkRun run;
   run.results.resize(plan_size);
   run.delivered.assign(plan_size, 0);
@@ -190,13 +193,16 @@ HostChunkRun run_host_chunks(const ensemble::Scene& scene, const ensemble::Membe
     const ensemble::Member first = source.at(0);
     const auto schedule =
         ensemble::slot_schedule(scene, first, ensemble::device_first_step_scale<Integrator>(scene, first));
-    const ensemble::SweepControl control{[&](std::size_t done) {
-                                           run.progress = done;
-                                           if (done >= stop_after) stop = true;
-                                         },
-                                         &stop};
+    const ensemble::RunControl control{.threads = 2,
+                                       .progress =
+                                           [&](std::size_t done) {
+                                             run.progress = done;
+                                             if (done >= stop_after) stop = true;
+                                           },
+                                       .stop = [&] { return stop.load(); },
+                                       .claim = claim};
     run.interrupted = ensemble::run_row_chunks(
-                          scene, {&source, 0, source.count}, schedule, capacity, 2, control,
+                          scene, {&source, 0, source.count}, schedule, capacity, control,
                           [&](ensemble::MemberResult&& r) {
                             run.delivered.at(r.index) += 1;
                             run.results.at(r.index) = std::move(r);
@@ -222,8 +228,8 @@ TEST_CASE("the device's chunks run shadow runs between the plan's and give the C
           "[device_member][shadow]") {
   const auto scene = shadowed_scene();
   const auto members = ensemble::plan_members(scene);
-  const auto cpu = ensemble::run_sweep(scene, members, 2, {}).results;
-  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const auto cpu = ensemble::run_sweep(scene, members, {.threads = 2}).results;
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
   const HostChunkRun gpu = run_host_chunks(scene, source, members.size(), 3);
   CHECK(gpu.progress == members.size());
 
@@ -253,7 +259,7 @@ TEST_CASE("a stopped device loop starts no chunk more and hands over no primary 
           "[device_member][shadow]") {
   const auto scene = shadowed_scene();
   const auto members = ensemble::plan_members(scene);
-  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
   const HostChunkRun gpu = run_host_chunks(scene, source, members.size(), 3, 1);
   CHECK(gpu.interrupted);
   CHECK(gpu.started_after_stop == 0);  // the chunk in flight when the flag rose was finished, none started
@@ -273,15 +279,15 @@ TEST_CASE("two devices claiming members from one counter run each member once, w
   // as two ranks of mpirun with a GPU each: every claim takes the counter's next member
   const auto scene = shadowed_scene();
   const auto members = ensemble::plan_members(scene);
-  const auto cpu = ensemble::run_sweep(scene, members, 2, {}).results;
+  const auto cpu = ensemble::run_sweep(scene, members, {.threads = 2}).results;
   std::atomic<std::size_t> counter = 0;
-  const ensemble::MemberSource shared{
-      members.size(), [&](std::size_t k) { return members[k]; },
-      [&](const ensemble::VariantRange& range) { return range.begin + counter++; }};
+  const ensemble::MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
+  const auto claim = [&](std::size_t begin, std::size_t) { return begin + counter++; };
   std::array<HostChunkRun, 2> ranks;
   std::array<std::thread, 2> threads;
   for (std::size_t r = 0; r < 2; ++r)
-    threads[r] = std::thread([&, r] { ranks[r] = run_host_chunks(scene, shared, members.size(), 2); });
+    threads[r] = std::thread(
+        [&, r] { ranks[r] = run_host_chunks(scene, source, members.size(), 2, std::size_t(-1), claim); });
   for (auto& t : threads) t.join();
 
   for (std::size_t i = 0; i < members.size(); ++i) {

@@ -104,7 +104,7 @@ TEST_CASE("the paper's appendix: random starts form two groups, and a second str
           "[ensemble][final_state]") {
   const auto run = [](const std::string& text) {
     const auto scene = rotorsweep::io::parse_scene_text(text, "appendix");
-    return std::pair(plan_members(scene), run_sweep(scene, plan_members(scene), 2, {}).results);
+    return std::pair(plan_members(scene), run_sweep(scene, plan_members(scene), {.threads = 2}).results);
   };
   const auto [members, results] = run(
       "[model]\nrows = 20\n[drive]\ng = [0.0011]\n[sweep]\nA = [1.0, 4.0, 6.0, 8.0, 11.0]\n"

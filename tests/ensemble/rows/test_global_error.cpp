@@ -35,7 +35,7 @@ ensemble::Scene cp_scene(double sigma, double rtol, const std::string& estimate,
 }
 
 std::vector<ensemble::MemberResult> run(const ensemble::Scene& scene) {
-  return ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {}).results;
+  return ensemble::run_sweep(scene, ensemble::plan_members(scene), {.threads = 2}).results;
 }
 
 /// Members whose reported dissipation_error covers |D − D_reference|.

@@ -14,7 +14,7 @@ TEST_CASE("D per period is unchanged over 10^4 periods with wrapped angles", "[e
       "[schedule]\nrelax_periods = 0\naverage_periods = 10000\n[observables]\nperiod_series = true\n"
       "alignment = false\nslips = false\n[numerics]\nlanes = \"scalar\"\nwrap_angles = true\n",
       "long.toml");
-  const auto outcome = run_sweep(scene, plan_members(scene), 1, nullptr);
+  const auto outcome = run_sweep(scene, plan_members(scene), {.threads = 1});
   const auto& periods = outcome.results[0].periods;
   REQUIRE(periods.size() == 10000);
   const double reference = periods[10].dissipation();

@@ -22,7 +22,7 @@ TEST_CASE("small g: bounded steps and CP kept", "[ensemble][quasi-static]") {
   single.rtol_values = {1e-6};
   single.atol_values = {1e-9};
   const auto members = plan_members(single);
-  const auto outcome = run_sweep(single, members, 2, nullptr);
+  const auto outcome = run_sweep(single, members, {.threads = 2});
   std::map<std::pair<double, double>, double> steps_per_period;  // (A, g) → attempts per period
   std::map<double, std::map<double, double>> friction;           // A → g → D/N
   for (std::size_t i = 0; i < members.size(); ++i) {
@@ -67,7 +67,7 @@ TEST_CASE("dipolar rows: D/N falls towards the quasi-static cycle's J_M from abo
       "test.toml");
   const auto k = two_angle_coefficients(scene.couplings.for_rows(20));
   const auto members = plan_members(scene);
-  const auto outcome = run_sweep(scene, members, 2, nullptr);
+  const auto outcome = run_sweep(scene, members, {.threads = 2});
   std::map<double, std::map<double, double>> friction;  // A → g → D/N
   for (std::size_t i = 0; i < members.size(); ++i) {
     REQUIRE(outcome.results[i].status == rotorsweep::kernels::LaneStatus::ok);

@@ -19,7 +19,7 @@ namespace {
 
 std::vector<MemberResult> sweep(const std::string& text, int threads = 1) {
   const auto scene = rotorsweep::io::parse_scene_text(text, "row-profile-test");
-  return run_sweep(scene, plan_members(scene), threads, {}).results;
+  return run_sweep(scene, plan_members(scene), {.threads = threads}).results;
 }
 
 const std::string open_rows = "[model]\nrows = 10\ncouplings = \"dipolar\"\nrange = 3\nboundary = \"open\"\n";

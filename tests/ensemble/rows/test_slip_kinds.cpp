@@ -69,7 +69,7 @@ TEST_CASE("N = 2 at small g: CP below A_* jumps, the window above it is smooth a
       "noise = 0.0\nreplicas = 2\n[disorder]\nA = 1e-6\n[schedule]\nrelax_periods = 2\naverage_periods = 2\n"
       "[observables]\nslip_kinds = true\n[numerics]\nrtol = 1e-12\natol = 1e-15\n",
       "slip-kinds");
-  const auto results = ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {}).results;
+  const auto results = ensemble::run_sweep(scene, ensemble::plan_members(scene), {.threads = 2}).results;
   REQUIRE(results.size() == 6);
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& m = results[i];
@@ -99,7 +99,7 @@ TEST_CASE("without slip_kinds nothing reruns and nothing is counted", "[ensemble
       "[model]\nrows = 2\n[drive]\ng = 1e-5\n[sweep]\nA = 9.0\n[initial]\nkinds = [\"AFM\"]\nnoise = 0.0\n"
       "[disorder]\nA = 1e-6\n[numerics]\nrtol = 1e-12\natol = 1e-15\n",
       "no-slip-kinds");
-  const auto results = ensemble::run_sweep(scene, ensemble::plan_members(scene), 1, {}).results;
+  const auto results = ensemble::run_sweep(scene, ensemble::plan_members(scene), {.threads = 1}).results;
   CHECK(results.front().regime == ensemble::Regime::cp);
   CHECK(std::isnan(results.front().slip_jumps));
   CHECK(results.front().slip_energies.empty());
@@ -114,7 +114,7 @@ TEST_CASE("just below A_* slips that look smooth at g = 1e-3 stay CP: the landsc
       "noise = 0.0\n[disorder]\nA = 1e-6\n[observables]\nslip_kinds = true\n[numerics]\nrtol = 1e-10\n"
       "atol = 1e-13\n",
       "below-a-star");
-  const auto results = ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {}).results;
+  const auto results = ensemble::run_sweep(scene, ensemble::plan_members(scene), {.threads = 2}).results;
   REQUIRE(results.size() == 2);
   CHECK(results[0].slip_smooth == 4);
   CHECK(results[0].regime == ensemble::Regime::cp);

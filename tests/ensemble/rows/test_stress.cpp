@@ -32,7 +32,7 @@ TEST_CASE("the reduced stress scene ends ok or flagged, never with a silent NaN"
   const Scene scene = reduced_stress_scene();
   const auto members = plan_members(scene);
   REQUIRE(members.size() == 2 * 2 * 5 * 3 * 2);
-  const auto outcome = run_sweep(scene, members, 2, nullptr);
+  const auto outcome = run_sweep(scene, members, {.threads = 2});
   for (const auto& r : outcome.results) {
     const auto& m = members[r.index];
     INFO("N " << m.rows << " rtol " << m.rtol << " A " << m.A << " g " << m.g);
@@ -47,7 +47,7 @@ TEST_CASE("failing stress members leave the others bit-identical", "[ensemble][s
   Scene scene = reduced_stress_scene();
   scene.max_steps = 20000;  // the tight-tolerance CP members need more
   const auto members = plan_members(scene);
-  const auto outcome = run_sweep(scene, members, 2, nullptr);
+  const auto outcome = run_sweep(scene, members, {.threads = 2});
   std::vector<Member> survivors;
   std::vector<MemberResult> expected;
   for (std::size_t i = 0; i < members.size(); ++i) {
@@ -63,7 +63,7 @@ TEST_CASE("failing stress members leave the others bit-identical", "[ensemble][s
     CHECK(r.regime == Regime::unsettled);
   }
   REQUIRE(survivors.size() < members.size());
-  const auto alone = run_sweep(scene, survivors, 1, nullptr);
+  const auto alone = run_sweep(scene, survivors, {.threads = 1});
   for (std::size_t i = 0; i < survivors.size(); ++i) {
     INFO("member " << survivors[i].index);
     CHECK(same_bits(alone.results[i].dissipation(), expected[i].dissipation()));

@@ -2,6 +2,7 @@
 // or off, and on scalar or SIMD lanes; steady_tol retires settled members early; a failing
 // member is isolated from the members sharing its lanes; without the period series only the last
 // periods are kept, with the same summary; the stop flag ends a sweep early.
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <catch2/catch.hpp>
@@ -28,7 +29,7 @@ Scene curve_scene(const std::string& extra = "", const std::string& observables 
 }
 
 SweepOutcome sweep(const Scene& scene, int threads = 1) {
-  return run_sweep(scene, plan_members(scene), threads, nullptr);
+  return run_sweep(scene, plan_members(scene), {.threads = threads});
 }
 
 bool same_bits(double a, double b) {
@@ -175,14 +176,14 @@ TEST_CASE("a subset of the plan gives the same bits as the whole plan", "[ensemb
   const Scene scene = curve_scene("[model]\nrows = [2, 8]\n[numerics]\nrtol = [1e-5, 1e-8]\n");
   const auto members = plan_members(scene);
   REQUIRE(members.size() == 4 * 52);
-  const auto whole = run_sweep(scene, members, 2, nullptr);
+  const auto whole = run_sweep(scene, members, {.threads = 2});
   std::vector<Member> every_third;
   std::vector<MemberResult> expected;
   for (std::size_t i = 0; i < members.size(); i += 3) {
     every_third.push_back(members[i]);
     expected.push_back(whole.results[i]);
   }
-  const auto part = run_sweep(scene, every_third, 1, nullptr);
+  const auto part = run_sweep(scene, every_third, {.threads = 1});
   REQUIRE(part.results.size() == every_third.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
     INFO("member " << every_third[i].index);
@@ -225,10 +226,11 @@ TEST_CASE("the stop flag ends a sweep early and says so", "[ensemble][sweep]") {
   const Scene scene = curve_scene("[model]\nrows = [2, 8]\n");
   const auto members = plan_members(scene);
   std::atomic<bool> stop{false};
-  CHECK_FALSE(run_sweep(scene, members, 2, nullptr, &stop).interrupted);
+  const auto raised = [&] { return stop.load(); };
+  CHECK_FALSE(run_sweep(scene, members, {.threads = 2, .stop = raised}).interrupted);
 
   stop = true;
-  const auto before = run_sweep(scene, members, 2, nullptr, &stop);
+  const auto before = run_sweep(scene, members, {.threads = 2, .stop = raised});
   CHECK(before.interrupted);
   CHECK(before.results.size() == members.size());
   CHECK(before.statistics.lane_steps_total == 0);  // not one step was taken
@@ -236,15 +238,28 @@ TEST_CASE("the stop flag ends a sweep early and says so", "[ensemble][sweep]") {
   // raised from the progress callback: the members still to come are skipped
   stop = false;
   std::size_t seen = 0;
-  const auto during = run_sweep(
-      scene, members, 1,
-      [&](std::size_t done) {
-        seen = done;
-        if (done >= 5) stop = true;
-      },
-      &stop);
+  const auto during = run_sweep(scene, members,
+                                {.threads = 1,
+                                 .progress =
+                                     [&](std::size_t done) {
+                                       seen = done;
+                                       if (done >= 5) stop = true;
+                                     },
+                                 .stop = raised});
   CHECK(during.interrupted);
   CHECK(seen < members.size());
+
+  // raised after the last member: nothing was left out, so the sweep is whole
+  stop = false;
+  const auto after = run_sweep(scene, members,
+                               {.threads = 2,
+                                .progress =
+                                    [&](std::size_t done) {
+                                      if (done == members.size()) stop = true;
+                                    },
+                                .stop = raised});
+  CHECK_FALSE(after.interrupted);
+  CHECK(std::count(after.finished.begin(), after.finished.end(), 1) == std::ptrdiff_t(members.size()));
 }
 
 TEST_CASE("progress moves within members: every closed period is counted and reported", "[ensemble][sweep]") {
@@ -254,18 +269,20 @@ TEST_CASE("progress moves within members: every closed period is counted and rep
       "average_periods = 3\n",
       "progress.toml");
   const auto members = plan_members(scene);
-  const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }, {}};
+  const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
   std::atomic<std::size_t> periods{0};
   std::vector<std::size_t> reports;
   std::vector<std::size_t> periods_seen;
-  const SweepControl control{[&](std::size_t done) {
-                               reports.push_back(done);
-                               periods_seen.push_back(periods.load());
-                             },
-                             nullptr, &periods};
+  const RunControl control{.threads = 1,
+                           .progress =
+                               [&](std::size_t done) {
+                                 reports.push_back(done);
+                                 periods_seen.push_back(periods.load());
+                               },
+                           .stops = &periods};
   std::size_t shadows =
       0;  // a member whose averaged periods slip runs them again (ensemble/rows/shadow_run.hpp)
-  run_members(scene, source, 1, control,
+  run_members(scene, source, control,
               [&](MemberResult&& r) { shadows += std::isfinite(r.dissipation_shadow) ? 1 : 0; });
   CHECK(periods.load() == 12 + 3 * shadows);  // 2 members × (3 + 3) periods, and 3 per shadow run
   CHECK(reports.size() >= 12);

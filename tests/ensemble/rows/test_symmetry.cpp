@@ -18,7 +18,7 @@ SweepOutcome strict_fm_sweep(const std::string& stepper, double noise) {
       "[initial]\nkinds = [\"FM\"]\nnoise = " +
           std::to_string(noise) + "\n[numerics]\nstepper = \"" + stepper + "\"\n",
       "symmetry.toml");
-  return run_sweep(scene, plan_members(scene), 2, nullptr);
+  return run_sweep(scene, plan_members(scene), {.threads = 2});
 }
 
 }  // namespace

@@ -180,7 +180,7 @@ TEST_CASE("a team of eight gives the CPU lanes' labels on the examples but where
     for (std::size_t i = 0; i < scene.A_values.size(); i += stride) A.push_back(scene.A_values[i]);
     if (A.back() != scene.A_values.back()) A.push_back(scene.A_values.back());
     scene.A_values = A;
-    const auto lanes = ensemble::run_sweep(scene, ensemble::plan_members(scene), 2, {}).results;
+    const auto lanes = ensemble::run_sweep(scene, ensemble::plan_members(scene), {.threads = 2}).results;
     const auto team = testing::on_host_team(scene, 8);
     REQUIRE(team.size() == lanes.size());
     for (std::size_t k = 0; k < lanes.size(); ++k) {

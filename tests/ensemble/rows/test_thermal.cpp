@@ -15,7 +15,7 @@ namespace {
 
 std::vector<MemberResult> sweep(const std::string& text, int threads = 1) {
   const auto scene = rotorsweep::io::parse_scene_text(text, "thermal-test");
-  return run_sweep(scene, plan_members(scene), threads, {}).results;
+  return run_sweep(scene, plan_members(scene), {.threads = threads}).results;
 }
 
 /// ⟨H⟩ = ∫ H e^{-H/T} dθ0 dθ1 / Z for N = 2 at A = 0: H = -3/2 (cos 2θ0 + cos 2θ1) + 2 cos(θ0 - θ1),

@@ -24,7 +24,7 @@ TEST_CASE("D converges as the tolerance tightens outside CP", "[ensemble][tolera
           controller + "\"\n",
       "tolerance.toml");
   const auto members = plan_members(scene);
-  const auto outcome = run_sweep(scene, members, 2, nullptr);
+  const auto outcome = run_sweep(scene, members, {.threads = 2});
   for (std::size_t a = 0; a < 2; ++a) {
     // members are variant-major: the same A (and noise draw) at rtol 1e-6, 1e-8, 1e-10, 1e-12
     const double reference = outcome.results[6 + a].dissipation();

@@ -36,9 +36,7 @@ ensemble::SliderScene parse(const std::string& text) {
 }
 
 std::vector<SliderMember> on_lanes(const ensemble::SliderScene& scene) {
-  ensemble::SliderScanControl control;
-  control.threads = 1;
-  return ensemble::run_slider_scan(scene, control).members;
+  return ensemble::run_slider_scan(scene, {.threads = 1}).members;
 }
 
 double largest(const std::vector<SliderMember>& members, double SliderMember::*value) {

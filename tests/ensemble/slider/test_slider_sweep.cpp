@@ -2,10 +2,13 @@
 // of samples and periods, the energy balance per period, convergence of the mean friction with the tolerance
 // and with the substrate table, thread-count invariance, and the scene keys' errors.
 #include <algorithm>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "ensemble/slider/slider_sweep.hpp"
@@ -27,9 +30,7 @@ std::string small_scene(const std::string& numerics = "rtol = 1e-7\natol = 1e-7\
 }
 
 SliderResult scan(const std::string& text, int threads = 1) {
-  SliderScanControl control;
-  control.threads = threads;
-  return run_slider_scan(rotorsweep::io::parse_slider_scene_text(text, "slider-test"), control);
+  return run_slider_scan(rotorsweep::io::parse_slider_scene_text(text, "slider-test"), {.threads = threads});
 }
 
 }  // namespace
@@ -250,6 +251,61 @@ TEST_CASE("slider scan: one thread or two give the same bits", "[ensemble][slide
     CHECK(one.members[k].friction == two.members[k].friction);
     CHECK(one.members[k].friction_series == two.members[k].friction_series);
   }
+}
+
+TEST_CASE("slider scan: the run API's claim, progress, stops and stop", "[ensemble][slider]") {
+  const auto scene = rotorsweep::io::parse_slider_scene_text(small_scene(), "slider-test");
+  const auto one = run_slider_scan(scene, {.threads = 1});
+  std::vector<std::size_t> all(scene.member_count());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+
+  // two processes of mpirun as two runs on two threads, claiming from one counter: each member once, its bits
+  std::atomic<std::size_t> counter{0};
+  std::atomic<std::size_t> samples{0};
+  std::vector<SliderMember> members(all.size());
+  std::vector<int> runs(all.size(), 0);
+  std::mutex lock;
+  const RunControl shared{.threads = 1, .stops = &samples, .claim = [&](std::size_t begin, std::size_t) {
+                            return begin + counter++;
+                          }};
+  const auto finished = [&](std::vector<SliderMember>&& block) {
+    const std::lock_guard guard(lock);
+    for (auto& m : block) {
+      ++runs[m.plan_index];
+      members[m.plan_index] = std::move(m);
+    }
+  };
+  std::thread other([&] { run_slider_members(scene, all, shared, finished); });
+  run_slider_members(scene, all, shared, finished);
+  other.join();
+  std::size_t taken = 0;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    CHECK(runs[k] == 1);
+    CHECK(members[k].friction_series == one.members[k].friction_series);
+    taken += std::size_t(std::count_if(members[k].friction_series.begin(), members[k].friction_series.end(),
+                                       [](double x) { return !std::isnan(x); }));
+  }
+  CHECK(samples == taken);  // a stop per sample
+
+  // progress after each member; a stop raised after the first leaves the others out
+  std::size_t last = 0;
+  bool stop = false;
+  const auto stopped = run_slider_members(scene, all,
+                                          {.threads = 1,
+                                           .progress =
+                                               [&](std::size_t done) {
+                                                 last = done;
+                                                 stop = true;
+                                               },
+                                           .stop = [&] { return stop; }},
+                                          [](std::vector<SliderMember>&&) {});
+  CHECK(stopped.interrupted);
+  CHECK(last == 1);
+  const auto whole =
+      run_slider_scan(scene, {.threads = 2, .progress = [&](std::size_t done) { last = done; }});
+  CHECK_FALSE(whole.outcome.interrupted);
+  CHECK(last == all.size());
+  CHECK(whole.outcome.statistics.lane_steps_busy > 0);
 }
 
 TEST_CASE("slider scan: a given start, row by row from the smallest y, gives the drawn start's bits",
