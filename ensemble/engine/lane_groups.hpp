@@ -15,11 +15,6 @@
 
 namespace rotorsweep::ensemble {
 
-/// Positions [begin, end) that one lane scheduler runs together (a row variant, a slider size).
-struct PositionRange {
-  std::size_t begin = 0, end = 0;
-};
-
 /// A lane scheduler's steps: attempts × lanes that held a member, and of all lanes.
 struct LaneSteps {
   double busy = 0, total = 0;

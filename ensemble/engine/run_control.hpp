@@ -10,6 +10,12 @@
 
 namespace rotorsweep::ensemble {
 
+/// Positions [begin, end) of a run's members that run together (a row variant, a slider size; on a
+/// device a slider's size and speed): what RunControl::claim hands out.
+struct PositionRange {
+  std::size_t begin = 0, end = 0;
+};
+
 /// How members run and stop. Every part may be left empty.
 struct RunControl {
   int threads = 0;  ///< OpenMP threads (on a GPU: the host's, for fills and summaries); 0: OpenMP's default

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "ensemble/engine/chunk_pipeline.hpp"
+#include "ensemble/engine/chunk_runs.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/row_reruns.hpp"
 
@@ -21,54 +21,32 @@ SweepOutcome run_row_chunks(const Scene& scene, const VariantRange& range, const
                             std::size_t capacity, const RunControl& control, const ResultSink& sink,
                             RowSlotDevice& device) {
   if (scene.slip_kinds) throw std::logic_error("run_row_chunks: slower reruns run on the CPU lanes");
-  const auto seconds_since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
   const auto start = std::chrono::steady_clock::now();
   SweepOutcome outcome;
-  SweepStatistics& stats = outcome.statistics;
-  stats.lane_width = 1;
-
+  outcome.statistics.lane_width = 1;
   const SlotSchedule shadow_schedule = shadow_slot_schedule(scene, schedule);
   RowReruns reruns(scene, schedule.stochastic, schedule.rtol);
   std::mutex reruns_lock;                          // deliver hands results over on several threads
   std::array<std::optional<SlotChunk>, 2> chunks;  // a slot's chunk made at its first start
   std::vector<Member> members;                     // the next chunk's
-  std::atomic<std::size_t> next{range.begin};
-  bool plan_left = true;
-  std::atomic<std::size_t> delivered = 0;
+  std::size_t delivered = 0;
 
-  const bool halted = run_chunks_two_in_flight(
-      [&](std::size_t slot) {
-        const auto fill_start = std::chrono::steady_clock::now();
+  const bool halted = run_group_in_chunks(
+      device, {range.begin, range.end}, capacity, control, delivered, outcome.statistics,
+      [&] { return reruns.queued(); },
+      [&](std::size_t slot, const std::vector<std::size_t>& positions) -> SlotChunk& {
         members.clear();
-        bool shadows = reruns.queued() >= capacity;
-        while (!shadows && plan_left && members.size() < capacity) {
-          const std::size_t k = control.next(range.begin, range.end, next);
-          if (k < range.end)
-            members.push_back(range.source->at(k));
-          else
-            plan_left = false;
-        }
-        if (members.empty()) {
-          if (reruns.queued() == 0) return false;
-          shadows = true;
+        for (const std::size_t k : positions) members.push_back(range.source->at(k));
+        if (members.empty())  // the queued shadows
           while (members.size() < capacity && reruns.queued() > 0) members.push_back(*reruns.take_queued());
-        }
         if (!chunks[slot]) chunks[slot].emplace(schedule, capacity);
         SlotChunk& chunk = *chunks[slot];
-        chunk.set_schedule(shadows ? shadow_schedule : schedule);
+        chunk.set_schedule(positions.empty() ? shadow_schedule : schedule);
         chunk.fill(scene, members);
-        device.start(chunk, slot);
-        stats.fill_seconds += seconds_since(fill_start);
-        return true;
+        return chunk;
       },
-      [&](std::size_t slot) {
-        SlotChunk& chunk = *chunks[slot];
-        const auto wait_start = std::chrono::steady_clock::now();
-        stats.kernel_seconds += device.finish(chunk, slot);
-        stats.wait_seconds += seconds_since(wait_start);
-        const auto deliver_start = std::chrono::steady_clock::now();
+      [&](SlotChunk& chunk) {
+        std::atomic<std::size_t> sunk = 0;
         const double attempts =
             chunk.deliver(scene, control.thread_count(), [&](const Member& member, MemberResult&& result) {
               std::optional<MemberResult> done;
@@ -80,15 +58,12 @@ SweepOutcome run_row_chunks(const Scene& scene, const VariantRange& range, const
               }
               if (!done) return;
               sink(std::move(*done));
-              ++delivered;
+              ++sunk;
             });
-        stats.deliver_seconds += seconds_since(deliver_start);
-        stats.lane_steps_busy += attempts;
-        stats.lane_steps_total += attempts;
-        if (control.progress) control.progress(delivered);
-      },
-      [&] { return control.stopped(); });
-  stats.wall_seconds = seconds_since(start);
+        return ChunkDelivery{sunk.load(), attempts};
+      });
+  outcome.statistics.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.interrupted = halted && delivered < range.end - range.begin;
   return outcome;
 }

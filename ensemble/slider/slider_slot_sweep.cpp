@@ -4,11 +4,10 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <optional>
 
-#include "ensemble/engine/chunk_pipeline.hpp"
+#include "ensemble/engine/chunk_runs.hpp"
 #include "kernels/models/slider/slider_model.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -70,13 +69,12 @@ RunOutcome run_slider_members_in_slots(const SliderScene& scene, const std::vect
   RunOutcome outcome;
   SweepStatistics& stats = outcome.statistics;
   stats.threads = control.thread_count();
-  const auto stopped = [&] { return control.stopped(); };
+  std::size_t done = 0;
   const auto end_run = [&](bool halted) {
     stats.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    outcome.interrupted = halted;
+    outcome.interrupted = halted && done < plan_indices.size();
     return outcome;
   };
-  std::size_t done = 0;
   for (std::size_t begin = 0; begin < plan_indices.size();) {
     // a group: the consecutive members of one size and speed
     const SliderMemberIndex first = slider_plan_member(scene, plan_indices[begin]).index;
@@ -87,7 +85,7 @@ RunOutcome run_slider_members_in_slots(const SliderScene& scene, const std::vect
       if (at.size != first.size || at.speed != first.speed) break;
       used[at.separation] = true;
     }
-    if (stopped()) return end_run(true);
+    if (control.stopped()) return end_run(true);
 
     const SliderSize size = scene.sizes[first.size];
     const auto tables = group_tables(scene, first.speed, size, used, stats.threads, build_table);
@@ -99,32 +97,22 @@ RunOutcome run_slider_members_in_slots(const SliderScene& scene, const std::vect
     const std::size_t capacity =
         std::min(std::max<std::size_t>(1, device.chunk_members(schedule)), end - begin);
     std::array<std::optional<SliderSlotChunk>, 2> chunks;  // a slot's chunk made at its first start
-    std::atomic<std::size_t> next{begin};
-    std::vector<std::size_t> claimed;  // a chunk's plan indices, claimed from [begin, end)
-    const bool halted = run_chunks_two_in_flight(
-        [&](std::size_t slot) {
+    std::vector<std::size_t> claimed;                      // a chunk's plan indices
+    const bool halted = run_group_in_chunks(
+        device, {begin, end}, capacity, control, done, stats, [] { return std::size_t(0); },
+        [&](std::size_t slot, const std::vector<std::size_t>& positions) -> SliderSlotChunk& {
           claimed.clear();
-          while (claimed.size() < capacity) {
-            const std::size_t at = control.next(begin, end, next);
-            if (at >= end) break;
-            claimed.push_back(plan_indices[at]);
-          }
-          if (claimed.empty()) return false;
+          for (const std::size_t k : positions) claimed.push_back(plan_indices[k]);
           if (!chunks[slot]) chunks[slot].emplace(scene, first.speed, schedule, capacity);
           chunks[slot]->fill(claimed, views);
-          device.start(*chunks[slot], slot);
-          return true;
+          return *chunks[slot];
         },
-        [&](std::size_t slot) {
-          SliderSlotChunk& chunk = *chunks[slot];
-          stats.kernel_seconds += device.finish(chunk, slot);
+        [&](SliderSlotChunk& chunk) {
           std::vector<SliderMember> members;
           for (std::size_t k = 0; k < chunk.count(); ++k) members.push_back(chunk.member(k));
           finished(std::move(members));
-          done += chunk.count();
-          if (control.progress) control.progress(done);
-        },
-        stopped);
+          return ChunkDelivery{chunk.count(), 0.0};
+        });
     if (halted) return end_run(true);
     begin = end;
   }
