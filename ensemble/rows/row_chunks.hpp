@@ -16,14 +16,14 @@ namespace rotorsweep::ensemble {
 using RowSlotDevice = SlotDevice<SlotChunk>;
 
 /// The members of `range` with `schedule` in chunks of up to `capacity` on `device`, two in flight
-/// (run_chunks_two_in_flight): while the device runs one chunk the host fills the next and delivers
+/// (run_group_in_chunks): while the device runs one chunk the host fills the next and delivers
 /// the one before (summaries on the control's threads). Members are taken in plan order, or one by one
 /// through the control's claim where it has one (the ranks of mpirun, each with its device). A member that
 /// needs a shadow run is held (RowReruns) and its shadow queued; the queued shadows run as a chunk of their
 /// own (shadow_slot_schedule) once they fill one or the plan has run out, and each completes its primary,
-/// which then goes to `sink`. Progress counts the members handed to `sink`; no chunk starts once control.stop
-/// is raised (held primaries are then left out). Statistics: the device's seconds, the host's fill, wait and
-/// delivery.
+/// which then goes to `sink`. Progress counts the members handed to `sink`; no chunk starts once the
+/// control's stop holds (held primaries are then left out). Statistics: the device's seconds, the host's
+/// fill, wait and delivery.
 SweepOutcome run_row_chunks(const Scene& scene, const VariantRange& range, const SlotSchedule& schedule,
                             std::size_t capacity, const RunControl& control, const ResultSink& sink,
                             RowSlotDevice& device);
