@@ -75,18 +75,24 @@ inline std::string private_tmpfs(const std::filesystem::path& at, const std::str
   return std::system((mount + "true\" 2>/dev/null").c_str()) == 0 ? mount : "";
 }
 
-/// Runs the executable with `arguments` in the mount namespace of `mount` (private_tmpfs's, at `disk`),
-/// another writer filling that disk after `delay` (a sleep(1) argument); then copies the file `kept` from
-/// the disk into `scratch` (where it exists) and appends the disk's listing to the output.
+/// Runs the executable with `arguments` (without -q) in the mount namespace of `mount` (private_tmpfs's, at
+/// `disk`) and fills that disk once the run has printed its first line (its header, printed once its
+/// partial file is created): the run is stopped (SIGSTOP) the moment the line is there, another writer
+/// fills the disk (16 MiB at most, whatever disk it lands on), and the run continues (SIGCONT) into the full disk. Events, not a clock, order the
+/// three, so the run meets the full disk with members still to write on any machine. Then copies the
+/// file `kept` from the disk into `scratch` (where it exists) and appends the disk's listing to the output.
 inline CliResult run_cli_filling_disk(const std::string& mount, const std::string& arguments,
-                                      const std::filesystem::path& disk, const std::string& delay,
-                                      const std::string& kept, const std::filesystem::path& scratch) {
+                                      const std::filesystem::path& disk, const std::string& kept,
+                                      const std::filesystem::path& scratch) {
   const auto log = scratch / "cli-output.txt";
-  const std::string command = mount + std::string(ROTORSWEEP_EXECUTABLE) + " " + arguments + " > '" +
-                              log.string() + "' 2>&1 & pid=\\$!; sleep " + delay + "; cat /dev/zero > '" +
-                              (disk / "filler").string() + "' 2>/dev/null; wait \\$pid; rc=\\$?; cp '" +
-                              (disk / kept).string() + "' '" + (scratch / kept).string() + "'; ls '" +
-                              disk.string() + "' >> '" + log.string() + "'; exit \\$rc\"";
+  // the braces keep the mount in the foreground: `mount && run &` would background the mount too
+  const std::string command =
+      mount + "{ rm -f '" + log.string() + "'; " + std::string(ROTORSWEEP_EXECUTABLE) + " " + arguments +
+      " > '" + log.string() + "' 2>&1 & pid=\\$!; while [ ! -s '" + log.string() +
+      "' ] && kill -0 \\$pid 2>/dev/null; do :; done; kill -STOP \\$pid 2>/dev/null; head -c 16777216 /dev/zero > '" +
+      (disk / "filler").string() + "' 2>/dev/null; kill -CONT \\$pid 2>/dev/null; wait \\$pid; rc=\\$?; cp '" +
+      (disk / kept).string() + "' '" + (scratch / kept).string() + "'; ls '" + disk.string() + "' >> '" +
+      log.string() + "'; exit \\$rc; }\"";
   return detail::run_logged(command, log);
 }
 

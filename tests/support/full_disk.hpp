@@ -1,5 +1,5 @@
 // Test support: a command whose disk fills up mid-run (a private tmpfs of 4 MiB, filled by another
-// writer) exits 1 naming the full disk, keeps its finished members, and resumes to the whole run's datasets.
+// writer once the run has created its partial file) exits 1 naming the full disk, and resumes to the whole run.
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -14,10 +14,10 @@
 namespace rotorsweep::testing {
 
 /// `rotorsweep COMMAND SCENE -q ARGUMENTS -o OUT.h5` (a run or slider scan of `members` members) with
-/// OUT.h5 on a 4 MiB file system of its own, filled by another writer a third of the way through the
-/// whole run's wall time on as many threads: exit 1 naming the full disk and --resume, no complete file
-/// there, a partial file with some members not done, and --resume of it ending in the whole run's
-/// datasets. Skipped with a warning where no private tmpfs can be mounted.
+/// OUT.h5 on a 4 MiB file system of its own, filled by another writer while the run is held stopped the
+/// moment it has created its partial file (run_cli_filling_disk, without -q): exit 1 naming the full disk and --resume, no
+/// complete file there, a partial file with members not done, and --resume of it ending in the whole
+/// run's datasets. Skipped with a warning where no private tmpfs can be mounted.
 inline void check_full_disk_resumes(const std::string& command, const std::filesystem::path& scene,
                                     const std::string& arguments, std::size_t members,
                                     const std::filesystem::path& dir) {
@@ -30,10 +30,9 @@ inline void check_full_disk_resumes(const std::string& command, const std::files
   const std::string base = command + " '" + scene.string() + "' -q ";
   const auto whole = run_cli(base + "-o '" + (dir / "whole.h5").string() + "'", dir);
   REQUIRE(whole.exit_code == 0);
-  const std::string filled_after = std::to_string(whole.seconds / 3);
-  INFO("whole run " << whole.seconds << " s, disk filled after " << filled_after << " s");
-  const auto full = run_cli_filling_disk(mount, base + arguments + " -o '" + (small / "out.h5").string() + "'",
-                                         small, filled_after, "out.h5.partial", dir);
+  const auto full = run_cli_filling_disk(
+      mount, command + " '" + scene.string() + "' " + arguments + " -o '" + (small / "out.h5").string() + "'",
+      small, "out.h5.partial", dir);
   INFO(full.output);
   CHECK(full.exit_code == 1);
   CHECK_THAT(full.output, Catch::Contains("No space left on device") && Catch::Contains("--resume"));
