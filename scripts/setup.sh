@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libxsimd-dev xtl-dev libhdf5-dev catch2 libtomlplusplus-dev libcli11-dev
+  libeigen3-dev libxsimd-dev xtl-dev libhdf5-dev catch2 libtomlplusplus-dev libcli11-dev libfftw3-dev
   python3 python3-numpy python3-h5py python3-matplotlib python3-scipy python3-xarray python3-pytest
   python3-dev pybind11-dev python3-pybind11
   openmpi-bin libopenmpi-dev

@@ -1,5 +1,5 @@
 // The Jacobian of rotor dynamics with a symmetric stiffness K = ∂τ/∂θ per lane, inertial (θ, ω) or
-// overdamped θ, its stage solve reduced to one n × n LDLᵀ (the slider, docs/model.md §9 "Integrating it").
+// overdamped θ, its stage solve reduced to one n × n symmetric system (the slider, docs/model.md §9).
 #pragma once
 
 #include <cstddef>
@@ -16,20 +16,23 @@ namespace rotorsweep::kernels {
 /// and J = K/γ: (sγ − K) x = γ r. Either way the reduced matrix is σ − K with K symmetric, and its
 /// inertia says whether J has a real eigenvalue above s (λ > s ⇔ λ(λI + γ) > s(sI + γ) for λ, s > 0),
 /// so positive_definite() keeps the steppers' check that a step resolves every unstable direction.
-template <class V, bool Inertial>
+/// `Stiffness` holds K and solves σ − K: DenseSymmetric (K's entries, LDLᵀ, the pivots' inertia) or
+/// SpectralStiffness (no matrix: lattice convolutions, conjugate gradients, an inertia bound).
+template <class V, bool Inertial, class Stiffness = DenseSymmetric<V>>
 class SecondOrderJacobian {
  public:
   using lane_type = V;
   static constexpr std::size_t rotors(std::size_t dimension) { return Inertial ? dimension / 2 : dimension; }
   static constexpr std::size_t storage_size(std::size_t dimension) {
-    return DenseSymmetric<V>::storage_size(rotors(dimension)) + rotors(dimension);
+    return Stiffness::storage_size(rotors(dimension)) + rotors(dimension);
   }
 
   ROTORSWEEP_HD SecondOrderJacobian(std::size_t dimension, LaneArena<V>& arena)
       : n_(rotors(dimension)), stiffness_(n_, arena), reduced_(arena.take(n_)) {}
 
-  /// K = ∂τ/∂θ: the caller sets its entries (entry(j, k) and entry(k, j) together).
-  ROTORSWEEP_HD DenseSymmetric<V>& stiffness() { return stiffness_; }
+  /// K = ∂τ/∂θ: the caller sets it (a DenseSymmetric's entry(j, k) and entry(k, j) together).
+  ROTORSWEEP_HD Stiffness& stiffness() { return stiffness_; }
+  ROTORSWEEP_HD const Stiffness& stiffness() const { return stiffness_; }
   ROTORSWEEP_HD void set_dynamics(V inertia, V damping) {
     inertia_ = inertia;
     damping_ = damping;
@@ -37,21 +40,17 @@ class SecondOrderJacobian {
 
   /// y += J x (until the next factor(), which takes K's place)
   ROTORSWEEP_HD void multiply_add(const V* x, V* y) const {
+    for (std::size_t j = 0; j < n_; ++j) reduced_[j] = V(0.0);
+    stiffness_.multiply_add(x, reduced_);  // K x_θ
     if constexpr (Inertial) {
       const V inv_inertia = V(1.0) / inertia_;
       for (std::size_t j = 0; j < n_; ++j) {
-        V sum(0.0);
-        for (std::size_t k = 0; k < n_; ++k) sum += stiffness_.entry(j, k) * x[k];
         y[j] += x[n_ + j];
-        y[n_ + j] += (sum - damping_ * x[n_ + j]) * inv_inertia;
+        y[n_ + j] += (reduced_[j] - damping_ * x[n_ + j]) * inv_inertia;
       }
     } else {
       const V inv_damping = V(1.0) / damping_;
-      for (std::size_t j = 0; j < n_; ++j) {
-        V sum(0.0);
-        for (std::size_t k = 0; k < n_; ++k) sum += stiffness_.entry(j, k) * x[k];
-        y[j] += sum * inv_damping;
-      }
+      for (std::size_t j = 0; j < n_; ++j) y[j] += reduced_[j] * inv_damping;
     }
   }
 
@@ -82,7 +81,7 @@ class SecondOrderJacobian {
 
  private:
   std::size_t n_;
-  DenseSymmetric<V> stiffness_;
+  Stiffness stiffness_;
   V* reduced_;
   V inertia_ = V(1.0), damping_ = V(1.0), shift_ = V(1.0);
 };

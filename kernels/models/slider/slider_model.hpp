@@ -1,5 +1,5 @@
 // The experiment's slider (docs/model.md §9): a grid of rotors coupled as point dipoles, sliding over a
-// finite substrate lattice; I θ̈ = τ − γ θ̇ (or γ θ̇ = τ), friction force and dissipation as quadratures.
+// substrate lattice; I θ̈ = τ − γ θ̇ (or γ θ̇ = τ), friction force and dissipation as quadratures.
 #pragma once
 
 #include <array>
@@ -14,17 +14,10 @@
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/linear/second_order_jacobian.hpp"
 #include "kernels/steppers/model_concept.hpp"
+#include "kernels/models/slider/slider_pairs.hpp"
 #include "kernels/models/slider/substrate_table.hpp"
 
 namespace rotorsweep::kernels {
-
-/// The slider's rotor grid (units of a): rotor r = j·columns + i at (i + ξ, j, 0), and its pair
-/// couplings E_pair = P c_r c_q + Q s_r s_q with Q = 1/d³, P = (1 − 3 d_x²/d²)/d³ (c = cos θ, s = sin θ).
-struct SliderGrid {
-  std::size_t columns = 7;  ///< along the sliding direction x
-  std::size_t rows = 7;     ///< across it, y
-  ROTORSWEEP_HD std::size_t rotors() const { return columns * rows; }
-};
 
 /// Where the rotors sit over the substrate (units of a): rotor (i, j) at R(tilt)·(i + shift_x, j + shift_y)
 /// + (ξ, 0), the grid shifted and then turned about z by `tilt` (its rows and the rotors' axes
@@ -70,11 +63,13 @@ struct SliderParameters {
 ///   E = Σ_{r<q} (P c_r c_q + Q s_r s_q) − μ Σ_r (B_x c_r − B_z s_r),  τ_r = −∂E/∂θ_r,
 /// the slider at ξ(t) = v·max(0, t − t_rest), and the drive's force F = ∂E/∂ξ. Quadratures: drive
 /// ∫F dt (its impulse; work = v ∫F dt) and stokes ∫γ Σ θ̇² dt (dissipation). Satisfies LaneModel.
-template <class V, bool Inertial>
+/// `Pairs` sums the pair couplings and holds K: DirectPairs (O(n²) sums, K dense, LDLᵀ; device code too) or
+/// SpectralPairs (kernels/models/slider/spectral_pairs.hpp: FFT, K without a matrix; host code).
+template <class V, bool Inertial, class Pairs = DirectPairs<V>>
 class SliderModel {
  public:
   using lane_type = V;
-  using Jacobian = SecondOrderJacobian<V, Inertial>;
+  using Jacobian = SecondOrderJacobian<V, Inertial, typename Pairs::Stiffness>;
   static constexpr double period = two_pi;  ///< a substrate period when v = 1/(2π)
   /// Two quadratures: the impulse (steers the step) and the dissipation.
   static constexpr std::size_t max_quadratures = 2;
@@ -84,13 +79,9 @@ class SliderModel {
 
   using Parameters = SliderParameters;
 
-  /// P and Q depend only on the offset between two rotors: tables over the (2 columns − 1) × (2 rows − 1)
-  /// offsets, the same in every lane (for 7 × 7 rotors 169 entries instead of 2401, so they stay in L1).
-  static constexpr std::size_t offsets(const SliderGrid& grid) {
-    return (2 * grid.columns - 1) * (2 * grid.rows - 1);
-  }
+  /// P and Q depend only on the offset between two rotors (Pairs tables them), and each rotor's start.
   static constexpr std::size_t storage_size(const SliderGrid& grid) {
-    return 2 * offsets(grid) + grid.rotors();
+    return Pairs::storage_size(grid) + grid.rotors();
   }
 
   struct Workspace {
@@ -120,22 +111,10 @@ class SliderModel {
       : grid_(grid),
         n_(grid.rotors()),
         turned_(placement.turned()),
-        width_(2 * grid.columns - 1),
-        p_(arena.take(offsets(grid))),
-        q_(arena.take(offsets(grid))),
+        pairs_(grid, arena),
         start_x_(arena.take(n_)) {
     if (arena.counting()) return;
     for (std::size_t r = 0; r < n_; ++r) start_x_[r] = V(placement.start_x(column(r), row(r)));
-    for (std::size_t j = 0; j < 2 * grid.rows - 1; ++j)
-      for (std::size_t i = 0; i < width_; ++i) {
-        const double dx = double(i) - double(grid.columns - 1);
-        const double dy = double(j) - double(grid.rows - 1);
-        const double d2 = dx * dx + dy * dy;
-        if (d2 == 0.0) continue;
-        const double inv_d3 = 1.0 / (d2 * std::sqrt(d2));
-        q_[j * width_ + i] = V(inv_d3);
-        p_[j * width_ + i] = V((1.0 - 3.0 * dx * dx / d2) * inv_d3);
-      }
   }
 
   /// The integration loop's form (dimension, arena, arguments): the dimension follows from the grid.
@@ -203,22 +182,12 @@ class SliderModel {
       if (curvatures) w.curvature[r] = mu_ * (b.d2bx * w.cos[r] - b.d2bz * w.sin[r]);
     }
   }
-  /// P c, Q s and τ of rotors [begin, end), once every rank's prepare_range at the point is done.
+  /// P c, Q s and τ of rotors [begin, end), once every rank's prepare_range at the point is done (spectral
+  /// pairs: every rotor at once).
   ROTORSWEEP_HD void torque_range(Workspace& w, std::size_t begin, std::size_t end) const {
-    for (std::size_t r = begin; r < end; ++r) {
-      // rotor k = j·columns + i in ascending order, its offset from r read along the table's rows
-      const V* p = p_ + pair(r, 0);
-      const V* q = q_ + pair(r, 0);
-      V pc(0.0), qs(0.0);
-      for (std::size_t j = 0, k = 0; j < grid_.rows; ++j, p += width_, q += width_)
-        for (std::size_t i = 0; i < grid_.columns; ++i, ++k) {
-          pc += p[i] * w.cos[k];
-          qs += q[i] * w.sin[k];
-        }
-      w.p_cos[r] = pc;
-      w.q_sin[r] = qs;
-      w.torque[r] = w.sin[r] * pc - w.cos[r] * qs - (w.bx[r] * w.sin[r] + w.bz[r] * w.cos[r]);
-    }
+    pairs_.sums(w.cos, w.sin, w.p_cos, w.q_sin, begin, end);
+    for (std::size_t r = begin; r < end; ++r)
+      w.torque[r] = w.sin[r] * w.p_cos[r] - w.cos[r] * w.q_sin[r] - (w.bx[r] * w.sin[r] + w.bz[r] * w.cos[r]);
   }
   /// f of rotors [begin, end) (θ̇, and θ̈ with inertia) after their torque_range, and their sums.
   ROTORSWEEP_HD RotorSums rates_range(const Workspace& w, const V* y, V* f, std::size_t begin,
@@ -256,16 +225,22 @@ class SliderModel {
     const V rate = lane_select(t > rest_, speed_, V(0.0));
     const V weight = Inertial ? inv_inertia_ : inv_damping_;
     V force_rate(0.0), dissipation_rate(0.0);
+    if constexpr (Pairs::matrix_free) K.set_pairs(&pairs_.convolution());
     for (std::size_t r = begin; r < end; ++r) {
       // K = ∂τ/∂θ = −∂²E/∂θ²: off the diagonal −(P s_r s_q + Q c_r c_q), formed from the pair's first rotor
-      for (std::size_t k = 0; k < n_; ++k) {
-        if (k == r) continue;
-        const std::size_t first = k < r ? k : r, second = k < r ? r : k, at = pair(first, second);
-        K.entry(r, k) =
-            lane_neg(p_[at] * w.sin[first] * w.sin[second] + q_[at] * w.cos[first] * w.cos[second]);
-      }
-      K.entry(r, r) =
+      const V diagonal =
           w.cos[r] * w.p_cos[r] + w.sin[r] * w.q_sin[r] - (w.bx[r] * w.cos[r] - w.bz[r] * w.sin[r]);
+      if constexpr (Pairs::matrix_free) {
+        K.set_rotor(r, w.sin[r], w.cos[r], diagonal);
+      } else {
+        for (std::size_t k = 0; k < n_; ++k) {
+          if (k == r) continue;
+          const std::size_t first = k < r ? k : r, second = k < r ? r : k, at = pairs_.at(first, second);
+          K.entry(r, k) = lane_neg(pairs_.p(at) * w.sin[first] * w.sin[second] +
+                                   pairs_.q(at) * w.cos[first] * w.cos[second]);
+        }
+        K.entry(r, r) = diagonal;
+      }
       const V torque_rate = lane_neg(rate) * (w.dbx[r] * w.sin[r] + w.dbz[r] * w.cos[r]);
       if constexpr (Inertial) df_dt[r] = V(0.0);
       df_dt[Inertial ? n_ + r : r] = weight * torque_rate;
@@ -274,6 +249,7 @@ class SliderModel {
       if constexpr (Inertial) dq_dy[impulse_index * dim + n_ + r] = V(0.0);
     }
     V* grad = dq_dy + dissipation_index * dim;
+    if constexpr (!Inertial && Pairs::matrix_free) K.multiply(w.torque, grad);  // (K τ)_k, every rotor
     for (std::size_t k = begin; k < end; ++k) {
       if constexpr (Inertial) {
         grad[k] = V(0.0);
@@ -281,8 +257,11 @@ class SliderModel {
       } else {
         // ∂(Σ τ²/γ)/∂θ_k = (2/γ) Σ_r τ_r K_rk (K_rk = K_kr, this rank's row k), and ∂/∂t = (2/γ) Σ_r τ_r
         // ∂τ_r/∂t
-        V sum(0.0);
-        for (std::size_t r = 0; r < n_; ++r) sum += w.torque[r] * K.entry(k, r);
+        V sum = grad[k];
+        if constexpr (!Pairs::matrix_free) {
+          sum = V(0.0);
+          for (std::size_t r = 0; r < n_; ++r) sum += w.torque[r] * K.entry(k, r);
+        }
         grad[k] = V(2.0) * inv_damping_ * sum;
         dissipation_rate += w.torque[k] * df_dt[k];
       }
@@ -433,10 +412,6 @@ class SliderModel {
  private:
   ROTORSWEEP_HD std::size_t column(std::size_t r) const { return r % grid_.columns; }
   ROTORSWEEP_HD std::size_t row(std::size_t r) const { return r / grid_.columns; }
-  /// The position in the P and Q tables of rotor k's offset from rotor r.
-  ROTORSWEEP_HD std::size_t pair(std::size_t r, std::size_t k) const {
-    return (row(k) + grid_.rows - 1 - row(r)) * width_ + (column(k) + grid_.columns - 1 - column(r));
-  }
 
   /// f and the quadrature integrands from a prepared workspace.
   ROTORSWEEP_HD void rates(const Workspace& w, const V* y, V* f, V* qdot) const {
@@ -452,10 +427,8 @@ class SliderModel {
 
   SliderGrid grid_;
   std::size_t n_;
-  bool turned_;        ///< a track per rotor (SliderPlacement::turned), else one per row
-  std::size_t width_;  ///< 2 columns − 1: offsets along x in a table row
-  /// P and Q per offset (dy + rows − 1, dx + columns − 1), zero at (0, 0), the same in every lane
-  V *p_, *q_;
+  bool turned_;  ///< a track per rotor (SliderPlacement::turned), else one per row
+  Pairs pairs_;  ///< P and Q per offset (dy + rows − 1, dx + columns − 1), the same in every lane
   V* start_x_;  ///< each rotor's x at ξ = 0 (SliderPlacement::start_x), the same in every lane
   std::array<SubstrateTableView, lane_width<V>> substrate_{};
   std::array<std::array<SubstrateTableView, lane_width<V>>, 4> gradient_{};  ///< for forces() only

@@ -1,0 +1,161 @@
+// The slider's stiffness K = ∂τ/∂θ without its n × n matrix (docs/numerics.md "The stage solve without a
+// matrix"): K = diag(d) − S P S − C Q C, products by lattice convolutions, σ − K solved by conjugate gradients.
+#pragma once
+
+#include <cstddef>
+
+#include "kernels/lanes/lane.hpp"
+#include "kernels/lanes/lane_arena.hpp"
+#include "kernels/linear/lattice_convolution.hpp"
+
+namespace rotorsweep::kernels {
+
+/// K per lane for rotors on a lattice with pair couplings P and Q (even kernels of a LatticeConvolution with
+/// two kernels, P then Q): K_rr = d_r, K_rk = −(P_rk s_r s_k + Q_rk c_r c_k) with s = sin θ, c = cos θ, so
+/// K x = d∘x − s∘P(s∘x) − c∘Q(c∘x), one pair of convolutions. The caller sets the pairs, the angles'
+/// trigonometry and the diagonal after each linearisation (they are copied: the model's workspace moves on
+/// with the stages).
+///
+/// factor(σ) prepares solves of (σ − K) x = b, solve(b) runs preconditioned conjugate gradients (Jacobi:
+/// (σ − d)⁻¹) in every lane until ‖b − (σ − K) x‖ ≤ relative_residual ‖b‖, at most max_iterations times.
+/// The inertia test is a bound, not a factorisation: λ_max(K) ≤ max_r d_r + λ_max(−S P S) + λ_max(−C Q C)
+/// and λ_max(−S P S) ≤ max(0, −λ_min(P)) max_r s_r² (likewise for Q with c), with λ_min of P and Q from their
+/// spectra on the padded torus (LatticeConvolution::spectrum_min). Where σ exceeds that bound, σ − K is
+/// positive definite, so no eigenvalue of K reaches σ: the step resolves every unstable direction, as the
+/// dense LDLᵀ's pivots say; where it does not, positive_definite() says no (the step is retried smaller).
+/// The test is sufficient, never looser than the pivots'; a lane whose solve did not converge also says no.
+template <class V>
+class SpectralStiffness {
+ public:
+  using lane_type = V;
+  /// A stage solve's relative residual: far below the steppers' tolerances (docs/numerics.md).
+  static constexpr double relative_residual = 1e-11;
+  static constexpr int max_iterations = 200;
+  static constexpr std::size_t storage_size(std::size_t n) { return 13 * n; }
+
+  SpectralStiffness(std::size_t n, LaneArena<V>& arena)
+      : n_(n),
+        sin_(arena.take(n)),
+        cos_(arena.take(n)),
+        diagonal_(arena.take(n)),
+        inverse_diagonal_(arena.take(n)),
+        x_(arena.take(n)),
+        residual_(arena.take(n)),
+        preconditioned_(arena.take(n)),
+        direction_(arena.take(n)),
+        image_(arena.take(n)),
+        pair_in_{arena.take(n), arena.take(n)},
+        pair_out_{arena.take(n), arena.take(n)} {}
+
+  std::size_t size() const { return n_; }
+  /// The pair couplings (kernel 0: P, kernel 1: Q) that products use, until set again.
+  void set_pairs(const LatticeConvolution<V>* pairs) { pairs_ = pairs; }
+  /// Rotor r's sin θ, cos θ and K_rr.
+  void set_rotor(std::size_t r, V sin, V cos, V diagonal) {
+    sin_[r] = sin;
+    cos_[r] = cos;
+    diagonal_[r] = diagonal;
+  }
+
+  /// y = K x
+  void multiply(const V* x, V* y) const {
+    for (std::size_t r = 0; r < n_; ++r) {
+      pair_in_[0][r] = sin_[r] * x[r];
+      pair_in_[1][r] = cos_[r] * x[r];
+    }
+    pairs_->apply(pair_in_, pair_out_);
+    for (std::size_t r = 0; r < n_; ++r)
+      y[r] = diagonal_[r] * x[r] - sin_[r] * pair_out_[0][r] - cos_[r] * pair_out_[1][r];
+  }
+  /// y += K x
+  void multiply_add(const V* x, V* y) const {
+    multiply(x, image_);
+    for (std::size_t r = 0; r < n_; ++r) y[r] += image_[r];
+  }
+
+  /// Prepares the solves of (σ − K) x = b and the inertia test.
+  void factor(V shift) {
+    shift_ = shift;
+    V largest_diagonal = diagonal_[0], largest_sin2(0.0), largest_cos2(0.0);
+    for (std::size_t r = 0; r < n_; ++r) {
+      largest_diagonal = lane_max(largest_diagonal, diagonal_[r]);
+      largest_sin2 = lane_max(largest_sin2, sin_[r] * sin_[r]);
+      largest_cos2 = lane_max(largest_cos2, cos_[r] * cos_[r]);
+      inverse_diagonal_[r] = V(1.0) / (shift - diagonal_[r]);
+    }
+    // widened far beyond the spectra's rounding
+    const auto negative_part = [](double low) { return (low < 0.0 ? -low : 0.0) * (1.0 + 1e-9) + 1e-12; };
+    const V bound = largest_diagonal + V(negative_part(pairs_->spectrum_min(0))) * largest_sin2 +
+                    V(negative_part(pairs_->spectrum_min(1))) * largest_cos2;
+    bounded_ = shift > bound;
+    converged_ = bounded_;
+  }
+
+  /// Solves (σ − K) x = b in place, b in r, with σ from the last factor(); lanes failing the inertia test
+  /// get 0 (their attempt is rejected).
+  void solve(V* r) const {
+    V norm2(0.0);
+    for (std::size_t k = 0; k < n_; ++k) norm2 += r[k] * r[k];
+    const V target = V(relative_residual * relative_residual) * norm2;
+    V rz(0.0);
+    for (std::size_t k = 0; k < n_; ++k) {
+      x_[k] = V(0.0);
+      residual_[k] = r[k];
+      preconditioned_[k] = inverse_diagonal_[k] * r[k];
+      direction_[k] = preconditioned_[k];
+      rz += residual_[k] * preconditioned_[k];
+    }
+    lane_mask<V> active = bounded_ & (norm2 > target);
+    for (int iteration = 0; iteration < max_iterations && lane_any(active); ++iteration) {
+      multiply(direction_, image_);
+      V curvature(0.0);
+      for (std::size_t k = 0; k < n_; ++k) {
+        image_[k] = shift_ * direction_[k] - image_[k];
+        curvature += direction_[k] * image_[k];
+      }
+      // a positive definite σ − K never gives pᵀ(σ − K)p ≤ 0: such a lane has not converged
+      const lane_mask<V> curved = curvature > V(0.0);
+      converged_ = converged_ & !(active & !curved);
+      active = active & curved;
+      const V step = lane_select(active, rz / lane_select(active, curvature, V(1.0)), V(0.0));
+      V residual2(0.0), rz_next(0.0);
+      for (std::size_t k = 0; k < n_; ++k) {
+        x_[k] += step * direction_[k];
+        residual_[k] -= step * image_[k];
+        residual2 += residual_[k] * residual_[k];
+        preconditioned_[k] = inverse_diagonal_[k] * residual_[k];
+        rz_next += residual_[k] * preconditioned_[k];
+      }
+      const lane_mask<V> going = active & (residual2 > target);
+      const V turn = lane_select(going, rz_next / lane_select(going, rz, V(1.0)), V(0.0));
+      for (std::size_t k = 0; k < n_; ++k) direction_[k] = preconditioned_[k] + turn * direction_[k];
+      rz = rz_next;
+      active = going;
+      ++iterations_;
+    }
+    converged_ = converged_ & !active;
+    ++solves_;
+    for (std::size_t k = 0; k < n_; ++k) r[k] = x_[k];
+  }
+
+  /// The lanes where σ − K passed the inertia test at the last factor() and every solve since converged.
+  lane_mask<V> positive_definite() const { return converged_; }
+
+  /// Conjugate-gradient iterations and solves so far (for benchmarks).
+  std::size_t iterations() const { return iterations_; }
+  std::size_t solves() const { return solves_; }
+
+ private:
+  std::size_t n_;
+  const LatticeConvolution<V>* pairs_ = nullptr;
+  V *sin_, *cos_, *diagonal_, *inverse_diagonal_;
+  V *x_, *residual_, *preconditioned_, *direction_, *image_;
+  V* pair_in_[2];
+  V* pair_out_[2];
+  V shift_ = V(1.0);
+  lane_mask<V> bounded_{};
+  mutable lane_mask<V> converged_{};
+  mutable std::size_t iterations_ = 0, solves_ = 0;
+};
+
+}  // namespace rotorsweep::kernels
