@@ -77,7 +77,7 @@ namespace {
 /// needs when not.
 bool scan_fits_in_memory(const ensemble::SliderScene& scene, int threads, double row_bytes) {
   if (scene.device == ensemble::Device::gpu) return true;  // the GPU's members live on the GPU
-  const double lanes = double(ensemble::instruction_set().lanes);
+  const double lanes = double(ensemble::slider_thread_lanes(scene));
   const double thread = ensemble::slider_thread_bytes(scene) + lanes * row_bytes;
   char how[160];
   std::snprintf(

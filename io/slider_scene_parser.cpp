@@ -26,7 +26,7 @@ const std::map<std::string, std::set<std::string>> slider_keys{
     {"initial", {"kind", "noise", "replicas", "seed", "angles"}},
     {"observables",
      {"samples_per_period", "series", "angles", "energies", "field", "sublattices", "torques", "forces"}},
-    {"numerics", {"stepper", "rtol", "atol", "max_steps", "device"}},
+    {"numerics", {"stepper", "rtol", "atol", "max_steps", "device", "linear_solver"}},
     {"output", {"path"}},
 };
 
@@ -271,6 +271,10 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.max_steps = read_max_steps(numerics);
   scene.device = numerics.choice("device", "cpu", {"cpu", "gpu"}) == "gpu" ? ensemble::Device::gpu
                                                                            : ensemble::Device::cpu;
+  const std::string solver = numerics.choice("linear_solver", "auto", {"auto", "dense", "krylov"});
+  scene.linear_solver = solver == "dense"    ? ensemble::SliderSolver::dense
+                        : solver == "krylov" ? ensemble::SliderSolver::krylov
+                                             : ensemble::SliderSolver::automatic;
 
   const Section output = section(root, "output");
   scene.output_path = output.text("path", scene.output_path);
@@ -287,6 +291,10 @@ SliderScene read_slider_scene(const toml::table& root) {
 
 void check_slider_device(const ensemble::SliderScene& scene) {
   if (scene.device != ensemble::Device::gpu) return;
+  if (scene.linear_solver == ensemble::SliderSolver::krylov)
+    fail("numerics.linear_solver",
+         "\"krylov\" runs on the CPU (conjugate gradients with FFTs); with numerics.device = \"gpu\" it must be "
+         "\"dense\" or \"auto\" (which is dense there)");
   if (kernels::stepper_family(scene.stepper) == kernels::StepperFamily::rosenbrock) return;
   std::string allowed;
   for (kernels::StepperId id = 0; id < kernels::stepper_names.size(); ++id)

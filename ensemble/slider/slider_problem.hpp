@@ -27,14 +27,14 @@
 namespace rotorsweep::ensemble {
 
 /// Members (plan indices) of one slider size on the lanes of an IntegrationLoop over
-/// SliderModel<V, Inertial> with Stepper, for LaneScheduler: each member's stops are its speed's
+/// SliderModel<V, Inertial, Pairs> with Stepper, for LaneScheduler: each member's stops are its speed's
 /// sample grid's (`grids`, one per speed), where its lane is sampled (drive force, order parameters, energy;
 /// its quadratures at period boundaries); it retires after the last sample. Lanes sampled in the same step
 /// attempt share one evaluation of the model.
-template <class V, bool Inertial, class Stepper>
+template <class V, bool Inertial, class Stepper, class Pairs = kernels::DirectPairs<V>>
 class SliderProblem {
  public:
-  using Model = kernels::SliderModel<V, Inertial>;
+  using Model = kernels::SliderModel<V, Inertial, Pairs>;
   using Loop = IntegrationLoop<Model, kernels::AdaptiveIntegrator<Model, Stepper>>;
   using Member = std::size_t;  ///< a plan index
   using Result = SliderMember;

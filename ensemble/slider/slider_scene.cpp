@@ -2,6 +2,7 @@
 // (docs/model.md §9 "Scaled form" and "Initial conditions").
 #include "ensemble/slider/slider_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
@@ -20,6 +21,12 @@ SliderUnits::SliderUnits(const SliderScene& scene)
       length(scene.spacing),
       force(energy / scene.spacing),
       power(energy / time) {}
+
+bool matrix_free(const SliderScene& scene, SliderSize size) {
+  if (scene.linear_solver == SliderSolver::automatic)
+    return scene.device == Device::cpu && size.rotors() >= krylov_from_rotors;
+  return scene.linear_solver == SliderSolver::krylov;
+}
 
 SliderScene slider_variant(const SliderScene& scene, std::size_t speed, std::size_t damping) {
   SliderScene variant = scene;
@@ -105,6 +112,9 @@ kernels::SliderParameters slider_parameters(const SliderScene& scene,
   p.damping = scene.damping / (units.energy * units.time);
   p.speed = 1.0 / kernels::two_pi;
   p.rest = scene.rest / units.time;
+  // far below the step's tolerance: a stage's error of ε relative moves the friction by about 4ε
+  // (docs/performance.md "The full array at any size")
+  p.stage_residual = std::min(1e-10, 1e-3 * scene.rtol);
   return p;
 }
 

@@ -27,6 +27,12 @@ namespace rotorsweep::ensemble {
 /// "The slider").
 inline constexpr std::string_view default_slider_stepper_name = "rodas5p";
 
+/// How a member's stage systems are solved and its pair sums formed (numerics.linear_solver, docs/numerics.md
+/// "The full array at any size"): a dense LDLᵀ of K beside direct pair sums (O(n³) per step, the inertia from
+/// the pivots), conjugate gradients with K's products by lattice convolutions (O(n log n) per step and O(n)
+/// memory, an inertia bound), or by size (automatic: krylov from `krylov_from_rotors` rotors on the CPU).
+enum class SliderSolver { dense, krylov, automatic };
+
 /// How a member's angles start: rows (along x, fixed y) alternately near 0 and π, all near 0, or
 /// every angle uniform on [0, 2π) (the first two with uniform noise of full width `noise`), or
 /// given angle by angle (SliderScene::given_angles).
@@ -113,6 +119,7 @@ struct SliderScene {
   /// Where the members run: CPU lanes, or a CUDA GPU, a member per team of threads (ensemble/slider/
   /// slider_team_member.hpp; the slider's default stepper only).
   Device device = Device::cpu;
+  SliderSolver linear_solver = SliderSolver::automatic;
 
   std::string output_path = "results/slider.h5";
   std::string text;  ///< the scene file as read
@@ -121,6 +128,12 @@ struct SliderScene {
     return sizes.size() * speeds.size() * dampings.size() * separations.size() * replicas;
   }
 };
+
+/// Sizes from which numerics.linear_solver = "auto" takes conjugate gradients (docs/performance.md "The full
+/// array at any size": below it the dense LDLᵀ on SIMD lanes is faster per member).
+inline constexpr std::size_t krylov_from_rotors = 196;
+/// Whether members of `size` run matrix-free (conjugate gradients, pair sums by FFT) rather than dense.
+bool matrix_free(const SliderScene& scene, SliderSize size);
 
 /// The scene as its members of speeds[speed] and dampings[damping] run it: speed, damping and end set.
 SliderScene slider_variant(const SliderScene& scene, std::size_t speed, std::size_t damping);

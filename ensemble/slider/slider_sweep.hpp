@@ -56,11 +56,13 @@ struct SliderTimeline {
 };
 SliderTimeline slider_timeline(const SliderScene& scene);
 
-/// Bytes one thread of a CPU scan works in besides its members' series: the lane block of the largest
-/// size (its integration loop's arena, dense in the rotors) and the substrate tables its lanes may hold
-/// (one each, four more with observables.forces, and the one being built) at the closest separation
-/// and the longest path.
+/// Bytes one thread of a CPU scan works in besides its members' series: the largest lane block of its
+/// sizes (its integration loop's arena: O(n²) dense, O(n) matrix-free) and the substrate tables its lanes
+/// may hold (one each, four more with observables.forces, and the one being built) at the closest
+/// separation and the longest path.
 double slider_thread_bytes(const SliderScene& scene);
+/// The most members a CPU thread holds at once: a SIMD lane block's, or 1 where every size is matrix-free.
+std::size_t slider_thread_lanes(const SliderScene& scene);
 
 /// Runs the members `plan_indices` (ascending) in lane blocks of one size each and hands the finished
 /// members to `finished` (one call at a time, in any order). A member's results do not depend on which

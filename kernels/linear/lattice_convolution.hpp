@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -18,55 +19,75 @@
 
 namespace rotorsweep::kernels {
 
-/// The smallest 2^a 3^b 5^c 7^d at least `length`: a torus of 2n − 1 or more points holds every offset of n
-/// lattice points either way, so a circular convolution there is the linear one on the lattice.
-inline std::size_t smooth_length(std::size_t length) {
-  for (std::size_t m = length > 1 ? length : 1;; ++m) {
-    std::size_t rest = m;
-    for (const std::size_t p : {2, 3, 5, 7})
-      while (rest % p == 0) rest /= p;
-    if (rest == 1) return m;
-  }
+/// The torus length for a lattice line of n points: the power of two at least 2n − 1 (so a circular
+/// convolution there is the linear one on the lattice: every offset either way fits), and at least 2 (a
+/// half-complex transform of one point leaves its imaginary part unwritten). FFTW's estimated plans of
+/// these lengths beat shorter 3 · 2^k ones (docs/performance.md "The full array at any size").
+inline std::size_t torus_length(std::size_t n) {
+  std::size_t power = 2;
+  while (power < 2 * n - 1) power *= 2;
+  return power;
 }
 
-/// FFTW plans of the batched 2-D real transforms of a rows × columns torus with `channels` transforms
-/// interleaved (point p of channel c at p · channels + c), forward (real to half-complex) and inverse, made
-/// once per process and shape (FFTW's planner is not thread-safe; executing a plan on new arrays is),
-/// FFTW_ESTIMATE (every process plans alike, so the bits do not depend on timing), for 64-byte aligned arrays.
+/// FFTW plans (FFTW_ESTIMATE: every process plans alike, so the bits do not depend on timing) of the
+/// separable transforms of `kernels` × `width` fields on a rows × columns torus whose first `lattice_rows`
+/// rows hold the lattice (layout in LatticeConvolution), made once per process and shape: FFTW's planner
+/// is not thread-safe, executing a plan on new arrays (of the planning arrays' 64-byte alignment) is.
 struct LatticeFftPlans {
-  fftw_plan forward = nullptr, inverse = nullptr;
+  fftw_plan rows_forward = nullptr;     ///< real to half-complex along x, the lattice's rows only
+  fftw_plan columns_forward = nullptr;  ///< complex along y, in place, every column
+  fftw_plan columns_inverse = nullptr;
+  fftw_plan rows_inverse = nullptr;  ///< half-complex to real along x, the lattice's rows only
+  fftw_plan full_forward = nullptr;  ///< a whole 2-D transform of one field (a kernel's spectrum)
 };
-inline const LatticeFftPlans& lattice_fft_plans(std::size_t rows, std::size_t columns, std::size_t channels) {
+inline const LatticeFftPlans& lattice_fft_plans(std::size_t rows, std::size_t columns, std::size_t lattice_rows,
+                                                std::size_t kernels, std::size_t width) {
   static std::mutex mutex;
-  static std::map<std::tuple<std::size_t, std::size_t, std::size_t>, LatticeFftPlans> plans;
+  static std::map<std::tuple<std::size_t, std::size_t, std::size_t, std::size_t, std::size_t>, LatticeFftPlans>
+      plans;
   const std::lock_guard<std::mutex> lock(mutex);
-  LatticeFftPlans& found = plans[{rows, columns, channels}];
-  if (found.forward) return found;
-  const int n[2] = {int(rows), int(columns)};
-  const std::size_t real = rows * columns * channels, complex = rows * (columns / 2 + 1) * channels;
-  double* in = static_cast<double*>(fftw_malloc(sizeof(double) * real));
-  fftw_complex* out = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * complex));
-  const int c = int(channels);
-  found.forward = fftw_plan_many_dft_r2c(2, n, c, in, nullptr, c, 1, out, nullptr, c, 1, FFTW_ESTIMATE);
-  found.inverse = fftw_plan_many_dft_c2r(2, n, c, out, nullptr, c, 1, in, nullptr, c, 1, FFTW_ESTIMATE);
-  fftw_free(in);
-  fftw_free(out);
-  if (!found.forward || !found.inverse) throw std::runtime_error("FFTW could not plan a lattice transform");
+  LatticeFftPlans& found = plans[{rows, columns, lattice_rows, kernels, width}];
+  if (found.rows_forward) return found;
+  const int w = int(width), half = int(columns / 2 + 1), nc = int(columns);
+  const int real = int(rows * columns), complex = int(rows * columns / 2 + rows);
+  // planning arrays aligned as the arena's pieces are
+  auto* in = static_cast<double*>(std::aligned_alloc(64, sizeof(double) * std::size_t(real) * kernels * width + 64));
+  auto* out = static_cast<fftw_complex*>(
+      std::aligned_alloc(64, sizeof(fftw_complex) * std::size_t(complex) * kernels * width + 64));
+  const fftw_iodim along_x{nc, w, w};
+  const fftw_iodim along_y{int(rows), half * w, half * w};
+  const fftw_iodim rows_forward[3] = {{int(kernels), real * w, complex * w}, {int(lattice_rows), nc * w, half * w},
+                                      {w, 1, 1}};
+  const fftw_iodim rows_inverse[3] = {{int(kernels), complex * w, real * w}, {int(lattice_rows), half * w, nc * w},
+                                      {w, 1, 1}};
+  const fftw_iodim columns_all[2] = {{int(kernels), complex * w, complex * w}, {half * w, 1, 1}};
+  found.rows_forward = fftw_plan_guru_dft_r2c(1, &along_x, 3, rows_forward, in, out, FFTW_ESTIMATE);
+  found.columns_forward = fftw_plan_guru_dft(1, &along_y, 2, columns_all, out, out, FFTW_FORWARD, FFTW_ESTIMATE);
+  found.columns_inverse = fftw_plan_guru_dft(1, &along_y, 2, columns_all, out, out, FFTW_BACKWARD, FFTW_ESTIMATE);
+  found.rows_inverse = fftw_plan_guru_dft_c2r(1, &along_x, 3, rows_inverse, out, in, FFTW_ESTIMATE);
+  found.full_forward = fftw_plan_dft_r2c_2d(int(rows), nc, in, out, FFTW_ESTIMATE);
+  std::free(in);
+  std::free(out);
+  if (!found.rows_forward || !found.columns_forward || !found.columns_inverse || !found.rows_inverse ||
+      !found.full_forward)
+    throw std::runtime_error("FFTW could not plan a lattice transform");
   return found;
 }
 
-/// Up to `max_kernels` even kernels on a columns × rows lattice (point r = row · columns + column), each
+/// Up to `max_kernels` even kernels on a columns × rows lattice (point p = row · columns + column), each
 /// tabled over the offsets (dx, dy), |dx| < columns, |dy| < rows, at (dy + rows − 1)(2 columns − 1) + dx +
-/// columns − 1 (the value at offset 0 ignored), and the convolutions of lane fields with them.
+/// columns − 1 (the value at offset 0 taken as 0), and the convolutions of lane fields with them.
 ///
 /// On lattices of `direct_limit` points or fewer the sums run directly, each point's terms in ascending q;
-/// above it by FFT on a padded torus (smooth_length(2n − 1) each way): the fields go in zero-padded, kernel k's
-/// spectrum (real: the kernel is even) multiplies field k's, and the inverse transform gives every point's
-/// sum at once, O(n log n) instead of O(n²), equal to the direct sums to rounding. Lanes are channels of one
-/// batch of transforms (lane l of kernel k is channel k · width + l), so the lane block's fields transform
-/// together. The spectra also bound the kernels' matrices on the lattice: each is a principal submatrix of
-/// the torus's circulant, whose eigenvalues are the spectrum, so its eigenvalues lie in
-/// [spectrum_min(k), spectrum_max(k)].
+/// above it by FFT on a zero-padded torus (torus_length each way): the fields go in, kernel k's spectrum
+/// (real: the kernel is even) multiplies field k's, and the inverse transform gives every point's sum at
+/// once, O(n log n) instead of O(n²), equal to the direct sums to rounding. The 2-D transforms are
+/// separable passes, pruned to the lattice: along x over the lattice's rows only (the others are zero on
+/// the way in and not read on the way out), along y over every column. Field k of lane l at torus point
+/// (y, x) is double ((k · torus points + y · torus columns + x) · width + l), so a lane block's fields
+/// transform as one batch. The spectra also bound the kernels' matrices on the lattice: each is a
+/// principal submatrix of the torus's circulant, whose eigenvalues are the spectrum, so its eigenvalues
+/// lie in [spectrum_min(k), spectrum_max(k)].
 ///
 /// Host code (FFTW); storage from the arena, 64-byte aligned for FFTW's vector code.
 template <class V>
@@ -74,8 +95,8 @@ class LatticeConvolution {
  public:
   static constexpr std::size_t max_kernels = 2;
   static constexpr std::size_t width = lane_width<V>;
-  /// Lattices of this many points or fewer sum directly (docs/performance.md "The full array": the FFT's
-  /// pair of transforms costs more than the n² terms below it).
+  /// Lattices of this many points or fewer sum directly (docs/performance.md "The full array at any size":
+  /// below it the n² terms cost less than the transforms).
   static constexpr std::size_t direct_limit = 36;
 
   struct Shape {
@@ -90,8 +111,8 @@ class LatticeConvolution {
   static Shape shape(std::size_t columns, std::size_t rows, std::size_t kernels) {
     Shape s{columns, rows, kernels, 1, 1, columns * rows > direct_limit};
     if (s.fft) {
-      s.torus_columns = smooth_length(2 * columns - 1);
-      s.torus_rows = smooth_length(2 * rows - 1);
+      s.torus_columns = torus_length(columns);
+      s.torus_rows = torus_length(rows);
     }
     return s;
   }
@@ -111,41 +132,31 @@ class LatticeConvolution {
       field_ = aligned_take(arena, shape_.torus_points() * kernels);
       spectrum_ = aligned_take(arena, 2 * shape_.spectrum_points() * kernels);
       symbols_ = arena.take(shape_.spectrum_points() * kernels);
-      if (!arena.counting()) plans_ = &lattice_fft_plans(shape_.torus_rows, shape_.torus_columns, channels());
+      if (!arena.counting())
+        plans_ = &lattice_fft_plans(shape_.torus_rows, shape_.torus_columns, rows, kernels, width);
     }
   }
 
   const Shape& lattice() const { return shape_; }
 
-  /// Kernel k from its offset table (the layout above; the value at offset 0 is taken as 0), and with an FFT
-  /// its spectrum, the inverse transform's 1/(torus points) folded in.
+  /// Kernel k from its offset table (the layout above), and with an FFT its spectrum (the inverse
+  /// transform's 1/(torus points) folded in); either way the bounds of its eigenvalues.
   void set_kernel(std::size_t k, const std::vector<double>& table) {
     const std::size_t centre = (shape_.rows - 1) * (2 * shape_.columns - 1) + shape_.columns - 1;
-    for (std::size_t i = 0; i < shape_.offsets(); ++i) tables_[k * shape_.offsets() + i] = V(i == centre ? 0.0 : table[i]);
-    if (!shape_.fft) {
-      torus_extremes(k);
-      return;
+    for (std::size_t i = 0; i < shape_.offsets(); ++i)
+      tables_[k * shape_.offsets() + i] = V(i == centre ? 0.0 : table[i]);
+    const std::size_t tc = shape_.fft ? shape_.torus_columns : torus_length(shape_.columns);
+    const std::size_t tr = shape_.fft ? shape_.torus_rows : torus_length(shape_.rows);
+    const std::vector<double> spectrum = torus_spectrum(k, tr, tc);
+    spectrum_min_[k] = INFINITY;
+    spectrum_max_[k] = -INFINITY;
+    for (const double s : spectrum) {
+      spectrum_min_[k] = s < spectrum_min_[k] ? s : spectrum_min_[k];
+      spectrum_max_[k] = s > spectrum_max_[k] ? s : spectrum_max_[k];
     }
-    clear_field();
-    const std::size_t tc = shape_.torus_columns, tr = shape_.torus_rows;
-    for (std::size_t j = 0; j < 2 * shape_.rows - 1; ++j)
-      for (std::size_t i = 0; i < 2 * shape_.columns - 1; ++i) {
-        const std::size_t y = (j + tr - (shape_.rows - 1)) % tr, x = (i + tc - (shape_.columns - 1)) % tc;
-        for (std::size_t c = 0; c < shape_.kernels; ++c)
-          field_[(y * tc + x) * shape_.kernels + c] = tables_[k * shape_.offsets() + j * (2 * shape_.columns - 1) + i];
-      }
-    fftw_execute_dft_r2c(plans_->forward, reinterpret_cast<double*>(field_),
-                         reinterpret_cast<fftw_complex*>(spectrum_));
-    const double scale = 1.0 / double(shape_.torus_points());
-    double low = INFINITY, high = -INFINITY;
-    for (std::size_t q = 0; q < shape_.spectrum_points(); ++q) {
-      const double s = lane_get(spectrum_[2 * (q * shape_.kernels + k)], 0);  // the real part
-      low = s < low ? s : low;
-      high = s > high ? s : high;
-      symbols_[k * shape_.spectrum_points() + q] = V(s * scale);
-    }
-    spectrum_min_[k] = low;
-    spectrum_max_[k] = high;
+    if (shape_.fft)
+      for (std::size_t q = 0; q < shape_.spectrum_points(); ++q)
+        symbols_[k * shape_.spectrum_points() + q] = V(spectrum[q] / double(shape_.torus_points()));
   }
   /// Bounds of the eigenvalues of kernel k's matrix on the lattice: the extremes of its spectrum on the torus.
   double spectrum_min(std::size_t k) const { return spectrum_min_[k]; }
@@ -157,28 +168,37 @@ class LatticeConvolution {
   /// out[k][p] = Σ_q kernel_k(p − q) in[k][q] at every lattice point p, for each kernel k.
   void apply(const V* const* in, V* const* out) const {
     if (!shape_.fft) {
-      for (std::size_t k = 0; k < shape_.kernels; ++k) direct(table(k), in[k], out[k]);
+      for (std::size_t k = 0; k < shape_.kernels; ++k)
+        for (std::size_t p = 0; p < shape_.points(); ++p) out[k][p] = direct_at(table(k), p, in[k]);
       return;
     }
-    clear_field();
-    const std::size_t tc = shape_.torus_columns, nk = shape_.kernels;
-    for (std::size_t j = 0, p = 0; j < shape_.rows; ++j)
-      for (std::size_t i = 0; i < shape_.columns; ++i, ++p)
-        for (std::size_t k = 0; k < nk; ++k) field_[(j * tc + i) * nk + k] = in[k][p];
-    fftw_execute_dft_r2c(plans_->forward, reinterpret_cast<double*>(field_),
-                         reinterpret_cast<fftw_complex*>(spectrum_));
-    const std::size_t points = shape_.spectrum_points();
-    for (std::size_t q = 0; q < points; ++q)
-      for (std::size_t k = 0; k < nk; ++k) {
-        const V s = symbols_[k * points + q];
-        spectrum_[2 * (q * nk + k)] *= s;
-        spectrum_[2 * (q * nk + k) + 1] *= s;
+    const std::size_t tc = shape_.torus_columns, tp = shape_.torus_points(), nk = shape_.kernels;
+    const std::size_t half = tc / 2 + 1, sp = shape_.spectrum_points();
+    // the lattice's rows, zero-padded along x (the other rows are not read)
+    for (std::size_t k = 0; k < nk; ++k)
+      for (std::size_t j = 0, p = 0; j < shape_.rows; ++j) {
+        V* row = field_ + k * tp + j * tc;
+        for (std::size_t i = 0; i < shape_.columns; ++i, ++p) row[i] = in[k][p];
+        for (std::size_t i = shape_.columns; i < tc; ++i) row[i] = V(0.0);
       }
-    fftw_execute_dft_c2r(plans_->inverse, reinterpret_cast<fftw_complex*>(spectrum_),
-                         reinterpret_cast<double*>(field_));
-    for (std::size_t j = 0, p = 0; j < shape_.rows; ++j)
-      for (std::size_t i = 0; i < shape_.columns; ++i, ++p)
-        for (std::size_t k = 0; k < nk; ++k) out[k][p] = field_[(j * tc + i) * nk + k];
+    fftw_execute_dft_r2c(plans_->rows_forward, reinterpret_cast<double*>(field_), complex(spectrum_));
+    // the rows beyond the lattice's are zero before the transform along y
+    for (std::size_t k = 0; k < nk; ++k)
+      for (std::size_t i = 2 * (k * sp + shape_.rows * half); i < 2 * (k + 1) * sp; ++i) spectrum_[i] = V(0.0);
+    fftw_execute_dft(plans_->columns_forward, complex(spectrum_), complex(spectrum_));
+    for (std::size_t k = 0; k < nk; ++k)
+      for (std::size_t q = 0; q < sp; ++q) {
+        const V s = symbols_[k * sp + q];
+        spectrum_[2 * (k * sp + q)] *= s;
+        spectrum_[2 * (k * sp + q) + 1] *= s;
+      }
+    fftw_execute_dft(plans_->columns_inverse, complex(spectrum_), complex(spectrum_));
+    fftw_execute_dft_c2r(plans_->rows_inverse, complex(spectrum_), reinterpret_cast<double*>(field_));
+    for (std::size_t k = 0; k < nk; ++k)
+      for (std::size_t j = 0, p = 0; j < shape_.rows; ++j) {
+        const V* row = field_ + k * tp + j * tc;
+        for (std::size_t i = 0; i < shape_.columns; ++i, ++p) out[k][p] = row[i];
+      }
   }
 
   /// Σ_q kernel(p − q) x_q at lattice point p from the kernel's table, q in ascending order.
@@ -193,7 +213,6 @@ class LatticeConvolution {
   }
 
  private:
-  std::size_t channels() const { return shape_.kernels * width; }
   static constexpr std::size_t alignment_values = 64 / sizeof(V) > 0 ? 64 / sizeof(V) : 1;
   static std::size_t aligned_count(std::size_t count) { return count + alignment_values; }
   /// `count` values from the arena, starting on a 64-byte boundary (the arena's storage is at least
@@ -204,37 +223,43 @@ class LatticeConvolution {
     const auto address = reinterpret_cast<std::uintptr_t>(piece);
     return piece + ((64 - address % 64) % 64) / sizeof(V);
   }
-  void clear_field() const {
-    for (std::size_t i = 0; i < shape_.torus_points() * shape_.kernels; ++i) field_[i] = V(0.0);
-  }
-  void direct(const V* kernel, const V* x, V* out) const {
-    for (std::size_t p = 0; p < shape_.points(); ++p) out[p] = direct_at(kernel, p, x);
-  }
-  /// Without an FFT: kernel k's spectrum on the torus of smooth_length(2n − 1) points each way, summed
-  /// directly (Σ_d kernel(d) cos(2π (u dx / columns' + v dy / rows')): an even kernel's is real).
-  void torus_extremes(std::size_t k) {
-    const std::size_t tc = smooth_length(2 * shape_.columns - 1), tr = smooth_length(2 * shape_.rows - 1);
+  static fftw_complex* complex(V* values) { return reinterpret_cast<fftw_complex*>(values); }
+
+  /// Kernel k's spectrum on a tr × tc torus (its real half-spectrum, tr × (tc/2 + 1) values; an even
+  /// kernel's is real): by FFT where this convolution has one, else summed directly.
+  std::vector<double> torus_spectrum(std::size_t k, std::size_t tr, std::size_t tc) const {
+    const std::size_t half = tc / 2 + 1, row_width = 2 * shape_.columns - 1;
+    std::vector<double> spectrum(tr * half, 0.0);
+    const auto value = [&](std::size_t j, std::size_t i) { return lane_get(table(k)[j * row_width + i], 0); };
+    if (shape_.fft) {
+      auto* in = static_cast<double*>(std::aligned_alloc(64, sizeof(double) * tr * tc + 64));
+      auto* out = static_cast<fftw_complex*>(std::aligned_alloc(64, sizeof(fftw_complex) * tr * half + 64));
+      for (std::size_t i = 0; i < tr * tc; ++i) in[i] = 0.0;
+      for (std::size_t j = 0; j < 2 * shape_.rows - 1; ++j)
+        for (std::size_t i = 0; i < row_width; ++i)
+          in[((j + tr - (shape_.rows - 1)) % tr) * tc + (i + tc - (shape_.columns - 1)) % tc] = value(j, i);
+      fftw_execute_dft_r2c(plans_->full_forward, in, out);
+      for (std::size_t q = 0; q < tr * half; ++q) spectrum[q] = out[q][0];
+      std::free(in);
+      std::free(out);
+      return spectrum;
+    }
     const double two_pi = 6.283185307179586;
-    spectrum_min_[k] = INFINITY;
-    spectrum_max_[k] = -INFINITY;
     for (std::size_t v = 0; v < tr; ++v)
-      for (std::size_t u = 0; u < tc; ++u) {
-        double s = 0;
+      for (std::size_t u = 0; u < half; ++u)
         for (std::size_t j = 0; j < 2 * shape_.rows - 1; ++j)
-          for (std::size_t i = 0; i < 2 * shape_.columns - 1; ++i) {
+          for (std::size_t i = 0; i < row_width; ++i) {
             const double dx = double(i) - double(shape_.columns - 1), dy = double(j) - double(shape_.rows - 1);
-            s += lane_get(tables_[k * shape_.offsets() + j * (2 * shape_.columns - 1) + i], 0) *
-                 std::cos(two_pi * (double(u) * dx / double(tc) + double(v) * dy / double(tr)));
+            spectrum[v * half + u] +=
+                value(j, i) * std::cos(two_pi * (double(u) * dx / double(tc) + double(v) * dy / double(tr)));
           }
-        spectrum_min_[k] = s < spectrum_min_[k] ? s : spectrum_min_[k];
-        spectrum_max_[k] = s > spectrum_max_[k] ? s : spectrum_max_[k];
-      }
+    return spectrum;
   }
 
   Shape shape_;
   V* tables_;
-  V* field_ = nullptr;     ///< the padded fields, kernels interleaved per point (then the sums)
-  V* spectrum_ = nullptr;  ///< their transforms: per spectrum point and kernel, the real and imaginary parts
+  V* field_ = nullptr;     ///< the padded fields, kernel after kernel (then the sums)
+  V* spectrum_ = nullptr;  ///< their transforms: per kernel and spectrum point, the real and imaginary parts
   V* symbols_ = nullptr;   ///< kernel k's spectrum / torus points at [k · spectrum points + q]
   const LatticeFftPlans* plans_ = nullptr;
   double spectrum_min_[max_kernels] = {}, spectrum_max_[max_kernels] = {};

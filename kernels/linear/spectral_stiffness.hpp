@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdlib>
 
 #include "kernels/lanes/lane.hpp"
 #include "kernels/lanes/lane_arena.hpp"
@@ -16,8 +17,11 @@ namespace rotorsweep::kernels {
 /// trigonometry and the diagonal after each linearisation (they are copied: the model's workspace moves on
 /// with the stages).
 ///
-/// factor(σ) prepares solves of (σ − K) x = b, solve(b) runs preconditioned conjugate gradients (Jacobi:
-/// (σ − d)⁻¹) in every lane until ‖b − (σ − K) x‖ ≤ relative_residual ‖b‖, at most max_iterations times.
+/// factor(σ) prepares solves of (σ − K) x = b, solve(b) runs preconditioned conjugate gradients in every
+/// lane until ‖b − (σ − K) x‖ ≤ ε ‖b‖ (set_residual; 1e-10 unless set), at most max_iterations times. The
+/// preconditioner is the symmetric Gauss–Seidel splitting of σ − K's nearest-neighbour part (the eight
+/// neighbours hold most of the pairs' weight; the far field's spectrum is narrow), O(n) per application.
+
 /// The inertia test is a bound, not a factorisation: λ_max(K) ≤ max_r d_r + λ_max(−S P S) + λ_max(−C Q C)
 /// and λ_max(−S P S) ≤ max(0, −λ_min(P)) max_r s_r² (likewise for Q with c), with λ_min of P and Q from their
 /// spectra on the padded torus (LatticeConvolution::spectrum_min). Where σ exceeds that bound, σ − K is
@@ -28,10 +32,8 @@ template <class V>
 class SpectralStiffness {
  public:
   using lane_type = V;
-  /// A stage solve's relative residual: far below the steppers' tolerances (docs/numerics.md).
-  static constexpr double relative_residual = 1e-11;
   static constexpr int max_iterations = 200;
-  static constexpr std::size_t storage_size(std::size_t n) { return 13 * n; }
+  static constexpr std::size_t storage_size(std::size_t n) { return 17 * n; }
 
   SpectralStiffness(std::size_t n, LaneArena<V>& arena)
       : n_(n),
@@ -45,11 +47,15 @@ class SpectralStiffness {
         direction_(arena.take(n)),
         image_(arena.take(n)),
         pair_in_{arena.take(n), arena.take(n)},
-        pair_out_{arena.take(n), arena.take(n)} {}
+        pair_out_{arena.take(n), arena.take(n)} {
+    for (auto& near : near_) near = arena.take(n);
+  }
 
   std::size_t size() const { return n_; }
   /// The pair couplings (kernel 0: P, kernel 1: Q) that products use, until set again.
   void set_pairs(const LatticeConvolution<V>* pairs) { pairs_ = pairs; }
+  /// The solves' relative residual ε, per lane.
+  void set_residual(V relative) { tolerance_ = relative; }
   /// Rotor r's sin θ, cos θ and K_rr.
   void set_rotor(std::size_t r, V sin, V cos, V diagonal) {
     sin_[r] = sin;
@@ -83,6 +89,7 @@ class SpectralStiffness {
       largest_cos2 = lane_max(largest_cos2, cos_[r] * cos_[r]);
       inverse_diagonal_[r] = V(1.0) / (shift - diagonal_[r]);
     }
+    set_near_field();
     // widened far beyond the spectra's rounding
     const auto negative_part = [](double low) { return (low < 0.0 ? -low : 0.0) * (1.0 + 1e-9) + 1e-12; };
     const V bound = largest_diagonal + V(negative_part(pairs_->spectrum_min(0))) * largest_sin2 +
@@ -96,12 +103,14 @@ class SpectralStiffness {
   void solve(V* r) const {
     V norm2(0.0);
     for (std::size_t k = 0; k < n_; ++k) norm2 += r[k] * r[k];
-    const V target = V(relative_residual * relative_residual) * norm2;
+    const V target = tolerance_ * tolerance_ * norm2;
     V rz(0.0);
     for (std::size_t k = 0; k < n_; ++k) {
       x_[k] = V(0.0);
       residual_[k] = r[k];
-      preconditioned_[k] = inverse_diagonal_[k] * r[k];
+    }
+    precondition(residual_, preconditioned_);
+    for (std::size_t k = 0; k < n_; ++k) {
       direction_[k] = preconditioned_[k];
       rz += residual_[k] * preconditioned_[k];
     }
@@ -123,39 +132,75 @@ class SpectralStiffness {
         x_[k] += step * direction_[k];
         residual_[k] -= step * image_[k];
         residual2 += residual_[k] * residual_[k];
-        preconditioned_[k] = inverse_diagonal_[k] * residual_[k];
-        rz_next += residual_[k] * preconditioned_[k];
       }
+      precondition(residual_, preconditioned_);
+      for (std::size_t k = 0; k < n_; ++k) rz_next += residual_[k] * preconditioned_[k];
       const lane_mask<V> going = active & (residual2 > target);
       const V turn = lane_select(going, rz_next / lane_select(going, rz, V(1.0)), V(0.0));
       for (std::size_t k = 0; k < n_; ++k) direction_[k] = preconditioned_[k] + turn * direction_[k];
       rz = rz_next;
       active = going;
-      ++iterations_;
     }
     converged_ = converged_ & !active;
-    ++solves_;
     for (std::size_t k = 0; k < n_; ++k) r[k] = x_[k];
   }
 
   /// The lanes where σ − K passed the inertia test at the last factor() and every solve since converged.
   lane_mask<V> positive_definite() const { return converged_; }
 
-  /// Conjugate-gradient iterations and solves so far (for benchmarks).
-  std::size_t iterations() const { return iterations_; }
-  std::size_t solves() const { return solves_; }
-
  private:
+  // the nearest neighbours of rotor r = j·columns + i that follow it: (i + 1, j), (i − 1, j + 1), (i, j + 1),
+  // (i + 1, j + 1)
+  static constexpr int near_dx[4] = {1, -1, 0, 1}, near_dy[4] = {0, 1, 1, 1};
+  /// (σ − K)'s entries between each rotor and its following neighbours (0 where a neighbour is off the grid).
+  void set_near_field() {
+    const auto& lattice = pairs_->lattice();
+    const std::size_t columns = lattice.columns, rows = lattice.rows, width = 2 * columns - 1;
+    for (std::size_t e = 0; e < 4; ++e) {
+      const std::size_t at = std::size_t(near_dy[e] + int(rows) - 1) * width + std::size_t(near_dx[e] + int(columns) - 1);
+      const V p = near_dy[e] < int(rows) && std::abs(near_dx[e]) < int(columns) ? pairs_->table(0)[at] : V(0.0);
+      const V q = near_dy[e] < int(rows) && std::abs(near_dx[e]) < int(columns) ? pairs_->table(1)[at] : V(0.0);
+      for (std::size_t r = 0; r < n_; ++r) {
+        const int i = int(r % columns) + near_dx[e], j = int(r / columns) + near_dy[e];
+        if (i < 0 || i >= int(columns) || j >= int(rows)) {
+          near_[e][r] = V(0.0);
+          continue;
+        }
+        const std::size_t k = std::size_t(j) * columns + std::size_t(i);
+        near_[e][r] = p * sin_[r] * sin_[k] + q * cos_[r] * cos_[k];  // −K_rk
+      }
+    }
+  }
+  /// z = M⁻¹ r for the symmetric Gauss–Seidel splitting of (σ − K)'s nearest-neighbour part,
+  /// M = (D − L) D⁻¹ (D − Lᵀ): positive definite wherever the diagonal D = σ − d is.
+  void precondition(const V* r, V* z) const {
+    const std::size_t columns = pairs_->lattice().columns;
+    const std::ptrdiff_t step[4] = {1, std::ptrdiff_t(columns) - 1, std::ptrdiff_t(columns), std::ptrdiff_t(columns) + 1};
+    for (std::size_t k = 0; k < n_; ++k) {
+      V sum = r[k];
+      for (std::size_t e = 0; e < 4; ++e)
+        if (std::ptrdiff_t(k) >= step[e]) sum -= near_[e][k - std::size_t(step[e])] * z[k - std::size_t(step[e])];
+      z[k] = sum * inverse_diagonal_[k];
+    }
+    for (std::size_t k = n_; k-- > 0;) {
+      V sum(0.0);
+      for (std::size_t e = 0; e < 4; ++e)
+        if (k + std::size_t(step[e]) < n_) sum += near_[e][k] * z[k + std::size_t(step[e])];
+      z[k] -= sum * inverse_diagonal_[k];
+    }
+  }
+
   std::size_t n_;
   const LatticeConvolution<V>* pairs_ = nullptr;
   V *sin_, *cos_, *diagonal_, *inverse_diagonal_;
   V *x_, *residual_, *preconditioned_, *direction_, *image_;
+  V* near_[4];  ///< (σ − K) between rotor r and its following neighbours, per rotor
   V* pair_in_[2];
   V* pair_out_[2];
   V shift_ = V(1.0);
+  V tolerance_ = V(1e-10);  ///< ε
   lane_mask<V> bounded_{};
   mutable lane_mask<V> converged_{};
-  mutable std::size_t iterations_ = 0, solves_ = 0;
 };
 
 }  // namespace rotorsweep::kernels

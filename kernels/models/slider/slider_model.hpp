@@ -56,6 +56,7 @@ struct SliderParameters {
   double damping = 0.1;          ///< γ
   double speed = 0.0;            ///< v, in a per unit time
   double rest = 0.0;             ///< t_rest, before which the slider stands still
+  double stage_residual = 1e-10;  ///< a matrix-free stage solve's relative residual (SpectralStiffness)
 };
 
 /// Scaled units (docs/model.md §9): length a, energy μ0 m²/(4π a³), the substrate field in units of
@@ -131,6 +132,7 @@ class SliderModel {
     lane_set(inv_inertia_, lane, Inertial ? 1.0 / p.inertia : 0.0);
     lane_set(speed_, lane, p.speed);
     lane_set(rest_, lane, p.rest);
+    lane_set(stage_residual_, lane, p.stage_residual);
   }
 
   ROTORSWEEP_HD const SliderGrid& grid() const { return grid_; }
@@ -225,7 +227,10 @@ class SliderModel {
     const V rate = lane_select(t > rest_, speed_, V(0.0));
     const V weight = Inertial ? inv_inertia_ : inv_damping_;
     V force_rate(0.0), dissipation_rate(0.0);
-    if constexpr (Pairs::matrix_free) K.set_pairs(&pairs_.convolution());
+    if constexpr (Pairs::matrix_free) {
+      K.set_pairs(&pairs_.convolution());
+      K.set_residual(stage_residual_);
+    }
     for (std::size_t r = begin; r < end; ++r) {
       // K = ∂τ/∂θ = −∂²E/∂θ²: off the diagonal −(P s_r s_q + Q c_r c_q), formed from the pair's first rotor
       const V diagonal =
@@ -433,7 +438,7 @@ class SliderModel {
   std::array<SubstrateTableView, lane_width<V>> substrate_{};
   std::array<std::array<SubstrateTableView, lane_width<V>>, 4> gradient_{};  ///< for forces() only
   V mu_ = V(1.0), inertia_ = V(1.0), inv_inertia_ = V(1.0), damping_ = V(1.0), inv_damping_ = V(1.0);
-  V speed_ = V(0.0), rest_ = V(0.0);
+  V speed_ = V(0.0), rest_ = V(0.0), stage_residual_ = V(1e-10);
 };
 
 }  // namespace rotorsweep::kernels

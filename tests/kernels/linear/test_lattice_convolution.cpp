@@ -47,17 +47,16 @@ std::vector<double> random_field(std::size_t n, unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("lattice convolution: torus lengths are 7-smooth and hold every offset", "[kernels][fft]") {
-  CHECK(smooth_length(1) == 1);
-  CHECK(smooth_length(13) == 14);
-  CHECK(smooth_length(127) == 128);
-  CHECK(smooth_length(47) == 48);
-  CHECK(smooth_length(199) == 200);
-  CHECK(smooth_length(221) == 224);
+TEST_CASE("lattice convolution: torus lengths are powers of two holding every offset", "[kernels][fft]") {
+  CHECK(torus_length(1) == 2);
+  CHECK(torus_length(7) == 16);
+  CHECK(torus_length(64) == 128);
+  CHECK(torus_length(65) == 256);
+  CHECK(torus_length(24) == 64);
   const auto fft = LatticeConvolution<double>::shape(64, 9, 2);
   CHECK(fft.fft);
   CHECK(fft.torus_columns == 128);
-  CHECK(fft.torus_rows == 18);
+  CHECK(fft.torus_rows == 32);
   CHECK_FALSE(LatticeConvolution<double>::shape(6, 6, 2).fft);
 }
 
