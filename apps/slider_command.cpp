@@ -43,7 +43,7 @@ void print_slider_header(const SliderOptions& options, const ensemble::SliderSce
     std::fprintf(stderr, "shard %zu/%zu: members %zu, %zu, %zu, ... of the plan's %zu\n", shard->index,
                  shard->count, shard->index - 1, shard->index - 1 + shard->count,
                  shard->index - 1 + 2 * shard->count, shard->plan_members);
-  std::snprintf(text, sizeof text, "%d threads × %zu lanes", threads, ensemble::instruction_set().lanes);
+  std::snprintf(text, sizeof text, "%d threads × %zu lanes", threads, ensemble::slider_thread_lanes(scene));
   const std::string where =
       scene.device == ensemble::Device::gpu ? ensemble::slider_device_label(scene) : text;
   // the speed and damping axes where they have more than one value
@@ -60,14 +60,21 @@ void print_slider_header(const SliderOptions& options, const ensemble::SliderSce
                   *most);
     axes += text;
   }
+  const std::string substrate = scene.substrate_infinite ? "an infinite lattice"
+                                                          : std::to_string(scene.substrate_columns) + " × " +
+                                                                std::to_string(scene.substrate_rows);
+  // the stage solves: dense LDLᵀ, conjugate gradients (matrix-free), or each where its sizes take it
+  std::size_t free = 0;
+  for (const auto& size : scene.sizes) free += ensemble::matrix_free(scene, size) ? 1 : 0;
+  const char* solves = free == 0 ? "dense" : free == scene.sizes.size() ? "krylov" : "dense and krylov";
   std::fprintf(
       stderr,
       "rotorsweep slider %s: %zu members (%zu sizes%s × %zu separations h = %g … %g mm × %zu replicas), "
-      "rotors %s over %zu × %zu, %s, %s rtol %g, %s\n",
+      "rotors %s over %s, %s, %s rtol %g (%s stage solves), %s\n",
       options.scene.c_str(), scene.member_count(), scene.sizes.size(), axes.c_str(), scene.separations.size(),
-      *closest * 1e3, *farthest * 1e3, scene.replicas, sizes.c_str(), scene.substrate_columns,
-      scene.substrate_rows, scene.overdamped ? "overdamped" : "inertial",
-      kernels::stepper_names[scene.stepper].data(), scene.rtol, where.c_str());
+      *closest * 1e3, *farthest * 1e3, scene.replicas, sizes.c_str(), substrate.c_str(),
+      scene.overdamped ? "overdamped" : "inertial", kernels::stepper_names[scene.stepper].data(), scene.rtol, solves,
+      where.c_str());
 }
 
 namespace {

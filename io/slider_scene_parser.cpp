@@ -20,7 +20,7 @@ const std::map<std::string, std::set<std::string>> slider_keys{
     {"slider",
      {"columns", "rows", "spacing", "moment", "inertia", "damping", "dynamics", "tilt", "shift_x",
       "shift_y"}},
-    {"substrate", {"columns", "rows", "moment", "nodes_per_depth", "angle"}},
+    {"substrate", {"columns", "rows", "moment", "nodes_per_depth", "angle", "extent"}},
     {"drive", {"speed", "rest", "end", "periods"}},
     {"sweep", {"separation"}},
     {"initial", {"kind", "noise", "replicas", "seed", "angles"}},
@@ -38,6 +38,7 @@ bool positive(double x) { return x > 0; }
 bool within_pi(double x) { return std::fabs(x) <= 3.141592653589793; }
 
 bool up_to_100(long long v) { return v >= 1 && v <= 100; }
+bool up_to_1024(long long v) { return v >= 1 && v <= 1024; }
 bool up_to_100000(long long v) { return v >= 1 && v <= 100000; }
 
 /// A count from 1 to 100 (small) or to 100000.
@@ -47,17 +48,18 @@ std::size_t count(const Section& s, std::string_view k, std::size_t fallback, bo
                                small ? up_to_100 : up_to_100000));
 }
 
-/// slider.columns and slider.rows: integers from 1 to 100, or lists of them paired one to one (a single
-/// value goes with every value of the other list); each size has at least two rotors.
+/// slider.columns and slider.rows: integers from 1 to 1024, or lists of them paired one to one (a single
+/// value goes with every value of the other list); each size has at least two rotors (the memory a size
+/// needs is checked before a run: dense stage solves take O(n²) per lane block, matrix-free ones O(n)).
 std::vector<ensemble::SliderSize> read_sizes(const Section& slider) {
   const auto read = [&](std::string_view k) {
     std::vector<std::size_t> values;
     const toml::node* node = slider.find(k);
     if (!node) return std::vector<std::size_t>{7};
-    const std::string what = "an integer from 1 to 100, or a non-empty list of them";
+    const std::string what = "an integer from 1 to 1024, or a non-empty list of them";
     const auto take = [&](const toml::node& n) {
       const auto v = n.value_exact<long long>();
-      if (!n.is_integer() || !v || !up_to_100(*v))
+      if (!n.is_integer() || !v || !up_to_1024(*v))
         fail(slider.key(k), "must be " + what + " (got " + describe(n) + ")");
       values.push_back(std::size_t(*v));
     };
@@ -205,13 +207,26 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.shift_y = shift("shift_y");
 
   const Section substrate = section(root, "substrate");
-  scene.substrate_columns = count(substrate, "columns", scene.substrate_columns, false);
-  scene.substrate_rows = count(substrate, "rows", scene.substrate_rows, false);
-  if (scene.substrate_columns * scene.substrate_rows > 1000000)
-    fail(substrate.key("columns"), "and substrate.rows give " +
-                                       std::to_string(scene.substrate_columns * scene.substrate_rows) +
-                                       " magnets; at most 1000000 are allowed (every node of a substrate "
-                                       "table sums over all of them)");
+  scene.substrate_infinite = substrate.choice("extent", "finite", {"finite", "infinite"}) == "infinite";
+  if (scene.substrate_infinite) {
+    for (const char* key : {"columns", "rows"})
+      if (substrate.find(key))
+        fail(substrate.key(key), "has no meaning with substrate.extent = \"infinite\" (a moment at every lattice "
+                                 "point); leave it out, or take substrate.extent = \"finite\"");
+  } else {
+    scene.substrate_columns = count(substrate, "columns", scene.substrate_columns, false);
+    scene.substrate_rows = count(substrate, "rows", scene.substrate_rows, false);
+    // box sums make a large lattice cheap; a turned slider's tracks take direct sums over every moment
+    const double magnets = double(scene.substrate_columns) * double(scene.substrate_rows);
+    const double most = scene.tilt != 0.0 ? 1e6 : 1e8;
+    if (magnets > most)
+      fail(substrate.key("columns"),
+           "and substrate.rows give " + number_text(magnets) + " magnets; at most " + number_text(most) +
+               " are allowed" +
+               (scene.tilt != 0.0 ? " under a turned slider (every node of its tables sums over all of them)"
+                                  : "") +
+               " (substrate.extent = \"infinite\" has no edges at all)");
+  }
   scene.substrate_moment =
       substrate.number("moment", scene.substrate_moment, "a number > 0 (A m²)", positive);
   scene.nodes_per_depth = substrate.number("nodes_per_depth", scene.nodes_per_depth,

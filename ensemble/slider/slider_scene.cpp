@@ -8,6 +8,7 @@
 
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/counter_random.hpp"
+#include "kernels/models/slider/infinite_substrate.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -40,6 +41,8 @@ kernels::SubstrateLattice substrate_lattice(const SliderScene& scene, SliderSize
   const auto centre_offset = [](std::size_t slider, std::size_t substrate) {
     return 0.5 * double(slider - 1) - 0.5 * double(substrate - 1);
   };
+  // an infinite lattice has a moment under every rotor of an unshifted slider at rest, as 5N × 5N has
+  if (scene.substrate_infinite) return {0, 0, 0.0, 0.0, separation / scene.spacing, scene.substrate_angle};
   return {scene.substrate_columns,
           scene.substrate_rows,
           centre_offset(size.columns, scene.substrate_columns),
@@ -74,7 +77,25 @@ SubstrateTableLayout substrate_table_layout(const SliderScene& scene, SliderSize
                           placement.tilt};
   at.lattice.depth += ddepth;
   for (double& y : at.tracks) y += dy;
+  const double terms = double(at.tracks.size()) * double(at.intervals() + 1) *
+                       double(scene.substrate_columns) * double(scene.substrate_rows);
+  if (scene.substrate_infinite)
+    at.sums = SubstrateSums::infinite;
+  else if (!placement.turned() && terms > direct_sum_terms)
+    at.sums = SubstrateSums::box;
+  if (at.sums != SubstrateSums::direct) at.per_period = std::size_t(std::ceil(1.0 / at.dx - 1e-9));
   return at;
+}
+
+double SubstrateTableLayout::bytes() const {
+  const double nodes = double(intervals() + 1);
+  const double stored = shared_track() ? 1.0 : double(tracks.size());
+  double working = nodes * 9 * sizeof(double);  // one track's nodes
+  if (sums == SubstrateSums::box)  // every track's nodes, and a phase's running and column sums
+    working = stored * nodes * 6 * sizeof(double) +
+              (nodes / double(per_period) + double(lattice.columns)) * (2 * double(tracks.size()) + 2) * 6 *
+                  sizeof(double);
+  return (nodes - 1) * stored * 12 * sizeof(double) + working;
 }
 
 double paper_drive_amplitude(const SliderScene& scene, double separation) {
@@ -84,14 +105,16 @@ double paper_drive_amplitude(const SliderScene& scene, double separation) {
 double field_drive_amplitude(const SliderScene& scene, SliderSize size, double separation) {
   const auto lattice = substrate_lattice(scene, size, separation);
   const auto placement = slider_placement(scene);
+  const kernels::InfiniteSubstrate infinite(lattice.depth, lattice.angle, 0.0, lattice.x_offset, lattice.y_offset);
   const std::size_t i = size.columns / 2, j = size.rows / 2;  // the centre rotor's path
   const double row = placement.path_y(i, j), column = placement.start_x(i, j);
   constexpr int points = 64;
   std::complex<double> bx(0.0), bz(0.0);  // Σ B e^{iφ}: the harmonic's amplitude whatever its phase
   for (int k = 0; k < points; ++k) {
     const double phase = kernels::two_pi * double(k) / points;
-    const auto field =
-        kernels::substrate_field(lattice, column + double(k) / points, row, placement.turned());
+    const auto field = scene.substrate_infinite
+                           ? infinite.field_at(column + double(k) / points, row)
+                           : kernels::substrate_field(lattice, column + double(k) / points, row, placement.turned());
     // B_∥ along the rotors' in-plane axis (B_x unless the slider is turned)
     const double along = placement.turned() ? std::cos(placement.tilt) * field.x.value +
                                                   std::sin(placement.tilt) * field.y.value
@@ -113,8 +136,8 @@ kernels::SliderParameters slider_parameters(const SliderScene& scene,
   p.speed = 1.0 / kernels::two_pi;
   p.rest = scene.rest / units.time;
   // far below the step's tolerance: a stage's error of ε relative moves the friction by about 4ε
-  // (docs/performance.md "The full array at any size")
-  p.stage_residual = std::min(1e-10, 1e-3 * scene.rtol);
+  // (docs/numerics.md "The stage solve without a matrix")
+  p.stage_residual = 1e-3 * scene.rtol;
   return p;
 }
 

@@ -16,6 +16,9 @@
 
 #include "ensemble/engine/device.hpp"
 #include "kernels/models/slider/slider_model.hpp"
+#include "kernels/models/slider/infinite_substrate.hpp"
+#include "kernels/models/slider/substrate_box_sums.hpp"
+#include "kernels/models/slider/substrate_table.hpp"
 #include "kernels/steppers/step_control.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
@@ -62,6 +65,9 @@ struct SliderScene {
   // [substrate]
   std::size_t substrate_columns = 35;
   std::size_t substrate_rows = 35;
+  /// substrate.extent = "infinite": a moment at every integer point of the plane (its field by the Fourier
+  /// series of kernels::InfiniteSubstrate), no edges; columns and rows then have no meaning.
+  bool substrate_infinite = false;
   double substrate_moment = 5.03e-2;  ///< m_sub, A m²
   double substrate_angle = 0.0;       ///< φ, rad: moments (cos φ, 0, −sin φ)
   double nodes_per_depth = 16.0;      ///< table nodes per separation h along x (error ∝ (h / nodes)⁶)
@@ -154,33 +160,70 @@ double final_displacement(const SliderScene& scene);
 /// The scene's placement of the rotors over the substrate, in units of a.
 kernels::SliderPlacement slider_placement(const SliderScene& scene);
 
+/// How a table's nodes get the substrate's field: the direct sum over every moment (what the experiment's
+/// 7 × 7 scan takes, its bits), box sums over summed-area tables (the same finite lattice exactly, to
+/// rounding, in a fraction of the work once tracks × nodes × moments passes `direct_sum_terms`; unturned
+/// sliders), or the infinite lattice's Fourier series.
+enum class SubstrateSums { direct, box, infinite };
+/// Above this many dipole terms (tracks × nodes × moments, about a second of direct sums) a finite
+/// substrate's table comes from box sums.
+inline constexpr double direct_sum_terms = 1e8;
+
 /// Where the table of the substrate field lies for a slider of `size` at separation h (m): the
 /// lattice, the tracks (y of each row, or of each rotor of a turned slider) and the span along x (units
 /// of a) of the whole path, with half a lattice constant beyond both ends so that no step's stage leaves
-/// it, and the node spacing; with dy, ddepth its tracks moved along y and the substrate farther by ddepth.
+/// it, the node spacing (at most h / nodes_per_depth; with box sums or an infinite lattice a whole
+/// fraction 1/per_period of a) and how the nodes are summed; with dy, ddepth its tracks moved along y and
+/// the substrate farther by ddepth.
 struct SubstrateTableLayout {
   kernels::SubstrateLattice lattice;
   std::vector<double> tracks;
   double x_begin = 0, x_end = 0, dx = 1, tilt = 0;
-  /// Bytes of the table's coefficients (12 per track and interval) and of the nodes it is fitted to.
-  double bytes() const {
-    const double intervals = std::ceil((x_end - x_begin) / dx) + 1;
-    return intervals * (double(tracks.size()) * 12 + 9) * sizeof(double);
+  SubstrateSums sums = SubstrateSums::direct;
+  std::size_t per_period = 0;  ///< nodes per lattice constant (box sums, infinite)
+  /// Whether one track serves every track: an infinite lattice under an unturned slider.
+  bool shared_track() const { return sums == SubstrateSums::infinite && tilt == 0.0; }
+  /// The table's intervals.
+  std::size_t intervals() const {
+    if (sums == SubstrateSums::direct) return kernels::SubstrateTable::intervals_over(x_begin, x_end, dx);
+    return std::size_t(std::ceil((x_end - x_begin) * double(per_period) - 1e-9));
   }
+  /// Bytes of the table's coefficients (12 per stored track and interval) and of the nodes it is fitted to
+  /// (box sums: every track's, and one phase's summed-area table).
+  double bytes() const;
 };
 SubstrateTableLayout substrate_table_layout(const SliderScene& scene, SliderSize size, double separation,
                                             double dy = 0.0, double ddepth = 0.0);
 
-/// The table of the substrate field over that layout, its direct sums computed lane_width<V> nodes at a
-/// time (the same table for every V). `stopped()` is asked between blocks of nodes: once it is true the
-/// build ends with kernels::SubstrateTableStopped.
+/// The table of the substrate field over that layout: direct sums or box sums lane_width<V> nodes or
+/// offsets at a time (the same table for every V), or the infinite lattice's series. `stopped()` is asked
+/// between blocks of nodes: once it is true the build ends with kernels::SubstrateTableStopped.
 template <class V>
 kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize size, double separation,
                                         double dy = 0.0, double ddepth = 0.0,
                                         const std::function<bool()>& stopped = {}) {
   const SubstrateTableLayout at = substrate_table_layout(scene, size, separation, dy, ddepth);
-  return kernels::SubstrateTable(at.lattice, at.tracks, at.x_begin, at.x_end, at.dx, at.tilt,
-                                 std::type_identity<V>{}, stopped);
+  if (at.sums == SubstrateSums::direct)
+    return kernels::SubstrateTable(at.lattice, at.tracks, at.x_begin, at.x_end, at.dx, at.tilt,
+                                   std::type_identity<V>{}, stopped);
+  const std::size_t intervals = at.intervals(), m = at.per_period;
+  const double step = 1.0 / double(m);
+  if (at.sums == SubstrateSums::infinite) {
+    const kernels::InfiniteSubstrate infinite(at.lattice.depth, at.lattice.angle, at.tilt, at.lattice.x_offset,
+                                              at.lattice.y_offset);
+    return kernels::SubstrateTable(
+        at.tracks.size(), intervals, at.x_begin, step,
+        [&](std::size_t track, std::vector<kernels::TableNode>& nodes) {
+          if (stopped && stopped()) throw kernels::SubstrateTableStopped{};
+          infinite.track_nodes(at.tracks[track], at.x_begin, m, nodes);
+        },
+        at.shared_track());
+  }
+  // box sums: the tracks of an unturned slider lie an integer apart, from its first row's
+  const auto nodes =
+      kernels::box_sum_nodes<V>(at.lattice, at.tracks.front(), at.tracks.size(), at.x_begin, m, intervals, stopped);
+  return kernels::SubstrateTable(at.tracks.size(), intervals, at.x_begin, step,
+                                 [&](std::size_t track, std::vector<kernels::TableNode>& out) { out = nodes[track]; });
 }
 
 /// The row model's substrate strength A at separation h (docs/model.md §9 "Mapping onto the row model"):

@@ -61,9 +61,10 @@ LaneSteps run_size(const SliderScene& scene, const std::vector<SliderSampleGrid>
 /// Runs the members of each size (`sizes`: runs of positions in `plan_indices`) on lane schedulers,
 /// one per thread and size (run_lane_groups): a thread whose size has no member left goes on to the next
 /// size while the others finish theirs. A size that runs matrix-free (matrix_free) takes one member per
-/// thread (the double lane: its FFTs and solves are per member), the others SIMD lanes. `grids`: each speed's
-/// sample grid. Each finished member goes to `finished` (one call at a time) with its series on `samples`
-/// columns.
+/// thread (the double lane: its FFTs and solves are per member; a thread with no member left helps the
+/// others with their convolutions, LatticeConvolution::apply), the others SIMD lanes. `grids`: each speed's
+/// sample grid. Each finished member goes to `finished` (one call at a time) with its
+/// series on `samples` columns.
 template <bool Inertial>
 RunOutcome run_sizes(const SliderScene& scene, const std::vector<SliderSampleGrid>& grids,
                      std::size_t samples, const std::vector<std::size_t>& plan_indices,

@@ -30,9 +30,9 @@ inline std::size_t torus_length(std::size_t n) {
 }
 
 /// FFTW plans (FFTW_ESTIMATE: every process plans alike, so the bits do not depend on timing) of the
-/// separable transforms of `kernels` × `width` fields on a rows × columns torus whose first `lattice_rows`
-/// rows hold the lattice (layout in LatticeConvolution), made once per process and shape: FFTW's planner
-/// is not thread-safe, executing a plan on new arrays (of the planning arrays' 64-byte alignment) is.
+/// separable transforms of `width` lane fields on a rows × columns torus whose first `lattice_rows` rows hold
+/// the lattice (layout in LatticeConvolution), made once per process and shape: FFTW's planner is not
+/// thread-safe, executing a plan on new arrays (of the planning arrays' 64-byte alignment) is.
 struct LatticeFftPlans {
   fftw_plan rows_forward = nullptr;     ///< real to half-complex along x, the lattice's rows only
   fftw_plan columns_forward = nullptr;  ///< complex along y, in place, every column
@@ -41,30 +41,26 @@ struct LatticeFftPlans {
   fftw_plan full_forward = nullptr;  ///< a whole 2-D transform of one field (a kernel's spectrum)
 };
 inline const LatticeFftPlans& lattice_fft_plans(std::size_t rows, std::size_t columns, std::size_t lattice_rows,
-                                                std::size_t kernels, std::size_t width) {
+                                                std::size_t width) {
   static std::mutex mutex;
-  static std::map<std::tuple<std::size_t, std::size_t, std::size_t, std::size_t, std::size_t>, LatticeFftPlans>
-      plans;
+  static std::map<std::tuple<std::size_t, std::size_t, std::size_t, std::size_t>, LatticeFftPlans> plans;
   const std::lock_guard<std::mutex> lock(mutex);
-  LatticeFftPlans& found = plans[{rows, columns, lattice_rows, kernels, width}];
+  LatticeFftPlans& found = plans[{rows, columns, lattice_rows, width}];
   if (found.rows_forward) return found;
   const int w = int(width), half = int(columns / 2 + 1), nc = int(columns);
-  const int real = int(rows * columns), complex = int(rows * columns / 2 + rows);
   // planning arrays aligned as the arena's pieces are
-  auto* in = static_cast<double*>(std::aligned_alloc(64, sizeof(double) * std::size_t(real) * kernels * width + 64));
+  auto* in = static_cast<double*>(std::aligned_alloc(64, sizeof(double) * rows * columns * width + 64));
   auto* out = static_cast<fftw_complex*>(
-      std::aligned_alloc(64, sizeof(fftw_complex) * std::size_t(complex) * kernels * width + 64));
+      std::aligned_alloc(64, sizeof(fftw_complex) * rows * std::size_t(half) * width + 64));
   const fftw_iodim along_x{nc, w, w};
   const fftw_iodim along_y{int(rows), half * w, half * w};
-  const fftw_iodim rows_forward[3] = {{int(kernels), real * w, complex * w}, {int(lattice_rows), nc * w, half * w},
-                                      {w, 1, 1}};
-  const fftw_iodim rows_inverse[3] = {{int(kernels), complex * w, real * w}, {int(lattice_rows), half * w, nc * w},
-                                      {w, 1, 1}};
-  const fftw_iodim columns_all[2] = {{int(kernels), complex * w, complex * w}, {half * w, 1, 1}};
-  found.rows_forward = fftw_plan_guru_dft_r2c(1, &along_x, 3, rows_forward, in, out, FFTW_ESTIMATE);
-  found.columns_forward = fftw_plan_guru_dft(1, &along_y, 2, columns_all, out, out, FFTW_FORWARD, FFTW_ESTIMATE);
-  found.columns_inverse = fftw_plan_guru_dft(1, &along_y, 2, columns_all, out, out, FFTW_BACKWARD, FFTW_ESTIMATE);
-  found.rows_inverse = fftw_plan_guru_dft_c2r(1, &along_x, 3, rows_inverse, out, in, FFTW_ESTIMATE);
+  const fftw_iodim rows_forward[2] = {{int(lattice_rows), nc * w, half * w}, {w, 1, 1}};
+  const fftw_iodim rows_inverse[2] = {{int(lattice_rows), half * w, nc * w}, {w, 1, 1}};
+  const fftw_iodim columns_all{half * w, 1, 1};
+  found.rows_forward = fftw_plan_guru_dft_r2c(1, &along_x, 2, rows_forward, in, out, FFTW_ESTIMATE);
+  found.columns_forward = fftw_plan_guru_dft(1, &along_y, 1, &columns_all, out, out, FFTW_FORWARD, FFTW_ESTIMATE);
+  found.columns_inverse = fftw_plan_guru_dft(1, &along_y, 1, &columns_all, out, out, FFTW_BACKWARD, FFTW_ESTIMATE);
+  found.rows_inverse = fftw_plan_guru_dft_c2r(1, &along_x, 2, rows_inverse, out, in, FFTW_ESTIMATE);
   found.full_forward = fftw_plan_dft_r2c_2d(int(rows), nc, in, out, FFTW_ESTIMATE);
   std::free(in);
   std::free(out);
@@ -83,9 +79,11 @@ inline const LatticeFftPlans& lattice_fft_plans(std::size_t rows, std::size_t co
 /// (real: the kernel is even) multiplies field k's, and the inverse transform gives every point's sum at
 /// once, O(n log n) instead of O(n²), equal to the direct sums to rounding. The 2-D transforms are
 /// separable passes, pruned to the lattice: along x over the lattice's rows only (the others are zero on
-/// the way in and not read on the way out), along y over every column. Field k of lane l at torus point
-/// (y, x) is double ((k · torus points + y · torus columns + x) · width + l), so a lane block's fields
-/// transform as one batch. The spectra also bound the kernels' matrices on the lattice: each is a
+/// the way in and not read on the way out), along y over every column. Each kernel's field has buffers of
+/// its own, lane l at torus point (y, x) at double (y · torus columns + x) · width + l, so a lane block's
+/// fields transform as one batch, and the kernels' convolutions can run on threads of their own (OpenMP
+/// tasks: the same operations, so the same bits). The spectra also bound the kernels' matrices on
+/// the lattice: each is a
 /// principal submatrix of the torus's circulant, whose eigenvalues are the spectrum, so its eigenvalues
 /// lie in [spectrum_min(k), spectrum_max(k)].
 ///
@@ -121,20 +119,20 @@ class LatticeConvolution {
     const Shape s = shape(columns, rows, kernels);
     std::size_t size = kernels * s.offsets();
     if (s.fft)
-      size += aligned_count(s.torus_points() * kernels) + aligned_count(2 * s.spectrum_points() * kernels) +
-              s.spectrum_points() * kernels;
+      size += kernels * (aligned_count(s.torus_points()) + aligned_count(2 * s.spectrum_points()) +
+                         s.spectrum_points());
     return size;
   }
 
   LatticeConvolution(std::size_t columns, std::size_t rows, std::size_t kernels, LaneArena<V>& arena)
       : shape_(shape(columns, rows, kernels)), tables_(arena.take(kernels * shape_.offsets())) {
-    if (shape_.fft) {
-      field_ = aligned_take(arena, shape_.torus_points() * kernels);
-      spectrum_ = aligned_take(arena, 2 * shape_.spectrum_points() * kernels);
-      symbols_ = arena.take(shape_.spectrum_points() * kernels);
-      if (!arena.counting())
-        plans_ = &lattice_fft_plans(shape_.torus_rows, shape_.torus_columns, rows, kernels, width);
+    if (!shape_.fft) return;
+    for (std::size_t k = 0; k < kernels; ++k) {
+      field_[k] = aligned_take(arena, shape_.torus_points());
+      spectrum_[k] = aligned_take(arena, 2 * shape_.spectrum_points());
+      symbols_[k] = arena.take(shape_.spectrum_points());
     }
+    if (!arena.counting()) plans_ = &lattice_fft_plans(shape_.torus_rows, shape_.torus_columns, rows, width);
   }
 
   const Shape& lattice() const { return shape_; }
@@ -156,7 +154,7 @@ class LatticeConvolution {
     }
     if (shape_.fft)
       for (std::size_t q = 0; q < shape_.spectrum_points(); ++q)
-        symbols_[k * shape_.spectrum_points() + q] = V(spectrum[q] / double(shape_.torus_points()));
+        symbols_[k][q] = V(spectrum[q] / double(shape_.torus_points()));
   }
   /// Bounds of the eigenvalues of kernel k's matrix on the lattice: the extremes of its spectrum on the torus.
   double spectrum_min(std::size_t k) const { return spectrum_min_[k]; }
@@ -172,33 +170,14 @@ class LatticeConvolution {
         for (std::size_t p = 0; p < shape_.points(); ++p) out[k][p] = direct_at(table(k), p, in[k]);
       return;
     }
-    const std::size_t tc = shape_.torus_columns, tp = shape_.torus_points(), nk = shape_.kernels;
-    const std::size_t half = tc / 2 + 1, sp = shape_.spectrum_points();
-    // the lattice's rows, zero-padded along x (the other rows are not read)
-    for (std::size_t k = 0; k < nk; ++k)
-      for (std::size_t j = 0, p = 0; j < shape_.rows; ++j) {
-        V* row = field_ + k * tp + j * tc;
-        for (std::size_t i = 0; i < shape_.columns; ++i, ++p) row[i] = in[k][p];
-        for (std::size_t i = shape_.columns; i < tc; ++i) row[i] = V(0.0);
-      }
-    fftw_execute_dft_r2c(plans_->rows_forward, reinterpret_cast<double*>(field_), complex(spectrum_));
-    // the rows beyond the lattice's are zero before the transform along y
-    for (std::size_t k = 0; k < nk; ++k)
-      for (std::size_t i = 2 * (k * sp + shape_.rows * half); i < 2 * (k + 1) * sp; ++i) spectrum_[i] = V(0.0);
-    fftw_execute_dft(plans_->columns_forward, complex(spectrum_), complex(spectrum_));
-    for (std::size_t k = 0; k < nk; ++k)
-      for (std::size_t q = 0; q < sp; ++q) {
-        const V s = symbols_[k * sp + q];
-        spectrum_[2 * (k * sp + q)] *= s;
-        spectrum_[2 * (k * sp + q) + 1] *= s;
-      }
-    fftw_execute_dft(plans_->columns_inverse, complex(spectrum_), complex(spectrum_));
-    fftw_execute_dft_c2r(plans_->rows_inverse, complex(spectrum_), reinterpret_cast<double*>(field_));
-    for (std::size_t k = 0; k < nk; ++k)
-      for (std::size_t j = 0, p = 0; j < shape_.rows; ++j) {
-        const V* row = field_ + k * tp + j * tc;
-        for (std::size_t i = 0; i < shape_.columns; ++i, ++p) out[k][p] = row[i];
-      }
+    // every kernel but the first as an OpenMP task: a thread of the caller's team with no work of its own
+    // (waiting at the team's end) takes it, else the caller runs it at the taskwait; the same bits either way
+    for (std::size_t k = 1; k < shape_.kernels; ++k) {
+#pragma omp task default(shared) firstprivate(k)
+      convolve(k, in[k], out[k]);
+    }
+    convolve(0, in[0], out[0]);
+#pragma omp taskwait
   }
 
   /// Σ_q kernel(p − q) x_q at lattice point p from the kernel's table, q in ascending order.
@@ -224,6 +203,31 @@ class LatticeConvolution {
     return piece + ((64 - address % 64) % 64) / sizeof(V);
   }
   static fftw_complex* complex(V* values) { return reinterpret_cast<fftw_complex*>(values); }
+
+  /// Kernel k's convolution by FFT on its own buffers.
+  void convolve(std::size_t k, const V* in, V* out) const {
+    const std::size_t tc = shape_.torus_columns, half = tc / 2 + 1, sp = shape_.spectrum_points();
+    V* field = field_[k];
+    V* spectrum = spectrum_[k];
+    // the lattice's rows, zero-padded along x (the other rows are not read)
+    for (std::size_t j = 0, p = 0; j < shape_.rows; ++j) {
+      V* row = field + j * tc;
+      for (std::size_t i = 0; i < shape_.columns; ++i, ++p) row[i] = in[p];
+      for (std::size_t i = shape_.columns; i < tc; ++i) row[i] = V(0.0);
+    }
+    fftw_execute_dft_r2c(plans_->rows_forward, reinterpret_cast<double*>(field), complex(spectrum));
+    // the rows beyond the lattice's are zero before the transform along y
+    for (std::size_t i = 2 * shape_.rows * half; i < 2 * sp; ++i) spectrum[i] = V(0.0);
+    fftw_execute_dft(plans_->columns_forward, complex(spectrum), complex(spectrum));
+    for (std::size_t q = 0; q < sp; ++q) {
+      spectrum[2 * q] *= symbols_[k][q];
+      spectrum[2 * q + 1] *= symbols_[k][q];
+    }
+    fftw_execute_dft(plans_->columns_inverse, complex(spectrum), complex(spectrum));
+    fftw_execute_dft_c2r(plans_->rows_inverse, complex(spectrum), reinterpret_cast<double*>(field));
+    for (std::size_t j = 0, p = 0; j < shape_.rows; ++j)
+      for (std::size_t i = 0; i < shape_.columns; ++i, ++p) out[p] = field[j * tc + i];
+  }
 
   /// Kernel k's spectrum on a tr × tc torus (its real half-spectrum, tr × (tc/2 + 1) values; an even
   /// kernel's is real): by FFT where this convolution has one, else summed directly.
@@ -258,9 +262,9 @@ class LatticeConvolution {
 
   Shape shape_;
   V* tables_;
-  V* field_ = nullptr;     ///< the padded fields, kernel after kernel (then the sums)
-  V* spectrum_ = nullptr;  ///< their transforms: per kernel and spectrum point, the real and imaginary parts
-  V* symbols_ = nullptr;   ///< kernel k's spectrum / torus points at [k · spectrum points + q]
+  V* field_[max_kernels] = {};     ///< each kernel's padded field (then its sums)
+  V* spectrum_[max_kernels] = {};  ///< its transform: per spectrum point, the real and imaginary parts
+  V* symbols_[max_kernels] = {};   ///< each kernel's spectrum / torus points
   const LatticeFftPlans* plans_ = nullptr;
   double spectrum_min_[max_kernels] = {}, spectrum_max_[max_kernels] = {};
 };

@@ -213,11 +213,22 @@ TEST_CASE("slider bounds its sample points, axes and memory before any work, eac
       "[sweep]\nseparation = { from = 5e-3, to = 12e-3, count = 3000000 }\n[drive]\nspeed = [1e-3, 2e-3, "
       "4e-3, 8e-3]\nperiods = 1\n",
       "'sweep.separation': the plan has 1.2e+07 members");
-  refused("[sweep]\nseparation = 8e-3\n[substrate]\ncolumns = 2000\nrows = 2000\n", "'substrate.columns'");
+  // magnets: 10⁸ at most (box sums), 10⁶ under a turned slider (direct sums); none given with no edges
+  refused("[sweep]\nseparation = 8e-3\n[substrate]\ncolumns = 10001\nrows = 10001\n", "'substrate.columns'");
+  refused("[sweep]\nseparation = 8e-3\n[slider]\ntilt = 0.2\n[substrate]\ncolumns = 2000\nrows = 2000\n",
+          "'substrate.columns'");
+  refused("[sweep]\nseparation = 8e-3\n[substrate]\nextent = \"infinite\"\nrows = 30\n", "'substrate.rows'");
+  refused("[sweep]\nseparation = 8e-3\n[substrate]\nextent = \"half\"\n", "'substrate.extent'");
+  refused("[sweep]\nseparation = 8e-3\n[numerics]\nlinear_solver = \"lu\"\n", "'numerics.linear_solver'");
+  refused("[sweep]\nseparation = 8e-3\n[slider]\ncolumns = 1025\n", "'slider.columns'");
   // memory: a 100 × 100 slider's dense lane blocks, refused before the partial file exists
-  CHECK_THAT(refused("[slider]\ncolumns = 100\nrows = 100\n[sweep]\nseparation = 8e-3\n", "GiB to work in",
-                     "ulimit -v 2000000; "),
+  CHECK_THAT(refused("[slider]\ncolumns = 100\nrows = 100\n[sweep]\nseparation = 8e-3\n[numerics]\n"
+                     "linear_solver = \"dense\"\n",
+                     "GiB to work in", "ulimit -v 2000000; "),
              Catch::Contains("ulimit -v"));
+  // matrix-free members need O(n), but a 1024 × 1024 slider's substrate tables alone are gigabytes
+  refused("[slider]\ncolumns = 1024\nrows = 1024\n[sweep]\nseparation = 8e-3\n", "GiB to work in",
+          "ulimit -v 2000000; ");
   // an empty shard runs no member and prints no NaN
   const auto scene = write_text(dir / "small.toml", small_slider);
   const auto empty =
@@ -230,10 +241,12 @@ TEST_CASE("slider bounds its sample points, axes and memory before any work, eac
 
 TEST_CASE("a slider scan stops on SIGINT and SIGTERM while its substrate tables are built",
           "[apps][slider][resume]") {
-  // a million substrate magnets: every table node sums over all of them (seconds per table)
+  // a million substrate magnets under a turned slider: every table node sums over all of them directly
+  // (seconds per table)
   const auto dir = scratch_directory("slider-table-signal");
-  const auto scene = write_text(
-      dir / "big.toml", "[substrate]\ncolumns = 1000\nrows = 1000\n[sweep]\nseparation = [8e-3, 9e-3]\n");
+  const auto scene = write_text(dir / "big.toml",
+                                "[slider]\ntilt = 0.1\n[substrate]\ncolumns = 1000\nrows = 1000\n[sweep]\n"
+                                "separation = [8e-3, 9e-3]\n");
   for (const auto& [signal, code] : {std::pair<std::string, int>{"INT", 130}, {"TERM", 143}}) {
     const auto log = dir / "log.txt";
     // in the background of a shell without job control SIGINT starts out ignored: the scan must take it

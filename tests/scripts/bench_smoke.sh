@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The benchmark harness end to end on a few members (no timing is checked): our steppers and
 # scipy's Radau from the same starts both land near the stored reference, and the report is written;
-# the error calibration of D on a few members: rodas5p's reported error bounds its actual error.
+# the error calibration of D on a few members: rodas5p's reported error bounds its actual error; the
+# slider's scaling benchmark on small sizes draws its figure and gives both solvers' friction alike.
 # Usage: bench_smoke.sh ROTORSWEEP SOURCE_DIR SCRATCH_DIR
 set -euo pipefail
 rs=$1 src=$2 work=$3
@@ -33,4 +34,13 @@ for row in rows:
     ratio, missed = float(row[5]), int(row[8])
     assert ratio <= 1 and missed == 0, f"rodas5p at g {row[1]}, rtol {row[2]}: max ratio {ratio}, {missed} missed"
 print("error calibration ok:", [float(r[5]) for r in rows])
+CHECK
+$py "$src/scripts/bench/slider_scaling.py" --rotorsweep "$rs" --repeats 1 --dense 4,8 --krylov 4,8 \
+  --out "$work/scaling" --png "$work/scaling.png" > "$work/scaling.txt"
+test -s "$work/scaling.png"
+$py - "$work/scaling.txt" <<'CHECK'
+import sys
+gaps = [abs(float(line.split("= ")[-1])) for line in open(sys.argv[1]) if "krylov's friction over dense's" in line]
+assert len(gaps) == 2 and max(gaps) < 1e-6, gaps
+print("slider scaling ok:", gaps)
 CHECK

@@ -176,7 +176,8 @@ class SliderModel {
     const V xi = displacement(t);
     for (std::size_t r = begin; r < end; ++r) {
       lane_sincos(y[r], w.sin[r], w.cos[r]);
-      const TrackField<V> b = field_in_lanes(substrate_.data(), turned_ ? r : row(r), xi + start_x_[r]);
+      const TrackField<V> b =
+          field_in_lanes(substrate_.data(), turned_ ? r : row(r), xi + start_x_[r], curvatures);
       w.bx[r] = mu_ * b.bx;
       w.bz[r] = mu_ * b.bz;
       w.dbx[r] = mu_ * b.dbx;

@@ -34,12 +34,60 @@ struct SubstrateFieldAt {
   FieldJet<V> x, y, z;
 };
 
-/// The direct sum over every substrate moment, with (X, Y, Z) the point minus the moment and
-/// m̂ = cos φ x̂ − sin φ ẑ: the x̂ moments give B_x = Σ (2X² − Y² − Z²)/r⁵, B_y = Σ 3XY/r⁵,
-/// B_z = Σ 3XZ/r⁵, the ẑ moments (only summed where φ ≠ 0) B_x = Σ 3XZ/r⁵, B_y = Σ 3YZ/r⁵,
-/// B_z = Σ (2Z² − X² − Y²)/r⁵; their x-derivatives in closed form. At lane_width<V> points x at once
-/// (IEEE-exact operations only, so every lane holds the bits of the scalar sum). B_y (needed by a turned
-/// slider only) is summed where `with_y`, and 0 otherwise.
+/// One moment's field at (X, Y, Z), the point minus the moment, added to the sums `along_x` (an x̂ moment's:
+/// B_x = (2X² − Y² − Z²)/r⁵, B_y = 3XY/r⁵, B_z = 3XZ/r⁵) and, where `turned` (a substrate angle φ ≠ 0),
+/// `along_z` (a ẑ moment's B_y = 3YZ/r⁵, B_z = (2Z² − X² − Y²)/r⁵; its B_x, 3XZ/r⁵, is along_x's B_z), each
+/// with its first two x-derivatives in closed form; B_y only `with_y`. IEEE-exact operations only.
+template <class V>
+ROTORSWEEP_HD inline void add_moment_field(const V& X, double Y, double Z, bool turned, bool with_y,
+                                           SubstrateFieldAt<V>& along_x, SubstrateFieldAt<V>& along_z) {
+  const double rho2 = Y * Y + Z * Z;
+  const V r2 = X * X + V(rho2);
+  const V inv_r2 = V(1.0) / r2;
+  const V q = inv_r2 * inv_r2 / lane_sqrt(r2);  // r⁻⁵
+  const V dq = V(-5.0) * X * q * inv_r2;        // d(r⁻⁵)/dX
+  const V d2q = (V(-5.0) + V(35.0) * X * X * inv_r2) * q * inv_r2;
+  const V numerator = V(2.0) * X * X - V(rho2);
+  along_x.x.value += numerator * q;
+  along_x.x.slope += V(4.0) * X * q + numerator * dq;
+  along_x.x.curvature += V(4.0) * q + V(8.0) * X * dq + numerator * d2q;
+  along_x.z.value += V(3.0 * Z) * X * q;
+  along_x.z.slope += V(3.0 * Z) * (q + X * dq);
+  along_x.z.curvature += V(3.0 * Z) * (V(2.0) * dq + X * d2q);
+  if (with_y) {
+    along_x.y.value += V(3.0 * Y) * X * q;
+    along_x.y.slope += V(3.0 * Y) * (q + X * dq);
+    along_x.y.curvature += V(3.0 * Y) * (V(2.0) * dq + X * d2q);
+  }
+  if (turned) {
+    const V z_numerator = V(2.0 * Z * Z - Y * Y) - X * X;
+    along_z.z.value += z_numerator * q;
+    along_z.z.slope += V(-2.0) * X * q + z_numerator * dq;
+    along_z.z.curvature += V(-2.0) * q + V(-4.0) * X * dq + z_numerator * d2q;
+    if (with_y) {
+      along_z.y.value += V(3.0 * Y * Z) * q;
+      along_z.y.slope += V(3.0 * Y * Z) * dq;
+      along_z.y.curvature += V(3.0 * Y * Z) * d2q;
+    }
+  }
+}
+
+/// The field of moments (cos φ, 0, −sin φ) from the sums of x̂ and ẑ moments' fields (add_moment_field).
+template <class V>
+ROTORSWEEP_HD inline SubstrateFieldAt<V> mixed_moment_field(double angle, SubstrateFieldAt<V> along_x,
+                                                            SubstrateFieldAt<V> along_z) {
+  if (angle == 0.0) return along_x;
+  along_z.x = along_x.z;  // 3XZ/r⁵ both ways
+  const V c(std::cos(angle)), s(std::sin(angle));
+  const auto mix = [&](const FieldJet<V>& a, const FieldJet<V>& b) {
+    return FieldJet<V>{c * a.value - s * b.value, c * a.slope - s * b.slope, c * a.curvature - s * b.curvature};
+  };
+  return {mix(along_x.x, along_z.x), mix(along_x.y, along_z.y), mix(along_x.z, along_z.z)};
+}
+
+/// The direct sum over every substrate moment (add_moment_field, then mixed_moment_field) at lane_width<V>
+/// points x at once (IEEE-exact operations only, so every lane holds the bits of the scalar sum). B_y
+/// (needed by a turned slider only) is summed where `with_y`, and 0 otherwise.
 template <class V = double>
 ROTORSWEEP_HD inline SubstrateFieldAt<V> substrate_field(const SubstrateLattice& lattice, V x, double y,
                                                          bool with_y = true) {
@@ -48,47 +96,10 @@ ROTORSWEEP_HD inline SubstrateFieldAt<V> substrate_field(const SubstrateLattice&
   const bool turned = lattice.angle != 0.0;
   for (std::size_t l = 0; l < lattice.rows; ++l) {
     const double Y = y - (lattice.y_offset + double(l));
-    const double rho2 = Y * Y + Z * Z;
-    for (std::size_t k = 0; k < lattice.columns; ++k) {
-      const V X = x - V(lattice.x_offset + double(k));
-      const V r2 = X * X + V(rho2);
-      const V inv_r2 = V(1.0) / r2;
-      const V q = inv_r2 * inv_r2 / lane_sqrt(r2);  // r⁻⁵
-      const V dq = V(-5.0) * X * q * inv_r2;        // d(r⁻⁵)/dX
-      const V d2q = (V(-5.0) + V(35.0) * X * X * inv_r2) * q * inv_r2;
-      const V numerator = V(2.0) * X * X - V(rho2);
-      along_x.x.value += numerator * q;
-      along_x.x.slope += V(4.0) * X * q + numerator * dq;
-      along_x.x.curvature += V(4.0) * q + V(8.0) * X * dq + numerator * d2q;
-      along_x.z.value += V(3.0 * Z) * X * q;
-      along_x.z.slope += V(3.0 * Z) * (q + X * dq);
-      along_x.z.curvature += V(3.0 * Z) * (V(2.0) * dq + X * d2q);
-      if (with_y) {
-        along_x.y.value += V(3.0 * Y) * X * q;
-        along_x.y.slope += V(3.0 * Y) * (q + X * dq);
-        along_x.y.curvature += V(3.0 * Y) * (V(2.0) * dq + X * d2q);
-      }
-      if (turned) {
-        const V z_numerator = V(2.0 * Z * Z - Y * Y) - X * X;
-        along_z.z.value += z_numerator * q;
-        along_z.z.slope += V(-2.0) * X * q + z_numerator * dq;
-        along_z.z.curvature += V(-2.0) * q + V(-4.0) * X * dq + z_numerator * d2q;
-        if (with_y) {
-          along_z.y.value += V(3.0 * Y * Z) * q;
-          along_z.y.slope += V(3.0 * Y * Z) * dq;
-          along_z.y.curvature += V(3.0 * Y * Z) * d2q;
-        }
-      }
-    }
+    for (std::size_t k = 0; k < lattice.columns; ++k)
+      add_moment_field(x - V(lattice.x_offset + double(k)), Y, Z, turned, with_y, along_x, along_z);
   }
-  if (!turned) return along_x;
-  along_z.x = along_x.z;  // 3XZ/r⁵ both ways
-  const V c(std::cos(lattice.angle)), s(std::sin(lattice.angle));
-  const auto mix = [&](const FieldJet<V>& a, const FieldJet<V>& b) {
-    return FieldJet<V>{c * a.value - s * b.value, c * a.slope - s * b.slope,
-                       c * a.curvature - s * b.curvature};
-  };
-  return {mix(along_x.x, along_z.x), mix(along_x.y, along_z.y), mix(along_x.z, along_z.z)};
+  return mixed_moment_field(lattice.angle, along_x, along_z);
 }
 
 }  // namespace rotorsweep::kernels
