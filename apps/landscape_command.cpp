@@ -2,6 +2,7 @@
 // bifurcation and alignment curves, and J(A) on [A_-, A_*] (model.md §4–5), each as an HDF5 file.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -107,9 +108,26 @@ std::vector<std::int64_t> cell_field(const landscape::ChamberMap& map,
   return out;
 }
 
+/// Given coefficients must give a finite CP window [A_−, A_*] (all zero, for one, give none: every curve and
+/// J would be NaN); says so (exit code 2) where they do not.
+bool coefficients_usable(const LandscapeOptions& o) {
+  if (o.coefficients.size() != 3) return true;
+  const auto k = coefficients(o);
+  const double lo = landscape::A_minus(k), hi = landscape::A_star(k);
+  if (std::isfinite(lo) && std::isfinite(hi)) return true;
+  char text[200];
+  std::snprintf(text, sizeof text, "a, b, c = %g, %g, %g give no CP window (A_- = %g, A_* = %g)", k.a, k.b,
+                k.c, lo, hi);
+  std::cerr
+      << "error: --coefficients: " << text
+      << "; give coefficients with a finite window, or leave them out (nearest neighbours, or --range)\n";
+  return false;
+}
+
 }  // namespace
 
 int run_landscape_chambers(const LandscapeOptions& o) {
+  if (!coefficients_usable(o)) return 2;
   if (!(o.A_max > o.A_min) || o.A_min < 0) {
     std::cerr << "error: --A-min, --A-max: need 0 <= A-min < A-max (got " << o.A_min << ", " << o.A_max
               << ")\n";
@@ -177,6 +195,7 @@ int run_landscape_chambers(const LandscapeOptions& o) {
 }
 
 int run_landscape_curves(const LandscapeOptions& o) {
+  if (!coefficients_usable(o)) return 2;
   // a curve at a time: its points and the three columns written
   const double point_bytes = sizeof(landscape::BifurcationPoint) + 3 * sizeof(double);
   if (!fits_in_memory(double(o.samples) * point_bytes, "landscape curves",
@@ -202,6 +221,7 @@ int run_landscape_curves(const LandscapeOptions& o) {
 }
 
 int run_landscape_jump_friction(const LandscapeOptions& o) {
+  if (!coefficients_usable(o)) return 2;
   // the eleven columns written, one value per A
   if (!fits_in_memory(double(o.count) * 11 * sizeof(double), "landscape jump-friction",
                       " for " + std::to_string(o.count) + " A values", "use a smaller --count"))

@@ -27,30 +27,6 @@ bool launched_by_mpi() {
          std::getenv("PMI_RANK") != nullptr;
 }
 
-namespace {
-
-/// Rank 0: the rows a rank's file marks done, read back a block at a time into `out`; returns how many,
-/// and removes the file.
-std::size_t join_rank_file(const io::ResultFile& out, const ensemble::Scene& scene, const ensemble::MemberPlan& plan,
-                           const std::string& path) {
-  constexpr std::size_t block = 4096;
-  std::size_t joined = 0;
-  {
-    const auto file = io::Hdf5Location::open_file(path);
-    const auto done = io::read_done(file);
-    for (std::size_t first = 0; first < done.size(); first += block) {
-      const std::size_t count = std::min(block, done.size() - first);
-      auto results = io::read_member_rows(file, scene, plan, first, count, done.data() + first);
-      joined += results.size();
-      out.write_results(plan, std::move(results));
-    }
-  }
-  std::filesystem::remove(path);
-  return joined;
-}
-
-}  // namespace
-
 int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int threads) {
   MpiSession mpi;
   const bool root = mpi.rank() == 0;
@@ -126,10 +102,10 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
     stats.threads = threads;
     return stats;
   };
-  return end_mpi_run(mpi, {error, signal_number, stats.wall_seconds, stats.threads}, target ? &*target : nullptr,
-                     path, partial, plan.size(), "run", options, occupancy,
+  return end_mpi_run(mpi, {error, signal_number, stats.wall_seconds, stats.threads},
+                     target ? &*target : nullptr, path, partial, plan.size(), "run", options, occupancy,
                      {[&] { out.emplace(partial, scene, provenance); },
-                      [&](int r) { return join_rank_file(*out, scene, plan, rank_file(partial, r)); },
+                      [&](int r) { return join_rank_file(*out, scene, rank_file(partial, r)); },
                       [&](double wall, int threads) {
                         out->finish(with_totals(wall, threads));
                         out->close();

@@ -25,9 +25,10 @@ int prepare_mpi_output(const MpiSession& mpi, const SceneCommandOptions& options
       target.emplace(path, std::vector<std::string>{options.scene}, io::Replaceable::hdf5, options.force,
                      true);
       partial = target->temporary();
-      if (!options.force && std::filesystem::exists(partial)) {
+      const auto ranks = rank_files(partial);
+      if (!options.force && (std::filesystem::exists(partial) || !ranks.empty())) {
         std::cerr
-            << "error: " << partial
+            << "error: " << (std::filesystem::exists(partial) ? partial : ranks.front())
             << " holds the finished members of an earlier run: continue it with --resume (without mpirun), "
                "or start afresh with --force\n";
         target->keep();
@@ -40,6 +41,8 @@ int prepare_mpi_output(const MpiSession& mpi, const SceneCommandOptions& options
       status = 2;
     }
   }
+  if (root && status == 0 && options.force)  // a fresh start: an earlier run's rank files go
+    for (const auto& rank : rank_files(partial)) std::filesystem::remove(rank);
   partial = mpi.broadcast(partial);
   return mpi.broadcast(status);
 }

@@ -14,6 +14,7 @@
 
 #include "commands.hpp"
 #include "io/output_target.hpp"
+#include "rank_files.hpp"
 
 namespace rotorsweep::apps {
 
@@ -90,11 +91,6 @@ class SharedCounters {
   MPI_Win window_ = MPI_WIN_NULL;
   std::mutex lock_;
 };
-
-/// The file rank `rank` streams its members into, beside the run's partial file.
-inline std::string rank_file(const std::string& partial, int rank) {
-  return partial + ".rank-" + std::to_string(rank);
-}
 
 /// Rank 0 checks the output before any work: no --resume or --shard under mpirun, `path` writable,
 /// no partial file of an earlier run (unless --force), and `fits_on_disk(partial)`; every rank gets

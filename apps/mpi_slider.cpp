@@ -26,15 +26,14 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
   std::string partial;
   const double row_bytes =
       1 + io::table_row_bytes(io::slider_columns(scene, ensemble::slider_timeline(scene)));
-  if (const int status =
-          prepare_mpi_output(mpi, options, options.resume, options.shard, path, target, partial,
-                             [&](const std::string& at) {
-                               const double members = double(scene.member_count());
-                               return fits_on_disk(2 * members * row_bytes +
-                                                       io::SliderResultFile::finishing_bytes(scene, false),
-                                                   "the results of the ranks' files and the joined file", at,
-                                                   "Split the scan (fewer separations or replicas)");
-                             });
+  if (const int status = prepare_mpi_output(
+          mpi, options, options.resume, options.shard, path, target, partial,
+          [&](const std::string& at) {
+            const double members = double(scene.member_count());
+            return fits_on_disk(2 * members * row_bytes + io::SliderResultFile::finishing_bytes(scene, false),
+                                "the results of the ranks' files and the joined file", at,
+                                "Split the scan (fewer separations or replicas)");
+          });
       status != 0)
     return status;
 
@@ -90,10 +89,7 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
                      {[&] { out.emplace(partial, scene, provenance); },
                       [&](int r) {
                         const std::string from = rank_file(partial, r);
-                        std::size_t joined = 0;
-                        if (std::filesystem::exists(from)) joined = out->copy_done_rows(io::Hdf5Location::open_file(from));
-                        std::filesystem::remove(from);
-                        return joined;
+                        return std::filesystem::exists(from) ? join_rank_file(*out, scene, from) : 0;
                       },
                       [&](double all_wall, int all_threads) {
                         out->finish(all_wall, all_threads);

@@ -27,6 +27,7 @@
 #include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
+#include "rank_files.hpp"
 #include "run_support.hpp"
 #include "streamed_run.hpp"
 #include "usable_memory.hpp"
@@ -190,7 +191,9 @@ void print_header(const RunOptions& options, const ensemble::Scene& scene, std::
     std::fprintf(stderr, "shard %zu/%zu: members %zu, %zu, %zu, ... of the plan's %zu\n", shard->index,
                  shard->count, shard->index - 1, shard->index - 1 + shard->count,
                  shard->index - 1 + 2 * shard->count, shard->plan_members);
-  std::fputs(io::run_description(scene, options.scene, members, threads, ensemble::instruction_set().lanes).c_str(), stderr);
+  std::fputs(
+      io::run_description(scene, options.scene, members, threads, ensemble::instruction_set().lanes).c_str(),
+      stderr);
 }
 
 bool open_resumable_target(const SceneCommandOptions& options, bool resume, const std::string& path,
@@ -201,10 +204,23 @@ bool open_resumable_target(const SceneCommandOptions& options, bool resume, cons
     std::cerr << "error: " << e.what() << " (-o or output.path)\n";
     return false;
   }
-  if (resume || options.force || !std::filesystem::exists(target->temporary())) return true;
-  std::cerr << "error: " << target->temporary()
-            << " holds the finished members of an earlier run that stopped early: continue it with --resume, "
-               "or start afresh with --force\n";
+  const auto ranks = rank_files(target->temporary());
+  if (options.force && !resume)  // a fresh start: an earlier mpirun's rank files go with its partial file
+    for (const auto& rank : ranks) std::filesystem::remove(rank);
+  if (resume || options.force) return true;
+  if (std::filesystem::exists(target->temporary()))
+    std::cerr
+        << "error: " << target->temporary()
+        << " holds the finished members of an earlier run that stopped early: continue it with --resume, "
+           "or start afresh with --force\n";
+  else if (!ranks.empty())
+    std::cerr
+        << "error: " << ranks.front()
+        << (ranks.size() > 1 ? " and " + std::to_string(ranks.size() - 1) + " more" : "")
+        << " hold the finished members of an mpirun run that stopped before its ranks were joined: continue "
+           "it with --resume (one process or mpirun), or start afresh with --force\n";
+  else
+    return true;
   target->keep();
   return false;
 }
@@ -282,7 +298,11 @@ int run_sweep_command(const RunOptions& options) {
   double earlier_seconds = 0;
   if (options.resume) {
     try {
-      remaining = reopen_partial(file, *target, scene, shard, done_before, earlier_seconds);
+      remaining =
+          reopen_partial(file, *target, scene, shard,
+                         io::Provenance{options.scene, version, revision, ensemble::device_label(scene),
+                                        ensemble::instruction_set().name},
+                         done_before, earlier_seconds);
     } catch (const std::exception& e) {
       std::cerr << "error: " << e.what() << "\n";
       target->keep();  // the file is not touched

@@ -61,20 +61,26 @@ void print_slider_header(const SliderOptions& options, const ensemble::SliderSce
     axes += text;
   }
   const std::string substrate = scene.substrate_infinite ? "an infinite lattice"
-                                                          : std::to_string(scene.substrate_columns) + " × " +
-                                                                std::to_string(scene.substrate_rows);
+                                                         : std::to_string(scene.substrate_columns) + " × " +
+                                                               std::to_string(scene.substrate_rows);
   // the stage solves: dense LDLᵀ, conjugate gradients (matrix-free), or each where its sizes take it
   std::size_t free = 0;
   for (const auto& size : scene.sizes) free += ensemble::matrix_free(scene, size) ? 1 : 0;
   const char* solves = free == 0 ? "dense" : free == scene.sizes.size() ? "krylov" : "dense and krylov";
-  std::fprintf(
-      stderr,
-      "rotorsweep slider %s: %zu members (%zu sizes%s × %zu separations h = %g … %g mm × %zu replicas), "
-      "rotors %s over %s, %s, %s rtol %g (%s stage solves), %s\n",
-      options.scene.c_str(), scene.member_count(), scene.sizes.size(), axes.c_str(), scene.separations.size(),
-      *closest * 1e3, *farthest * 1e3, scene.replicas, sizes.c_str(), substrate.c_str(),
-      scene.overdamped ? "overdamped" : "inertial", kernels::stepper_names[scene.stepper].data(), scene.rtol, solves,
-      where.c_str());
+  // "1 separation h = 9 mm", "33 separations h = 5 … 13 mm"
+  if (scene.separations.size() == 1)
+    std::snprintf(text, sizeof text, "1 separation h = %g mm", *closest * 1e3);
+  else
+    std::snprintf(text, sizeof text, "%zu separations h = %g … %g mm", scene.separations.size(),
+                  *closest * 1e3, *farthest * 1e3);
+  const std::string separations = text;
+  std::fprintf(stderr,
+               "rotorsweep slider %s: %zu members (%zu sizes%s × %s × %zu replicas), "
+               "rotors %s over %s, %s, %s rtol %g (%s stage solves), %s\n",
+               options.scene.c_str(), scene.member_count(), scene.sizes.size(), axes.c_str(),
+               separations.c_str(), scene.replicas, sizes.c_str(), substrate.c_str(),
+               scene.overdamped ? "overdamped" : "inertial", kernels::stepper_names[scene.stepper].data(),
+               scene.rtol, solves, where.c_str());
 }
 
 namespace {
@@ -183,7 +189,11 @@ int run_slider(const SliderOptions& options) {
   double earlier_seconds = 0;
   try {
     if (options.resume) {
-      to_run = reopen_partial(file, *target, scene, shard, done_before, earlier_seconds);
+      to_run = reopen_partial(
+          file, *target, scene, shard,
+          io::Provenance{options.scene, version, revision, ensemble::slider_device_label(scene),
+                         ensemble::instruction_set().name},
+          done_before, earlier_seconds);
     } else {
       file.emplace(partial, scene,
                    io::Provenance{options.scene, version, revision, ensemble::slider_device_label(scene),

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <new>
 #include <optional>
@@ -14,19 +15,45 @@
 #include "ensemble/engine/instruction_set.hpp"
 #include "io/hdf5_file.hpp"
 #include "io/output_target.hpp"
+#include "rank_files.hpp"
 #include "run_support.hpp"
 
 namespace rotorsweep::apps {
 
+/// Joins the rank files an mpirun run of `scene` left beside `partial` (a rank killed before rank 0 joined
+/// them) into it, creating it (with `provenance`) where there is none: each checked as a partial file of
+/// this scene first, each removed once joined (rank_files.hpp).
+template <class File, class Scene>
+void join_left_rank_files(const std::string& partial, const Scene& scene, const io::Provenance& provenance) {
+  const auto ranks = rank_files(partial);
+  if (ranks.empty()) return;
+  double seconds = 0;
+  const auto check = [&](const io::Hdf5Location& f) { File::check_file(f, scene); };
+  for (const auto& rank : ranks) check_partial(rank, scene.text, std::nullopt, seconds, check);
+  std::optional<File> out;
+  if (std::filesystem::exists(partial)) {
+    check_partial(partial, scene.text, std::nullopt, seconds, check);
+    out.emplace(File::reopen(partial, scene));
+  } else {
+    out.emplace(partial, scene, provenance);
+  }
+  for (const auto& rank : ranks) join_rank_file(*out, scene, rank);
+  keep_joined(*out);
+  out->close();
+}
+
 /// Reopens the target's partial file to resume its run (File: io::ResultFile or io::SliderResultFile),
-/// checked against `scene` and `shard` (check_partial: its wall time so far into earlier_seconds), claims
-/// it and adds this binary's instruction set; returns the plan indices of the rows not done and counts
-/// the done ones into done_before. Throws, the file untouched, where it is not this run's.
+/// after joining the rank files a killed mpirun run left (join_left_rank_files), checked against `scene`
+/// and `shard` (check_partial: its wall time so far into earlier_seconds), claims it and adds this
+/// binary's instruction set; returns the plan indices of the rows not done and counts the done ones into
+/// done_before. Throws, the file untouched, where it is not this run's.
 template <class File, class Scene>
 std::vector<std::size_t> reopen_partial(std::optional<File>& file, io::OutputTarget& target,
                                         const Scene& scene, const std::optional<io::ShardLabel>& shard,
-                                        std::size_t& done_before, double& earlier_seconds) {
+                                        const io::Provenance& provenance, std::size_t& done_before,
+                                        double& earlier_seconds) {
   const std::string partial = target.temporary();
+  if (!shard) join_left_rank_files<File>(partial, scene, provenance);
   const auto done = check_partial(partial, scene.text, shard, earlier_seconds,
                                   [&](const io::Hdf5Location& f) { File::check_file(f, scene); });
   file.emplace(File::reopen(partial, scene));

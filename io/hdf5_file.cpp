@@ -147,7 +147,14 @@ Hdf5Location Hdf5Location::create_file(const std::string& path) {
 
 Hdf5Location Hdf5Location::open_file(const std::string& path) {
   prepare_hdf5();
-  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id < 0) {
+    // a partial file its run still writes holds HDF5's file lock: read it without (the writer changes only
+    // bytes in place and marks a row done after it is on disk; OutputTarget's locks keep writers apart)
+    const Hdf5Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+    H5Pset_file_locking(access.id(), false, true);
+    id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.id());
+  }
   if (id < 0 && !std::filesystem::exists(path)) throw std::runtime_error("'" + path + "' does not exist");
   if (id < 0) unopenable(path, R_OK, "cannot open '" + path + "' as an HDF5 file");
   return Hdf5Location(Hdf5Handle(id, H5Fclose), path);

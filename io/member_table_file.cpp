@@ -11,9 +11,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <functional>
 #include <numeric>
 #include <stdexcept>
 
+#include "io/output_target.hpp"
 #include "io/table_columns.hpp"
 
 namespace rotorsweep::io {
@@ -131,9 +134,24 @@ Hdf5Location MemberTableFile::create_table(const std::string& scene_text,
   return members;
 }
 
-void MemberTableFile::settle_on_disk(const std::string& path) {
-  file_.flush();
-  file_.close();
+void MemberTableFile::settle_on_disk(const std::string& path, const std::function<void()>& write_new) {
+  // created whole under a hidden name (creating_path), then in place at once; a failure leaves nothing
+  std::error_code error;
+  try {
+    write_new();
+    file_.flush();
+    file_.close();
+  } catch (...) {
+    try {
+      file_.close();
+    } catch (const std::exception&) {  // the write's failure is the one to report
+    }
+    std::filesystem::remove(creating_path(path), error);
+    throw;
+  }
+  std::filesystem::rename(creating_path(path), path, error);
+  if (error)
+    throw std::runtime_error("cannot move the new file into place as '" + path + "': " + error.message());
   file_ = Hdf5Location::open_file_for_writing(path);
   on_disk_ = true;
 }

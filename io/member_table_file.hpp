@@ -2,6 +2,7 @@
 // front for the plan or a shard's part of it, /members/done marking rows on disk, the complete flag last.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,9 +71,11 @@ class MemberTableFile {
   /// Writes complete = FALSE, the scene and provenance, plan_members, members_done = 0,
   /// /members/done (all FALSE) and, in a shard, /members/plan_index; returns /members.
   Hdf5Location create_table(const std::string& scene_text, const Provenance& provenance) const;
-  /// Closes the file just created at `path` and opens it for writing: its length is then all it
-  /// allocated, and nothing is allocated until the kind's finishing writes.
-  void settle_on_disk(const std::string& path);
+  /// Runs `write_new` on the file just created at creating_path(path), closes it, renames it to `path`
+  /// (so a process killed while creating it leaves no unreadable file at `path`) and opens it for writing:
+  /// its length is then all it allocated, and nothing is allocated until the kind's finishing writes.
+  /// Where `write_new` or the close fails (a full disk), the new file is removed and the error rethrown.
+  void settle_on_disk(const std::string& path, const std::function<void()>& write_new);
   /// A reopened file: on disk, with the rows its /members/done marks.
   void adopt_reopened();
   /// After the rows' values: flushes, marks `rows` (not yet done) done and counts them in members_done,

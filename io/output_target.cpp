@@ -26,16 +26,44 @@ bool ends_with(const std::string& text, const std::string& end) {
 }
 
 /// `path` through its symbolic links (also dangling ones) to the file they finally name; `name` is
-/// the path as given, for messages.
+/// the path as given, for messages. A link's relative target is relative to the directory that holds the
+/// link physically, so that directory and the target's own directories are resolved through their links
+/// first (a link sub/out.h5 → ../x.h5, sub a link to real/sub, names real/x.h5, not x.h5).
 fs::path through_links(fs::path path, const std::string& name) {
   std::error_code error;
   for (int hops = 0; fs::is_symlink(fs::symlink_status(path, error)); ++hops) {
     if (hops == 40) throw OutputPathError("output path " + name + ": too many levels of symbolic links");
     const fs::path next = fs::read_symlink(path, error);
     if (error) throw OutputPathError("output path " + name + ": " + error.message());
-    path = (next.is_absolute() ? next : path.parent_path() / next).lexically_normal();
+    const fs::path holder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    const fs::path directory =
+        fs::weakly_canonical((next.is_absolute() ? fs::path() : holder) / next.parent_path(), error);
+    if (error) throw OutputPathError("output path " + name + ": " + error.message());
+    path = directory / next.filename();
   }
   return path;
+}
+
+/// Whether `name` is the lock file of an output (".X.lock"), which its writer creates and removes.
+bool lock_file_name(const std::string& name) {
+  return name.size() > 6 && name.front() == '.' && ends_with(name, ".lock");
+}
+
+/// Whether `name` is a writer's temporary file of the output named `output`: ".output.PID.part", or while
+/// its partial or rank file is created ".output.partial.PID.part", ".output.partial.rank-R.PID.part".
+bool temporary_of(const std::string& name, const std::string& output) {
+  const std::string stem = "." + output + ".";
+  if (name.size() <= stem.size() + 5 || name.compare(0, stem.size(), stem) != 0 || !ends_with(name, ".part"))
+    return false;
+  std::string middle = name.substr(stem.size(), name.size() - stem.size() - 5);  // [partial[.rank-R].]PID
+  const auto digits = [](const std::string& text) {
+    return !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  };
+  const auto dot = middle.rfind('.');
+  if (dot == std::string::npos) return digits(middle);
+  const std::string kind = middle.substr(0, dot);
+  return digits(middle.substr(dot + 1)) &&
+         (kind == "partial" || (kind.rfind("partial.rank-", 0) == 0 && digits(kind.substr(13))));
 }
 
 /// Whether the file at `path` starts with `text`.
@@ -62,6 +90,12 @@ std::string covering_output(const std::string& name) {
       stem.find_first_not_of("0123456789", dot + 1) != std::string::npos)
     return "";
   return stem.substr(0, dot);
+}
+
+std::string creating_path(const std::string& path) {
+  const fs::path at(path);
+  return (at.parent_path() / ("." + at.filename().string() + "." + std::to_string(::getpid()) + ".part"))
+      .string();
 }
 
 bool is_hdf5_file(const fs::path& path) {
@@ -100,6 +134,10 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
   // through symbolic links (also dangling ones, whose target is then created): write beside the
   // final target and replace that file, so the links stay links
   target_ = through_links(fs::path(path), name);
+  if (lock_file_name(target_.filename().string()))
+    throw OutputPathError(
+        "output path " + name + " is named as a lock file (" + in_quotes(target_.filename().string()) +
+        ", which the writer of the output it names creates and removes); choose another name");
   const fs::file_status status = fs::status(target_, error);
   const bool exists = fs::exists(status);
   if (exists && fs::is_directory(status)) throw OutputPathError("output path " + name + " is a directory");
@@ -160,6 +198,11 @@ OutputTarget::OutputTarget(const std::string& path, const std::vector<std::strin
     for (auto d = created_directories_.rbegin(); d != created_directories_.rend(); ++d) fs::remove(*d, error);
     throw;
   }
+  // temporary files of this output left by a writer that was killed: no live writer has one, since each
+  // holds the lock this target now holds
+  const std::string own = target_.filename().string();
+  for (const auto& entry : fs::directory_iterator(parent.empty() ? fs::path(".") : parent, error))
+    if (temporary_of(entry.path().filename().string(), own)) fs::remove(entry.path(), error);
   if (resumable) {
     temporary_ = target_;
     temporary_ += ".partial";
@@ -190,7 +233,12 @@ bool OutputTarget::lock(const fs::path& output, const std::string& name, const s
       ::close(fd);
       std::string holder(pid.data(), std::size_t(std::max<ssize_t>(n, 0)));
       while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' ')) holder.pop_back();
-      throw OutputPathError(refusal + (holder.empty() ? std::string() : " (PID " + holder + ")") +
+      // a second writer in this very process (two jobs of one Python session) is no other process
+      std::string said = refusal;
+      const std::string other = "another process";
+      if (holder == std::to_string(::getpid()) && ends_with(said, other))
+        said.replace(said.size() - other.size(), other.size(), "another job of this process");
+      throw OutputPathError(said + (holder.empty() ? std::string() : " (PID " + holder + ")") +
                             "; wait for it to finish, or stop it and resume, or choose another output");
     }
     // the holder may have removed the file between our open and our lock: then take the new one

@@ -32,14 +32,21 @@ inline const Replaceable Replaceable::hdf5{};
 /// covers it: X for X.partial, X.partial.rank-R, .X.PID.part and .X.lock; empty for any other name.
 std::string covering_output(const std::string& name);
 
+/// Where a file that must appear whole is created before it is renamed to `path` (a partial file: a
+/// process killed while creating it leaves this hidden name, which the output's next writer removes,
+/// never an unreadable `path`): ".NAME.PID.part" beside it.
+std::string creating_path(const std::string& path);
+
 /// The file at `path` is written as a temporary file in the same directory, which commit()
 /// renames over `path` (atomically: a reader sees the old file or the new one). Until then an
 /// existing file at `path` is untouched; without commit() (an error, an exception) the temporary
 /// file and the directories created for it are removed. For its whole life it holds a lock on the
 /// path (flock on ".NAME.lock" beside it, which holds its PID), so that a second process writing
 /// there is refused before it touches anything; the system drops the lock of a process that dies. A
-/// path that another output's writer writes too (its partial or temporary file, its lock file) also
-/// takes that output's lock (covering_output), so neither can destroy the other's file.
+/// path that another output's writer writes too (its partial or temporary file) also takes that
+/// output's lock (covering_output), so neither can destroy the other's file; a lock file's name is
+/// refused as an output. Once locked, temporary files of the output that a killed writer left behind
+/// (".NAME.PID.part", ".NAME.partial.PID.part") are removed.
 class OutputTarget {
  public:
   /// Checks the path and creates missing parent directories. Throws OutputPathError when the path

@@ -5,14 +5,14 @@
 #include <algorithm>
 
 #include "io/curve_table.hpp"
+#include "io/output_target.hpp"
 
 namespace rotorsweep::io {
 
 ResultFile::ResultFile(const std::string& path, const ensemble::Scene& scene, const Provenance& provenance,
                        const std::optional<ShardLabel>& shard)
-    : ResultFile(Hdf5Location::create_file(path), scene, shard) {
-  create(provenance);
-  settle_on_disk(path);
+    : ResultFile(Hdf5Location::create_file(creating_path(path)), scene, shard) {
+  settle_on_disk(path, [&] { create(provenance); });
 }
 
 ResultFile ResultFile::in_memory(const ensemble::Scene& scene, const Provenance& provenance) {

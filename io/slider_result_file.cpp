@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ensemble/engine/replica_statistics.hpp"
+#include "io/output_target.hpp"
 #include "kernels/steppers/lane_status.hpp"
 
 namespace rotorsweep::io {
@@ -252,9 +253,8 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
 
 SliderResultFile::SliderResultFile(const std::string& path, const ensemble::SliderScene& scene,
                                    const Provenance& provenance, const std::optional<ShardLabel>& shard)
-    : SliderResultFile(Hdf5Location::create_file(path), scene, shard) {
-  create(provenance);
-  settle_on_disk(path);
+    : SliderResultFile(Hdf5Location::create_file(creating_path(path)), scene, shard) {
+  settle_on_disk(path, [&] { create(provenance); });
 }
 
 SliderResultFile SliderResultFile::reopen(const std::string& path, const ensemble::SliderScene& scene) {

@@ -211,8 +211,9 @@ SliderScene read_slider_scene(const toml::table& root) {
   if (scene.substrate_infinite) {
     for (const char* key : {"columns", "rows"})
       if (substrate.find(key))
-        fail(substrate.key(key), "has no meaning with substrate.extent = \"infinite\" (a moment at every lattice "
-                                 "point); leave it out, or take substrate.extent = \"finite\"");
+        fail(substrate.key(key),
+             "has no meaning with substrate.extent = \"infinite\" (a moment at every lattice "
+             "point); leave it out, or take substrate.extent = \"finite\"");
   } else {
     scene.substrate_columns = count(substrate, "columns", scene.substrate_columns, false);
     scene.substrate_rows = count(substrate, "rows", scene.substrate_rows, false);
@@ -308,8 +309,8 @@ void check_slider_device(const ensemble::SliderScene& scene) {
   if (scene.device != ensemble::Device::gpu) return;
   if (scene.linear_solver == ensemble::SliderSolver::krylov)
     fail("numerics.linear_solver",
-         "\"krylov\" runs on the CPU (conjugate gradients with FFTs); with numerics.device = \"gpu\" it must be "
-         "\"dense\" or \"auto\" (which is dense there)");
+         "\"krylov\" runs on the CPU (conjugate gradients with FFTs); with numerics.device = \"gpu\" it must "
+         "be \"dense\" or \"auto\" (which is dense there)");
   if (kernels::stepper_family(scene.stepper) == kernels::StepperFamily::rosenbrock) return;
   std::string allowed;
   for (kernels::StepperId id = 0; id < kernels::stepper_names.size(); ++id)

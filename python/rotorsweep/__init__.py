@@ -62,9 +62,9 @@ def run(scene, threads=None, progress=True, output=None, force=False, quiet=Fals
         if not output:
             raise ValueError("output=True: the scene has no output.path; give output a path")
     path = "" if output is None or output is False else _output_path(output)
+    if not quiet:  # before the job: a stream that raises leaves nothing running
+        _progress.write(_core.run_description(text, is_path, count))
     job = _core.SweepJob(text, is_path, count, path, bool(force), _core.version, _core.revision)
-    if not quiet:
-        sys.stderr.write(_core.run_description(text, is_path, count))
     _follow(job, progress and not quiet, path if not quiet else "", "run")
     image = job.take_image()
     with h5py.File(path if path else io.BytesIO(image), "r") as h5file:
@@ -115,19 +115,21 @@ def _follow(job, progress, kept_path, command):
     until it ends. Ctrl-C and SIGTERM (as SystemExit(143), see _stop_on_sigterm) cancel it, wait for it
     to stop within one step, and are raised again, after saying what the partial file at kept_path
     (where given) kept, as the command line (`command`) does."""
-    line = _progress.ProgressLine(job.total, progress)
     try:
+        line = _progress.ProgressLine(job.total, progress)
         with _stop_on_sigterm():
             while not job.wait(_POLL_SECONDS):
                 line.update(job.done, job.periods)
+        line.finish()
     except BaseException:
+        # the job never outlives the call: stopped and waited for before anything else can raise
         job.cancel()
         job.wait(-1)
-        line.finish()
-        if kept_path:
-            _progress.report_kept(job.kept, job.total, kept_path, command)
+        with contextlib.suppress(Exception):
+            line.finish()
+            if kept_path:
+                _progress.report_kept(job.kept, job.total, kept_path, command)
         raise
-    line.finish()
 
 
 def _thread_count(threads):
@@ -180,17 +182,29 @@ def open(path, allow_incomplete=False):  # noqa: A001 (rotorsweep.open, like xar
     as period_<channel>. Each carries description and units attributes; the file's attributes
     (scene, version, revision, complete, wall_seconds, ...) are the Dataset's. The coordinate
     plan_index gives each member's row in /members; members(ds) stacks the Dataset back into
-    plan order. A file that is not complete raises ValueError unless allow_incomplete. A slider
+    plan order. A file that is not complete raises ValueError unless allow_incomplete (a slider's partial
+    file then gives its members done), and so does a shard (join the shards with `rotorsweep merge`). A slider
     file (`rotorsweep slider`) gives slider()'s Dataset.
     """
-    with h5py.File(os.fspath(path), "r") as h5file:
+    with _read(os.fspath(path)) as h5file:
         _dataset.check_result_file(h5file)
         try:
             if h5file.attrs.get("kind") in ("slider", b"slider"):
-                return _slider.from_hdf5(h5file)
+                return _slider.from_hdf5(h5file, allow_incomplete)
             return _dataset.from_hdf5(h5file, allow_incomplete)
         except KeyError as missing:  # a dataset a result file has
             raise ValueError(f"'{h5file.filename}' is not a rotorsweep result: {missing} is missing") from None
+
+
+def _read(path):
+    """An HDF5 file opened for reading; where a run still writes it (it holds HDF5's file lock), without the
+    lock: the writer changes only bytes in place and marks a row done once it is written."""
+    try:
+        return h5py.File(path, "r")
+    except OSError as locked:
+        if "lock" not in str(locked):
+            raise
+        return h5py.File(path, "r", locking=False)
 
 
 def members(dataset):

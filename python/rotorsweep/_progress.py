@@ -7,11 +7,22 @@ import sys
 import time
 
 
+def write(text, flush=False):
+    """text on sys.stderr; nothing where there is none (sys.stderr None, as under pythonw). A stream that
+    raises raises here: the caller's job is stopped before the error goes on."""
+    stream = sys.stderr
+    if stream is None:
+        return
+    stream.write(text)
+    if flush:
+        stream.flush()
+
+
 class ProgressLine:
     def __init__(self, total, enabled):
         self.total = total
         self.enabled = enabled
-        self.terminal = enabled and sys.stderr.isatty()
+        self.terminal = enabled and sys.stderr is not None and sys.stderr.isatty()
         self.start = self.last = time.monotonic()
         self.width = 0
 
@@ -29,16 +40,14 @@ class ProgressLine:
         if periods > 0:
             text += f"  ({periods} periods closed)"
         if self.terminal:
-            sys.stderr.write("\r" + text.ljust(self.width))
+            write("\r" + text.ljust(self.width), flush=True)
             self.width = len(text)
         else:
-            sys.stderr.write(text + "\n")
-        sys.stderr.flush()
+            write(text + "\n", flush=True)
 
     def finish(self):
         if self.terminal and self.width:
-            sys.stderr.write("\r" + " " * self.width + "\r")
-            sys.stderr.flush()
+            write("\r" + " " * self.width + "\r", flush=True)
 
 
 def report(h5file, path):
@@ -50,7 +59,7 @@ def report(h5file, path):
     seconds = float(attrs["wall_seconds"])
     where = f"wrote {path}" if path else "rotorsweep.run"
     rate = f"{count / seconds:.1f} members/s" if seconds > 0 else "instant"
-    sys.stderr.write(f"{where}: {count} members in {seconds:.3g} s ({rate}, lane occupancy "
+    write(f"{where}: {count} members in {seconds:.3g} s ({rate}, lane occupancy "
                      f"{100 * float(attrs['lane_occupancy']):.1f} %)\n")
     status = [s.decode() if isinstance(s, bytes) else str(s) for s in members["status"][:]]
     ok = [s == "ok" for s in status]
@@ -60,7 +69,7 @@ def report(h5file, path):
             failed[s] = failed.get(s, 0) + 1
     if failed:
         listed = " ".join(f"{name} {n}" for name, n in sorted(failed.items()))
-        sys.stderr.write(f"warning: members that did not finish (their observables are NaN): {listed}\n")
+        write(f"warning: members that did not finish (their observables are NaN): {listed}\n")
     flag = {name: members[name][:] != 0 if name in members else [False] * count
             for name in ("symmetry_limited", "shadow_departed")}
     resolved = members["dissipation_resolved"][:] != 0 if "dissipation_resolved" in members else [True] * count
@@ -81,12 +90,12 @@ def report(h5file, path):
     }
     for column, flagged in counts.items():
         if flagged:
-            sys.stderr.write(f"warning: {flagged} members {texts[column]}; see /members/{column}\n")
+            write(f"warning: {flagged} members {texts[column]}; see /members/{column}\n")
     if "slip_jumps" in members:
         regime = [r.decode() if isinstance(r, bytes) else str(r) for r in members["regime"][:]]
         untold = sum(1 for k, r, j in zip(ok, regime, members["slip_jumps"][:]) if k and r == "CP" and j != j)
         if untold:
-            sys.stderr.write(f"warning: {untold} CP members whose slips could not be told jumps or smooth (their "
+            write(f"warning: {untold} CP members whose slips could not be told jumps or smooth (their "
                              "slower rerun at g/10 did not finish): slip_jumps and slip_smooth are NaN; see "
                              "/members/slip_jumps\n")
 
@@ -96,5 +105,5 @@ def report_kept(kept, total, path, command):
     members kept in the partial file (kept None: none kept)."""
     if kept is None:
         return
-    sys.stderr.write(f"\nstopped: {kept} of {total} members done, kept in {path}.partial (not a result: "
+    write(f"\nstopped: {kept} of {total} members done, kept in {path}.partial (not a result: "
                      f"complete = FALSE); continue with `rotorsweep {command} SCENE -o {path} --resume`\n")

@@ -33,11 +33,12 @@ def _text(values):
     return np.array([v.decode() if isinstance(v, bytes) else str(v) for v in values])
 
 
-def _index(group, extra=()):
-    """The MultiIndex of a table's rows over size, the axes the table has, and `extra` columns."""
-    size = np.array([f"{c}x{r}" for c, r in zip(group["columns"][:], group["rows"][:])])
+def _index(group, extra=(), rows=slice(None)):
+    """The MultiIndex of a table's rows (those of `rows`) over size, the axes the table has, and `extra`
+    columns."""
+    size = np.array([f"{c}x{r}" for c, r in zip(group["columns"][:][rows], group["rows"][:][rows])])
     names = [name for name in _AXES if name in group] + list(extra)
-    return pd.MultiIndex.from_arrays([size] + [group[name][:] for name in names], names=["size"] + names)
+    return pd.MultiIndex.from_arrays([size] + [group[name][:][rows] for name in names], names=["size"] + names)
 
 
 def _curve(group):
@@ -50,18 +51,25 @@ def _curve(group):
     return xr.Dataset(variables, coords={"point": index}).unstack("point", fill_value=fill)
 
 
-def from_hdf5(h5file):
-    """The Dataset of an open slider result (attribute kind = "slider")."""
+def from_hdf5(h5file, allow_incomplete=False):
+    """The Dataset of an open slider result (attribute kind = "slider"). A partial file (complete = FALSE)
+    raises ValueError unless allow_incomplete, which gives its members done (its /members/done rows); a
+    shard raises ValueError, as a row shard does (it covers part of the plan: merge the shards first)."""
     attrs = _attributes(h5file)
-    if not attrs.get("complete", False):
+    if "shard_index" in attrs:
+        raise ValueError(f"'{h5file.filename}' is shard {attrs['shard_index']}/{attrs['shard_count']} of a plan: "
+                         "join the shards with `rotorsweep merge` first")
+    complete = bool(attrs.get("complete", False))
+    if not complete and not allow_incomplete:
         raise ValueError(f"'{h5file.filename}' is not a complete result (attribute complete = FALSE)")
     members = h5file["members"]
-    index = _index(members, ("replica",))
+    rows = slice(None) if complete or "done" not in members else members["done"][:] != 0
+    index = _index(members, ("replica",), rows)
     variables = {}
     for name, dataset in members.items():
         if name in set(index.names) | {"columns", "rows", "done", "plan_index"}:
             continue
-        values = dataset[:]
+        values = dataset[:][rows]
         text = values.dtype.kind in "OS"
         if text:
             values = _text(values)
@@ -78,11 +86,11 @@ def from_hdf5(h5file):
             if name == "time":
                 continue
             dims = ("member", sample, "rotor")[: dataset.ndim]  # angles and torques: one per rotor
-            variables[f"series_{name}"] = xr.Variable(dims, dataset[:], _attrs(name, dataset))
+            variables[f"series_{name}"] = xr.Variable(dims, dataset[:][rows], _attrs(name, dataset))
         if times.ndim == 1:
             coords["time"] = ("time", times, {"units": "s"})
     dataset = xr.Dataset(variables, coords=coords, attrs=attrs).unstack("member")
-    if "curve" in h5file:
+    if "curve" in h5file and complete:  # a partial file's /curve is not written yet
         dataset = dataset.merge(_curve(h5file["curve"]))
     sizes = list(dict.fromkeys(index.get_level_values("size")))  # the scene's order
     dataset = dataset.reindex(size=sizes)

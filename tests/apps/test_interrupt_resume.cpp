@@ -192,7 +192,8 @@ TEST_CASE("a second writer of a running run's output is refused and the first ru
   // each must exit 2
   const std::string second = exe + " run '" + scene.string() + "' -q -o " + out;
   const std::string command =
-      "cd '" + dir.string() + "'; " + second + " --threads 1 2> first.txt & pid=$!; sleep 0.5; " +  //
+      "cd '" + dir.string() + "'; " + second + " --threads 1 2> first.txt & pid=$!; " +
+      "until [ -e out.h5.partial ] || ! kill -0 $pid 2>/dev/null; do sleep 0.01; done; " +  //
       "for extra in '' --force --resume '--shard 1/2'; do " + second +
       " $extra 2>> refused.txt; echo \"run $extra: $?\"; done; " +  //
       exe + " slider -q '" + slider.string() + "' -o " + out + " 2>> refused.txt; echo \"slider: $?\"; " +
@@ -243,7 +244,8 @@ TEST_CASE("no writer takes a running run's partial, temporary or lock file, and 
       {"slider partial", "slider '" + slider.string() + "' -q --force" + at("out.h5.partial")},
   };
   std::string command = "cd '" + dir.string() + "'; " + exe + " run '" + scene.string() + "' -q" +
-                        at("out.h5") + " 2> first.txt & pid=$!; sleep 0.5; ";
+                        at("out.h5") + " 2> first.txt & pid=$!; " +
+                        "until [ -e out.h5.partial ] || ! kill -0 $pid 2>/dev/null; do sleep 0.01; done; ";
   for (const auto& [name, arguments] : writers)
     command += exe + " " + arguments + " > /dev/null 2>> refused.txt; echo \"" + name + ": $?\"; ";
   command += "kill -INT $pid; wait $pid; echo \"first: $?\"; cat first.txt refused.txt";
@@ -251,7 +253,7 @@ TEST_CASE("no writer takes a running run's partial, temporary or lock file, and 
   INFO(result.output);
   for (const auto& [name, arguments] : writers) CHECK_THAT(result.output, Catch::Contains(name + ": 2\n"));
   std::size_t refusals = 0;
-  for (std::size_t at = 0; (at = result.output.find("belongs to the output", at)) != std::string::npos; ++at)
+  for (std::size_t at = 0; (at = result.output.find("error: output path", at)) != std::string::npos; ++at)
     ++refusals;
   CHECK(refusals == writers.size());
   // the run stopped with its own partial file, whose rows it counts

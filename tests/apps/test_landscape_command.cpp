@@ -90,6 +90,13 @@ TEST_CASE("landscape rejects bad options with exit code 2", "[apps][landscape]")
   CHECK(run_cli("landscape curves --row-length 5" + out, dir).exit_code == 2);  // needs --range
   CHECK(run_cli("landscape curves --range 2 --row-length 0" + out, dir).exit_code == 2);
   CHECK(run_cli("landscape jump-friction --A-min 9 --A-max 3" + out, dir).exit_code == 2);
+  // coefficients without a CP window: one message naming them, not options never given, and no NaN file
+  for (const char* command : {"jump-friction --count 3", "curves", "chambers"}) {
+    const auto run = run_cli("landscape " + std::string(command) + " --coefficients 0,0,0" + out, dir);
+    INFO(run.output);
+    CHECK(run.exit_code == 2);
+    CHECK_THAT(run.output, Catch::Contains("--coefficients") && !Catch::Contains("--A-min"));
+  }
   CHECK(!std::filesystem::exists(dir / "x.h5"));
 }
 
@@ -185,7 +192,8 @@ namespace {
 /// One row of table's CSV (A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,
 /// R_error_kind).
 struct TableRow {
-  double A = 0, W = 0, S = 0, R = 0, paper_R = 0, deviation = 0, steps = 0, paper_W = 0, paper_S = 0, error = 0;
+  double A = 0, W = 0, S = 0, R = 0, paper_R = 0, deviation = 0, steps = 0, paper_W = 0, paper_S = 0,
+         error = 0;
   std::string ic, kind;
 };
 

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <vector>
 
 #include "io/hdf5_file.hpp"
 #include "io/output_target.hpp"
@@ -151,6 +153,55 @@ TEST_CASE("an output through a symbolic link replaces the link's target", "[io][
                     Catch::Contains("too many levels"));
 }
 
+TEST_CASE("a link's relative target is taken from the directory that holds the link", "[io][output]") {
+  // dl → real/sub, and real/sub/out.h5 → ../x.h5: the link's target is real/x.h5, not ./x.h5
+  const auto dir = scratch_directory("output-link-relative");
+  fs::create_directories(dir / "real" / "sub");
+  fs::create_directory_symlink("real/sub", dir / "dl");
+  fs::create_symlink("../x.h5", dir / "real" / "sub" / "out.h5");
+  write_hdf5((dir / "x.h5").string(), 7.0);  // an unrelated file where a lexical reading would land
+  {
+    OutputTarget target((dir / "dl" / "out.h5").string(), {}, Replaceable::hdf5, false);
+    write_hdf5(target.temporary(), 8.0);
+    target.claim_temporary();
+    target.commit();
+  }
+  CHECK(Hdf5Location::open_file((dir / "real" / "x.h5").string()).attribute_double("marker") == 8.0);
+  CHECK(Hdf5Location::open_file((dir / "x.h5").string()).attribute_double("marker") == 7.0);
+  CHECK(fs::is_symlink(dir / "real" / "sub" / "out.h5"));
+}
+
+TEST_CASE("an output named as a lock file is refused", "[io][output][lock]") {
+  const auto dir = scratch_directory("output-lock-name");
+  for (const bool resumable : {false, true})
+    CHECK_THROWS_WITH(OutputTarget((dir / ".foo.h5.lock").string(), {}, Replaceable::hdf5, true, resumable),
+                      Catch::Contains("named as a lock file"));
+  // also through a link
+  fs::create_symlink(".foo.h5.lock", dir / "link.h5");
+  CHECK_THROWS_AS(OutputTarget((dir / "link.h5").string(), {}, Replaceable::hdf5, true), OutputPathError);
+  CHECK_FALSE(fs::exists(dir / ".foo.h5.lock"));
+  CHECK_NOTHROW(OutputTarget((dir / "foo.h5.lock").string(), {}, Replaceable::hdf5, true));  // not hidden
+}
+
+TEST_CASE("temporary files a killed writer left are removed by the output's next writer",
+          "[io][output][lock]") {
+  const auto dir = scratch_directory("output-stale");
+  const std::vector<std::string> stale{".w.h5.123.part", ".w.h5.partial.456.part",
+                                       ".w.h5.partial.rank-1.7.part"},
+      kept{".w.h5.x1.part", "w.h5.partial", ".w.h5.partial.rank-.7.part", ".v.h5.123.part",
+           ".w.h5.lock.1.part"};
+  for (const auto& name : stale) write_text(dir / name, "half");
+  for (const auto& name : kept) write_text(dir / name, "other");
+  {
+    const OutputTarget target((dir / "w.h5").string(), {}, Replaceable::hdf5, false, true);
+    for (const auto& name : stale) CHECK_FALSE(fs::exists(dir / name));
+    for (const auto& name : kept) CHECK(fs::exists(dir / name));
+  }
+  // a partial file appears whole: created under creating_path, which such a clean-up removes
+  CHECK(fs::path(creating_path((dir / "w.h5.partial").string())).filename().string() ==
+        ".w.h5.partial." + std::to_string(::getpid()) + ".part");
+}
+
 TEST_CASE("HDF5 files are told from others by their signature", "[io][output]") {
   const auto dir = scratch_directory("output-signature");
   write_hdf5((dir / "a.h5").string(), 1.0);
@@ -173,7 +224,8 @@ TEST_CASE("a second writer of the same output is refused, naming the first's PID
         const OutputTarget second(path, {}, Replaceable::hdf5, force, true);
         FAIL("a second target on the same path was allowed");
       } catch (const OutputPathError& e) {
-        CHECK_THAT(e.what(), Catch::Contains("being written by another process (PID " +
+        // the first writer is this very process: said so (another process is the other test's case)
+        CHECK_THAT(e.what(), Catch::Contains("being written by another job of this process (PID " +
                                              std::to_string(::getpid()) + ")"));
       }
     }
@@ -207,7 +259,7 @@ TEST_CASE("a writer of another output's partial, temporary or lock file waits fo
   {
     OutputTarget run(out, {}, Replaceable::hdf5, false, true);  // `run -o w.h5`: writes w.h5.partial
     for (const std::string name :
-         {"w.h5.partial", ".w.h5.99.part", ".w.h5.lock", "w.h5.partial.rank-1", ".w.h5.partial.99.part"})
+         {"w.h5.partial", ".w.h5.99.part", "w.h5.partial.rank-1", ".w.h5.partial.99.part"})
       for (const bool resumable : {false, true}) {
         INFO(name);
         CHECK_THROWS_WITH(OutputTarget((dir / name).string(), {}, Replaceable::hdf5, true, resumable),
@@ -216,6 +268,9 @@ TEST_CASE("a writer of another output's partial, temporary or lock file waits fo
     // through a link to the partial file, too
     fs::create_symlink(dir / "w.h5.partial", dir / "link.h5");
     CHECK_THROWS(OutputTarget((dir / "link.h5").string(), {}, Replaceable::hdf5, true));
+    // the holder is this very process (two jobs of one Python session): said so, not "another process"
+    CHECK_THROWS_WITH(OutputTarget(out, {}, Replaceable::hdf5, true, true),
+                      Catch::Contains("another job of this process") && !Catch::Contains("another process"));
   }
   // the other way round: while w.h5.partial is written, w.h5's run waits; its locks go with it
   {

@@ -69,6 +69,59 @@ def test_output_writes_the_command_lines_file(tmp_path):
     assert not partial.exists()
 
 
+def test_a_shard_is_refused_and_a_partial_file_opens_only_with_allow_incomplete(tmp_path):
+    scene = tmp_path / "small.toml"
+    scene.write_text(rotorsweep._scene.resolve(SMALL)[0])
+    shard = tmp_path / "shard.h5"
+    subprocess.run([os.environ["ROTORSWEEP_EXECUTABLE"], "slider", str(scene), "-o", str(shard), "-q", "--shard",
+                    "1/3"], check=True)
+    with pytest.raises(ValueError, match="merge"):
+        rotorsweep.open(shard)
+    # a partial file: the whole scan with its first two rows marked done, complete = FALSE
+    whole = tmp_path / "whole.h5"
+    command_line(scene, whole)
+    partial = tmp_path / "whole.h5.partial"
+    partial.write_bytes(whole.read_bytes())
+    with h5py.File(partial, "r+") as f:
+        f.attrs["complete"] = False
+        done = f["members/done"][:]
+        done[2:] = 0
+        f["members/done"][:] = done
+    with pytest.raises(ValueError, match="not a complete result"):
+        rotorsweep.open(partial)
+    members = rotorsweep.open(partial, allow_incomplete=True).friction.stack(member=("size", "separation", "replica"))
+    finished = members.dropna("member")
+    with h5py.File(whole, "r") as f:
+        assert sorted(finished.values) == sorted(f["members/friction"][:2])
+
+
+def test_a_missing_or_raising_stderr_leaves_no_job_running(tmp_path, monkeypatch, small_scene):
+    monkeypatch.setattr(sys, "stderr", None)
+    ds = rotorsweep.slider(SMALL, threads=2, output=tmp_path / "quiet.h5")
+    assert ds.attrs["complete"]
+    rotorsweep.run(small_scene, threads=2, output=tmp_path / "quiet_run.h5")
+    assert (tmp_path / "quiet_run.h5").is_file()
+
+    class Raising:
+        def write(self, text):
+            raise OSError("stderr is gone")
+
+        def flush(self):
+            raise OSError("stderr is gone")
+
+        def isatty(self):
+            return False
+
+    monkeypatch.setattr(sys, "stderr", Raising())
+    with pytest.raises(OSError, match="stderr is gone"):
+        rotorsweep.run(small_scene, threads=2, output=tmp_path / "raised.h5")
+    # nothing left running or writing: no output, partial, temporary or lock file, and the output's lock free
+    leftovers = [p.name for p in tmp_path.iterdir() if p.name.startswith(("raised", ".raised"))]
+    assert leftovers == []
+    monkeypatch.setattr(sys, "stderr", None)
+    rotorsweep.run(small_scene, threads=2, output=tmp_path / "raised.h5")
+
+
 def test_a_bad_key_is_a_value_error_naming_it():
     with pytest.raises(ValueError, match="sweep.separation"):
         rotorsweep.slider({"sweep": {"separation": [0.1e-3]}}, progress=False)

@@ -2,7 +2,8 @@
 # `mpirun -np 2 rotorsweep run` and `... slider` against the single-process runs: every dataset equal
 # byte for byte, both ranks took members from the shared counters, the ranks' files are gone, and
 # --shard under mpirun is exit code 2. Stopped by SIGINT under mpirun, each command keeps the partial file
-# (exit 130, the resume command named), which one process resumes to the single-process run's bytes.
+# (exit 130, the resume command named), which one process resumes to the single-process run's bytes; with a
+# rank killed by SIGKILL, the ranks' files stay and --resume in one process joins them to the same bytes.
 # Usage: mpi_run.sh ROTORSWEEP_EXECUTABLE SCRATCH_DIR
 set -euo pipefail
 exe=$1 scratch=$2
@@ -26,6 +27,34 @@ stopped_and_resumed() {
     grep -q "^resume with: .*--resume" "$out.log" || { echo "$command: no stop report" >&2; exit 1; }
   if ls "$out".partial.rank-* > /dev/null 2>&1; then echo "$command: a rank's file was left behind" >&2; exit 1; fi
   "$exe" "$command" "$scene" -q --resume -o "$out"
+}
+# mpirun -np 2 COMMAND SCENE into OUT, one rank killed by SIGKILL once rank 0's file holds a member: no
+# joined file, the ranks' files left; a plain run refuses them (exit 2, naming --resume), and
+# `COMMAND SCENE --resume` in one process joins them and finishes OUT.
+killed_and_resumed() {
+  local command=$1 scene=$2 out=$3 code=0 done=0
+  # a row run writes its members in batches of 8 (the default is every 5 s): rank 0's file holds some soon
+  local flush=""
+  [ "$command" = run ] && flush="--flush-members 8 "
+  mpirun -np 2 "$exe" "$command" "$scene" -q --threads 1 $flush-o "$out" 2> "$out.log" &
+  local launcher=$!
+  for _ in $(seq 2000); do
+    done=$("$exe" info "$out.partial.rank-0" 2> /dev/null | sed -n 's/^partial *\([0-9]*\) of .*/\1/p' || true)
+    [ "${done:-0}" -gt 0 ] && break
+    sleep 0.05
+  done
+  [ "${done:-0}" -gt 0 ] || { echo "$command: rank 0's file never held a member" >&2; exit 1; }
+  pkill -KILL -n -f "^[^ ]*rotorsweep[^ ]* $command $scene -q --threads 1 $flush-o $out\$" || true
+  wait "$launcher" || code=$?
+  [ "$code" -ne 0 ] || { echo "$command: mpirun exit 0 after a rank was killed" >&2; exit 1; }
+  ls "$out".partial.rank-* > /dev/null 2>&1 || { echo "$command: the ranks' files are gone" >&2; exit 1; }
+  [ ! -e "$out" ] || { echo "$command: a killed run wrote $out" >&2; exit 1; }
+  code=0
+  "$exe" "$command" "$scene" -q -o "$out" 2> "$out.refused.log" || code=$?
+  [ "$code" -eq 2 ] && grep -q -- "--resume" "$out.refused.log" ||
+    { cat "$out.refused.log"; echo "$command: a plain run over the ranks' files: exit $code" >&2; exit 1; }
+  "$exe" "$command" "$scene" -q --resume -o "$out"
+  if ls "$out".partial.rank-* > /dev/null 2>&1; then echo "$command: a rank's file outlived --resume" >&2; exit 1; fi
 }
 rm -rf "$scratch" && mkdir -p "$scratch"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
@@ -53,6 +82,7 @@ code=$?
 set -e
 [ "$code" -eq 2 ] && grep -q "one process" "$scratch/shard.log" || { cat "$scratch/shard.log"; echo "--shard under mpirun: exit $code" >&2; exit 1; }
 stopped_and_resumed run "$scratch/curve.toml" "$scratch/stopped.h5"
+killed_and_resumed run "$scratch/curve.toml" "$scratch/killed.h5"
 cat > "$scratch/slider.toml" <<'SCENE'
 [slider]
 columns = [3, 4]
@@ -80,8 +110,10 @@ read -r first second <<< "$shares"
 sed 's/^end = 4.5$/end = 24.5/' "$scratch/slider.toml" > "$scratch/slider-long.toml"
 "$exe" slider "$scratch/slider-long.toml" -q -o "$scratch/slider-long.h5"
 stopped_and_resumed slider "$scratch/slider-long.toml" "$scratch/slider-stopped.h5"
+killed_and_resumed slider "$scratch/slider-long.toml" "$scratch/slider-killed.h5"
 /usr/bin/python3 - "$scratch/single.h5" "$scratch/mpi.h5" "$scratch/slider-single.h5" "$scratch/slider-mpi.h5" \
-  "$scratch/single.h5" "$scratch/stopped.h5" "$scratch/slider-long.h5" "$scratch/slider-stopped.h5" <<'PY'
+  "$scratch/single.h5" "$scratch/stopped.h5" "$scratch/slider-long.h5" "$scratch/slider-stopped.h5" \
+  "$scratch/single.h5" "$scratch/killed.h5" "$scratch/slider-long.h5" "$scratch/slider-killed.h5" <<'PY'
 import sys, h5py
 def datasets(f):
     names = []
