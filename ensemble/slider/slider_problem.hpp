@@ -148,7 +148,8 @@ class SliderProblem {
     kernels::StepLimits limits;
     limits.h_max = kernels::two_pi / double(scene.samples_per_period);
     limits.max_steps = scene.max_steps;
-    return {kernels::stepper_method<typename Stepper::Method>(scene.stepper), {scene.rtol, scene.atol}, limits};
+    return {
+        kernels::stepper_method<typename Stepper::Method>(scene.stepper), {scene.rtol, scene.atol}, limits};
   }
 
   /// The substrate table of a member at `index` of `variant`: the last one built where the member's

@@ -91,10 +91,9 @@ double SubstrateTableLayout::bytes() const {
   const double nodes = double(intervals() + 1);
   const double stored = shared_track() ? 1.0 : double(tracks.size());
   double working = nodes * 9 * sizeof(double);  // one track's nodes
-  if (sums == SubstrateSums::box)  // every track's nodes, and a phase's running and column sums
-    working = stored * nodes * 6 * sizeof(double) +
-              (nodes / double(per_period) + double(lattice.columns)) * (2 * double(tracks.size()) + 2) * 6 *
-                  sizeof(double);
+  if (sums == SubstrateSums::box)               // every track's nodes, and a phase's running and column sums
+    working = stored * nodes * 6 * sizeof(double) + (nodes / double(per_period) + double(lattice.columns)) *
+                                                        (2 * double(tracks.size()) + 2) * 6 * sizeof(double);
   return (nodes - 1) * stored * 12 * sizeof(double) + working;
 }
 
@@ -105,16 +104,18 @@ double paper_drive_amplitude(const SliderScene& scene, double separation) {
 double field_drive_amplitude(const SliderScene& scene, SliderSize size, double separation) {
   const auto lattice = substrate_lattice(scene, size, separation);
   const auto placement = slider_placement(scene);
-  const kernels::InfiniteSubstrate infinite(lattice.depth, lattice.angle, 0.0, lattice.x_offset, lattice.y_offset);
+  const kernels::InfiniteSubstrate infinite(lattice.depth, lattice.angle, 0.0, lattice.x_offset,
+                                            lattice.y_offset);
   const std::size_t i = size.columns / 2, j = size.rows / 2;  // the centre rotor's path
   const double row = placement.path_y(i, j), column = placement.start_x(i, j);
   constexpr int points = 64;
   std::complex<double> bx(0.0), bz(0.0);  // Σ B e^{iφ}: the harmonic's amplitude whatever its phase
   for (int k = 0; k < points; ++k) {
     const double phase = kernels::two_pi * double(k) / points;
-    const auto field = scene.substrate_infinite
-                           ? infinite.field_at(column + double(k) / points, row)
-                           : kernels::substrate_field(lattice, column + double(k) / points, row, placement.turned());
+    const auto field =
+        scene.substrate_infinite
+            ? infinite.field_at(column + double(k) / points, row)
+            : kernels::substrate_field(lattice, column + double(k) / points, row, placement.turned());
     // B_∥ along the rotors' in-plane axis (B_x unless the slider is turned)
     const double along = placement.turned() ? std::cos(placement.tilt) * field.x.value +
                                                   std::sin(placement.tilt) * field.y.value

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "ensemble/engine/device.hpp"
-#include "kernels/models/slider/slider_model.hpp"
 #include "kernels/models/slider/infinite_substrate.hpp"
+#include "kernels/models/slider/slider_model.hpp"
 #include "kernels/models/slider/substrate_box_sums.hpp"
 #include "kernels/models/slider/substrate_table.hpp"
 #include "kernels/steppers/step_control.hpp"
@@ -209,8 +209,8 @@ kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize siz
   const std::size_t intervals = at.intervals(), m = at.per_period;
   const double step = 1.0 / double(m);
   if (at.sums == SubstrateSums::infinite) {
-    const kernels::InfiniteSubstrate infinite(at.lattice.depth, at.lattice.angle, at.tilt, at.lattice.x_offset,
-                                              at.lattice.y_offset);
+    const kernels::InfiniteSubstrate infinite(at.lattice.depth, at.lattice.angle, at.tilt,
+                                              at.lattice.x_offset, at.lattice.y_offset);
     return kernels::SubstrateTable(
         at.tracks.size(), intervals, at.x_begin, step,
         [&](std::size_t track, std::vector<kernels::TableNode>& nodes) {
@@ -220,10 +220,11 @@ kernels::SubstrateTable substrate_table(const SliderScene& scene, SliderSize siz
         at.shared_track());
   }
   // box sums: the tracks of an unturned slider lie an integer apart, from its first row's
-  const auto nodes =
-      kernels::box_sum_nodes<V>(at.lattice, at.tracks.front(), at.tracks.size(), at.x_begin, m, intervals, stopped);
-  return kernels::SubstrateTable(at.tracks.size(), intervals, at.x_begin, step,
-                                 [&](std::size_t track, std::vector<kernels::TableNode>& out) { out = nodes[track]; });
+  const auto nodes = kernels::box_sum_nodes<V>(at.lattice, at.tracks.front(), at.tracks.size(), at.x_begin, m,
+                                               intervals, stopped);
+  return kernels::SubstrateTable(
+      at.tracks.size(), intervals, at.x_begin, step,
+      [&](std::size_t track, std::vector<kernels::TableNode>& out) { out = nodes[track]; });
 }
 
 /// The row model's substrate strength A at separation h (docs/model.md §9 "Mapping onto the row model"):

@@ -31,31 +31,32 @@ LaneSteps run_size(const SliderScene& scene, const std::vector<SliderSampleGrid>
                    const std::vector<std::size_t>& plan_indices, PositionRange range,
                    const std::function<void(std::vector<SliderMember>&&)>& finished, const Hooks& hooks) {
   const auto& [next, retired, stopped, stop_closed] = hooks;
-  return kernels::with_stepper<kernels::SliderModel<W, Inertial, Pairs>>(scene.stepper, [&]<class Stepper>(
-                                                                                         const auto&) {
-    LaneScheduler<SliderProblem<W, Inertial, Stepper, Pairs>> scheduler(
-        scene, grids, slider_plan_member(scene, plan_indices[range.begin]).size, std::function<bool()>(stopped));
-    try {
-      scheduler.run(
-          [&]() -> std::optional<std::size_t> {
-            const auto k = next();
-            if (!k) return std::nullopt;
-            return plan_indices[*k];
-          },
-          [&](SliderMember&& member) {
-            pad_to_timeline(member, samples);
-            std::vector<SliderMember> one;
-            one.push_back(std::move(member));
+  return kernels::with_stepper<kernels::SliderModel<W, Inertial, Pairs>>(
+      scene.stepper, [&]<class Stepper>(const auto&) {
+        LaneScheduler<SliderProblem<W, Inertial, Stepper, Pairs>> scheduler(
+            scene, grids, slider_plan_member(scene, plan_indices[range.begin]).size,
+            std::function<bool()>(stopped));
+        try {
+          scheduler.run(
+              [&]() -> std::optional<std::size_t> {
+                const auto k = next();
+                if (!k) return std::nullopt;
+                return plan_indices[*k];
+              },
+              [&](SliderMember&& member) {
+                pad_to_timeline(member, samples);
+                std::vector<SliderMember> one;
+                one.push_back(std::move(member));
 #pragma omp critical(slider_finished)
-            finished(std::move(one));
-            retired();
-          },
-          stopped, stop_closed);
-    } catch (const kernels::SubstrateTableStopped&) {
-      // a substrate table's build was stopped: this thread stops as the others do within a step
-    }
-    return LaneSteps{scheduler.lane_steps_busy(), scheduler.lane_steps_total()};
-  });
+                finished(std::move(one));
+                retired();
+              },
+              stopped, stop_closed);
+        } catch (const kernels::SubstrateTableStopped&) {
+          // a substrate table's build was stopped: this thread stops as the others do within a step
+        }
+        return LaneSteps{scheduler.lane_steps_busy(), scheduler.lane_steps_total()};
+      });
 }
 
 /// Runs the members of each size (`sizes`: runs of positions in `plan_indices`) on lane schedulers,
@@ -78,9 +79,8 @@ RunOutcome run_sizes(const SliderScene& scene, const std::vector<SliderSampleGri
                            if (matrix_free(scene, slider_plan_member(scene, plan_indices[range.begin]).size))
                              return run_size<double, Inertial, kernels::SpectralPairs<double>>(
                                  scene, grids, samples, plan_indices, range, finished, hooks);
-                           return run_size<V, Inertial, kernels::DirectPairs<V>>(scene, grids, samples,
-                                                                                  plan_indices, range, finished,
-                                                                                  hooks);
+                           return run_size<V, Inertial, kernels::DirectPairs<V>>(
+                               scene, grids, samples, plan_indices, range, finished, hooks);
                          });
 }
 
@@ -141,10 +141,10 @@ double slider_thread_bytes(const SliderScene& scene) {
   double table = 0;
   for (const SliderSize size : scene.sizes)
     for (std::size_t v = 0; v < scene.speeds.size(); ++v)
-      table = std::max(table, substrate_table_layout(slider_variant(scene, v, 0), size,
-                                                     *std::min_element(scene.separations.begin(),
-                                                                       scene.separations.end()))
-                                  .bytes());
+      table = std::max(
+          table, substrate_table_layout(slider_variant(scene, v, 0), size,
+                                        *std::min_element(scene.separations.begin(), scene.separations.end()))
+                     .bytes());
   const double tables_per_lane = scene.forces ? 5 : 1;
   return block + (lanes * tables_per_lane + 1) * table;
 }

@@ -40,8 +40,8 @@ struct LatticeFftPlans {
   fftw_plan rows_inverse = nullptr;  ///< half-complex to real along x, the lattice's rows only
   fftw_plan full_forward = nullptr;  ///< a whole 2-D transform of one field (a kernel's spectrum)
 };
-inline const LatticeFftPlans& lattice_fft_plans(std::size_t rows, std::size_t columns, std::size_t lattice_rows,
-                                                std::size_t width) {
+inline const LatticeFftPlans& lattice_fft_plans(std::size_t rows, std::size_t columns,
+                                                std::size_t lattice_rows, std::size_t width) {
   static std::mutex mutex;
   static std::map<std::tuple<std::size_t, std::size_t, std::size_t, std::size_t>, LatticeFftPlans> plans;
   const std::lock_guard<std::mutex> lock(mutex);
@@ -58,8 +58,10 @@ inline const LatticeFftPlans& lattice_fft_plans(std::size_t rows, std::size_t co
   const fftw_iodim rows_inverse[2] = {{int(lattice_rows), half * w, nc * w}, {w, 1, 1}};
   const fftw_iodim columns_all{half * w, 1, 1};
   found.rows_forward = fftw_plan_guru_dft_r2c(1, &along_x, 2, rows_forward, in, out, FFTW_ESTIMATE);
-  found.columns_forward = fftw_plan_guru_dft(1, &along_y, 1, &columns_all, out, out, FFTW_FORWARD, FFTW_ESTIMATE);
-  found.columns_inverse = fftw_plan_guru_dft(1, &along_y, 1, &columns_all, out, out, FFTW_BACKWARD, FFTW_ESTIMATE);
+  found.columns_forward =
+      fftw_plan_guru_dft(1, &along_y, 1, &columns_all, out, out, FFTW_FORWARD, FFTW_ESTIMATE);
+  found.columns_inverse =
+      fftw_plan_guru_dft(1, &along_y, 1, &columns_all, out, out, FFTW_BACKWARD, FFTW_ESTIMATE);
   found.rows_inverse = fftw_plan_guru_dft_c2r(1, &along_x, 2, rows_inverse, out, in, FFTW_ESTIMATE);
   found.full_forward = fftw_plan_dft_r2c_2d(int(rows), nc, in, out, FFTW_ESTIMATE);
   std::free(in);
@@ -156,7 +158,8 @@ class LatticeConvolution {
       for (std::size_t q = 0; q < shape_.spectrum_points(); ++q)
         symbols_[k][q] = V(spectrum[q] / double(shape_.torus_points()));
   }
-  /// Bounds of the eigenvalues of kernel k's matrix on the lattice: the extremes of its spectrum on the torus.
+  /// Bounds of the eigenvalues of kernel k's matrix on the lattice: the extremes of its spectrum on the
+  /// torus.
   double spectrum_min(std::size_t k) const { return spectrum_min_[k]; }
   double spectrum_max(std::size_t k) const { return spectrum_max_[k]; }
 
@@ -253,7 +256,8 @@ class LatticeConvolution {
       for (std::size_t u = 0; u < half; ++u)
         for (std::size_t j = 0; j < 2 * shape_.rows - 1; ++j)
           for (std::size_t i = 0; i < row_width; ++i) {
-            const double dx = double(i) - double(shape_.columns - 1), dy = double(j) - double(shape_.rows - 1);
+            const double dx = double(i) - double(shape_.columns - 1),
+                         dy = double(j) - double(shape_.rows - 1);
             spectrum[v * half + u] +=
                 value(j, i) * std::cos(two_pi * (double(u) * dx / double(tc) + double(v) * dy / double(tr)));
           }

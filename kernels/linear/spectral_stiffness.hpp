@@ -1,5 +1,6 @@
 // The slider's stiffness K = ∂τ/∂θ without its n × n matrix (docs/numerics.md "The stage solve without a
-// matrix"): K = diag(d) − S P S − C Q C, products by lattice convolutions, σ − K solved by conjugate gradients.
+// matrix"): K = diag(d) − S P S − C Q C, products by lattice convolutions, σ − K solved by conjugate
+// gradients.
 #pragma once
 
 #include <cstddef>
@@ -164,9 +165,12 @@ class SpectralStiffness {
     const auto& lattice = pairs_->lattice();
     const std::size_t columns = lattice.columns, rows = lattice.rows, width = 2 * columns - 1;
     for (std::size_t e = 0; e < 4; ++e) {
-      const std::size_t at = std::size_t(near_dy[e] + int(rows) - 1) * width + std::size_t(near_dx[e] + int(columns) - 1);
-      const V p = near_dy[e] < int(rows) && std::abs(near_dx[e]) < int(columns) ? pairs_->table(0)[at] : V(0.0);
-      const V q = near_dy[e] < int(rows) && std::abs(near_dx[e]) < int(columns) ? pairs_->table(1)[at] : V(0.0);
+      const std::size_t at =
+          std::size_t(near_dy[e] + int(rows) - 1) * width + std::size_t(near_dx[e] + int(columns) - 1);
+      const V p =
+          near_dy[e] < int(rows) && std::abs(near_dx[e]) < int(columns) ? pairs_->table(0)[at] : V(0.0);
+      const V q =
+          near_dy[e] < int(rows) && std::abs(near_dx[e]) < int(columns) ? pairs_->table(1)[at] : V(0.0);
       for (std::size_t r = 0; r < n_; ++r) {
         const int i = int(r % columns) + near_dx[e], j = int(r / columns) + near_dy[e];
         if (i < 0 || i >= int(columns) || j >= int(rows)) {
@@ -193,8 +197,8 @@ class SpectralStiffness {
     };
     const std::ptrdiff_t step[4] = {1, std::ptrdiff_t(columns) - 1, std::ptrdiff_t(columns),
                                     std::ptrdiff_t(columns) + 1};
-    static constexpr Neighbour neighbours[8] = {{0, true, 1},  {0, false, 1}, {1, true, 3}, {1, false, 3},
-                                                {2, true, 2},  {2, false, 2}, {3, true, 3}, {3, false, 3}};
+    static constexpr Neighbour neighbours[8] = {{0, true, 1}, {0, false, 1}, {1, true, 3}, {1, false, 3},
+                                                {2, true, 2}, {2, false, 2}, {3, true, 3}, {3, false, 3}};
     const auto sweep = [&](std::size_t colour, bool earlier, auto&& update) {
       Neighbour used[8];
       std::size_t count = 0;

@@ -78,11 +78,14 @@ def scaling(args, out):
 
 
 def targets(args, out):
-    """64 × 64 and 128 × 128 through the full protocol (5 periods), one member on one thread."""
+    """64 × 64 and 128 × 128 through the full protocol (5 periods), one member on one and on two threads (the
+    second takes the member's Q convolutions)."""
     for size in (64, 128):
-        seconds, attempts, friction = median_run(out, f"target_{size}", scene_text(size, "auto", 5), 1)
-        print(f"target {size} x {size}, 5 periods: {seconds:.1f} s, {attempts:.0f} attempts, "
-              f"friction {friction[0]:.6g} N", flush=True)
+        for threads in (1, 2):
+            seconds, attempts, friction = median_run(out, f"target_{size}_{threads}", scene_text(size, "auto", 5), 1,
+                                                     threads)
+            print(f"target {size} x {size}, 5 periods, {threads} thread(s): {seconds:.1f} s, {attempts:.0f} attempts, "
+                  f"friction {friction[0]:.6g} N", flush=True)
 
 
 def crossover(args, out):

@@ -3,15 +3,17 @@
 every rotor with its own angle, every pair a point dipole, over a finite substrate (docs/model.md §9), against the row
 model of the same geometry (docs/model.md §1, §8) as the array grows.
 
-Square sliders of 4 … 24 rotors a side, overdamped (the row model's dynamics) at the experiment's speed and damping,
-over substrates five times their extent, beside the row model of the same geometry: N open rows of N rotors, point
-dipoles between every pair of rows, A(h) from the substrate field's first harmonic (the slider file's A_field; the
-paper's estimate A_paper beside it) and the slider's g. Friction per rotor against the separation h and its gap per
-size and regime; how uniform the rows stay and which rotors slip; the regimes in h against the row model's and the
-landscape's windows; the array at a slow speed against the quasi-static J(A); the 8 × 8 slider over substrates 2 … 8
-times its extent; the experiment's 7 × 7 array, overdamped and inertial, against the large-N limit. Prints the tables
-of docs/studies.md and draws the figure (about 15 minutes on 2 cores; --quick: sizes 4 and 6 at four separations,
-about 10 s).
+Square sliders of 4 … 64 rotors a side, overdamped (the row model's dynamics) at the experiment's speed and damping,
+over substrates five times their extent (from 14 × 14 on matrix-free: FFT pair sums, conjugate gradients, box-sum
+substrate tables), beside the row model of the same geometry: N open rows of N rotors, point dipoles between every
+pair of rows, A(h) from the substrate field's first harmonic (the slider file's A_field; the paper's estimate A_paper
+beside it) and the slider's g. Friction per rotor against the separation h and its gap per size and regime; how
+uniform the rows stay and which rotors slip; the regimes in h against the row model's and the landscape's windows;
+the large-N limit f_∞(h) fitted over the largest sizes with its residuals; the array over an infinite substrate
+(no edges) beside the 5N × 5N one; the array at a slow speed against the quasi-static J(A); the 8 × 8 slider over
+substrates 2 … 8 times its extent; the experiment's 7 × 7 array, overdamped and inertial, against the large-N limit.
+Prints the tables of docs/studies.md and draws the figure (about 45 minutes on 2 cores; --quick: sizes 4 and 6 at
+four separations, about 10 s).
 Usage: row_reduction.py [--quick] [--out docs/figures/row_reduction.png] [--python build/python] [--threads 2]"""
 import sys
 
@@ -38,11 +40,14 @@ NOISE = np.pi / 24             # the slider's start: rows alternately near 0 and
 REGIMES = ("FM", "CP", "AFM")
 PROFILE_H = (5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0, 13.0)
 
-# h in mm; "coarse": sizes run at every other h (a step of 24 × 24 factorises 576 × 576: 11 times 16 × 16's cost)
-FULL = {"sizes": (4, 6, 8, 12, 16, 24), "h": np.linspace(5.0, 13.0, 33), "coarse": (24,), "slow_sizes": (8, 16),
+# h in mm; "coarse": sizes run at every other h; "infinite_sizes": over an infinite substrate as well (at every other
+# h); "slow_coarse": slow sizes at every other h of slow_h
+FULL = {"sizes": (4, 6, 8, 12, 16, 24, 32, 48, 64), "h": np.linspace(5.0, 13.0, 33), "coarse": (24, 32, 48, 64),
+        "infinite_sizes": (8, 16, 32, 64), "slow_sizes": (8, 16, 32), "slow_coarse": (32,),
         "slow_h": np.linspace(6.0, 11.0, 21), "substrate_size": 8, "substrate_scales": (2, 3, 5, 8)}
-QUICK = {"sizes": (4, 6), "h": np.array([7.0, 8.5, 10.0, 11.5]), "coarse": (), "slow_sizes": (4,),
-         "slow_h": np.array([8.0, 9.5]), "substrate_size": 4, "substrate_scales": (2, 5)}
+QUICK = {"sizes": (4, 6), "h": np.array([7.0, 8.5, 10.0, 11.5]), "coarse": (), "infinite_sizes": (4,),
+         "slow_sizes": (4,), "slow_coarse": (), "slow_h": np.array([8.0, 9.5]), "substrate_size": 4,
+         "substrate_scales": (2, 5)}
 
 
 def progress(text):
@@ -52,12 +57,14 @@ def progress(text):
 # ---------------------------------------------------------------- the array and the row model
 
 
-def run_array(rotorsweep, size, h_mm, threads, speed=SPEED, scale=SUBSTRATE_SCALE, dynamics="overdamped", seed=1):
+def run_array(rotorsweep, size, h_mm, threads, speed=SPEED, scale=SUBSTRATE_SCALE, dynamics="overdamped", seed=1,
+              infinite=False):
     """One square slider over separations h_mm: friction per rotor f = F a/(N² ε_pair) per separation (averaged over
     periods 2 …), A_paper, A_field, g, and from period 2 on the order across y, every angle and the mean substrate
-    field at the rotors."""
+    field at the rotors. With `infinite` over an infinite substrate (no edges) instead of scale × the slider."""
+    substrate = {"extent": "infinite"} if infinite else {"columns": scale * size, "rows": scale * size}
     scene = {"slider": {"columns": size, "rows": size, "dynamics": dynamics},
-             "substrate": {"columns": scale * size, "rows": scale * size},
+             "substrate": substrate,
              "drive": {"speed": speed, "rest": REST, "periods": PERIODS},
              "sweep": {"separation": [float(h) * 1e-3 for h in h_mm]},
              "initial": {"kind": "alternating_rows", "noise": NOISE, "seed": seed},
@@ -204,13 +211,15 @@ def at(array_h, values, h):
     return values[index]
 
 
-def large_size_limit(arrays, curves):
-    """(sizes, h, f_∞(h)) of curves {N: f over arrays[N]["h"]} from f = f_∞ + c/N over the three largest sizes, on the
-    separations they all ran."""
-    sizes = sorted(curves)[-3:]
+def large_size_limit(arrays, curves, count=3):
+    """(sizes, h, f_∞(h), residuals) of curves {N: f over arrays[N]["h"]} from f = f_∞ + c/N over the `count` largest
+    sizes, on the separations they all ran; residuals (size, h): each size's f less the fit."""
+    sizes = sorted(curves)[-count:]
     h = min((arrays[n]["h"] for n in sizes), key=len)
-    limit, _ = in_inverse_size(sizes, np.array([at(arrays[n]["h"], curves[n], h) for n in sizes]))
-    return sizes, h, limit
+    values = np.array([at(arrays[n]["h"], curves[n], h) for n in sizes])
+    limit, slope = in_inverse_size(sizes, values)
+    residuals = values - (limit + slope / np.array(sizes, dtype=float)[:, None])
+    return sizes, h, limit, residuals
 
 
 # ---------------------------------------------------------------- tables
@@ -276,13 +285,27 @@ def profile_table(arrays, rows):
 
 
 def limit_table(arrays, rows):
-    """The large-N limits of the array's and of the row model's friction per rotor and their gap."""
-    sizes, h, limit = large_size_limit(arrays, {n: a["f"] for n, a in arrays.items()})
-    _, _, limit_rows = large_size_limit(arrays, {n: r["f"] for n, r in rows.items()})
+    """The large-N limits of the array's and of the row model's friction per rotor, their gap, and how well
+    f = f_∞ + c/N holds: the fit's residuals over its three sizes, and the limit from four sizes against it."""
+    sizes, h, limit, residuals = large_size_limit(arrays, {n: a["f"] for n, a in arrays.items()})
+    _, _, limit_rows, residuals_rows = large_size_limit(arrays, {n: r["f"] for n, r in rows.items()})
     r = gaps(h, limit, limit_rows)
     print(f"\nlarge-N limits (f = f_inf + c/N over N = {', '.join(map(str, sizes))}): array peak {limit.max():.3f} at "
           f"h = {h[np.argmax(limit)]:.2f} mm, row model (A_field) peak {limit_rows.max():.3f} at {r['h_rows']:.2f} mm; "
           f"L1 gap {r['l1']:.3f}, area ratio {r['area']:.3f}")
+    scale = limit.max()
+    print(f"residuals of the array's fit over its sizes, relative to f_inf's peak: rms {np.sqrt(np.mean(residuals ** 2)) / scale:.4f}, "
+          f"largest {np.abs(residuals).max() / scale:.4f} (at h = {h[np.unravel_index(np.argmax(np.abs(residuals)), residuals.shape)[1]]:.2f} mm); "
+          f"the row model's: rms {np.sqrt(np.mean(residuals_rows ** 2)) / limit_rows.max():.4f}")
+    if len(arrays) >= 4:
+        sizes4, h4, limit4, _ = large_size_limit(arrays, {n: a["f"] for n, a in arrays.items()}, count=4)
+        shared = at(h, limit, h4)
+        print(f"the limit from N = {', '.join(map(str, sizes4))} against it: L1 difference "
+              f"{gaps(h4, limit4, shared)['l1']:.4f}, peak {limit4.max():.3f} at {h4[np.argmax(limit4)]:.2f} mm")
+    print(f"{'h':>6} " + " ".join(f"{'N=' + str(n):>8}" for n in sizes) + f" {'f_inf':>8} {'rows_inf':>8}")
+    for k in nearest(h, PROFILE_H):
+        values = [at(arrays[n]["h"], arrays[n]["f"], h[k:k + 1])[0] for n in sizes]
+        print(f"{h[k]:6.2f} " + " ".join(f"{v:8.3f}" for v in values) + f" {limit[k]:8.3f} {limit_rows[k]:8.3f}")
     return {"sizes": sizes, "h": h, "f": limit, "rows": limit_rows}
 
 
@@ -378,6 +401,30 @@ def substrate_table(substrates, substrate_rows, other_start):
               f"{gaps(h, a['f'], model['f'])['l1']:7.3f} {gaps(h, a['f'], largest['f'])['l1']:9.3f}")
     print(f"the two draws at s = {SUBSTRATE_SCALE}: L1 difference "
           f"{gaps(h, other_start['f'], substrates[SUBSTRATE_SCALE]['f'])['l1']:.2g}")
+
+
+def infinite_table(arrays, infinite, limit):
+    """The array over an infinite substrate (no edges) beside the 5N × 5N one, and the large-N limit of each."""
+    print("\nthe array over an infinite substrate against 5N x 5N magnets (friction per rotor; L1: relative L1 "
+          "difference over the separations both ran)")
+    print(f"{'size':>5} {'peak inf':>8} {'at h':>5} {'peak 5N':>8} {'at h':>5} {'area inf/5N':>11} {'L1':>6}")
+    for size, array in infinite.items():
+        finite = arrays[size]
+        f_finite = at(finite["h"], finite["f"], array["h"])
+        r = gaps(array["h"], array["f"], f_finite)
+        print(f"{size:5d} {array['f'].max():8.3f} {array['h'][np.argmax(array['f'])]:5.2f} {f_finite.max():8.3f} "
+              f"{array['h'][np.argmax(f_finite)]:5.2f} {r['area']:11.3f} {r['l1']:6.3f}")
+    if len(infinite) >= 3:
+        sizes, h, limit_infinite, residuals = large_size_limit(infinite, {n: a["f"] for n, a in infinite.items()})
+        shared = at(limit["h"], limit["f"], h) if all(np.isclose(limit["h"], x).any() for x in h) else None
+        line = (f"large-N limit over an infinite substrate (N = {', '.join(map(str, sizes))}): peak "
+                f"{limit_infinite.max():.3f} at {h[np.argmax(limit_infinite)]:.2f} mm, fit residuals rms "
+                f"{np.sqrt(np.mean(residuals ** 2)) / limit_infinite.max():.4f}")
+        if shared is not None:
+            line += f"; against the 5N x 5N limit: L1 {gaps(h, limit_infinite, shared)['l1']:.4f}"
+        print(line)
+        return {"sizes": sizes, "h": h, "f": limit_infinite}
+    return None
 
 
 def field_table(array):
@@ -502,16 +549,20 @@ def plot_slow(axis, slow, slow_rows, landscapes, colors):
     axis.legend(fontsize="x-small")
 
 
-def plot_substrate(axis, substrates, substrate_rows):
+def plot_substrate(axis, substrates, substrate_rows, arrays, infinite, colors):
     for k, (s, array) in enumerate(sorted(substrates.items())):
         color = plt.cm.plasma(k / max(len(substrates) - 1, 1) * 0.8)
         axis.plot(array["h"], array["f"], color=color, label=f"substrate {s} × the slider")
         axis.plot(array["h"], substrate_rows[s]["f"], color=color, ls="--", lw=1)
+    for size, array in infinite.items():
+        axis.plot(array["h"], array["f"], color=colors[size], ls="-.", lw=1.2, label=f"{size} × {size}, infinite")
+        if size != next(iter(substrates.values()))["size"]:
+            axis.plot(arrays[size]["h"], arrays[size]["f"], color=colors[size], lw=0.8, alpha=0.6)
     size = next(iter(substrates.values()))["size"]
     axis.set_xlabel("separation h (mm)")
     axis.set_ylabel("friction per rotor (ε_pair / a)")
-    axis.set_title(f"{size} × {size} over finite substrates (dashed: row model)")
-    axis.legend(fontsize="x-small")
+    axis.set_title(f"{size} × {size} over finite substrates (dashed: row model); infinite ones (dash-dot)", fontsize="small")
+    axis.legend(fontsize="xx-small")
 
 
 def plot_experiment(axis, experiment, arrays, limit):
@@ -541,9 +592,15 @@ def main():
         rows_paper[size] = run_rows(rotorsweep, size, arrays[size]["A_paper"], arrays[size]["g"], args.threads)
         landscapes[size] = landscape(rotorsweep, size, arrays[size]["A_field"])
         progress(f"{size} x {size} done")
+    infinite = {}
+    for size in grid["infinite_sizes"]:
+        infinite[size] = run_array(rotorsweep, size, grid["h"][::2] if len(grid["h"]) > 8 else grid["h"], args.threads,
+                                   infinite=True)
+        progress(f"{size} x {size} over an infinite substrate done")
     slow, slow_rows = {}, {}
     for size in grid["slow_sizes"]:
-        slow[size] = run_array(rotorsweep, size, grid["slow_h"], args.threads, speed=SLOW_SPEED)
+        slow_h = grid["slow_h"][::2] if size in grid["slow_coarse"] else grid["slow_h"]
+        slow[size] = run_array(rotorsweep, size, slow_h, args.threads, speed=SLOW_SPEED)
         slow_rows[size] = run_rows(rotorsweep, size, slow[size]["A_field"], slow[size]["g"], args.threads)
         landscapes[size]["J_slow"] = landscape(rotorsweep, size, slow[size]["A_field"])["J"]
         progress(f"{size} x {size} at the slow speed done")
@@ -567,6 +624,7 @@ def main():
     regime_gap_table(arrays, rows)
     profile_table(arrays, rows)
     limit = limit_table(arrays, rows)
+    infinite_table(arrays, infinite, limit)
     uniformity_table(arrays)
     onset_table(arrays)
     regime_table(arrays, rows, rows_paper, landscapes)
@@ -583,7 +641,7 @@ def main():
     plot_slip_maps(axes[0, 3], arrays)
     plot_regimes(axes[1, 0], arrays, rows, rows_paper, landscapes, colors)
     plot_slow(axes[1, 1], slow, slow_rows, landscapes, colors)
-    plot_substrate(axes[1, 2], substrates, substrate_rows)
+    plot_substrate(axes[1, 2], substrates, substrate_rows, arrays, infinite, colors)
     plot_experiment(axes[1, 3], experiment, arrays, limit)
     study_command_line.save(figure, args.out, 60)
 

@@ -122,8 +122,11 @@ def test_gaps_and_fits():
     assert np.allclose(limit, [2.0, -1.0]) and np.allclose(slope, [5.0, 0.5])
     arrays = {n: {"h": np.array([8.0, 8.5, 9.0] if n == 12 else [8.0, 8.25, 8.5, 8.75, 9.0])} for n in (4, 6, 8, 12)}
     curves = {n: 7.0 - 4.0 / n + arrays[n]["h"] for n in arrays}
-    sizes, h, f = study.large_size_limit(arrays, curves)
+    sizes, h, f, residuals = study.large_size_limit(arrays, curves)
     assert sizes == [6, 8, 12] and h.tolist() == [8.0, 8.5, 9.0] and np.allclose(f, 7.0 + h)  # on the common h
+    assert residuals.shape == (3, 3) and np.allclose(residuals, 0.0, atol=1e-12)  # the law is exact here
+    curves[4] = curves[4] + 0.1  # off the law: a fit over 4, 6, 8, 12 leaves residuals
+    assert np.abs(study.large_size_limit(arrays, curves, count=4)[3]).max() > 0.01
     series = 2.0 + 3.0 * np.cos(2 * np.pi * np.arange(4 * study.SAMPLES + 1) / study.SAMPLES) \
         + 0.5 * np.sin(4 * np.pi * np.arange(4 * study.SAMPLES + 1) / study.SAMPLES)
     c = study.harmonics(series[None])[0]

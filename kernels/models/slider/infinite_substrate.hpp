@@ -1,5 +1,5 @@
-// The field of an infinite substrate lattice by its Fourier series (docs/model.md §9 "An infinite substrate"):
-// B = Σ_G A_G e^{iG·ρ} e^{−|G|η} over the reciprocal lattice, converging as e^{−2π|G|η/a}.
+// The field of an infinite substrate lattice by its Fourier series (docs/model.md §9 "An infinite
+// substrate"): B = Σ_G A_G e^{iG·ρ} e^{−|G|η} over the reciprocal lattice, converging as e^{−2π|G|η/a}.
 #pragma once
 
 #include <cmath>
@@ -21,7 +21,8 @@ namespace rotorsweep::kernels {
 /// is periodic in x and y with period a: every unturned track sees the same field.
 class InfiniteSubstrate {
  public:
-  InfiniteSubstrate(double depth, double angle, double tilt = 0.0, double x_offset = 0.0, double y_offset = 0.0)
+  InfiniteSubstrate(double depth, double angle, double tilt = 0.0, double x_offset = 0.0,
+                    double y_offset = 0.0)
       : depth_(depth), angle_(angle), tilt_(tilt), x_offset_(x_offset), y_offset_(y_offset) {
     const double two_pi = 6.283185307179586;
     for (order_ = 1;; ++order_) {

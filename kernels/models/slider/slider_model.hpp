@@ -13,9 +13,9 @@
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/linear/second_order_jacobian.hpp"
-#include "kernels/steppers/model_concept.hpp"
 #include "kernels/models/slider/slider_pairs.hpp"
 #include "kernels/models/slider/substrate_table.hpp"
+#include "kernels/steppers/model_concept.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -50,12 +50,12 @@ struct SliderPlacement {
 
 /// One lane's parameters, scaled (the same for every lane type and both dynamics).
 struct SliderParameters {
-  SubstrateTableView substrate;  ///< the field along each row at this lane's separation
-  double moment_ratio = 1.1;     ///< μ = m_sub / m
-  double inertia = 1e-4;         ///< I (ignored when overdamped)
-  double damping = 0.1;          ///< γ
-  double speed = 0.0;            ///< v, in a per unit time
-  double rest = 0.0;             ///< t_rest, before which the slider stands still
+  SubstrateTableView substrate;   ///< the field along each row at this lane's separation
+  double moment_ratio = 1.1;      ///< μ = m_sub / m
+  double inertia = 1e-4;          ///< I (ignored when overdamped)
+  double damping = 0.1;           ///< γ
+  double speed = 0.0;             ///< v, in a per unit time
+  double rest = 0.0;              ///< t_rest, before which the slider stands still
   double stage_residual = 1e-10;  ///< a matrix-free stage solve's relative residual (SpectralStiffness)
 };
 
@@ -435,7 +435,7 @@ class SliderModel {
   std::size_t n_;
   bool turned_;  ///< a track per rotor (SliderPlacement::turned), else one per row
   Pairs pairs_;  ///< P and Q per offset (dy + rows − 1, dx + columns − 1), the same in every lane
-  V* start_x_;  ///< each rotor's x at ξ = 0 (SliderPlacement::start_x), the same in every lane
+  V* start_x_;   ///< each rotor's x at ξ = 0 (SliderPlacement::start_x), the same in every lane
   std::array<SubstrateTableView, lane_width<V>> substrate_{};
   std::array<std::array<SubstrateTableView, lane_width<V>>, 4> gradient_{};  ///< for forces() only
   V mu_ = V(1.0), inertia_ = V(1.0), inv_inertia_ = V(1.0), damping_ = V(1.0), inv_damping_ = V(1.0);

@@ -1,5 +1,6 @@
 // The slider's rotor grid and its pair couplings P, Q per offset (docs/model.md §9), summed directly (P c)_r,
-// (Q s)_r with K's dense entries, or as lattice convolutions by FFT with K without a matrix (docs/numerics.md).
+// (Q s)_r with K's dense entries, or as lattice convolutions by FFT with K without a matrix
+// (docs/numerics.md).
 #pragma once
 
 #include <cmath>
@@ -87,7 +88,8 @@ class DirectPairs {
   /// The table position of rotor k's offset from rotor r, and P and Q there.
   ROTORSWEEP_HD std::size_t at(std::size_t r, std::size_t k) const {
     const std::size_t columns = grid_.columns, rows = grid_.rows;
-    return (k / columns + rows - 1 - r / columns) * (2 * columns - 1) + (k % columns + columns - 1 - r % columns);
+    return (k / columns + rows - 1 - r / columns) * (2 * columns - 1) +
+           (k % columns + columns - 1 - r % columns);
   }
   ROTORSWEEP_HD const V& p(std::size_t at) const { return p_[at]; }
   ROTORSWEEP_HD const V& q(std::size_t at) const { return q_[at]; }

@@ -1,5 +1,6 @@
 // The slider's pair sums (P c)_r, (Q s)_r as lattice convolutions (FFT above a few dozen rotors) and its
-// stiffness K without a matrix, solved by conjugate gradients (docs/numerics.md "The full array at any size").
+// stiffness K without a matrix, solved by conjugate gradients (docs/numerics.md "The full array at any
+// size").
 #pragma once
 
 #include <cstddef>

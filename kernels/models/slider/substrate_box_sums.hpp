@@ -29,7 +29,8 @@ namespace rotorsweep::kernels {
 template <class V = double>
 std::vector<std::vector<TableNode>> box_sum_nodes(const SubstrateLattice& lattice, double y_first,
                                                   std::size_t tracks, double x_begin, std::size_t m,
-                                                  std::size_t intervals, const std::function<bool()>& stopped = {}) {
+                                                  std::size_t intervals,
+                                                  const std::function<bool()>& stopped = {}) {
   constexpr std::size_t components = 6;  // B_x and B_z: value, slope, curvature
   constexpr std::size_t width_v = lane_width<V>;
   using Jets = std::array<double, components>;
@@ -48,7 +49,7 @@ std::vector<std::vector<TableNode>> box_sum_nodes(const SubstrateLattice& lattic
       }
     }
   };
-  std::vector<Running> column;       // per offset a: Σ over c so far
+  std::vector<Running> column;        // per offset a: Σ over c so far
   std::vector<Jets> before, through;  // per (track, a): the column sums before c = t − rows + 1 and through t
   for (std::size_t p = 0; p < m && p <= intervals; ++p) {
     if (stopped && stopped()) throw SubstrateTableStopped{};
@@ -61,36 +62,39 @@ std::vector<std::vector<TableNode>> box_sum_nodes(const SubstrateLattice& lattic
     for (std::size_t ic = 0; ic < height; ++ic) {
       const double Y = y_first - lattice.y_offset + (double(ic) - double(rows - 1));
       for (std::size_t ia = 0; ia < width; ia += width_v) {
-        const V X = lane_from<V>([&](std::size_t l) {
-          return b + (double(std::min(ia + l, width - 1)) - double(columns - 1));
-        });
+        const V X = lane_from<V>(
+            [&](std::size_t l) { return b + (double(std::min(ia + l, width - 1)) - double(columns - 1)); });
         SubstrateFieldAt<V> along_x, along_z;
         add_moment_field(X, Y, lattice.depth, turned, false, along_x, along_z);
         const SubstrateFieldAt<V> g = mixed_moment_field(lattice.angle, along_x, along_z);
         const std::array values{lane_values(g.x.value), lane_values(g.x.slope), lane_values(g.x.curvature),
                                 lane_values(g.z.value), lane_values(g.z.slope), lane_values(g.z.curvature)};
         for (std::size_t l = 0; l < width_v && ia + l < width; ++l)
-          column[ia + l].add({values[0][l], values[1][l], values[2][l], values[3][l], values[4][l], values[5][l]});
+          column[ia + l].add(
+              {values[0][l], values[1][l], values[2][l], values[3][l], values[4][l], values[5][l]});
       }
       // c = ic − (rows − 1): the sums through c close track c's column box, and open track c + rows's
       const std::ptrdiff_t c = std::ptrdiff_t(ic) - std::ptrdiff_t(rows - 1);
       if (c >= 0 && std::size_t(c) < tracks)
         for (std::size_t ia = 0; ia < width; ++ia) through[std::size_t(c) * width + ia] = column[ia].sum;
       if (c + std::ptrdiff_t(rows) < std::ptrdiff_t(tracks))
-        for (std::size_t ia = 0; ia < width; ++ia) before[std::size_t(c + std::ptrdiff_t(rows)) * width + ia] = column[ia].sum;
+        for (std::size_t ia = 0; ia < width; ++ia)
+          before[std::size_t(c + std::ptrdiff_t(rows)) * width + ia] = column[ia].sum;
     }
     for (std::size_t t = 0; t < tracks; ++t) {
       Running row;
       std::vector<Jets> upto(width);  // Σ over a' ≤ a of H(a', t)
       for (std::size_t ia = 0; ia < width; ++ia) {
         Jets h;
-        for (std::size_t k = 0; k < components; ++k) h[k] = through[t * width + ia][k] - before[t * width + ia][k];
+        for (std::size_t k = 0; k < components; ++k)
+          h[k] = through[t * width + ia][k] - before[t * width + ia][k];
         row.add(h);
         upto[ia] = row.sum;
       }
       for (std::size_t u = 0; u < count; ++u) {
         Jets box;
-        for (std::size_t k = 0; k < components; ++k) box[k] = upto[u + columns - 1][k] - (u > 0 ? upto[u - 1][k] : 0.0);
+        for (std::size_t k = 0; k < components; ++k)
+          box[k] = upto[u + columns - 1][k] - (u > 0 ? upto[u - 1][k] : 0.0);
         nodes[t][p + u * m] = {{box[0], box[1], box[2]}, {box[3], box[4], box[5]}};
       }
     }

@@ -80,7 +80,8 @@ ROTORSWEEP_HD inline SubstrateFieldAt<V> mixed_moment_field(double angle, Substr
   along_z.x = along_x.z;  // 3XZ/r⁵ both ways
   const V c(std::cos(angle)), s(std::sin(angle));
   const auto mix = [&](const FieldJet<V>& a, const FieldJet<V>& b) {
-    return FieldJet<V>{c * a.value - s * b.value, c * a.slope - s * b.slope, c * a.curvature - s * b.curvature};
+    return FieldJet<V>{c * a.value - s * b.value, c * a.slope - s * b.slope,
+                       c * a.curvature - s * b.curvature};
   };
   return {mix(along_x.x, along_z.x), mix(along_x.y, along_z.y), mix(along_x.z, along_z.z)};
 }

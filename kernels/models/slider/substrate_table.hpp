@@ -123,8 +123,8 @@ class SubstrateTable {
   /// From nodes at x_begin + i·step, i ≤ intervals: `track_nodes(track, nodes)` fills a track's (nodes has
   /// intervals + 1 places). With `shared`, one track (track 0's nodes) serves `tracks` tracks.
   template <class TrackNodes>
-  SubstrateTable(std::size_t tracks, std::size_t intervals, double x_begin, double step, TrackNodes&& track_nodes,
-                 bool shared = false)
+  SubstrateTable(std::size_t tracks, std::size_t intervals, double x_begin, double step,
+                 TrackNodes&& track_nodes, bool shared = false)
       : intervals_(intervals), tracks_(tracks), shared_(shared), x_begin_(x_begin), inv_dx_(1.0 / step) {
     const std::size_t stored = shared ? 1 : tracks;
     coefficients_.resize(stored * intervals_ * 12);
@@ -159,7 +159,8 @@ class SubstrateTable {
     const V c(std::cos(tilt)), s(std::sin(tilt));
     const auto along_axis = [&](const FieldJet<V>& x, const FieldJet<V>& y) {
       if (tilt == 0.0) return x;
-      return FieldJet<V>{c * x.value + s * y.value, c * x.slope + s * y.slope, c * x.curvature + s * y.curvature};
+      return FieldJet<V>{c * x.value + s * y.value, c * x.slope + s * y.slope,
+                         c * x.curvature + s * y.curvature};
     };
     for (std::size_t first = 0; first <= last; first += width) {
       if (stopped && stopped()) throw SubstrateTableStopped{};

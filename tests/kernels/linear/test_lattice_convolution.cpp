@@ -127,7 +127,8 @@ TEST_CASE("lattice convolution: SIMD lanes give each scalar lane's sums to round
   }
 }
 
-TEST_CASE("lattice convolution: the spectra bound the kernels' eigenvalues on the lattice", "[kernels][fft]") {
+TEST_CASE("lattice convolution: the spectra bound the kernels' eigenvalues on the lattice",
+          "[kernels][fft]") {
   for (const auto& [columns, rows] :
        std::vector<std::pair<std::size_t, std::size_t>>{{5, 4}, {9, 7}, {16, 3}, {12, 12}}) {
     INFO(columns << " x " << rows);
@@ -139,9 +140,11 @@ TEST_CASE("lattice convolution: the spectra bound the kernels' eigenvalues on th
       for (std::size_t q = 0; q < n; ++q) {
         std::vector<double> e(n, 0.0);
         e[q] = 1.0;
-        for (std::size_t p = 0; p < n; ++p) matrix(Eigen::Index(p), Eigen::Index(q)) = c.direct_at(c.table(k), p, e.data());
+        for (std::size_t p = 0; p < n; ++p)
+          matrix(Eigen::Index(p), Eigen::Index(q)) = c.direct_at(c.table(k), p, e.data());
       }
-      const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(matrix).eigenvalues();
+      const Eigen::VectorXd eigenvalues =
+          Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(matrix).eigenvalues();
       CHECK(eigenvalues.minCoeff() >= c.spectrum_min(k) - 1e-12);
       CHECK(eigenvalues.maxCoeff() <= c.spectrum_max(k) + 1e-12);
       // and not loosely: the bounds are within a fraction of the spread of the eigenvalues

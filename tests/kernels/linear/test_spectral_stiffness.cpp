@@ -1,6 +1,7 @@
-// The matrix-free stiffness (kernels/linear/spectral_stiffness.hpp): its products and solves against the dense
-// matrix K = diag(d) − S P S − C Q C, and its inertia test sufficient (never positive where σ − K is not) and
-// tight enough to pass where σ clears K's largest eigenvalue by the bound's margin; in SIMD lanes too.
+// The matrix-free stiffness (kernels/linear/spectral_stiffness.hpp): its products and solves against the
+// dense matrix K = diag(d) − S P S − C Q C, and its inertia test sufficient (never positive where σ − K is
+// not) and tight enough to pass where σ clears K's largest eigenvalue by the bound's margin; in SIMD lanes
+// too.
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -97,7 +98,8 @@ TEST_CASE("spectral stiffness: K x equals the dense product", "[kernels][fft][sl
   }
 }
 
-TEST_CASE("spectral stiffness: σ − K solved by conjugate gradients as by a dense solve", "[kernels][fft][slider]") {
+TEST_CASE("spectral stiffness: σ − K solved by conjugate gradients as by a dense solve",
+          "[kernels][fft][slider]") {
   const SliderGrid grid{12, 10};
   for (const double margin : {1.0, 10.0, 1000.0}) {
     const Case c = random_case(grid, 5, -4.0);
@@ -120,7 +122,8 @@ TEST_CASE("spectral stiffness: σ − K solved by conjugate gradients as by a de
   }
 }
 
-TEST_CASE("spectral stiffness: the inertia test is never positive where σ − K is not", "[kernels][fft][slider]") {
+TEST_CASE("spectral stiffness: the inertia test is never positive where σ − K is not",
+          "[kernels][fft][slider]") {
   std::size_t passed = 0, cases = 0;
   for (unsigned seed = 0; seed < 12; ++seed)
     for (const double diagonal_mean : {-20.0, -3.0, 2.0}) {
@@ -149,17 +152,20 @@ TEST_CASE("spectral stiffness: the inertia test is never positive where σ − K
   CHECK(passed > cases / 4);
 }
 
-TEST_CASE("spectral stiffness: SIMD lanes solve each lane's system as the scalar lane", "[kernels][fft][slider]") {
+TEST_CASE("spectral stiffness: SIMD lanes solve each lane's system as the scalar lane",
+          "[kernels][fft][slider]") {
   using V = simd_lane;
   constexpr std::size_t width = lane_width<V>;
   const SliderGrid grid{9, 8};
   std::vector<Case> cases;
-  for (std::size_t l = 0; l < width; ++l) cases.push_back(random_case(grid, 40 + unsigned(l), -6.0 + double(l)));
+  for (std::size_t l = 0; l < width; ++l)
+    cases.push_back(random_case(grid, 40 + unsigned(l), -6.0 + double(l)));
   auto lanes = stiffness<V>(cases);
   V sigma = lane_from<V>([&](std::size_t l) { return cases[l].K.diagonal().maxCoeff() + 9.0 + double(l); });
   lanes.K.factor(sigma);
   lane_vector<V> b(grid.rotors());
-  for (std::size_t r = 0; r < grid.rotors(); ++r) b[r] = lane_from<V>([&](std::size_t l) { return std::cos(double(r + l)); });
+  for (std::size_t r = 0; r < grid.rotors(); ++r)
+    b[r] = lane_from<V>([&](std::size_t l) { return std::cos(double(r + l)); });
   lanes.K.solve(b.data());
   CHECK(!lane_any(!lanes.K.positive_definite()));
   for (std::size_t l = 0; l < width; ++l) {

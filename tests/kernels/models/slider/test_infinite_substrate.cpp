@@ -27,7 +27,9 @@ TEST_CASE("infinite substrate: finite lattices converge to it as 1/S", "[kernels
     const InfiniteSubstrate infinite(depth, angle);
     for (const auto& [x, y] : std::vector<std::pair<double, double>>{{0.0, 0.0}, {0.3, 0.2}, {0.71, -0.45}}) {
       const auto exact = infinite.field_at(x, y);
-      const auto at = [&](std::size_t size) { return substrate_field(centred(size, depth, angle), x, y, true); };
+      const auto at = [&](std::size_t size) {
+        return substrate_field(centred(size, depth, angle), x, y, true);
+      };
       const auto f1 = at(81), f2 = at(161), f3 = at(321);
       const auto check = [&](double a, double b, double c, double limit) {
         // the gap halves as S doubles (the edges' charges, ~ 1/S); Richardson's limit meets the series
@@ -56,7 +58,8 @@ TEST_CASE("infinite substrate: periodic with the lattice, its nodes repeat along
   infinite.track_nodes(0.21, -0.5, 16, nodes);
   const auto direct = infinite.field_at(-0.5 + 37.0 / 16.0, 0.21);
   CHECK(nodes[37].z.value == Approx(direct.z.value).margin(1e-12));
-  CHECK(nodes[37].along.value == Approx(std::cos(0.2) * direct.x.value + std::sin(0.2) * direct.y.value).margin(1e-12));
+  CHECK(nodes[37].along.value ==
+        Approx(std::cos(0.2) * direct.x.value + std::sin(0.2) * direct.y.value).margin(1e-12));
   // close to the lattice the series needs more harmonics
   CHECK(InfiniteSubstrate(0.05, 0.0).order() > InfiniteSubstrate(0.5, 0.0).order());
 }

@@ -18,8 +18,8 @@
 #include "kernels/steppers/team_integrator.hpp"
 #include "kernels/steppers/team_rosenbrock.hpp"
 #include "support/kernel_scratch.hpp"
-#include "support/slider_fixture.hpp"
 #include "support/linearization_check.hpp"
+#include "support/slider_fixture.hpp"
 
 using namespace rotorsweep::kernels;
 using rotorsweep::testing::scratch;

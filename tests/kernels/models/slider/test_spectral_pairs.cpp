@@ -30,7 +30,8 @@ void check_same_evaluation(SliderGrid grid, const SliderPlacement& placement, do
   INFO(grid.columns << " x " << grid.rows << ", tilt " << placement.tilt << (Inertial ? ", inertial" : ""));
   const Substrate s(grid, eta, 3 * std::max(grid.columns, grid.rows), placement);
   const auto direct = make_model<Direct<Inertial>>(grid, parameters<Direct<Inertial>>(s, 0.5), placement);
-  const auto spectral = make_model<Spectral<Inertial>>(grid, parameters<Spectral<Inertial>>(s, 0.5), placement);
+  const auto spectral =
+      make_model<Spectral<Inertial>>(grid, parameters<Spectral<Inertial>>(s, 0.5), placement);
   const std::size_t dim = direct.dimension();
   const auto y = random_state(dim, seed, Inertial ? 1.0 : 0.0);
   auto wd = rotorsweep::testing::workspace(direct);
@@ -47,13 +48,14 @@ void check_same_evaluation(SliderGrid grid, const SliderPlacement& placement, do
 
 }  // namespace
 
-TEST_CASE("spectral pairs: the slider's f, integrands and energy equal the direct sums'", "[kernels][slider][fft]") {
+TEST_CASE("spectral pairs: the slider's f, integrands and energy equal the direct sums'",
+          "[kernels][slider][fft]") {
   check_same_evaluation<false>({8, 8}, {}, 0.5, 1);
   check_same_evaluation<true>({8, 8}, {}, 0.5, 2);
   check_same_evaluation<false>({13, 6}, {}, 0.45, 3);
   check_same_evaluation<false>({5, 11}, {0.0, 0.3, -0.2}, 0.6, 4);
   check_same_evaluation<true>({9, 7}, {0.4, 0.3, -0.2}, 0.5, 5);  // turned: P and Q stay the grid's
-  check_same_evaluation<false>({4, 3}, {}, 0.5, 6);                // a lattice this small sums directly
+  check_same_evaluation<false>({4, 3}, {}, 0.5, 6);               // a lattice this small sums directly
 }
 
 TEST_CASE("spectral pairs: Jacobian, df/dt and integrand gradients match central differences",
@@ -82,7 +84,8 @@ std::vector<double> run(const Model& m, double t1, double tol) {
   auto integrator = rotorsweep::testing::integrator<Integrator>(m, method, Tolerances{tol, tol});
   auto s = rotorsweep::testing::lane_state<double>(m.dimension(), Model::max_quadratures);
   const std::size_t rotors = m.rotors(), columns = m.grid().columns;
-  for (std::size_t r = 0; r < rotors; ++r) s.y[r] = ((r / columns) % 2 ? 3.0 : 0.0) + 0.01 * std::sin(double(7 * r));
+  for (std::size_t r = 0; r < rotors; ++r)
+    s.y[r] = ((r / columns) % 2 ? 3.0 : 0.0) + 0.01 * std::sin(double(7 * r));
   s.t_stop = t1;
   integrator.advance(m, s);
   REQUIRE(s.status[0] == LaneStatus::ok);
@@ -104,12 +107,13 @@ void check_same_run(SliderGrid grid, double eta) {
   const auto a = run(direct, t1, 1e-9), b = run(spectral, t1, 1e-9);
   for (std::size_t k = 0; k < grid.rotors(); ++k) CHECK(b[k] == Approx(a[k]).margin(1e-6));
   CHECK(b[b.size() - 2] == Approx(a[a.size() - 2]).epsilon(1e-6));  // the impulse
-  CHECK(b.back() == Approx(a.back()).epsilon(1e-6));                 // the dissipation
+  CHECK(b.back() == Approx(a.back()).epsilon(1e-6));                // the dissipation
 }
 
 }  // namespace
 
-TEST_CASE("spectral pairs: a Rosenbrock run follows the dense pairs' to the tolerance", "[kernels][slider][fft]") {
+TEST_CASE("spectral pairs: a Rosenbrock run follows the dense pairs' to the tolerance",
+          "[kernels][slider][fft]") {
   check_same_run<false>({8, 8}, 0.56);
   check_same_run<true>({7, 6}, 0.56);
 }

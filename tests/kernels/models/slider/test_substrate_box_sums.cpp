@@ -18,11 +18,15 @@ double largest_difference(const SubstrateLattice& lattice, double y_first, std::
   double largest = 0, difference = 0;
   for (std::size_t t = 0; t < tracks; ++t)
     for (std::size_t i = 0; i <= intervals; ++i) {
-      const auto direct = substrate_field(lattice, x_begin + double(i) / double(m), y_first + double(t), false);
+      const auto direct =
+          substrate_field(lattice, x_begin + double(i) / double(m), y_first + double(t), false);
       const TableNode& n = nodes[t][i];
-      const double pairs[6][2] = {{n.along.value, direct.x.value}, {n.along.slope, direct.x.slope},
-                                  {n.along.curvature, direct.x.curvature}, {n.z.value, direct.z.value},
-                                  {n.z.slope, direct.z.slope}, {n.z.curvature, direct.z.curvature}};
+      const double pairs[6][2] = {{n.along.value, direct.x.value},
+                                  {n.along.slope, direct.x.slope},
+                                  {n.along.curvature, direct.x.curvature},
+                                  {n.z.value, direct.z.value},
+                                  {n.z.slope, direct.z.slope},
+                                  {n.z.curvature, direct.z.curvature}};
       for (const auto& [box, sum] : pairs) {
         largest = std::max(largest, std::fabs(sum));
         difference = std::max(difference, std::fabs(box - sum));
@@ -33,7 +37,8 @@ double largest_difference(const SubstrateLattice& lattice, double y_first, std::
 
 }  // namespace
 
-TEST_CASE("substrate box sums: every node equals the direct sum to rounding", "[kernels][slider][substrate]") {
+TEST_CASE("substrate box sums: every node equals the direct sum to rounding",
+          "[kernels][slider][substrate]") {
   // 6 tracks over a 17 × 13 lattice at η = 0.5, 9 nodes per a over 4.4 a
   SubstrateLattice lattice{17, 13, -5.0, -4.0, 0.5, 0.0};
   CHECK(largest_difference(lattice, 0.0, 6, -0.5, 9, 40) < 1e-13);
