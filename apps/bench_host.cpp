@@ -4,8 +4,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
+#include <exception>
 #include <filesystem>
 #include <mutex>
 #include <string>
@@ -18,6 +21,7 @@
 #include "io/member_stream.hpp"
 #include "io/result_file.hpp"
 #include "io/scene_parser.hpp"
+#include "remove_on_signal.hpp"
 
 namespace rotorsweep::apps {
 
@@ -134,15 +138,32 @@ HostSteps time_host_steps(int rows, std::size_t members, int threads, int repeat
 int run_bench_host(const BenchHostOptions& options) {
   const int threads = ensemble::thread_count(options.threads);
   const std::size_t members = std::size_t(options.members);
+  // the scratch file is written and removed at every repeat: a directory it cannot be written to is
+  // refused before any work, as a bad option
+  if (::access(options.scratch.c_str(), W_OK | X_OK) != 0) {
+    std::fprintf(stderr, "error: --scratch %s: the result file cannot be written there (%s)\n",
+                 options.scratch.c_str(), std::strerror(errno));
+    return 2;
+  }
   const std::filesystem::path path = std::filesystem::path(options.scratch) /
                                      ("rotorsweep-bench-host-" + std::to_string(::getpid()) + ".h5");
+  const RemoveOnSignal on_signal(path);  // SIGINT or SIGTERM removes the scratch file and ends at once
   std::printf("rotorsweep bench host: %zu members per chunk, %d host threads, medians of %d\n", members,
               threads, options.repeats);
   std::printf(
       "| N | step | s per chunk | µs per member | members/s | s per 10⁶ members |\n"
       "|---|---|---|---|---|---|\n");
+  std::fflush(stdout);
   for (const int rows : options.rows) {
-    const HostSteps steps = time_host_steps(rows, members, threads, options.repeats, path);
+    HostSteps steps{};
+    try {
+      steps = time_host_steps(rows, members, threads, options.repeats, path);
+    } catch (const std::exception& e) {  // a full disk, a scratch directory removed under the run
+      std::error_code ignored;
+      std::filesystem::remove(path, ignored);
+      std::fprintf(stderr, "error: --scratch %s: %s\n", options.scratch.c_str(), e.what());
+      return 1;
+    }
     const auto row = [&](const char* step, double seconds) {
       const double per_member = seconds / double(members);
       std::printf("| %d | %s | %.3f | %.2f | %.3g | %.2f |\n", rows, step, seconds, 1e6 * per_member,

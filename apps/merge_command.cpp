@@ -38,8 +38,15 @@ struct ShardFile {
 ShardFile describe(const std::string& path, const io::Hdf5Location& file) {
   if (!file.has_attribute("shard_index") || !file.has("members"))
     throw std::runtime_error("'" + path + "' is not a shard file (written by run or slider --shard I/N)");
-  if (!file.attribute_flag("complete"))
-    throw std::runtime_error("'" + path + "' is incomplete: its run did not finish; run that shard again");
+  if (!file.attribute_flag("complete")) {  // a shard's partial file: its run resumes, then its file merges
+    const auto label = io::MemberTableFile::shard_label(file);
+    const bool slider = file.has_attribute("kind") && file.attribute_string("kind") == "slider";
+    const std::string shard = label ? std::to_string(label->index) + "/" + std::to_string(label->count) : "I/N";
+    throw std::runtime_error("'" + path + "' is incomplete: its run stopped early; finish it with rotorsweep " +
+                             (slider ? "slider" : "run") + " '" + file.attribute_string("scene_path") +
+                             "' --shard " + shard + " -o OUT.h5 --resume (OUT.h5.partial being this file), " +
+                             "then merge OUT.h5");
+  }
   ShardFile shard;
   shard.path = path;
   shard.scene_text = file.attribute_string("scene");

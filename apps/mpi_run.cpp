@@ -18,6 +18,7 @@
 #include "mpi_join.hpp"
 #include "mpi_session.hpp"
 #include "progress_line.hpp"
+#include "run_needs.hpp"
 #include "run_support.hpp"
 
 namespace rotorsweep::apps {
@@ -35,7 +36,7 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
   std::string partial;
   if (const int status = prepare_mpi_output(
           mpi, options, options.resume, options.shard, path, target, partial,
-          [&](const std::string& at) { return fits_on_disk(scene, scene.member_count(), false, at); });
+          [&](const std::string& at) { return !refused(sweep_disk_refusal(scene, scene.member_count(), false, at)); });
       status != 0)
     return status;
 

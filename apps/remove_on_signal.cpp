@@ -54,6 +54,12 @@ RemoveOnSignal::RemoveOnSignal(const io::OutputTarget& target) {
   previous_term_ = std::signal(SIGTERM, &remove_and_exit);
 }
 
+RemoveOnSignal::RemoveOnSignal(const std::filesystem::path& scratch) {
+  if (!copy_path(scratch.string(), temporary_path)) temporary_path[0] = '\0';
+  previous_int_ = std::signal(SIGINT, &remove_and_exit);
+  previous_term_ = std::signal(SIGTERM, &remove_and_exit);
+}
+
 RemoveOnSignal::~RemoveOnSignal() {
   std::signal(SIGINT, previous_int_);
   std::signal(SIGTERM, previous_term_);

@@ -1,6 +1,8 @@
-// Commands that write one file at the end (landscape, table -o, couplings -o, merge): SIGINT or
-// SIGTERM removes the temporary file and the directories made for it and ends with 128 + signal.
+// Commands that write one file at the end (landscape, table -o, couplings -o, merge; bench host's scratch
+// file): SIGINT or SIGTERM removes the temporary file and the directories made for it and ends with 128 + signal.
 #pragma once
+
+#include <filesystem>
 
 #include "io/output_target.hpp"
 
@@ -16,6 +18,8 @@ class RemoveOnSignal {
  public:
   RemoveOnSignal();
   explicit RemoveOnSignal(const io::OutputTarget& target);
+  /// A scratch file a command writes and removes itself (bench host): the signal removes it too.
+  explicit RemoveOnSignal(const std::filesystem::path& scratch);
   ~RemoveOnSignal();
   RemoveOnSignal(const RemoveOnSignal&) = delete;
   RemoveOnSignal& operator=(const RemoveOnSignal&) = delete;

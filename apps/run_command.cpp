@@ -28,9 +28,9 @@
 #include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
 #include "rank_files.hpp"
+#include "run_needs.hpp"
 #include "run_support.hpp"
 #include "streamed_run.hpp"
-#include "usable_memory.hpp"
 
 namespace rotorsweep::apps {
 
@@ -142,55 +142,32 @@ std::vector<char> check_partial(const std::string& partial, const std::string& s
   return io::read_done(file);
 }
 
+std::string shard_line(const io::ShardLabel& shard) {
+  const std::string label = "shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) + ": ";
+  std::string members;
+  std::size_t listed = 0;
+  for (std::size_t m = shard.index - 1; m < shard.plan_members && listed < 3; m += shard.count, ++listed)
+    members += (members.empty() ? "" : ", ") + std::to_string(m);
+  if (listed == 0) return label + "no members (the plan has " + std::to_string(shard.plan_members) + ")\n";
+  const bool more = shard.index - 1 + 3 * shard.count < shard.plan_members;
+  return label + (listed == 1 ? "member " : "members ") + members + (more ? ", ..." : "") + " of the plan's " +
+         std::to_string(shard.plan_members) + "\n";
+}
+
 bool fits_on_disk(double needed, const std::string& what, const std::string& partial,
                   const std::string& advice) {
-  std::error_code error;
-  auto directory = std::filesystem::absolute(partial, error).parent_path();
-  const auto space = std::filesystem::space(directory, error);
-  if (error || needed <= 0.95 * double(space.available)) return true;
-  const auto amount = [](double bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, bytes < 0x1p27 ? "%.3g MiB" : "%.3g GiB",
-                  bytes < 0x1p27 ? bytes / 0x1p20 : bytes / 0x1p30);
-    return std::string(text);
-  };
-  std::fprintf(stderr, "error: %s need about %s on disk; %s has %s free. %s.\n", what.c_str(),
-               amount(needed).c_str(), directory.c_str(), amount(double(space.available)).c_str(),
-               advice.c_str());
-  return false;
+  return !refused(disk_refusal(needed, what, partial, advice));
 }
 
-bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, bool shard, const std::string& partial) {
-  char what[96];
-  std::snprintf(what, sizeof what, "the results of the plan's %.3g members and the curves written at the end",
-                double(rows));
-  return fits_on_disk(double(rows) * io::member_row_bytes(io::member_columns(scene)) +
-                          io::ResultFile::finishing_bytes(scene, shard),
-                      what, partial,
-                      std::string("Split the sweep (fewer A, g, replicas per scene, or --shard)") +
-                          (scene.period_series ? " or switch off observables.period_series" : ""));
-}
-
-bool fits_in_memory(const ensemble::Scene& scene, int threads) {
-  if (scene.device == ensemble::Device::gpu) return true;  // the GPU's scratch is checked by the parser
-  const double block = ensemble::lane_block_bytes(scene);
-  char how[160];
-  std::snprintf(how, sizeof how, " to work in (%d threads × %.3g GiB, one lane block each at N = %zu)",
-                threads, block / 0x1p30, scene.max_rows());
-  return fits_in_memory(
-      double(threads) * block, "the sweep", how,
-      std::string("use fewer --threads or rows") +
-          (scene.couplings.nearest_neighbour() ? ""
-                                               : " (a dense coupling table grows as N²: a shorter range)"));
+bool refused(const std::optional<std::string>& refusal) {
+  if (refusal) std::fprintf(stderr, "error: %s\n", refusal->c_str());
+  return refusal.has_value();
 }
 
 /// The description of the run on stderr.
 void print_header(const RunOptions& options, const ensemble::Scene& scene, std::size_t members, int threads,
                   const std::optional<io::ShardLabel>& shard) {
-  if (shard)
-    std::fprintf(stderr, "shard %zu/%zu: members %zu, %zu, %zu, ... of the plan's %zu\n", shard->index,
-                 shard->count, shard->index - 1, shard->index - 1 + shard->count,
-                 shard->index - 1 + 2 * shard->count, shard->plan_members);
+  if (shard) std::fputs(shard_line(*shard).c_str(), stderr);
   std::fputs(
       io::run_description(scene, options.scene, members, threads, ensemble::instruction_set().lanes).c_str(),
       stderr);
@@ -248,11 +225,7 @@ int run_sweep_command(const RunOptions& options) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
-  if (scene.device == ensemble::Device::gpu && !ensemble::gpu_info().available) {
-    std::cerr << "error: numerics.device = \"gpu\" (or --device gpu): " << ensemble::gpu_info().why
-              << "; run with --device cpu\n";
-    return 2;
-  }
+  if (refused(gpu_refusal(scene.device))) return 2;
   int threads = 0;
   try {
     threads = ensemble::thread_count(options.threads);
@@ -260,7 +233,7 @@ int run_sweep_command(const RunOptions& options) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
-  if (!fits_in_memory(scene, threads)) return 2;
+  if (refused(sweep_memory_refusal(scene, threads))) return 2;
 #if ROTORSWEEP_HAVE_MPI
   if (launched_by_mpi()) return run_sweep_mpi(options, scene, threads);
 #endif
@@ -278,10 +251,10 @@ int run_sweep_command(const RunOptions& options) {
   const std::string partial = target->temporary();
 
   if (!options.resume &&
-      !fits_on_disk(
+      refused(sweep_disk_refusal(
           scene,
           shard ? (scene.member_count() + shard->count - shard->index) / shard->count : scene.member_count(),
-          shard.has_value(), partial))
+          shard.has_value(), partial)))
     return 2;
   if (options.resume &&
       !fits_on_disk(io::ResultFile::finishing_bytes(scene, shard.has_value()),
@@ -351,7 +324,11 @@ int run_sweep_command(const RunOptions& options) {
   }
   progress.finish();
   auto& stats = outcome.statistics;
-  stats.wall_seconds += earlier_seconds;
+  const bool all_done_before = options.resume && to_run == 0;
+  if (all_done_before)  // a resume with every member done: the earlier run's figures stand
+    stats = file->recorded_statistics(threads, ensemble::instruction_set().lanes);
+  else
+    stats.wall_seconds += earlier_seconds;
 
   const std::string resume = resume_command("run", options, options.shard);
   if (const auto code = end_unfinished_run(
@@ -371,11 +348,17 @@ int run_sweep_command(const RunOptions& options) {
           },
           path, rows, resume))
     return 1;
-  std::fprintf(stderr, "wrote %s%s: %zu members in %s (%s, lane occupancy %.1f %%)\n", path.c_str(),
-               target->replaced() ? " (replacing the previous file)" : "", rows,
-               format_duration(stats.wall_seconds).c_str(),
-               members_per_second(double(to_run), stats.wall_seconds - earlier_seconds).c_str(),
-               100 * stats.occupancy());
+  if (all_done_before)
+    std::fprintf(stderr, "wrote %s%s: %zu members, all run before this resume%s\n", path.c_str(),
+                 target->replaced() ? " (replacing the previous file)" : "", rows,
+                 stats.wall_seconds > 0 ? (" (in " + format_duration(stats.wall_seconds) + ")").c_str()
+                                        : " (their run time was not recorded)");
+  else
+    std::fprintf(stderr, "wrote %s%s: %zu members in %s (%s, lane occupancy %.1f %%)\n", path.c_str(),
+                 target->replaced() ? " (replacing the previous file)" : "", rows,
+                 format_duration(stats.wall_seconds).c_str(),
+                 members_per_second(double(to_run), stats.wall_seconds - earlier_seconds).c_str(),
+                 100 * stats.occupancy());
   return 0;
 }
 

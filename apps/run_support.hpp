@@ -34,6 +34,9 @@ std::vector<char> check_partial(const std::string& partial, const std::string& s
 /// earlier run unless `resume` or --force; says why and returns false when the command must exit 2.
 bool open_resumable_target(const SceneCommandOptions& options, bool resume, const std::string& path,
                            std::optional<io::OutputTarget>& target);
+/// "shard 2/3: members 1, 4, 7, ... of the plan's 12" (as many as there are, up to three), or "shard 5/8: no
+/// members (the plan has 3)".
+std::string shard_line(const io::ShardLabel& shard);
 /// The command line that resumes a run: "rotorsweep COMMAND SCENE [-o OUT] [--shard I/N] --resume".
 std::string resume_command(const std::string& command, const SceneCommandOptions& options,
                            const std::string& shard);
@@ -44,11 +47,8 @@ void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene);
 /// (plural: "the results ... need") needs, and `advice`, when not.
 bool fits_on_disk(double needed, const std::string& what, const std::string& partial,
                   const std::string& advice);
-/// fits_on_disk for `rows` members of a row sweep and the file's finishing writes (none in a shard).
-bool fits_on_disk(const ensemble::Scene& scene, std::size_t rows, bool shard, const std::string& partial);
-/// Whether every thread's lane block fits in 80 % of the memory this process may use; says how much
-/// it needs when not.
-bool fits_in_memory(const ensemble::Scene& scene, int threads);
+/// Says "error: " and the refusal on stderr, if there is one (apps/run_needs.hpp), and whether there was.
+bool refused(const std::optional<std::string>& refusal);
 /// The one-line description of a slider scan on stderr (and the shard's members).
 void print_slider_header(const SliderOptions& options, const ensemble::SliderScene& scene, int threads,
                          const std::optional<io::ShardLabel>& shard);

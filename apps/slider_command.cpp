@@ -26,9 +26,9 @@
 #include "io/slider_scene_parser.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "progress_line.hpp"
+#include "run_needs.hpp"
 #include "run_support.hpp"
 #include "streamed_run.hpp"
-#include "usable_memory.hpp"
 
 namespace rotorsweep::apps {
 
@@ -39,10 +39,7 @@ void print_slider_header(const SliderOptions& options, const ensemble::SliderSce
   std::string sizes;
   for (const auto& size : scene.sizes)
     sizes += (sizes.empty() ? "" : ", ") + std::to_string(size.columns) + " × " + std::to_string(size.rows);
-  if (shard)
-    std::fprintf(stderr, "shard %zu/%zu: members %zu, %zu, %zu, ... of the plan's %zu\n", shard->index,
-                 shard->count, shard->index - 1, shard->index - 1 + shard->count,
-                 shard->index - 1 + 2 * shard->count, shard->plan_members);
+  if (shard) std::fputs(shard_line(*shard).c_str(), stderr);
   std::snprintf(text, sizeof text, "%d threads × %zu lanes", threads, ensemble::slider_thread_lanes(scene));
   const std::string where =
       scene.device == ensemble::Device::gpu ? ensemble::slider_device_label(scene) : text;
@@ -85,22 +82,6 @@ void print_slider_header(const SliderOptions& options, const ensemble::SliderSce
 
 namespace {
 
-/// Whether a CPU scan's threads fit in memory: each thread's lane block and substrate tables, and its
-/// lanes' members' series (`row_bytes` each, and two more on their way into the file); says how much it
-/// needs when not.
-bool scan_fits_in_memory(const ensemble::SliderScene& scene, int threads, double row_bytes) {
-  if (scene.device == ensemble::Device::gpu) return true;  // the GPU's members live on the GPU
-  const double lanes = double(ensemble::slider_thread_lanes(scene));
-  const double thread = ensemble::slider_thread_bytes(scene) + lanes * row_bytes;
-  char how[160];
-  std::snprintf(
-      how, sizeof how,
-      " to work in (%d threads × %.3g GiB: a lane block, substrate tables and %g members' series each)",
-      threads, thread / 0x1p30, lanes);
-  return fits_in_memory(double(threads) * thread + 2 * row_bytes, "the scan", how,
-                        "use fewer --threads, a smaller slider, fewer samples or series, or fewer periods");
-}
-
 /// Members that did not finish, by status, and the mean step attempts, read from the written file.
 void report_slider_outcome(const io::Hdf5Location& file, std::string& steps) {
   const auto members = file.open_group("members");
@@ -140,11 +121,7 @@ int run_slider(const SliderOptions& options) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
-  if (scene.device == ensemble::Device::gpu && !ensemble::gpu_info().available) {
-    std::cerr << "error: numerics.device = \"gpu\" (or --device gpu): " << ensemble::gpu_info().why
-              << "; run with --device cpu\n";
-    return 2;
-  }
+  if (refused(gpu_refusal(scene.device))) return 2;
   int threads = 0;
   std::optional<io::ShardLabel> shard;
   try {
@@ -154,8 +131,7 @@ int run_slider(const SliderOptions& options) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   }
-  const double row_bytes = io::table_row_bytes(io::slider_columns(scene, ensemble::slider_timeline(scene)));
-  if (!scan_fits_in_memory(scene, threads, row_bytes)) return 2;
+  if (refused(scan_memory_refusal(scene, threads))) return 2;
 #if ROTORSWEEP_HAVE_MPI
   if (launched_by_mpi()) return run_slider_mpi(options, scene, threads);
 #endif
@@ -166,16 +142,7 @@ int run_slider(const SliderOptions& options) {
   const std::string partial = target->temporary();
   const std::size_t shard_members =
       shard ? (scene.member_count() + shard->count - shard->index) / shard->count : scene.member_count();
-  char what[96];
-  std::snprintf(what, sizeof what, "the results of the plan's %zu members and the curve written at the end",
-                shard_members);
-  if (!options.resume &&
-      !fits_on_disk(double(shard_members) * (1 + row_bytes) +
-                        io::SliderResultFile::finishing_bytes(scene, shard.has_value()),
-                    what, partial,
-                    "Split the scan (fewer separations or replicas per scene, or --shard) or switch off "
-                    "observables.series"))
-    return 2;
+  if (!options.resume && refused(scan_disk_refusal(scene, shard_members, shard.has_value(), partial))) return 2;
   if (options.resume &&
       !fits_on_disk(io::SliderResultFile::finishing_bytes(scene, shard.has_value()),
                     "the curve written at the end", partial, "Free some space there first")) {

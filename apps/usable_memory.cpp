@@ -38,15 +38,22 @@ double usable_memory_bytes() {
   return usable;
 }
 
-bool fits_in_memory(double bytes, const std::string& what, const std::string& how,
-                    const std::string& advice) {
+std::optional<std::string> memory_refusal(double bytes, const std::string& what, const std::string& how,
+                                          const std::string& advice) {
   const double usable = usable_memory_bytes();
-  if (bytes <= 0.8 * usable) return true;
-  std::fprintf(stderr,
-               "error: %s needs about %.3g GiB%s, more than 80 %% of the %.3g GiB this process may use (the "
-               "machine's memory, ulimit -v or its cgroup's limit); %s\n",
-               what.c_str(), bytes / 0x1p30, how.c_str(), usable / 0x1p30, advice.c_str());
-  return false;
+  if (bytes <= 0.8 * usable) return std::nullopt;
+  char amounts[160];
+  std::snprintf(amounts, sizeof amounts, "%.3g GiB", bytes / 0x1p30);
+  std::string text = what + " needs about " + amounts + how + ", more than 80 % of the ";
+  std::snprintf(amounts, sizeof amounts, "%.3g GiB", usable / 0x1p30);
+  return text + amounts + " this process may use (the machine's memory, ulimit -v or its cgroup's limit); " +
+         advice;
+}
+
+bool fits_in_memory(double bytes, const std::string& what, const std::string& how, const std::string& advice) {
+  const auto refusal = memory_refusal(bytes, what, how, advice);
+  if (refusal) std::fprintf(stderr, "error: %s\n", refusal->c_str());
+  return !refusal;
 }
 
 }  // namespace rotorsweep::apps

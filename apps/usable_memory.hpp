@@ -2,6 +2,7 @@
 // (ulimit -v) or its control group's memory limit says so.
 #pragma once
 
+#include <optional>
 #include <string>
 
 namespace rotorsweep::apps {
@@ -10,8 +11,12 @@ namespace rotorsweep::apps {
 /// memory.limit_in_bytes); limits that are not set do not count.
 double usable_memory_bytes();
 
-/// Whether `bytes` fit in 80 % of usable_memory_bytes(); when not, says on stderr "error: <what> needs
-/// about X GiB<how>, more than 80 % of the Y GiB this process may use (...); <advice>" and returns false
+/// Where `bytes` do not fit in 80 % of usable_memory_bytes(): "<what> needs about X GiB<how>, more than
+/// 80 % of the Y GiB this process may use (...); <advice>".
+std::optional<std::string> memory_refusal(double bytes, const std::string& what, const std::string& how,
+                                          const std::string& advice);
+
+/// Whether `bytes` fit; when not, says memory_refusal's words on stderr after "error: " and returns false
 /// (the command then exits 2 before allocating).
 bool fits_in_memory(double bytes, const std::string& what, const std::string& how, const std::string& advice);
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <stdexcept>
 
@@ -29,9 +30,15 @@ void prepare_hdf5() {
 /// as ": <text>"; "" when the stack is empty.
 std::string innermost_error() {
   std::string text;
-  const auto first = [](unsigned n, const H5E_error2_t* error, void* out) -> herr_t {
-    if (n == 0 && error->desc) *static_cast<std::string*>(out) = error->desc;
-    return 0;
+  // no exception may cross HDF5's C frames (it would leave the library's lock and state behind): an
+  // allocation that fails here stops the walk
+  const auto first = [](unsigned n, const H5E_error2_t* error, void* out) noexcept -> herr_t {
+    try {
+      if (n == 0 && error->desc) *static_cast<std::string*>(out) = error->desc;
+      return 0;
+    } catch (...) {
+      return -1;
+    }
   };
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, first, &text);
   // an OS failure carries "..., errno = 28, error message = 'No space left on device', ...": keep that
@@ -196,14 +203,26 @@ bool Hdf5Location::has(const std::string& name) const {
 }
 
 std::vector<std::string> Hdf5Location::members() const {
-  std::vector<std::string> names;
-  const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
-    static_cast<std::vector<std::string>*>(out)->push_back(name);
-    return 0;
+  struct Collected {
+    std::vector<std::string> names;
+    std::exception_ptr failure;
+  } collected;
+  // no exception may cross HDF5's C frames (it would leave the library's lock and state behind): one
+  // thrown here (an allocation that fails) stops the iteration and is thrown again after it
+  const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* out) noexcept -> herr_t {
+    auto& into = *static_cast<Collected*>(out);
+    try {
+      into.names.push_back(name);
+      return 0;
+    } catch (...) {
+      into.failure = std::current_exception();
+      return -1;
+    }
   };
-  H5Literate(id(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names);
-  std::sort(names.begin(), names.end());
-  return names;
+  H5Literate(id(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &collected);
+  if (collected.failure) std::rethrow_exception(collected.failure);
+  std::sort(collected.names.begin(), collected.names.end());
+  return std::move(collected.names);
 }
 
 void Hdf5Location::flush() const {

@@ -80,6 +80,17 @@ void ResultFile::write_statistics(const ensemble::SweepStatistics& statistics) c
   file_.set_attribute("lane_occupancy", statistics.occupancy());
 }
 
+ensemble::SweepStatistics ResultFile::recorded_statistics(int threads, std::size_t lane_width) const {
+  ensemble::SweepStatistics recorded;
+  recorded.wall_seconds = file_.attribute_double("wall_seconds");
+  recorded.threads = recorded.wall_seconds > 0 ? int(file_.attribute_double("threads")) : threads;
+  recorded.lane_width =
+      recorded.wall_seconds > 0 ? std::size_t(file_.attribute_double("lane_width")) : lane_width;
+  recorded.lane_steps_busy = file_.attribute_double("lane_occupancy");  // a ratio: busy over one total
+  recorded.lane_steps_total = 1;
+  return recorded;
+}
+
 void ResultFile::keep_partial(std::size_t members_done, const ensemble::SweepStatistics& statistics) const {
   set_members_done(members_done);
   write_statistics(statistics);

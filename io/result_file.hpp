@@ -41,6 +41,9 @@ class ResultFile : public MemberTableFile {
   /// Writes each result (in any order) into the row of its member (`plan` gives the members),
   /// flushes, then marks the rows done and flushes again.
   void write_results(const ensemble::MemberPlan& plan, std::vector<ensemble::MemberResult> results) const;
+  /// The run statistics an earlier part of the run recorded (keep_partial): its wall time, threads, lane
+  /// width and occupancy; where none were recorded (that part was killed), `threads` and `lane_width`.
+  ensemble::SweepStatistics recorded_statistics(int threads, std::size_t lane_width) const;
   /// Run statistics, /curves computed from the file (not for shards), then complete = TRUE.
   void finish(const ensemble::SweepStatistics& statistics) const;
   /// Run statistics and members_done of a run that stopped early; complete stays FALSE. Like every

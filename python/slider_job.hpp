@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/run_needs.hpp"
 #include "background_job.hpp"
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/slider/slider_scene.hpp"
@@ -51,9 +52,13 @@ inline SliderJob::SliderJob(ensemble::SliderScene scene, int threads, const std:
     : scene_(std::move(scene)), output_(output), keep_(keep) {
   total_ = scene_.member_count();
   const int count = ensemble::thread_count(threads, "threads");
+  // as `rotorsweep slider` refuses, before any work: no GPU, too little memory, too little disk
+  apps::throw_refusal(apps::gpu_refusal(scene_.device));
+  apps::throw_refusal(apps::scan_memory_refusal(scene_, count));
   target_.emplace(output, std::vector<std::string>{provenance.scene_path}, io::Replaceable::hdf5, force,
                   keep);
   if (keep) refuse_earlier_partial(*target_, force);
+  apps::throw_refusal(apps::scan_disk_refusal(scene_, total_, false, target_->temporary()));
   file_.emplace(target_->temporary(), scene_, provenance);
   target_->claim_temporary();
   start([this, count] { run(count); });

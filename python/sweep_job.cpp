@@ -5,6 +5,7 @@
 #include <atomic>
 #include <filesystem>
 
+#include "apps/run_needs.hpp"
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/member_stream.hpp"
@@ -25,12 +26,18 @@ SweepJob::SweepJob(ensemble::Scene scene, int threads, const std::string& output
     : scene_(std::move(scene)) {
   total_ = ensemble::MemberPlan(scene_).size();
   const int count = ensemble::thread_count(threads, "threads");
+  // as `rotorsweep run` refuses, before any work: no GPU, too little memory (a result kept in memory
+  // counted too), too little disk
+  apps::throw_refusal(apps::gpu_refusal(scene_.device));
+  apps::throw_refusal(apps::sweep_memory_refusal(
+      scene_, count, output.empty() ? apps::sweep_disk_bytes(scene_, total_, false) : 0.0));
   if (output.empty()) {
     file_.emplace(io::ResultFile::in_memory(scene_, provenance));
   } else {
     const std::vector<std::string> inputs{provenance.scene_path};
     target_.emplace(output, inputs, io::Replaceable::hdf5, force, true);
     refuse_earlier_partial(*target_, force);  // as `rotorsweep run`: its members are not thrown away
+    apps::throw_refusal(apps::sweep_disk_refusal(scene_, total_, false, target_->temporary()));
     file_.emplace(target_->temporary(), scene_, provenance);
     target_->claim_temporary();
   }

@@ -9,7 +9,11 @@
 #include <fstream>
 #include <iterator>
 
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/sweep.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/result_file.hpp"
+#include "io/scene_parser.hpp"
 #include "support/cli.hpp"
 #include "support/full_disk.hpp"
 #include "support/result_datasets.hpp"
@@ -169,6 +173,40 @@ TEST_CASE("a killed shard resumes and merges to the unsharded file", "[apps][run
                   dir)
               .exit_code == 0);
   check_same_datasets(dir / "whole.h5", dir / "merged.h5");
+}
+
+TEST_CASE("a resume with every member done keeps the run's figures and says so", "[apps][run][resume]") {
+  const auto dir = scratch_directory("resume-all-done");
+  const auto scene_path = write_text(dir / "small.toml", long_scene);
+  const auto whole = run_cli("run '" + scene_path.string() + "' -q -o '" + (dir / "whole.h5").string() + "'", dir);
+  REQUIRE(whole.exit_code == 0);
+  const auto written = Hdf5Location::open_file((dir / "whole.h5").string());
+  // a run killed after its last members reached the file, before it recorded its statistics: every row done
+  const auto scene = rotorsweep::io::parse_scene_file(scene_path.string());
+  {
+    const rotorsweep::io::ResultFile file(
+        (dir / "out.h5.partial").string(), scene,
+        rotorsweep::io::Provenance{scene_path.string(), written.attribute_string("version"),
+                                   written.attribute_string("revision"), "cpu", written.attribute_string("isa")});
+    const rotorsweep::ensemble::MemberPlan plan(scene);
+    std::vector<rotorsweep::ensemble::MemberResult> results;
+    rotorsweep::ensemble::run_members(
+        scene, {plan.size(), [&](std::size_t k) { return plan[k]; }}, {.threads = 1},
+        [&](rotorsweep::ensemble::MemberResult&& result) { results.push_back(std::move(result)); });
+    file.write_results(plan, std::move(results));
+  }
+  REQUIRE(rows_done(dir / "out.h5.partial") == long_scene_members);
+  const auto resumed =
+      run_cli("run '" + scene_path.string() + "' -o '" + (dir / "out.h5").string() + "' --resume", dir);
+  INFO(resumed.output);
+  REQUIRE(resumed.exit_code == 0);
+  CHECK_THAT(resumed.output, Catch::Contains("800 members done, 0 to run") &&
+                                 Catch::Contains("800 members, all run before this resume (their run time was "
+                                                 "not recorded)"));
+  CHECK(resumed.output.find("no members run") == std::string::npos);
+  check_same_datasets(dir / "whole.h5", dir / "out.h5");
+  const auto out = Hdf5Location::open_file((dir / "out.h5").string());
+  CHECK(out.attribute_double("lane_width") == written.attribute_double("lane_width"));  // not 1
 }
 
 TEST_CASE("a disk that fills up mid-run keeps the finished members for --resume",

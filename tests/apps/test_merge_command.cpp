@@ -84,7 +84,10 @@ TEST_CASE("shards that do not make one plan are refused", "[apps][merge]") {
   // shard 2 edited: one row not done (complete still TRUE); and a shard index beyond the count
   std::filesystem::copy_file(dir / "s2.h5", dir / "edited.h5");
   std::filesystem::copy_file(dir / "s2.h5", dir / "seventh.h5");
+  std::filesystem::copy_file(dir / "s2.h5", dir / "stopped.h5");
   {
+    rotorsweep::io::Hdf5Location::open_file_for_writing((dir / "stopped.h5").string())
+        .set_flag("complete", false);
     const auto edited = rotorsweep::io::Hdf5Location::open_file_for_writing((dir / "edited.h5").string());
     const signed char not_done = 0;
     edited.open_group("members").write_rows("done", {1}, &not_done);
@@ -103,6 +106,8 @@ TEST_CASE("shards that do not make one plan are refused", "[apps][merge]") {
       {s1 + " " + quoted(dir / "absent.h5"), "does not exist"},
       {s1 + " " + quoted(dir / "edited.h5"), "row 1 is not marked done"},
       {s1 + " " + quoted(dir / "seventh.h5"), "shard_index 7 and shard_count 2 do not name a shard"},
+      {s1 + " " + quoted(dir / "stopped.h5"), "is incomplete: its run stopped early; finish it with rotorsweep "
+                                              "run '" + (dir / "scene.toml").string() + "' --shard 2/2 -o OUT.h5 --resume"},
   };
   for (const auto& c : cases) {
     INFO(c.shards);
@@ -111,6 +116,15 @@ TEST_CASE("shards that do not make one plan are refused", "[apps][merge]") {
     CHECK_THAT(result.output, Catch::Contains(c.message));
     CHECK_FALSE(std::filesystem::exists(dir / "out.h5"));
   }
+  // the header names a shard's first members, or says it has none
+  const auto one = run_cli("run " + scene + " --shard 288/289 -o " + quoted(dir / "one.h5"), dir);
+  CHECK_THAT(one.output, Catch::Contains("shard 288/289: member 287 of the plan's 288\n"));
+  const auto none = run_cli("run " + scene + " --shard 289/289 -o " + quoted(dir / "none.h5"), dir);
+  CHECK_THAT(none.output, Catch::Contains("shard 289/289: no members (the plan has 288)\n"));
+  const auto many = run_cli("run " + scene + " --shard 2/100 -o " + quoted(dir / "many.h5"), dir);
+  CHECK_THAT(many.output, Catch::Contains("shard 2/100: members 1, 101, 201 of the plan's 288\n"));
+  const auto more = run_cli("run " + scene + " --shard 2/80 -o " + quoted(dir / "more.h5"), dir);
+  CHECK_THAT(more.output, Catch::Contains("shard 2/80: members 1, 81, 161, ... of the plan's 288\n"));
   for (const char* bad : {"0/2", "3/2", "1/0", "a/2", "1/2x", "1", "1/99999999999999999999", "1/-1", "-1/2",
                           "+1/2", " 1/2", "1/1e3", "1/2000000000"}) {
     INFO(bad);

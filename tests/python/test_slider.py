@@ -299,3 +299,48 @@ def test_one_speed_and_damping_are_scalar_coordinates(tmp_path):
     ds = rotorsweep.slider(dict(SMALL, slider={"columns": 3, "rows": 2}), threads=1, progress=False)
     assert "speed" not in ds.dims and float(ds["speed"]) == 8e-3 and float(ds["damping"]) == 2.5e-6
     assert ds["time"].dims == ("time",)
+
+
+#: slider scenes `rotorsweep slider` refuses before any work (memory under a 3 GB address-space limit),
+#: and the words it says
+REFUSED = {
+    "memory": ('[slider]\ncolumns = 100\nrows = 100\n[sweep]\nseparation = 8e-3\n[numerics]\n'
+               'linear_solver = "dense"\n', "GiB to work in"),
+    "disk": ("[sweep]\nseparation = { from = 5e-3, to = 13e-3, count = 1000 }\n[initial]\nreplicas = 1000\n"
+             "[observables]\nsamples_per_period = 1000\n", "on disk"),
+    "gpu": ('[sweep]\nseparation = 8e-3\n[numerics]\ndevice = "gpu"\n', 'numerics.device = "gpu"'),
+}
+
+LIMITED = """
+import resource, sys, rotorsweep
+resource.setrlimit(resource.RLIMIT_AS, (3 << 30, 3 << 30))
+try:
+    rotorsweep.slider(sys.argv[1], output=sys.argv[2], progress=False)
+except ValueError as error:
+    print(error)
+"""
+
+
+@pytest.mark.parametrize("case", sorted(REFUSED))
+def test_slider_refuses_what_the_command_line_refuses_in_its_words_before_any_work(case, tmp_path):
+    text, words = REFUSED[case]
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text)
+    out = tmp_path / "out.h5"
+    limit = "ulimit -v 3145728; " if case == "memory" else ""
+    cli = subprocess.run(f"{limit}'{os.environ['ROTORSWEEP_EXECUTABLE']}' slider '{scene}' -q -o '{out}'",
+                         shell=True, capture_output=True, text=True)
+    if case == "gpu" and cli.returncode == 0:
+        pytest.skip("this machine has a GPU")
+    assert cli.returncode == 2 and words in cli.stderr, cli.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml"]
+    expected = cli.stderr.strip().removeprefix("error: ")
+    for cli_words, python in (("--force", "force=True"), (" (or --device gpu)", ""),
+                              ("run with --device cpu", 'set numerics.device = "cpu"'), ("--threads", "threads")):
+        expected = expected.replace(cli_words, python)
+    # the same limit on the interpreter (the memory case): the module raises before any work
+    python = subprocess.run([sys.executable, "-c", LIMITED, str(scene), str(out)], capture_output=True, text=True,
+                            env=dict(os.environ, OPENBLAS_NUM_THREADS="1"))
+    assert python.returncode == 0, python.stderr
+    assert python.stdout.strip() == expected
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml"]

@@ -2,6 +2,9 @@
 results equal the command line's file bit for bit; output paths; thread-count invariance."""
 
 import io
+import os
+import subprocess
+import sys
 
 import h5py
 import numpy as np
@@ -229,3 +232,61 @@ def test_the_last_lines_count_symmetry_limited_members_apart(small_scene, capsys
     assert limited == 4 and int(ds.dissipation_resolved.where(ds.symmetry_limited == 1).sum()) == 0
     assert f"warning: {limited} members whose D the integration error decides" in err
     assert "not resolved" not in err and "tighten" not in err
+
+
+#: scenes `rotorsweep run` refuses before any work, and the words it says
+REFUSED = {
+    # a dense coupling table at N = 20000: tens of GiB per thread
+    "memory": ('[model]\nrows = 20000\ncouplings = "dipolar"\nrange = "all"\n[drive]\ng = 0.01\n'
+               '[sweep]\nA = 1\n', "GiB to work in"),
+    # within the member limit, but terabytes of results
+    "disk": ("[model]\nrows = 4096\n[drive]\ng = { from = 0.001, to = 1, count = 10000 }\n"
+             "[sweep]\nA = { from = 1, to = 2, count = 10000 }\n", "on disk"),
+    # a GPU this machine may not have (skipped where it has one)
+    "gpu": ('[model]\nrows = 8\n[drive]\ng = 0.01\n[sweep]\nA = 1\n[numerics]\ndevice = "gpu"\n',
+            'numerics.device = "gpu"'),
+}
+
+
+def python_words(message):
+    """The command line's refusal as the module words it (its options as the functions' arguments)."""
+    for cli, python in (("--force", "force=True"), (" (or --device gpu)", ""),
+                        ("run with --device cpu", 'set numerics.device = "cpu"'), ("--threads", "threads")):
+        message = message.replace(cli, python)
+    return message
+
+
+@pytest.mark.parametrize("case", sorted(REFUSED))
+def test_run_refuses_what_the_command_line_refuses_in_its_words_before_any_work(case, tmp_path, executable):
+    text, words = REFUSED[case]
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text)
+    cli = subprocess.run([executable, "run", str(scene), "-q", "-o", str(tmp_path / "out.h5")],
+                         capture_output=True, text=True)
+    if case == "gpu" and cli.returncode == 0:
+        pytest.skip("this machine has a GPU")
+    assert cli.returncode == 2 and words in cli.stderr, cli.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml"]
+    with pytest.raises(ValueError) as raised:
+        rotorsweep.run(scene, output=tmp_path / "out.h5", progress=False, quiet=True)
+    assert str(raised.value) == python_words(cli.stderr.strip().removeprefix("error: "))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml"]  # nothing made, nothing locked
+
+
+def test_a_refusal_under_an_address_space_limit_leaves_the_interpreter_whole(small_scene, tmp_path):
+    """Under ulimit -v 4 GB a sweep that needs more raises ValueError; the next run works and the
+    interpreter ends cleanly (no crash at exit)."""
+    script = (
+        "import resource, rotorsweep\n"
+        "resource.setrlimit(resource.RLIMIT_AS, (4 << 30, 4 << 30))\n"
+        f"big = {REFUSED['memory'][0]!r}\n"
+        "try:\n"
+        "    rotorsweep.run(big, threads=2, progress=False, quiet=True)\n"
+        "except ValueError as error:\n"
+        "    print('refused:', error)\n"
+        f"print(float(rotorsweep.run({small_scene!r}, threads=1, progress=False, quiet=True)['regime'].size) > 0)\n")
+    completed = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                               env=dict(os.environ, OPENBLAS_NUM_THREADS="1"), cwd=tmp_path)
+    assert completed.returncode == 0, completed.stderr
+    assert "refused: the sweep needs about" in completed.stdout
+    assert completed.stdout.strip().endswith("True")
