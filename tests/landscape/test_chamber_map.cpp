@@ -120,11 +120,14 @@ TEST_CASE("alignment classes change only across bifurcation curves and the align
 }
 
 TEST_CASE("cells on the two sides of each curve differ", "[landscape][chambers]") {
-  for (auto curve : all_curves) {
-    std::vector<Curve> others;
-    for (auto c : all_curves)
-      if (c != curve) others.push_back(c);
-    const auto near_others = scaled_points(others, 20000);
+  // each curve sampled once; a curve's neighbours are the other curves' samples
+  std::vector<std::vector<std::array<double, 2>>> samples;
+  for (auto c : all_curves) samples.push_back(scaled_points({c}, 20000));
+  for (std::size_t which = 0; which < std::size(all_curves); ++which) {
+    const auto curve = all_curves[which];
+    std::vector<std::array<double, 2>> near_others;
+    for (std::size_t other = 0; other < samples.size(); ++other)
+      if (other != which) near_others.insert(near_others.end(), samples[other].begin(), samples[other].end());
     const auto points = scaled_points({curve}, 401);
     int tested = 0;
     for (std::size_t k = 1; k + 1 < points.size(); ++k) {

@@ -2,7 +2,6 @@
 // dense matrix K = diag(d) − S P S − C Q C, and its inertia test sufficient (never positive where σ − K is
 // not) and tight enough to pass where σ clears K's largest eigenvalue by the bound's margin; in SIMD lanes
 // too.
-#include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -11,6 +10,7 @@
 #include "kernels/linear/lattice_convolution.hpp"
 #include "kernels/linear/spectral_stiffness.hpp"
 #include "kernels/models/slider/slider_pairs.hpp"
+#include "support/dense_reference.hpp"
 #include "support/kernel_scratch.hpp"
 
 using namespace rotorsweep::kernels;
@@ -103,7 +103,7 @@ TEST_CASE("spectral stiffness: σ − K solved by conjugate gradients as by a de
   const SliderGrid grid{12, 10};
   for (const double margin : {1.0, 10.0, 1000.0}) {
     const Case c = random_case(grid, 5, -4.0);
-    const double largest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(c.K).eigenvalues().maxCoeff();
+    const double largest = rotorsweep::testing::symmetric_eigenvalues(c.K).maxCoeff();
     // σ above the inertia bound (largest diagonal + at most 5.2 + 2.7 from the pairs' spectra)
     const double sigma = c.K.diagonal().maxCoeff() + 8.0 + margin;
     INFO("margin " << margin << ", largest eigenvalue of K " << largest);
@@ -117,7 +117,7 @@ TEST_CASE("spectral stiffness: σ − K solved by conjugate gradients as by a de
     s.K.solve(x.data());
     CHECK(s.K.positive_definite());
     const Eigen::MatrixXd A = sigma * Eigen::MatrixXd::Identity(c.K.rows(), c.K.cols()) - c.K;
-    const Eigen::VectorXd exact = A.ldlt().solve(to_eigen(b));
+    const Eigen::VectorXd exact = rotorsweep::testing::dense_solve(A, to_eigen(b));
     CHECK((to_eigen(x) - exact).norm() <= 1e-10 * exact.norm());
   }
 }
@@ -129,7 +129,7 @@ TEST_CASE("spectral stiffness: the inertia test is never positive where σ − K
     for (const double diagonal_mean : {-20.0, -3.0, 2.0}) {
       const SliderGrid grid{seed % 2 ? SliderGrid{7, 7} : SliderGrid{10, 5}};
       const Case c = random_case(grid, seed, diagonal_mean);
-      const double largest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(c.K).eigenvalues().maxCoeff();
+      const double largest = rotorsweep::testing::symmetric_eigenvalues(c.K).maxCoeff();
       auto s = stiffness<double>({c});
       for (const double offset : {-2.0, -0.1, 0.1, 1.0, 3.0, 6.0, 10.0, 20.0}) {
         const double sigma = largest + offset;

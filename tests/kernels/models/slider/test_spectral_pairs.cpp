@@ -1,15 +1,13 @@
 // The slider over spectral pairs (kernels/models/slider/spectral_pairs.hpp): f, the integrands and the energy
 // equal the direct pairs' to rounding over square, oblong, shifted and turned grids (a rigid turn leaves P
-// and Q as they are); its linearisation against central differences; a Rosenbrock run beside the dense one.
+// and Q as they are); its linearisation against central differences. Runs beside the direct pairs' are
+// checked through the sweep (tests/ensemble/slider/test_slider_matrix_free.cpp).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
 
 #include "kernels/models/slider/slider_model.hpp"
 #include "kernels/models/slider/spectral_pairs.hpp"
-#include "kernels/steppers/adaptive_integrator.hpp"
-#include "kernels/steppers/rosenbrock.hpp"
-#include "kernels/steppers/stepper_list.hpp"
 #include "support/kernel_scratch.hpp"
 #include "support/linearization_check.hpp"
 #include "support/slider_fixture.hpp"
@@ -71,49 +69,4 @@ TEST_CASE("spectral pairs: Jacobian, df/dt and integrand gradients match central
     const auto m = make_model<Spectral<false>>(grid, parameters<Spectral<false>>(s, 0.5));
     rotorsweep::testing::check_linearization(m, random_state(grid.rotors(), 8, 0.0), 3.1);
   }
-}
-
-namespace {
-
-/// A run from rows alternately near 0 and π over [0, t1] by rodas5p at rtol = atol = tol: the state, the
-/// impulse and the dissipation, and the attempts it took.
-template <class Model>
-std::vector<double> run(const Model& m, double t1, double tol) {
-  using Integrator = AdaptiveIntegrator<Model, RosenbrockStepper<Model>>;
-  const auto method = stepper_method<RosenbrockTableau>(*parse_stepper("rodas5p"));
-  auto integrator = rotorsweep::testing::integrator<Integrator>(m, method, Tolerances{tol, tol});
-  auto s = rotorsweep::testing::lane_state<double>(m.dimension(), Model::max_quadratures);
-  const std::size_t rotors = m.rotors(), columns = m.grid().columns;
-  for (std::size_t r = 0; r < rotors; ++r)
-    s.y[r] = ((r / columns) % 2 ? 3.0 : 0.0) + 0.01 * std::sin(double(7 * r));
-  s.t_stop = t1;
-  integrator.advance(m, s);
-  REQUIRE(s.status[0] == LaneStatus::ok);
-  std::vector<double> result(s.y, s.y + m.dimension());
-  result.push_back(s.quad[0]);
-  result.push_back(s.quad[1]);
-  return result;
-}
-
-/// Both pair sums over the rest and a substrate period of sliding at rtol 1e-9: the angles, the impulse and
-/// the dissipation agree to the tolerance's order.
-template <bool Inertial>
-void check_same_run(SliderGrid grid, double eta) {
-  INFO(grid.columns << " x " << grid.rows << (Inertial ? ", inertial" : ", overdamped"));
-  const Substrate s(grid, eta, 3 * grid.columns);
-  const auto direct = make_model<Direct<Inertial>>(grid, parameters<Direct<Inertial>>(s, 1.0));
-  const auto spectral = make_model<Spectral<Inertial>>(grid, parameters<Spectral<Inertial>>(s, 1.0));
-  const double t1 = 1.0 + two_pi;
-  const auto a = run(direct, t1, 1e-9), b = run(spectral, t1, 1e-9);
-  for (std::size_t k = 0; k < grid.rotors(); ++k) CHECK(b[k] == Approx(a[k]).margin(1e-6));
-  CHECK(b[b.size() - 2] == Approx(a[a.size() - 2]).epsilon(1e-6));  // the impulse
-  CHECK(b.back() == Approx(a.back()).epsilon(1e-6));                // the dissipation
-}
-
-}  // namespace
-
-TEST_CASE("spectral pairs: a Rosenbrock run follows the dense pairs' to the tolerance",
-          "[kernels][slider][fft]") {
-  check_same_run<false>({8, 8}, 0.56);
-  check_same_run<true>({7, 6}, 0.56);
 }
