@@ -121,6 +121,7 @@ void bind_sweep(py::module_& m) {
   py::list steppers;
   for (auto name : kernels::stepper_names) steppers.append(std::string(name));
   m.attr("steppers") = steppers;
+  m.attr("default_stepper") = std::string(kernels::default_stepper_name);
 
   py::class_<SweepJob> sweep_job(m, "SweepJob",
                                  "A sweep on its own thread; poll wait(), read done/total/periods, cancel().");

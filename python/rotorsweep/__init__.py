@@ -29,9 +29,12 @@ instruction_set = _core.instruction_set
 #: the paper's table of dissipation integrals: its members (rows, g, relax_periods,
 #: average_periods; per entry A, ic, R and whether it is in CP, where R depends on the draw)
 paper_table = _core.paper_table
+#: the steppers a scene can name (numerics.stepper), and the one a scene that names none runs
+steppers = list(_core.steppers)
+default_stepper = _core.default_stepper
 __all__ = ["run", "slider", "open", "members", "scene_text", "plan_axes", "critical_points", "chamber_map",
            "bifurcation_curve", "jump_events", "jump_friction", "quasi_static_friction", "two_angle_coefficients",
-           "A_minus", "A_star", "paper_table"]
+           "A_minus", "A_star", "paper_table", "steppers", "default_stepper"]
 
 #: how often run() and slider() look at their job (progress line, Ctrl-C), in seconds
 _POLL_SECONDS = 0.1

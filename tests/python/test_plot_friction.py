@@ -1,10 +1,12 @@
 """scripts/plot_friction.py: the line through each curve is the mean over its settled members only, error
 bars stand where dissipation_error is a bound, symmetry-limited members are drawn apart, and the legend
-stands beside the axes, clear of the data."""
+stands beside the axes, clear of the data; one panel per (N, rtol), never averaged across them; the
+nearest-neighbour reference curves only on files of that model, the title naming couplings and stepper."""
 
 import importlib.util
 import pathlib
 
+import h5py
 import numpy as np
 
 from conftest import run_cli
@@ -45,3 +47,39 @@ def test_the_figure_marks_the_flags_and_keeps_its_legend_beside_the_data(small_s
     assert legend.x0 >= axes.x1  # beside the axes, over no data
     fig.savefig(tmp_path / "friction.png")
     assert (tmp_path / "friction.png").stat().st_size > 10_000
+
+
+def test_nothing_is_averaged_across_sizes_or_tolerances(tmp_path, executable):
+    """A file over N = 4, 8 and rtol 1e-6, 1e-8: a panel each, every line the mean of its own panel's members."""
+    scene = tmp_path / "two.toml"
+    scene.write_text("[model]\nrows = [4, 8]\n[drive]\ng = [0.002]\n[sweep]\nA = [1.0, 3.0]\n"
+                     "[initial]\nkinds = [\"AFM\"]\n[numerics]\nrtol = [1e-6, 1e-8]\n"
+                     "[schedule]\nrelax_periods = 1\naverage_periods = 2\n")
+    result = run_cli(executable, scene, tmp_path / "two.h5")
+    fig = plot_friction().figure(str(result), jump=False)
+    titles = [ax.get_title() for ax in fig.axes]
+    assert sorted(titles) == ["N = 4, rtol = 1e-06", "N = 4, rtol = 1e-08", "N = 8, rtol = 1e-06", "N = 8, rtol = 1e-08"]
+    with h5py.File(result) as f:
+        members = f["members"]
+        rows, rtol, A, D = (members[name][:] for name in ("rows", "rtol", "A", "dissipation"))
+        settled = (members["regime"][:].astype(str) != "unsettled") & (members["status"][:].astype(str) == "ok")
+    for ax in fig.axes:
+        size, tolerance = (float(part.split("= ")[1]) for part in ax.get_title().split(", "))
+        line = next(l for l in ax.get_lines() if "mean over settled members" in l.get_label())
+        for a, y in zip(line.get_xdata(), line.get_ydata()):
+            own = (rows == size) & (rtol == tolerance) & (A == a) & settled
+            assert own.any() and y == np.mean(D[own] / size)  # its own members only, never the other N's or rtol's
+    assert "nearest neighbours, stepper rodas4p2, no disorder" in fig._suptitle.get_text()
+
+
+def test_reference_curves_only_for_the_model_they_belong_to(tmp_path, executable):
+    scene = tmp_path / "dipolar.toml"
+    scene.write_text("[model]\nrows = 4\ncouplings = \"dipolar\"\nboundary = \"open\"\n[drive]\ng = [0.002]\n"
+                     "[sweep]\nA = [1.0, 3.0]\n[initial]\nkinds = [\"AFM\"]\n"
+                     "[schedule]\nrelax_periods = 1\naverage_periods = 2\n")
+    result = run_cli(executable, scene, tmp_path / "dipolar.h5")
+    fig = plot_friction().figure(str(result), jump=True)
+    labels = [text.get_text() for ax in fig.axes for text in ax.get_legend().get_texts()]
+    assert not any("small A" in label or "large A" in label or "J(A)" in label for label in labels)
+    assert "dipolar couplings, open rows" in fig._suptitle.get_text()
+    assert "no reference curves" in fig._suptitle.get_text()
