@@ -59,7 +59,7 @@ class Runs:
         # W and S outside CP (the --estimator-rtol run) are quoted nowhere here: a looser run saves its time
         printed = self.run("table", "--estimator-rtol", "1e-9", "-o", str(out)).stdout
         with open(out, newline="") as f:
-            rows = list(csv.DictReader(f))
+            rows = list(csv.DictReader(line for line in f if not line.startswith("#")))  # past provenance
         below = printed[printed.index("CP entries over"):]  # the noise draws' lines, after the table
         draws = [line.split() for line in below.splitlines() if re.match(r"\s+[68]\s+A?FM\s+\d", line)]
         return {"rows": rows, "draws": draws}

@@ -25,7 +25,7 @@ def main():
         footer = subprocess.run([args.rotorsweep, "table", "--stepper", args.stepper, "--rtol", args.rtol, "--replicas", "1",
                                  "--disorder", args.disorder, "-o", str(path)],
                                 check=True, capture_output=True, text=True).stdout.splitlines()[-1]
-        rows = list(csv.DictReader(path.open()))
+        rows = list(csv.DictReader(line for line in path.open() if not line.startswith("#")))  # past provenance
     print("| A | IC | W | S | R | paper W | paper S | paper R | R/paper − 1 | steps/period | R error | R error is |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:

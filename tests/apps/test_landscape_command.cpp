@@ -197,6 +197,14 @@ struct TableRow {
   std::string ic, kind;
 };
 
+/// The provenance lines of a table's CSV ("# ..."), read up to and including the columns' names (`header`).
+std::string provenance(std::istream& in, std::string& header) {
+  std::string lines, line;
+  while (std::getline(in, line) && line.rfind("# ", 0) == 0) lines += line + "\n";
+  header = line;
+  return lines;
+}
+
 TableRow table_row(const std::string& line) {
   TableRow row;
   char ic[8] = {}, kind[24] = {};
@@ -219,9 +227,23 @@ TEST_CASE("table prints W and S that agree with R outside CP, beside the paper's
   REQUIRE(run.exit_code == 0);
   std::ifstream in(csv);
   std::string line;
-  std::getline(in, line);
+  const std::string made = provenance(in, line);
   CHECK(line ==
         "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,R_error_kind");
+  // how it was made: program, stepper, tolerances, window, disorder, what R_error means
+  CHECK_THAT(made, Catch::StartsWith("# rotorsweep table: the paper's dissipation integrals") &&
+                       Catch::Contains("# written by rotorsweep ") &&
+                       Catch::Contains("# stepper rodas4p2, rtol 1e-09 (W and S outside CP at rtol 1e-12), "
+                                       "triangular window over periods 3 and 4\n") &&
+                       Catch::Contains("# disorder: none\n") && Catch::Contains("# R_error: "));
+  // dev/unc only where the error bounds R: not for the symmetry-limited CP entries
+  for (const char* entry : {"    6  AFM", "    8   FM"}) {
+    const auto at = run.output.find(entry);
+    REQUIRE(at != std::string::npos);
+    const std::string row = run.output.substr(at, run.output.find('\n', at) - at);
+    INFO(row);
+    CHECK_THAT(row, Catch::EndsWith("       - symmetry-limited"));
+  }
   int outside_cp = 0;
   while (std::getline(in, line)) {
     INFO(line);
@@ -260,7 +282,9 @@ TEST_CASE("table --disorder: the CP entries' errors become bounds, their values 
   CHECK_THAT(run.output, Catch::Contains("disorder sigma_A = 1e-05 (realization 0 of seed 1)"));
   std::ifstream in(csv);
   std::string line;
-  std::getline(in, line);
+  CHECK_THAT(provenance(in, line), Catch::Contains("# disorder: sigma_A = 1e-05, seed 1 (realization 0)\n") &&
+                                       Catch::Contains("# stepper rodas4p2, rtol 1e-07 (W and S outside CP at "
+                                                       "rtol 1e-07), triangular window"));
   std::map<std::string, std::array<double, 3>> cp;  // A and start: R, its error, the paper's R
   while (std::getline(in, line)) {
     INFO(line);
@@ -301,7 +325,7 @@ TEST_CASE(
     CHECK_THAT(run.output, Catch::Contains(window + " window"));
     std::ifstream in(csv);
     std::string line;
-    std::getline(in, line);
+    CHECK_THAT(provenance(in, line), Catch::Contains(window + " window over periods 3 and 4"));
     std::vector<std::array<double, 4>> rows;  // A, W, S, R
     while (std::getline(in, line)) {
       double A = 0, W = 0, S = 0, R = 0;
