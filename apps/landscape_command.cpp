@@ -19,6 +19,8 @@
 #include "landscape/quasi_static_cycle.hpp"
 #include "progress_line.hpp"
 #include "remove_on_signal.hpp"
+#include "run_needs.hpp"
+#include "run_support.hpp"
 #include "usable_memory.hpp"
 
 namespace rotorsweep::apps {
@@ -133,14 +135,7 @@ int run_landscape_chambers(const LandscapeOptions& o) {
               << ")\n";
     return 2;
   }
-  // per cell: its counts, zone and chamber, the labelling's scratch, and the counts and a field written
-  const double cell_bytes =
-      sizeof(landscape::ChamberCell) + 5 * sizeof(std::int32_t) + 10 * sizeof(std::int64_t);
-  if (!fits_in_memory(
-          double(o.A_cells) * double(o.tau_cells) * cell_bytes, "landscape chambers",
-          " for its " + std::to_string(o.A_cells) + " × " + std::to_string(o.tau_cells) + " cells",
-          "use fewer --A-cells or --tau-cells"))
-    return 2;
+  if (refused(chamber_memory_refusal(o.A_cells, o.tau_cells))) return 2;
   const RemoveOnSignal on_start;  // a long coupling table comes first
   const landscape::ChamberGrid grid{o.A_min, o.A_max, o.A_cells, o.tau_cells, coefficients(o)};
   const std::size_t cells = std::size_t(grid.A_cells) * grid.tau_cells;
@@ -196,11 +191,7 @@ int run_landscape_chambers(const LandscapeOptions& o) {
 
 int run_landscape_curves(const LandscapeOptions& o) {
   if (!coefficients_usable(o)) return 2;
-  // a curve at a time: its points and the three columns written
-  const double point_bytes = sizeof(landscape::BifurcationPoint) + 3 * sizeof(double);
-  if (!fits_in_memory(double(o.samples) * point_bytes, "landscape curves",
-                      " for " + std::to_string(o.samples) + " samples per curve", "use fewer --samples"))
-    return 2;
+  if (refused(curve_memory_refusal(o.samples))) return 2;
   const RemoveOnSignal on_start;
   return write_landscape_file(o.output, o.force, "curves", [&](const io::Hdf5Location& file) {
     for (auto curve : landscape::all_curves) {

@@ -2,6 +2,7 @@
 // threads against usable_memory_bytes, their files' bytes against the disk's free space.
 #include "run_needs.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 
@@ -11,6 +12,8 @@
 #include "io/member_columns.hpp"
 #include "io/result_file.hpp"
 #include "io/slider_result_file.hpp"
+#include "landscape/bifurcation_curves.hpp"
+#include "landscape/chamber_map.hpp"
 #include "usable_memory.hpp"
 
 namespace rotorsweep::apps {
@@ -100,6 +103,21 @@ std::optional<std::string> scan_disk_refusal(const ensemble::SliderScene& scene,
                       what, partial,
                       "Split the scan (fewer separations or replicas per scene, or --shard) or switch off "
                       "observables.series");
+}
+
+std::optional<std::string> chamber_memory_refusal(int A_cells, int tau_cells) {
+  // per cell: its counts, zone and chamber, the labelling's scratch, and the counts and a field written
+  const double cell_bytes = sizeof(landscape::ChamberCell) + 5 * sizeof(std::int32_t) + 10 * sizeof(std::int64_t);
+  return memory_refusal(double(A_cells) * double(tau_cells) * cell_bytes, "landscape chambers",
+                        " for its " + std::to_string(A_cells) + " × " + std::to_string(tau_cells) + " cells",
+                        "use fewer --A-cells or --tau-cells");
+}
+
+std::optional<std::string> curve_memory_refusal(long long samples) {
+  // a curve at a time: its points and the three columns written
+  const double point_bytes = sizeof(landscape::BifurcationPoint) + 3 * sizeof(double);
+  return memory_refusal(double(samples) * point_bytes, "landscape curves",
+                        " for " + std::to_string(samples) + " samples per curve", "use fewer --samples");
 }
 
 }  // namespace rotorsweep::apps

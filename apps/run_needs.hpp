@@ -1,6 +1,6 @@
-// What a run or scan needs, refused before any work: memory to work in, disk for its file, a GPU. Each
-// check returns its refusal in the command line's words; `rotorsweep run`/`slider` print it (exit 2), the
-// Python module raises it as ValueError (RunRefused).
+// What a run, scan or landscape needs, refused before any work: memory to work in, disk for its file, a GPU.
+// Each check returns its refusal in the command line's words; the commands print it (exit 2), the Python
+// module raises it as ValueError (RunRefused).
 #pragma once
 
 #include <cstddef>
@@ -45,5 +45,11 @@ std::optional<std::string> scan_memory_refusal(const ensemble::SliderScene& scen
 /// on the disk of `partial`.
 std::optional<std::string> scan_disk_refusal(const ensemble::SliderScene& scene, std::size_t members, bool shard,
                                              const std::string& partial);
+
+/// Where a chamber map of A_cells × tau_cells cells (its counts, labels and written fields) does not fit in
+/// memory.
+std::optional<std::string> chamber_memory_refusal(int A_cells, int tau_cells);
+/// Where a curve of `samples` points (and its written columns) does not fit in memory.
+std::optional<std::string> curve_memory_refusal(long long samples);
 
 }  // namespace rotorsweep::apps

@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "apps/run_needs.hpp"
 #include "bindings.hpp"
 #include "ensemble/rows/coupling_table.hpp"
 #include "landscape/bifurcation_curves.hpp"
@@ -47,6 +48,7 @@ py::dict critical_point_arrays(double A, double tau) {
 }
 
 py::dict chamber_arrays(double A_min, double A_max, int A_cells, int tau_cells) {
+  apps::throw_refusal(apps::chamber_memory_refusal(A_cells, tau_cells));  // as `landscape chambers`
   ChamberMap map;
   {
     const py::gil_scoped_release unlocked;
@@ -97,6 +99,7 @@ py::dict jump_event_values(double A) {
 }
 
 py::dict curve_arrays(const std::string& name, int count, double A_max) {
+  apps::throw_refusal(apps::curve_memory_refusal(count));  // as `landscape curves`
   for (Curve curve : all_curves) {
     if (curve_name(curve) != name) continue;
     std::vector<double> A, tau, parameter;

@@ -21,7 +21,10 @@ std::string python_words(std::string message) {
   for (const auto& [cli, python] : {std::pair<std::string, std::string>{"--force", "force=True"},
                                     {" (or --device gpu)", ""},
                                     {"run with --device cpu", "set numerics.device = \"cpu\""},
-                                    {"--threads", "threads"}})
+                                    {"--threads", "threads"},
+                                    {"--A-cells", "A_cells"},
+                                    {"--tau-cells", "tau_cells"},
+                                    {"--samples", "count"}})
     for (std::size_t at; (at = message.find(cli)) != std::string::npos;) message.replace(at, cli.size(), python);
   return message;
 }

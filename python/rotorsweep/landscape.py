@@ -28,8 +28,10 @@ def chamber_map(A_min=0.0, A_max=12.0, A_cells=400, tau_cells=300):
     """The chamber raster over (A, τ ∈ [0, π/2]) at cell centres, as an xarray.Dataset with
     counts of minima, saddles, maxima and degenerate points per cell, counts by Morse type and
     alignment class, and the zone and chamber labels (−1 on degenerate cells). Runs on all cores."""
-    if not (A_cells > 0 and tau_cells > 0 and A_max > A_min):
-        raise ValueError("chamber_map: need A_cells > 0, tau_cells > 0 and A_max > A_min")
+    # the command line's bounds (`landscape chambers --A-cells, --tau-cells`); memory is checked before any work
+    if not (2 <= A_cells <= 100000 and 2 <= tau_cells <= 100000 and A_max > A_min):
+        raise ValueError(f"chamber_map: need 2 <= A_cells, tau_cells <= 100000 and A_max > A_min "
+                         f"(got {A_cells}, {tau_cells}, {A_min}, {A_max})")
     raw = _core.chamber_map(float(A_min), float(A_max), int(A_cells), int(tau_cells))
     cell = ("A", "tau")
     described = {
@@ -53,6 +55,8 @@ def chamber_map(A_min=0.0, A_max=12.0, A_cells=400, tau_cells=300):
 def bifurcation_curve(name, count=2000, A_max=np.inf):
     """`count` points of a curve in the folded (A, τ) plane: arrays A, tau, parameter. Names:
     fm_tangential, fm_transverse, off_diagonal_plus, off_diagonal_minus, alignment."""
+    if not 2 <= count <= 10_000_000:  # the command line's bounds (`landscape curves --samples`)
+        raise ValueError(f"bifurcation_curve: need 2 <= count <= 10000000 (got {count})")
     return _core.bifurcation_curve(name, int(count), float(min(A_max, 1e300)))
 
 

@@ -1,5 +1,8 @@
 """The landscape from Python against the C++ tests' values: A_−, A_*, J(A_−) = 4.9757…, the
-minima at A = 1 and 11, and the paper's seven zones of the chamber map."""
+minima at A = 1 and 11, and the paper's seven zones of the chamber map; what the command line refuses,
+refused in its words before any work."""
+
+import subprocess
 
 import numpy as np
 import pytest
@@ -66,3 +69,19 @@ def test_coupling_tables_landscape():
     assert lo4 < lo and hi4 > hi + 4
     J4, _ = rotorsweep.quasi_static_friction([lo4 - 0.5, 10.0, hi4 + 0.5], k)
     assert J4[0] == 0 and J4[1] > 1 and J4[2] == 0
+
+
+def test_refused_as_the_command_line_refuses_before_any_work(executable, tmp_path):
+    """The command line's bounds as ValueError, and a map too large for memory in its words."""
+    with pytest.raises(ValueError, match="2 <= A_cells, tau_cells <= 100000"):
+        rotorsweep.chamber_map(A_cells=1_000_000)
+    with pytest.raises(ValueError, match="2 <= count <= 10000000"):
+        rotorsweep.bifurcation_curve("alignment", count=10**9)
+    cli = subprocess.run([executable, "landscape", "chambers", "--A-cells", "100000", "--tau-cells", "100000",
+                          "-q", "-o", str(tmp_path / "c.h5")], capture_output=True, text=True)
+    assert cli.returncode == 2 and "landscape chambers needs about" in cli.stderr, cli.stderr
+    with pytest.raises(ValueError) as raised:
+        rotorsweep.chamber_map(A_cells=100_000, tau_cells=100_000)
+    expected = cli.stderr.strip().removeprefix("error: ").replace("--A-cells", "A_cells")
+    assert str(raised.value) == expected.replace("--tau-cells", "tau_cells")
+    assert not (tmp_path / "c.h5").exists()
