@@ -65,11 +65,24 @@ def jump_events(A):
     return _core.jump_events(float(A))
 
 
+def _usable(coefficients):
+    """(a, b, c) as floats; ValueError in the command line's words (`landscape --coefficients`) where they
+    give no CP window, before any work."""
+    a, b, c = (float(x) for x in coefficients)
+    lo, hi = _core.cp_interval(a, b, c)
+    if not (np.isfinite(lo) and np.isfinite(hi)):
+        raise ValueError(f"coefficients: a, b, c = {a:g}, {b:g}, {c:g} give no CP window (A_- = {lo:g}, "
+                         f"A_* = {hi:g}); give coefficients with a finite window, or leave them out (nearest "
+                         "neighbours, or two_angle_coefficients)")
+    return a, b, c
+
+
 def jump_friction(A, coefficients=(1.5, 2.0, 0.0)):
     """The quasi-static CP friction J(A) = ΔH⊥ + ΔH_low per half period by the paper's recipe (array
     in, array out; NaN outside [A_−, A_*] and where its sequence of jumps does not occur). With
-    `coefficients` (a_M, b_M, c_M) the landscape of a coupling table (two_angle_coefficients)."""
-    a, b, c = (float(x) for x in coefficients)
+    `coefficients` (a_M, b_M, c_M) the landscape of a coupling table (two_angle_coefficients); ones without
+    a CP window raise ValueError."""
+    a, b, c = _usable(coefficients)
     return _core.jump_friction(np.asarray(A, dtype=float), a, b, c)
 
 
@@ -77,8 +90,8 @@ def quasi_static_friction(A, coefficients=(1.5, 2.0, 0.0)):
     """The friction J (energy per row and period, the g → 0 limit of D/N) and the mean alignment of
     the quasi-static cycle from the AFM state, for each A: a pair of arrays. It follows a minimum of
     H_r and jumps down the gradient flow where the minimum ends, so it holds also where the
-    recipe's sequence does not occur (docs/model.md §8)."""
-    a, b, c = (float(x) for x in coefficients)
+    recipe's sequence does not occur (docs/model.md §8). Coefficients without a CP window raise ValueError."""
+    a, b, c = _usable(coefficients)
     A = np.atleast_1d(np.asarray(A, dtype=float))
     return _core.quasi_static_cycle(A.tolist(), a, b, c)
 
@@ -97,5 +110,7 @@ def two_angle_coefficients(range, row_length="infinite", rows=None):
     all_rows = range == "all"
     if all_rows and not rows:
         raise ValueError("two_angle_coefficients: range 'all' needs rows")
+    if not all_rows and not 1 <= int(range) <= 100000:  # the command line's bounds (`couplings --range`)
+        raise ValueError(f"two_angle_coefficients: range must be 1 … 100000 or 'all' (got {range})")
     length = 0 if row_length == "infinite" else int(row_length)
     return _core.two_angle_coefficients(0 if all_rows else int(range), all_rows, length, int(rows or 0))

@@ -85,3 +85,13 @@ def test_refused_as_the_command_line_refuses_before_any_work(executable, tmp_pat
     expected = cli.stderr.strip().removeprefix("error: ").replace("--A-cells", "A_cells")
     assert str(raised.value) == expected.replace("--tau-cells", "tau_cells")
     assert not (tmp_path / "c.h5").exists()
+
+
+def test_coefficients_without_a_cp_window_and_a_range_out_of_bounds_are_value_errors():
+    """As `landscape --coefficients 0,0,0` and `couplings --range 0` are exit 2 (no hang, no NaN)."""
+    for call in (lambda: rotorsweep.quasi_static_friction([5.0], (0, 0, 0)),
+                 lambda: rotorsweep.jump_friction(5.0, (0, 0, 0))):
+        with pytest.raises(ValueError, match="give no CP window"):
+            call()
+    with pytest.raises(ValueError, match="range must be 1"):
+        rotorsweep.two_angle_coefficients(0)
