@@ -15,7 +15,8 @@ namespace rotorsweep::kernels {
 /// One member's state on a team: θ, the team's array, and what every rank keeps alike (each its own
 /// copy): the quadratures, time, step size, stopping time, counts and status.
 struct TeamMemberState {
-  static constexpr std::size_t max_quadratures = 8;  ///< the row models' Integrals::max_count
+  /// The most quadratures a member on a team or a warp carries (the TeamModel concept checks a model's).
+  static constexpr std::size_t max_quadratures = 8;
   double* y = nullptr;
   double quad[max_quadratures] = {};
   double t = 0.0, h = 0.0, t_stop = 0.0;  ///< h = 0 asks for an automatic first step

@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <utility>
 
+#include "kernels/steppers/team_member_form.hpp"
+
 namespace rotorsweep::kernels {
 
 /// The stage matrix of Model on a team of kind Team, given by the model's team header (a
@@ -20,12 +22,13 @@ using TeamStageMatrix = typename TeamStageMatrixOf<Model, Team>::type;
 ///   team_units(model)  the units its ranks split among them (team_rows): rows, or the slider's rotors
 ///   team_evaluate(team, model, work, y, t, f, partial, stride, qdot)  f(y, t), each rank its units,
 ///                      and the integrands from team sums of the ranks' parts (at partial + stride · rank)
+/// Its quadratures fit the team's state (TeamMemberState::max_quadratures: every rank's copy).
 template <class Model, class Team>
 concept TeamModel = requires(Team& team, const Model& model, typename Model::Workspace& work, const double* y,
                              double* out, std::size_t stride, double t) {
   { team_units(model) } -> std::convertible_to<std::size_t>;
   team_evaluate(team, model, work, y, t, out, out, stride, out);
-};
+} && (Model::max_quadratures <= TeamMemberState::max_quadratures);
 
 /// A TeamModel that a linearly implicit stepper can run: its TeamStageMatrix and
 ///   team_linearize(team, model, work, y, f, J, df_dt, scratch, dq_dy, partial, stride, t)  J into the

@@ -20,7 +20,7 @@ namespace rotorsweep::kernels {
 /// counts and status.
 template <class V, std::size_t R>
 struct WarpMemberState {
-  static constexpr std::size_t kinds = Integrals::max_count;
+  static constexpr std::size_t kinds = TeamMemberState::max_quadratures;
   V y[R];
   double quad[kinds] = {};
   double t = 0.0, h = 0.0, t_stop = 0.0;  ///< h = 0 asks for an automatic first step
