@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Basin fractions against A: per curve point the fraction of members in each regime (FM, AFM,
 CP, DW, SA where observables.slip_kinds is on, unsettled) and failed, each as its own line with its
-Wilson 95 % interval drawn as an error bar at the fraction's own value; one panel per initial noise
-value, the legend beside the panels (docs/model.md §3, "Basin fractions").
+Wilson 95 % interval drawn as an error bar at the fraction's own value; one panel per curve (initial
+kind, noise and offset, N, g, rtol: never mixed), the legend beside the panels (docs/model.md §3, "Basin
+fractions").
 Usage: plot_basins.py RESULT.h5 OUT.png [--kind random]"""
 import argparse
 import sys
@@ -30,15 +31,20 @@ def figure(h5_path, kind):
         keep = ic == kind if kind else np.ones(len(ic), bool)
         if not keep.any():
             sys.exit(f"error: no curve points with initial kind {kind!r} (kinds: {sorted(set(ic))})")
-        A, noise = c["A"][:][keep], c["noise"][:][keep]
+        A = c["A"][:][keep]
+        # a panel per curve: its start (kind, noise, offset) and its N, g and rtol, never mixed
+        axes_of = {name: (c[name].asstr()[:] if name == "ic" else c[name][:])[keep]
+                   for name in ("ic", "noise", "offset", "rows", "g", "rtol")}
         data = {name: (c[f"fraction_{name}"][:][keep], c[f"fraction_{name}_low"][:][keep],
                        c[f"fraction_{name}_high"][:][keep]) for name, _ in CATEGORIES
                 if f"fraction_{name}" in c}  # SA: only with observables.slip_kinds
-        members = int(c["members"][:][keep][0])
-    noises = np.unique(noise)
-    fig, axes = plt.subplots(1, len(noises), figsize=(6.5 * len(noises) + 1.6, 4.5), squeeze=False)
-    for ax, eta in zip(axes[0], noises):
-        sel = noise == eta
+        members = c["members"][:][keep]
+    keys = list(zip(*(axes_of[name].tolist() for name in axes_of)))
+    panels = sorted(set(keys))
+    varying = {name: len(set(values.tolist())) > 1 for name, values in axes_of.items()}
+    fig, axes = plt.subplots(1, len(panels), figsize=(6.5 * len(panels) + 1.6, 4.5), squeeze=False)
+    for ax, panel in zip(axes[0], panels):
+        sel = np.array([key == panel for key in keys])
         order = np.argsort(A[sel])
         a = A[sel][order]
         for name, colour in CATEGORIES:
@@ -52,8 +58,15 @@ def figure(h5_path, kind):
         ax.set_xlabel("A")
         ax.set_ylabel("fraction of members")
         ax.set_ylim(-0.02, 1.02)
-        noise_text = f", η = {eta:g}" if kind in ("FM", "AFM", "") else ""  # random and exact starts have no η
-        ax.set_title(f"{kind or 'all'} starts{noise_text}, {members} per A (Wilson 95 %)")
+        start, eta, theta0, size, g, rtol = panel
+        parts = [f"{start} starts"]
+        if start in ("FM", "AFM"):  # random and exact starts have no η or θ0
+            parts.append(f"η = {eta:g}")
+            if varying["offset"]:
+                parts.append(f"θ0 = {theta0:g}")
+        parts += [text for name, text in (("rows", f"N = {size}"), ("g", f"g = {g:g}"), ("rtol", f"rtol = {rtol:g}"))
+                  if varying[name]]
+        ax.set_title(", ".join(parts) + f", {int(members[sel][0])} per A (Wilson 95 %)", fontsize=9)
     axes[0][-1].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
     fig.tight_layout()
     return fig

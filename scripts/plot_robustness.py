@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Robustness to the initial condition: D/N against A for each initial noise η (mean over the
 replicas ± its standard error), one panel per initial kind (random and exact starts have no η: one
-curve), with the FM→CP and CP→AFM transitions (where the CP fraction crosses 1/2) marked per η: between grid points by linear interpolation, or
+curve), a line per N, g and rtol where the file has several (never one line through them), with the FM→CP and CP→AFM transitions (where the CP fraction crosses 1/2) marked per η: between grid points by linear interpolation, or
 with --bisect located by bisection in A, running the file's own scene (its replicas, schedule and
 numerics) at one A at a time until the bracket is narrower than --tolerance.
 Usage: plot_robustness.py RESULT.h5 OUT.png [--bisect] [--tolerance 1e-3]"""
@@ -28,8 +28,9 @@ def crossings(A, fraction):
     return out
 
 
-def cp_fraction(scene, A, kind, eta, theta0):
-    """The CP fraction of the scene's replicas at one A, one initial kind, noise η and offset θ0."""
+def cp_fraction(scene, A, kind, eta, theta0, size, g, rtol):
+    """The CP fraction of the scene's replicas at one A, one initial kind, noise η and offset θ0, one N, g
+    and rtol."""
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "build" / "python"))
     import rotorsweep
 
@@ -38,18 +39,21 @@ def cp_fraction(scene, A, kind, eta, theta0):
     one["initial"]["kinds"] = [kind]
     one["initial"]["noise"] = [float(eta)]
     one["initial"]["offset"] = [float(theta0)]
+    one.setdefault("model", {})["rows"] = [int(size)]
+    one.setdefault("drive", {})["g"] = [float(g)]
+    one.setdefault("numerics", {})["rtol"] = [float(rtol)]
     one.pop("output", None)
     ds = rotorsweep.run(one, progress=False, quiet=True)
     regime = ds["regime"].values.astype(str)
     return float(np.mean(regime == "CP"))
 
 
-def bisect(scene, low, high, f_low, kind, eta, theta0, tolerance):
-    """The A in [low, high] where the CP fraction crosses 1/2 (f_low: its value at low), to tolerance;
-    returns the bracket."""
+def bisect(scene, low, high, f_low, curve, tolerance):
+    """The A in [low, high] where the CP fraction of `curve` (kind, η, θ0, N, g, rtol) crosses 1/2 (f_low: its
+    value at low), to tolerance; returns the bracket."""
     while high - low > tolerance:
         mid = 0.5 * (low + high)
-        f_mid = cp_fraction(scene, mid, kind, eta, theta0)
+        f_mid = cp_fraction(scene, mid, *curve)
         if (f_mid - 0.5) * (f_low - 0.5) > 0:
             low, f_low = mid, f_mid
         else:
@@ -64,6 +68,7 @@ def main(h5_path, png_path, bisection=False, tolerance=1e-3):
         scene = tomllib.loads(f.attrs["scene"])
         c = f["curves"]
         A, noise, offset, rows = c["A"][:], c["noise"][:], c["offset"][:], c["rows"][:]
+        g, rtol = c["g"][:], c["rtol"][:]
         ic = c["ic"].asstr()[:]
         d, sem = c["dissipation_mean"][:] / rows, c["dissipation_sem"][:] / rows
         cp = c["fraction_CP"][:] if "fraction_CP" in c else None
@@ -72,13 +77,19 @@ def main(h5_path, png_path, bisection=False, tolerance=1e-3):
     lines = []
     for ax, kind in zip(axes[0], kinds):
         uses_noise = kind in ("FM", "AFM")  # random and exact starts have no η or θ0 (one curve)
-        starts = sorted({(e, o) for e, o, k in zip(noise, offset, ic) if k == kind})
-        several_offsets = len({o for _, o in starts}) > 1
-        for eta, theta0 in starts:
-            sel = (ic == kind) & (noise == eta) & (offset == theta0)
+        # a line per curve (η, θ0, N, g, rtol): never one through points of different sizes or tolerances
+        starts = sorted({(e, o, n, gv, r) for e, o, n, gv, r, k in zip(noise, offset, rows, g, rtol, ic) if k == kind})
+        several_offsets = len({o for _, o, *_ in starts}) > 1
+        several = {i: len({start[i] for start in starts}) > 1 for i in (2, 3, 4)}
+        for eta, theta0, size, g_value, tolerance_value in starts:
+            sel = (ic == kind) & (noise == eta) & (offset == theta0) & (rows == size) & (g == g_value) & \
+                (rtol == tolerance_value)
             order = np.argsort(A[sel])
             a = A[sel][order]
-            name = (f"η = {eta:g}" + (f", θ0 = {theta0:g}" if several_offsets else "")) if uses_noise else ""
+            parts = [f"η = {eta:g}"] + ([f"θ0 = {theta0:g}"] if several_offsets else []) if uses_noise else []
+            parts += [text for i, text in ((2, f"N = {size}"), (3, f"g = {g_value:g}"), (4, f"rtol = {tolerance_value:g}"))
+                      if several[i]]
+            name = ", ".join(parts)
             line = ax.errorbar(a, d[sel][order], yerr=np.nan_to_num(sem[sel][order]), marker=".", ms=3, lw=1,
                                capsize=2, label=name or f"{kind} starts")
             what = f"{kind} {name}".strip()
@@ -87,7 +98,8 @@ def main(h5_path, png_path, bisection=False, tolerance=1e-3):
                 for x in crossings(a, fraction):
                     if bisection:
                         i = int(np.searchsorted(a, x)) - 1
-                        low, high = bisect(scene, a[i], a[i + 1], fraction[i], kind, eta, theta0, tolerance)
+                        low, high = bisect(scene, a[i], a[i + 1], fraction[i],
+                                           (kind, eta, theta0, size, g_value, tolerance_value), tolerance)
                         x = 0.5 * (low + high)
                         lines.append(f"{what}: CP fraction crosses 1/2 at A = {x:.4f} "
                                      f"(bisected to [{low:.4f}, {high:.4f}])")

@@ -54,3 +54,26 @@ def test_each_fraction_and_its_interval_at_its_own_value(tmp_path, executable):
     assert checked >= 2
     fig.canvas.draw()
     assert ax.get_legend().get_window_extent().x0 >= ax.get_window_extent().x1  # beside the panel
+
+
+def test_sizes_are_never_mixed_in_one_line(tmp_path, executable):
+    """A file over N = 4 and 6: a panel each, every fraction the curve point's of its own N."""
+    scene = tmp_path / "two.toml"
+    scene.write_text(SCENE.replace("rows = 6", "rows = [4, 6]").replace("replicas = 6", "replicas = 2"))
+    result = run_cli(executable, scene, tmp_path / "two.h5")
+    spec = importlib.util.spec_from_file_location("plot_basins", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    fig = module.figure(str(result), "random")
+    titles = [ax.get_title() for ax in fig.axes]
+    assert [title.split(", ")[:2] for title in titles] == [["random starts", "N = 4"], ["random starts", "N = 6"]]
+    with h5py.File(result) as f:
+        c = f["curves"]
+        rows, A = c["rows"][:], c["A"][:]
+        fractions = {name: c[f"fraction_{name}"][:] for name in ("AFM", "CP", "FM", "unsettled")}
+    for ax, size in zip(fig.axes, (4, 6)):
+        own = rows == size
+        for container in ax.containers:
+            line = container[0]
+            expected = fractions[container.get_label()][own][np.argsort(A[own])]
+            np.testing.assert_array_equal(line.get_ydata(), expected)

@@ -1,6 +1,7 @@
 """scripts/plot_robustness.py: the figure is written, and with --bisect each transition lies inside
 the grid bracket the crossing of 1/2 was found in, located to the tolerance, with the CP fraction on
-either side of the final bracket on either side of 1/2; random starts are one curve, without η."""
+either side of the final bracket on either side of 1/2; random starts are one curve, without η; sizes are
+never one line."""
 
 import pathlib
 import re
@@ -46,8 +47,9 @@ def test_bisection_locates_the_transition_inside_its_grid_bracket(tmp_path, exec
     assert 4.5 <= low < x < high <= 5.0
     assert high - low <= 0.01
     scene = tomllib.loads(SCENE)
-    below = plot_robustness.cp_fraction(scene, low, "AFM", 0.01, 0.0)
-    above = plot_robustness.cp_fraction(scene, high, "AFM", 0.01, 0.0)
+    curve = ("AFM", 0.01, 0.0, 20, 0.0011, 1e-6)
+    below = plot_robustness.cp_fraction(scene, low, *curve)
+    above = plot_robustness.cp_fraction(scene, high, *curve)
     assert (below - 0.5) * (above - 0.5) < 0
 
 
@@ -77,3 +79,13 @@ def test_random_starts_are_one_curve_without_a_noise_axis(tmp_path, executable):
     transitions = [line.split(":")[0] for line in done.stdout.splitlines() if "crosses" in line]
     assert any(t.startswith("AFM η = 0.3") for t in transitions), done.stdout
     assert {t for t in transitions if t.startswith("random")} == {"random"}, done.stdout
+
+
+def test_each_size_is_a_line_of_its_own(tmp_path, executable):
+    (tmp_path / "sizes.toml").write_text(RAGGED.replace("rows = 6", "rows = [4, 6]"))
+    result = run_cli(executable, tmp_path / "sizes.toml", tmp_path / "sizes.h5")
+    done = subprocess.run([sys.executable, str(SCRIPT), str(result), str(tmp_path / "sizes.png")],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    transitions = {line.split(":")[0] for line in done.stdout.splitlines() if "crosses" in line}
+    assert transitions and all(", N = " in t or t.startswith("random N = ") for t in transitions), done.stdout
