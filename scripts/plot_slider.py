@@ -31,10 +31,18 @@ def row_length(rows_path):
 
 
 def row_model_curves(rows_path, h, A_paper, A_field, force_per_row_unit, slider_rows):
-    """The row model's mean friction against h for both mappings of A, as the slider's total force."""
+    """The row model's mean friction against h for both mappings of A, as the slider's total force. The
+    file must hold one curve (one N, g, rtol and start): several would be drawn as one line."""
     with h5py.File(rows_path, "r") as f:
         c = f["curves"]
         A, D, N = c["A"][:], c["dissipation_mean"][:], c["rows"][:]
+        axes = {name: set((c[name].asstr()[:] if name == "ic" else c[name][:]).tolist())
+                for name in ("rows", "g", "rtol", "ic", "noise", "offset")}
+    several = {name: sorted(values) for name, values in axes.items() if len(values) > 1}
+    if several:
+        sys.exit(f"error: {rows_path} holds several row-model curves ("
+                 + "; ".join(f"{name} {', '.join(str(v) for v in values)}" for name, values in several.items())
+                 + "): --rows takes a run of one N, g, rtol and start")
     order = np.argsort(A)
     A, force = A[order], (D / N)[order] * force_per_row_unit * slider_rows
     curves = []

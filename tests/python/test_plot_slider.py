@@ -63,6 +63,18 @@ def test_plot_slider_with_the_row_model(tmp_path, executable):
     assert png.stat().st_size > 10000
 
 
+def test_plot_slider_refuses_a_row_model_file_of_several_curves(tmp_path, executable):
+    (tmp_path / "slider.toml").write_text(SLIDER)
+    slider = tmp_path / "slider.h5"
+    subprocess.run([executable, "slider", str(tmp_path / "slider.toml"), "-o", str(slider), "-q"], check=True)
+    (tmp_path / "rows.toml").write_text(ROWS.replace("g = [0.154]", "g = [0.154, 0.3]"))
+    rows = run_cli(executable, tmp_path / "rows.toml", tmp_path / "rows.h5")
+    done = subprocess.run([sys.executable, str(SCRIPT), str(slider), str(tmp_path / "x.png"), "--rows", str(rows)],
+                          capture_output=True, text=True)
+    assert done.returncode != 0 and "holds several row-model curves (g 0.154, 0.3)" in done.stderr, done.stderr
+    assert not (tmp_path / "x.png").exists()
+
+
 def test_plot_slider_refuses_a_row_model_file(tmp_path, executable):
     (tmp_path / "rows.toml").write_text(ROWS)
     rows = run_cli(executable, tmp_path / "rows.toml", tmp_path / "rows.h5")
