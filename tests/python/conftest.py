@@ -44,6 +44,17 @@ def executable():
     return path
 
 
+def python_words(message):
+    """A refusal of the command line as the module words it (python/module.cpp: its options as the
+    functions' arguments), without the leading "error: "."""
+    message = message.strip().removeprefix("error: ")
+    for cli, python in (("--force", "force=True"), (" (or --device gpu)", ""),
+                        ("run with --device cpu", 'set numerics.device = "cpu"'), ("--threads", "threads"),
+                        ("--A-cells", "A_cells"), ("--tau-cells", "tau_cells"), ("--samples", "count")):
+        message = message.replace(cli, python)
+    return message
+
+
 def run_cli(executable, scene_path, output):
     completed = subprocess.run([executable, "run", str(scene_path), "-o", str(output), "-q"],
                                capture_output=True, text=True)

@@ -49,14 +49,19 @@ def test_the_figure_marks_the_flags_and_keeps_its_legend_beside_the_data(small_s
     assert (tmp_path / "friction.png").stat().st_size > 10_000
 
 
+def drawn(tmp_path, executable, model, numerics="", jump=False):
+    """The result file and the figure of AFM starts at A = 1, 3, g = 0.002 with the given [model] and
+    [numerics] lines."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text(f"[model]\n{model}[drive]\ng = [0.002]\n[sweep]\nA = [1.0, 3.0]\n[initial]\n"
+                     f"kinds = [\"AFM\"]\n{numerics}[schedule]\nrelax_periods = 1\naverage_periods = 2\n")
+    result = run_cli(executable, scene, tmp_path / "scene.h5")
+    return result, plot_friction().figure(str(result), jump=jump)
+
+
 def test_nothing_is_averaged_across_sizes_or_tolerances(tmp_path, executable):
     """A file over N = 4, 8 and rtol 1e-6, 1e-8: a panel each, every line the mean of its own panel's members."""
-    scene = tmp_path / "two.toml"
-    scene.write_text("[model]\nrows = [4, 8]\n[drive]\ng = [0.002]\n[sweep]\nA = [1.0, 3.0]\n"
-                     "[initial]\nkinds = [\"AFM\"]\n[numerics]\nrtol = [1e-6, 1e-8]\n"
-                     "[schedule]\nrelax_periods = 1\naverage_periods = 2\n")
-    result = run_cli(executable, scene, tmp_path / "two.h5")
-    fig = plot_friction().figure(str(result), jump=False)
+    result, fig = drawn(tmp_path, executable, "rows = [4, 8]\n", "[numerics]\nrtol = [1e-6, 1e-8]\n")
     titles = [ax.get_title() for ax in fig.axes]
     assert sorted(titles) == ["N = 4, rtol = 1e-06", "N = 4, rtol = 1e-08", "N = 8, rtol = 1e-06", "N = 8, rtol = 1e-08"]
     with h5py.File(result) as f:
@@ -73,12 +78,7 @@ def test_nothing_is_averaged_across_sizes_or_tolerances(tmp_path, executable):
 
 
 def test_reference_curves_only_for_the_model_they_belong_to(tmp_path, executable):
-    scene = tmp_path / "dipolar.toml"
-    scene.write_text("[model]\nrows = 4\ncouplings = \"dipolar\"\nboundary = \"open\"\n[drive]\ng = [0.002]\n"
-                     "[sweep]\nA = [1.0, 3.0]\n[initial]\nkinds = [\"AFM\"]\n"
-                     "[schedule]\nrelax_periods = 1\naverage_periods = 2\n")
-    result = run_cli(executable, scene, tmp_path / "dipolar.h5")
-    fig = plot_friction().figure(str(result), jump=True)
+    _, fig = drawn(tmp_path, executable, "rows = 4\ncouplings = \"dipolar\"\nboundary = \"open\"\n", jump=True)
     labels = [text.get_text() for ax in fig.axes for text in ax.get_legend().get_texts()]
     assert not any("small A" in label or "large A" in label or "J(A)" in label for label in labels)
     assert "dipolar couplings, open rows" in fig._suptitle.get_text()
