@@ -183,9 +183,9 @@ int run_info(const InfoOptions& options) {
                     counts.unresolved);
       if (counts.symmetry_limited > 0)
         std::printf(
-            "%-12s %zu members whose D the integration error decides (symmetry_limited; no error "
-            "bounds it, not counted as resolved)\n",
-            "warning", counts.symmetry_limited);
+            "%-12s %zu members whose D an asymmetry below rtol decides (symmetry_limited, %zu of them "
+            "held on a symmetric set: symmetry_held; no error bounds it, not counted as resolved)\n",
+            "warning", counts.symmetry_limited, counts.symmetry_held);
       if (counts.shadow_departed > 0)
         std::printf(
             "%-12s %zu members whose shadow run reached another attractor (shadow_departed; no "

@@ -87,11 +87,12 @@ void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene) 
   if (counts.symmetry_limited > 0)
     std::fprintf(
         stderr,
-        "warning: %zu members whose D the integration error decides (symmetry-limited: they slip and no "
-        "disorder or temperature exceeds rtol, so D depends on rtol itself and no error bounds it; not "
-        "counted as resolved); a tighter rtol does not help: give the scene disorder (e.g. [disorder] "
-        "A = 1e-6) or a temperature above rtol (README: regime rule); see /members/symmetry_limited\n",
-        counts.symmetry_limited);
+        "warning: %zu members whose D an asymmetry of the rows below rtol decides (symmetry-limited, %zu "
+        "of them held on a symmetric set without slipping: their symmetry probe at rtol reached another "
+        "attractor or moved D beyond its error, so no error bounds D; not counted as resolved); a tighter "
+        "rtol does not help: give the scene disorder (e.g. [disorder] A = 1e-6) or a temperature above "
+        "rtol (README: regime rule); see /members/symmetry_limited\n",
+        counts.symmetry_limited, counts.symmetry_held);
   if (counts.shadow_departed > 0)
     std::fprintf(
         stderr,

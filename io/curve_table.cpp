@@ -94,8 +94,12 @@ std::vector<CurveColumn> curve_columns(const ensemble::Scene& scene) {
   if (scene.runs_shadows()) {
     c.push_back(
         integer("symmetry_limited",
-                "members of count whose D the integration error decides (symmetry_limited in /members)",
+                "members of count whose D an asymmetry of the rows below rtol decides (symmetry_limited in "
+                "/members)",
                 [](auto& p) { return double(p.symmetry_limited); }));
+    c.push_back(integer("symmetry_held",
+                        "of those, members held on a symmetric set without slipping (symmetry_held in /members)",
+                        [](auto& p) { return double(p.symmetry_held); }));
     c.push_back(integer("shadow_departed",
                         "members of count whose shadow run reached another attractor (shadow_departed in "
                         "/members)",

@@ -9,6 +9,7 @@
 #include "ensemble/rows/disorder.hpp"
 #include "ensemble/rows/initial_conditions.hpp"
 #include "ensemble/rows/shadow_run.hpp"
+#include "ensemble/rows/symmetry_probe.hpp"
 
 namespace rotorsweep::io {
 
@@ -123,11 +124,24 @@ void add_outcome(std::vector<MemberColumn>& columns, const ensemble::Scene& scen
             " |D − dissipation_shadow| / " + number(1 - ensemble::shadow_tolerance_scale) +
             " (docs/numerics.md \"The global error of D\")",
         [](auto&, auto& r) { return r.dissipation_shadow; }));
+    columns.push_back(MemberColumn::real_valued(
+        "dissipation_probe",
+        "D of the member's symmetry probe: its averaged periods again with A_j = A (1 + " +
+            number(ensemble::probe_asymmetry_scale) + " rtol ξ_j), run where "
+        "no disorder or temperature of the scene exceeds rtol and the member slips or ends on a symmetric "
+        "set (NaN: not run; docs/numerics.md \"Symmetry-limited members\")",
+        [](auto&, auto& r) { return r.dissipation_probe; }));
     columns.push_back(MemberColumn::integer_valued(
         "symmetry_limited",
-        "1 when D is set by the integration error: the member slips and no disorder or temperature of the "
-        "scene exceeds rtol (README: regime rule)",
+        "1 when an asymmetry of the rows below rtol decides D: the symmetry probe reached another attractor, "
+        "or the member slips and the probe moved D by more than dissipation_error (docs/numerics.md "
+        "\"Symmetry-limited members\")",
         [](auto&, auto& r) { return std::int64_t(r.symmetry_limited); }));
+    columns.push_back(MemberColumn::integer_valued(
+        "symmetry_held",
+        "1 when the member is symmetry_limited without slipping: held on a symmetric set (strict FM, a "
+        "commensurate pattern, a mirror-symmetric state) that an asymmetry at rtol leaves",
+        [](auto&, auto& r) { return std::int64_t(r.symmetry_held); }));
     columns.push_back(MemberColumn::integer_valued(
         "shadow_departed",
         "1 when the shadow run reached another attractor than the member (another regime, slips per "

@@ -1,6 +1,6 @@
 // What a result file's members warn of (README "Running a sweep"): members that did not finish, and of
 // those that did, whose D is not resolved for each reason apart: its error above 0.1 |D|, D decided
-// by the integration error (symmetry_limited), a shadow run that departed (shadow_departed); and CP
+// by an asymmetry below the tolerance (symmetry_limited, symmetry_held), a shadow run that departed (shadow_departed); and CP
 // members whose slips could not be told jumps or smooth (slip_jumps NaN).
 #pragma once
 
@@ -20,7 +20,8 @@ struct MemberFlagCounts {
   std::map<std::string, std::size_t> failures;  ///< members that did not finish, by status
   /// finished members whose error is a bound but not below 0.1 |D| (neither of the two below)
   std::size_t unresolved = 0;
-  std::size_t symmetry_limited = 0;  ///< finished members whose D the integration error decides
+  std::size_t symmetry_limited = 0;  ///< finished members whose D an asymmetry below rtol decides
+  std::size_t symmetry_held = 0;     ///< of those, members held on a symmetric set without slipping
   std::size_t shadow_departed = 0;   ///< finished members whose shadow run reached another attractor
   std::size_t untold = 0;  ///< finished CP members whose slips are not told jumps or smooth (slip_jumps NaN)
 };
@@ -40,6 +41,7 @@ inline MemberFlagCounts count_member_flags(const Hdf5Location& members, const st
     const auto resolved = column("dissipation_resolved", first, count, 1);
     const auto limited = column("symmetry_limited", first, count, 0);
     const auto departed = column("shadow_departed", first, count, 0);
+    const auto held = column("symmetry_held", first, count, 0);
     const bool kinds = members.has("slip_jumps");
     const auto regime = kinds ? members.read_rows_strings("regime", first, count) : std::vector<std::string>{};
     const auto jumps = kinds ? members.read_rows_doubles("slip_jumps", first, count) : std::vector<double>{};
@@ -50,6 +52,7 @@ inline MemberFlagCounts count_member_flags(const Hdf5Location& members, const st
         continue;
       }
       counts.symmetry_limited += limited[i] != 0;
+      counts.symmetry_held += held[i] != 0;
       counts.shadow_departed += departed[i] != 0;
       counts.unresolved += resolved[i] == 0 && limited[i] == 0 && departed[i] == 0;
       counts.untold += kinds && regime[i] == "CP" && std::isnan(jumps[i]);

@@ -91,12 +91,16 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
   const auto theta = read_matrix(group, "theta_final", first, count);
   std::vector<std::string> regime;
   if (scene.classifies_regimes()) regime = group.read_rows_strings("regime", first, count);
-  std::vector<double> shadow;
-  std::vector<std::int64_t> limited, departed;
+  std::vector<double> shadow, probe;
+  std::vector<std::int64_t> limited, departed, held;
   if (scene.runs_shadows()) {
     shadow = group.read_rows_doubles("dissipation_shadow", first, count);
     limited = integers("symmetry_limited");
     if (group.has("shadow_departed")) departed = integers("shadow_departed");  // files before it have none
+    if (group.has("dissipation_probe")) {  // files before the symmetry probe have none
+      probe = group.read_rows_doubles("dissipation_probe", first, count);
+      held = integers("symmetry_held");
+    }
   }
   std::optional<Matrix> row_dissipation, link_alignment;
   if (scene.row_profiles) {
@@ -128,6 +132,10 @@ std::vector<MemberResult> read_member_rows(const Hdf5Location& file, const ensem
       r.dissipation_shadow = shadow[m];
       r.symmetry_limited = limited[m] != 0;
       r.shadow_departed = !departed.empty() && departed[m] != 0;
+      if (!probe.empty()) {
+        r.dissipation_probe = probe[m];
+        r.symmetry_held = held[m] != 0;
+      }
     }
     if (row_dissipation) {
       const std::size_t rows = plan[r.index].rows, links = scene.couplings.open ? rows - 1 : rows;

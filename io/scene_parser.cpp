@@ -339,10 +339,11 @@ Scene read_scene(const toml::table& root) {
 
   const Section output = section(root, "output");
   scene.output_path = output.text("path", scene.output_path);
-  if (!scene.couplings.nearest_neighbour() && scene.disorder.any())
-    fail("disorder",
+  if (!scene.couplings.nearest_neighbour() && (scene.disorder.coupling > 0 || !scene.disorder.coupling_rows.empty()))
+    fail(scene.disorder.coupling > 0 ? "disorder.coupling" : "disorder.coupling_rows",
          "works with nearest-neighbour periodic rows only (model.couplings = \"nearest\", "
-         "model.boundary = \"periodic\")");
+         "model.boundary = \"periodic\": a bond j, j + 1 has one coupling); a coupling table or open rows "
+         "take disorder.A and disorder.anisotropy");
   if (scene.member_count() > max_members) fail_too_many_members(scene);
   check_device(scene);
   return scene;

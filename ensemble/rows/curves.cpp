@@ -32,6 +32,7 @@ std::vector<CurvePoint> aggregate_curves(const std::vector<Member>& members,
       ++point.regime_count[std::size_t(r.regime)];
       point.unresolved += !r.dissipation_resolved();
       point.symmetry_limited += r.symmetry_limited;
+      point.symmetry_held += r.symmetry_held;
       point.shadow_departed += r.shadow_departed;
     }
     const ReplicaStatistics d = replica_statistics(

@@ -27,7 +27,8 @@ struct CurvePoint {
   double dissipation_sem = 0;  ///< standard error of dissipation_mean: sample spread / √count (NaN for one)
   /// Bound on the integration's bias of dissipation_mean: the mean of the members' dissipation_error
   double dissipation_bias = 0;
-  std::size_t symmetry_limited = 0;  ///< members of count whose D the integration error decides
+  std::size_t symmetry_limited = 0;  ///< members of count whose D an asymmetry below rtol decides
+  std::size_t symmetry_held = 0;     ///< of those, members held on a symmetric set without slipping
   std::size_t shadow_departed = 0;   ///< members of count whose shadow run reached another attractor
   /// Members of the point in each regime (all_regimes order; finished members only) and failed.
   std::array<std::size_t, std::size(all_regimes)> regime_count{};

@@ -13,7 +13,7 @@ namespace rotorsweep::ensemble {
 
 /// A rerun completes its primary member's result: a shadow run at tighter tolerances
 /// (ensemble/rows/shadow_run.hpp) or the slower rerun at g/10 (ensemble/rows/slip_kinds.hpp).
-enum class Rerun { none, shadow, slower };
+enum class Rerun { none, shadow, slower, probe };
 
 struct Member {
   std::size_t index = 0;   ///< position in the plan and in the output
@@ -32,7 +32,7 @@ struct Member {
   /// 1; below 1 for the member's shadow run at tolerances rtol·scale, atol·scale
   /// (ensemble/rows/shadow_run.hpp)
   double tolerance_scale = 1.0;
-  /// θ(0) given rather than drawn: a shadow run starts where its primary's averaged periods began
+  /// θ(0) given rather than drawn: a shadow run or a probe starts where its primary's averaged periods began
   std::shared_ptr<const std::vector<double>> start;
   Rerun rerun = Rerun::none;  ///< a plan member, or a rerun of member `index`
 };

@@ -120,12 +120,18 @@ struct MemberResult {
   /// j's share of D, and the time mean of cos²((θ_j − θ_{j+1})/2) for each link (docs/model.md §3).
   std::vector<double> row_dissipation, link_alignment;
   /// D of the member's shadow run at tighter tolerances (NaN where it had none:
-  /// ensemble/rows/shadow_run.hpp); whether no physical perturbation of the scene exceeds the
-  /// tolerance, so that the integration error decides D (symmetry-limited); and whether the shadow
-  /// reached another attractor, so that it estimates no error (shadow_departed).
+  /// ensemble/rows/shadow_run.hpp), and whether the shadow reached another attractor, so that it
+  /// estimates no error (shadow_departed).
   double dissipation_shadow = std::numeric_limits<double>::quiet_NaN();
-  bool symmetry_limited = false;
   bool shadow_departed = false;
+  /// D of the member's symmetry probe (its averaged periods with A_j = A (1 + 0.1 rtol ξ_j); NaN where it
+  /// had none: ensemble/rows/symmetry_probe.hpp) and whether the probe reached its attractor; whether
+  /// an asymmetry below the tolerance decides D (symmetry-limited), and of those, whether the member
+  /// is held on a symmetric set without slipping (symmetry_held).
+  double dissipation_probe = std::numeric_limits<double>::quiet_NaN();
+  bool probe_followed = true;
+  bool symmetry_limited = false;
+  bool symmetry_held = false;
   std::vector<double>
       averaging_start;  ///< θ where the averaged periods began (empty: θ(0)), a shadow's start
   /// With observables.slip_kinds: each averaged period's slips' energies, in order (NaN past the

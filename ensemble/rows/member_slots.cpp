@@ -10,6 +10,7 @@
 #include "ensemble/rows/disorder.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_summary.hpp"
+#include "ensemble/rows/symmetry_probe.hpp"
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/counter_random.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -46,12 +47,11 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   s.row_profiles = scene.row_profiles;
   s.links = scene.couplings.open ? s.rows - 1 : s.rows;
   s.profile_capacity = scene.row_profiles ? std::size_t(scene.average_periods) : 0;
-  if (scene.couplings.nearest_neighbour()) {
-    const RowDeviations d = row_deviations(scene.disorder, s.rows, 0);
-    s.A_rows = !d.A.empty();
-    s.anisotropy_rows = !d.anisotropy.empty();
-    s.coupling_rows = !d.coupling.empty();
-  } else {
+  const RowDeviations d = row_deviations(scene.disorder, s.rows, 0);
+  s.A_rows = !d.A.empty();
+  s.anisotropy_rows = !d.anisotropy.empty();
+  s.coupling_rows = !d.coupling.empty();
+  if (!scene.couplings.nearest_neighbour()) {
     const CouplingTable table = scene.couplings.for_rows(s.rows);
     s.coupling_a = table.a;
     s.coupling_range = table.range();
@@ -64,6 +64,7 @@ SlotSchedule shadow_slot_schedule(const Scene& scene, const SlotSchedule& primar
   SlotSchedule s = primary;
   s.periods = scene.shadow_schedule();
   s.steady_tol = 0;
+  s.A_rows = s.A_rows || runs_probes(scene, s.stochastic, s.rtol);  // the probes' deviations
   return s;
 }
 
@@ -104,12 +105,17 @@ void SlotChunk::fill(const Scene& scene, std::span<const Member> members) {
     std::copy(y0.begin(), y0.end(), y0_.begin() + std::ptrdiff_t(k * n));
     if (schedule_.stochastic) noise_key_[k] = kernels::RandomStream(scene.thermal.seed, member.stream).key();
     if (!schedule_.A_rows && !schedule_.anisotropy_rows && !schedule_.coupling_rows) continue;
-    const RowDeviations d = row_deviations(scene.disorder, n, member.replica);
+    const RowDeviations d = member_deviations(scene.disorder, member);
     const auto at = std::ptrdiff_t(k * n);
-    if (schedule_.A_rows) std::copy(d.A.begin(), d.A.end(), A_rows_.begin() + at);
-    if (schedule_.anisotropy_rows)
-      std::copy(d.anisotropy.begin(), d.anisotropy.end(), anisotropy_rows_.begin() + at);
-    if (schedule_.coupling_rows) std::copy(d.coupling.begin(), d.coupling.end(), coupling_rows_.begin() + at);
+    const auto put = [&](const std::vector<double>& values, std::vector<double>& slots) {  // none: zeros
+      if (values.empty())
+        std::fill_n(slots.begin() + at, n, 0.0);
+      else
+        std::copy(values.begin(), values.end(), slots.begin() + at);
+    };
+    if (schedule_.A_rows) put(d.A, A_rows_);
+    if (schedule_.anisotropy_rows) put(d.anisotropy, anisotropy_rows_);
+    if (schedule_.coupling_rows) put(d.coupling, coupling_rows_);
   }
   if (schedule_.coupling_range > 0 && !table_filled_) {
     const CouplingTable table = scene.couplings.for_rows(n);
@@ -155,10 +161,14 @@ MemberResult SlotChunk::result(const Scene& scene, std::size_t k) const {
 
 void SlotChunk::set_schedule(const SlotSchedule& schedule) {
   const auto layout = [](const SlotSchedule& s) {
-    return std::tuple(s.rows, s.record_capacity, s.end_capacity, s.profile_capacity, s.links, s.A_rows,
-                      s.anisotropy_rows, s.coupling_rows, s.stochastic, s.coupling_range);
+    return std::tuple(s.rows, s.record_capacity, s.end_capacity, s.profile_capacity, s.links, s.stochastic,
+                      s.coupling_range);
   };
-  if (layout(schedule) != layout(schedule_)) throw std::logic_error("SlotChunk: a schedule of other slots");
+  const bool arrays_held = (!schedule.A_rows || !A_rows_.empty()) &&
+                           (!schedule.anisotropy_rows || !anisotropy_rows_.empty()) &&
+                           (!schedule.coupling_rows || !coupling_rows_.empty());
+  if (layout(schedule) != layout(schedule_) || !arrays_held)
+    throw std::logic_error("SlotChunk: a schedule of other slots");
   schedule_ = schedule;
 }
 

@@ -105,12 +105,14 @@ ROTORSWEEP_HD typename Model::Parameters slot_parameters(const SlotSchedule& s, 
     p.c = v.table_c;
     p.range = s.coupling_range;
     p.open = s.open;
-  } else if constexpr (requires { p.A_rows; }) {
+  }
+  if constexpr (requires { p.A_rows; }) {
     const std::size_t at = k * s.rows;
     p.A_rows = s.A_rows ? v.A_rows + at : nullptr;
     p.anisotropy_rows = s.anisotropy_rows ? v.anisotropy_rows + at : nullptr;
-    p.coupling_rows = s.coupling_rows ? v.coupling_rows + at : nullptr;
   }
+  if constexpr (requires { p.coupling_rows; })
+    p.coupling_rows = s.coupling_rows ? v.coupling_rows + k * s.rows : nullptr;
   return p;
 }
 
@@ -144,7 +146,8 @@ class SlotChunk {
 
   /// Fills the inputs of `members` (at most capacity, all of one variant).
   void fill(const Scene& scene, std::span<const Member> members);
-  /// The schedule the next members run (another of the variant's: a shadow run's, shadow_slot_schedule).
+  /// The schedule the next members run (another of the variant's: a shadow run's, shadow_slot_schedule),
+  /// whose disorder arrays the chunk holds (made with the schedule whose arrays cover both).
   void set_schedule(const SlotSchedule& schedule);
   /// The result of chunk member k, read from the outputs.
   MemberResult result(const Scene& scene, std::size_t k) const;
@@ -179,7 +182,8 @@ class SlotChunk {
 /// The schedule of a variant's members: the scene's schedule with the variant's tolerances,
 /// `first_step_scale` the stepper's first-step scale at them (0 for the Langevin stepper).
 SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double first_step_scale);
-/// The schedule of the shadow runs of `primary`'s members (Scene::shadow_schedule): the same slots.
+/// The schedule of the reruns of `primary`'s members, shadow runs and symmetry probes
+/// (Scene::shadow_schedule): the same slots, and A's deviations where probes run (runs_probes).
 SlotSchedule shadow_slot_schedule(const Scene& scene, const SlotSchedule& primary);
 
 }  // namespace rotorsweep::ensemble

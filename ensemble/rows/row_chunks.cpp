@@ -39,7 +39,7 @@ SweepOutcome run_row_chunks(const Scene& scene, const VariantRange& range, const
         for (const std::size_t k : positions) members.push_back(range.source->at(k));
         if (members.empty())  // the queued shadows
           while (members.size() < capacity && reruns.queued() > 0) members.push_back(*reruns.take_queued());
-        if (!chunks[slot]) chunks[slot].emplace(schedule, capacity);
+        if (!chunks[slot]) chunks[slot].emplace(shadow_schedule, capacity);  // its disorder arrays hold both
         SlotChunk& chunk = *chunks[slot];
         chunk.set_schedule(positions.empty() ? shadow_schedule : schedule);
         chunk.fill(scene, members);

@@ -112,7 +112,7 @@ class RowProblem {
     lane.end_states.clear();
     lane.profiles.clear();
     lane.steady = SteadyDissipation{scene_.steady_tol};
-    return member.rerun == Rerun::shadow ? shadow_schedule_ : period_schedule_;
+    return member.rerun == Rerun::shadow || member.rerun == Rerun::probe ? shadow_schedule_ : period_schedule_;
   }
 
   /// One step attempt of every lane, with the observers.

@@ -1,5 +1,6 @@
 // The reruns a row member may need, for every backend (docs/numerics.md "The global error of D",
-// README "observables.slip_kinds"): its shadow run and its slower rerun, queued in one RerunQueue.
+// "Symmetry-limited members", README "observables.slip_kinds"): its shadow run, its symmetry probe and
+// its slower rerun, queued in one RerunQueue.
 #pragma once
 
 #include <cstddef>
@@ -16,13 +17,15 @@
 #include "ensemble/rows/shadow_run.hpp"
 #include "ensemble/rows/slip_kinds.hpp"
 #include "ensemble/rows/smooth_alternation_window.hpp"
+#include "ensemble/rows/symmetry_probe.hpp"
 
 namespace rotorsweep::ensemble {
 
 /// Decides which finished members run again and completes them with their reruns' results: a member
-/// whose averaged periods slip (with shadow runs on) gets its shadow run, one that slips in every
-/// averaged period (with observables.slip_kinds) its slower rerun; its result is held until they have
-/// finished. Not thread-safe (RerunQueue).
+/// whose averaged periods slip (with shadow runs on) gets its shadow run; one that slips or ends on a
+/// symmetric set, in a scene without a physical perturbation above rtol, its symmetry probe; one that
+/// slips in every averaged period (with observables.slip_kinds) its slower rerun. Its result is held
+/// until they have finished. Not thread-safe (RerunQueue).
 class RowReruns {
  public:
   /// The reruns of a variant's members (tolerance `rtol`), with a stochastic integrator none.
@@ -30,32 +33,42 @@ class RowReruns {
       : scene_(&scene),
         shadows_(scene.runs_shadows() && !stochastic),
         slower_(scene.slip_kinds && !stochastic),
-        symmetry_limited_(scene.symmetry_limited(rtol)) {}
+        probes_(runs_probes(scene, stochastic, rtol)) {}
 
   /// Member `member` finished with `result`: a primary goes to retire(result) or waits for its reruns
-  /// (a shadow run starts where its averaged periods began, or at initial_state(member) where they
-  /// began at the start); a rerun completes its primary, which goes to retire() with its last rerun.
+  /// (a shadow run and a probe start where its averaged periods began, or at initial_state(member)
+  /// where they began at the start); a rerun completes its primary, which goes to retire() with its
+  /// last rerun (a probed primary with its symmetry verdict).
   template <class Retire, class InitialState>
   void finish(const Member& member, MemberResult&& result, Retire&& retire, InitialState&& initial_state) {
     if (member.rerun != Rerun::none) {
       std::optional<MemberResult> primary = queue_.finish(member.index, [&](MemberResult& held) {
         if (member.rerun == Rerun::shadow)
-          complete_with_shadow(held, result, symmetry_limited_);
+          complete_with_shadow(held, result);
+        else if (member.rerun == Rerun::probe)
+          take_probe(held, result);
         else
           take_slower_rerun(held, result, smooth_alternation_possible(*scene_, member.A));
       });
-      if (primary) retire(std::move(*primary));
+      if (!primary) return;
+      settle_symmetry(*primary);
+      retire(std::move(*primary));
       return;
     }
     std::vector<Member> reruns;
-    if (shadows_ && needs_shadow(result)) {
-      Member shadow = member;
-      shadow.rerun = Rerun::shadow;
-      shadow.tolerance_scale = shadow_tolerance_scale;
-      shadow.start = std::make_shared<const std::vector<double>>(
+    const auto averaged_periods_again = [&](Rerun kind) {
+      Member again = member;
+      again.rerun = kind;
+      again.start = std::make_shared<const std::vector<double>>(
           result.averaging_start.empty() ? initial_state(member) : result.averaging_start);
+      return again;
+    };
+    if (shadows_ && needs_shadow(result)) {
+      Member shadow = averaged_periods_again(Rerun::shadow);
+      shadow.tolerance_scale = shadow_tolerance_scale;
       reruns.push_back(std::move(shadow));
     }
+    if (probes_ && needs_probe(result, scene_->couplings.open)) reruns.push_back(averaged_periods_again(Rerun::probe));
     if (slower_ && needs_slower_rerun(result)) {
       Member slower = member;  // the same start, disorder and schedule
       slower.rerun = Rerun::slower;
@@ -78,7 +91,7 @@ class RowReruns {
   const Scene* scene_;
   bool shadows_;           ///< members whose averaged periods slip get shadow runs
   bool slower_;            ///< members that slip in every averaged period get slower reruns
-  bool symmetry_limited_;  ///< no physical perturbation of the scene exceeds rtol
+  bool probes_;            ///< symmetry probes run (runs_probes)
   RerunQueue<Member, MemberResult> queue_;
 };
 

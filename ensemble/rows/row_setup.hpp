@@ -10,6 +10,7 @@
 #include "ensemble/rows/disorder.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/scene.hpp"
+#include "ensemble/rows/symmetry_probe.hpp"
 #include "kernels/lanes/counter_random.hpp"
 
 namespace rotorsweep::ensemble {
@@ -28,27 +29,30 @@ struct RowSetup {
     return member_initial_angles(*scene, member);
   }
 
-  /// A member that starts with all rows equal is marked strict FM (symmetry protection). The
-  /// parameters point into this setup's buffers (its disorder, or the coupling table of its N).
+  /// A member that starts with all rows equal is marked strict FM (symmetry protection); a symmetry
+  /// probe carries its deviations (member_deviations). The
+  /// parameters point into this setup's buffers (its disorder, and the coupling table of its N).
   typename Model::Parameters parameters(const Member& member, const std::vector<double>& theta) {
     const bool strict_fm = std::all_of(theta.begin(), theta.end(), [&](double x) { return x == theta[0]; });
+    typename Model::Parameters p{member.A, member.g, strict_fm};
     if constexpr (coupled) {
       if (table_rows != member.rows) {
         table = scene->couplings.for_rows(member.rows);
         table_rows = member.rows;
       }
-      return {member.A,       member.g,       strict_fm,     table.a,
-              table.b.data(), table.c.data(), table.range(), scene->couplings.open};
-    } else {
-      typename Model::Parameters p{member.A, member.g, strict_fm};
-      if (!scene->disorder.any()) return p;
-      deviations = row_deviations(scene->disorder, member.rows, member.replica);
-      const auto rows_or_null = [](const std::vector<double>& v) { return v.empty() ? nullptr : v.data(); };
-      p.A_rows = rows_or_null(deviations.A);
-      p.anisotropy_rows = rows_or_null(deviations.anisotropy);
-      p.coupling_rows = rows_or_null(deviations.coupling);
-      return p;
+      p.a = table.a;
+      p.b = table.b.data();
+      p.c = table.c.data();
+      p.range = table.range();
+      p.open = scene->couplings.open;
     }
+    if (!scene->disorder.any() && member.rerun != Rerun::probe) return p;
+    deviations = member_deviations(scene->disorder, member);
+    const auto rows_or_null = [](const std::vector<double>& v) { return v.empty() ? nullptr : v.data(); };
+    p.A_rows = rows_or_null(deviations.A);
+    p.anisotropy_rows = rows_or_null(deviations.anisotropy);
+    if constexpr (!coupled) p.coupling_rows = rows_or_null(deviations.coupling);
+    return p;
   }
 
   /// The key of the member's noise stream (thermal seed, replica).

@@ -26,8 +26,8 @@ inline bool shadow_reached_attractor(const MemberResult& primary, const MemberRe
 
 /// Completes `primary` with its shadow run (take_shadow), which counts as an error estimate only where
 /// it reached the primary's attractor; the same on every backend.
-inline void complete_with_shadow(MemberResult& primary, const MemberResult& shadow, bool symmetry_limited) {
-  take_shadow(primary, shadow, symmetry_limited, shadow_reached_attractor(primary, shadow));
+inline void complete_with_shadow(MemberResult& primary, const MemberResult& shadow) {
+  take_shadow(primary, shadow, shadow_reached_attractor(primary, shadow));
 }
 
 }  // namespace rotorsweep::ensemble

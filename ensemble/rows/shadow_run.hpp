@@ -32,10 +32,7 @@ inline bool needs_shadow(const MemberResult& result) {
 /// shadow_safety · |D − D'| / (1 − s)), Richardson's estimate for a global error proportional to the
 /// tolerance, with a margin. A shadow that failed, or that did not reach the primary's attractor
 /// (`followed` false: then shadow_departed), measures no error of D: the error is infinite.
-/// `symmetry_limited`: the scene has no physical perturbation above the tolerance, so the integration
-/// error decides D and no error bounds it.
-inline void take_shadow(MemberResult& primary, const MemberResult& shadow, bool symmetry_limited,
-                        bool followed) {
+inline void take_shadow(MemberResult& primary, const MemberResult& shadow, bool followed) {
   const bool finished = shadow.status == kernels::LaneStatus::ok;
   primary.dissipation_shadow = finished ? shadow.dissipation() : std::numeric_limits<double>::quiet_NaN();
   primary.shadow_departed = finished && !followed;
@@ -45,7 +42,6 @@ inline void take_shadow(MemberResult& primary, const MemberResult& shadow, bool 
                             : std::numeric_limits<double>::infinity();
   double& error = primary.summary(Summary::mean, Channel::dissipation_error);
   error = std::max(shadow_local_floor * error, global);
-  primary.symmetry_limited = symmetry_limited;
 }
 
 }  // namespace rotorsweep::ensemble

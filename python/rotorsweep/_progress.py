@@ -71,7 +71,7 @@ def report(h5file, path):
         listed = " ".join(f"{name} {n}" for name, n in sorted(failed.items()))
         write(f"warning: members that did not finish (their observables are NaN): {listed}\n")
     flag = {name: members[name][:] != 0 if name in members else [False] * count
-            for name in ("symmetry_limited", "shadow_departed")}
+            for name in ("symmetry_limited", "symmetry_held", "shadow_departed")}
     resolved = members["dissipation_resolved"][:] != 0 if "dissipation_resolved" in members else [True] * count
     # each reason apart, as `rotorsweep run` counts them: a symmetry-limited or departed member is not
     # resolved, but is not counted among those whose error is merely too large
@@ -83,8 +83,10 @@ def report(h5file, path):
     }
     texts = {
         "dissipation_resolved": "whose D is not resolved (dissipation_error >= 0.1 |D|)",
-        "symmetry_limited": "whose D the integration error decides (symmetry-limited: no error bounds it, "
-                            "not counted as resolved; give the scene disorder or a temperature above rtol)",
+        "symmetry_limited": "whose D an asymmetry of the rows below rtol decides (symmetry-limited, "
+                            f"{sum(1 for k in range(count) if ok[k] and flag['symmetry_held'][k])} of them "
+                            "held on a symmetric set without slipping: no error bounds D, not counted as "
+                            "resolved; give the scene disorder or a temperature above rtol)",
         "shadow_departed": "whose shadow run reached another attractor (no error estimate; give the scene "
                            "disorder or a temperature above rtol)",
     }

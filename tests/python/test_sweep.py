@@ -220,8 +220,10 @@ def test_a_sweep_job_counts_the_periods_its_members_close(small_scene):
     assert job.done == job.total == 12
     with h5py.File(io.BytesIO(job.take_image()), "r") as f:
         shadows = int(np.isfinite(f["members/dissipation_shadow"][:]).sum())
+        probes = int(np.isfinite(f["members/dissipation_probe"][:]).sum())
     assert shadows > 0  # the CP members at A = 6 run their 2 averaged periods again
-    assert job.periods == 12 * 3 + 2 * shadows  # relax 1 + average 2 each
+    assert probes > 0  # and members that slip or end on a symmetric set run their symmetry probe
+    assert job.periods == 12 * 3 + 2 * (shadows + probes)  # relax 1 + average 2 each
 
 
 def test_the_last_lines_count_symmetry_limited_members_apart(small_scene, capsys):
@@ -230,7 +232,7 @@ def test_the_last_lines_count_symmetry_limited_members_apart(small_scene, capsys
     err = capsys.readouterr().err
     limited = int(ds.symmetry_limited.sum())
     assert limited == 4 and int(ds.dissipation_resolved.where(ds.symmetry_limited == 1).sum()) == 0
-    assert f"warning: {limited} members whose D the integration error decides" in err
+    assert f"warning: {limited} members whose D an asymmetry of the rows below rtol decides" in err
     assert "not resolved" not in err and "tighten" not in err
 
 

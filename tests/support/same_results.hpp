@@ -1,5 +1,5 @@
 // Test support: whether two member results are the same bits (summaries, counts, final angles,
-// period records, final state, the shadow's D and flags, row profiles), for backend and lane-type
+// period records, final state, the shadow's and the probe's D and flags, row profiles), for backend and lane-type
 // agreement tests.
 #pragma once
 
@@ -36,8 +36,10 @@ inline std::string result_difference(const ensemble::MemberResult& a, const ense
         return "period record " + std::to_string(p);
   if (a.final_state.attractor != b.final_state.attractor) return "attractor";
   if (!same_bits(a.dissipation_shadow, b.dissipation_shadow)) return "dissipation_shadow";
-  if (a.symmetry_limited != b.symmetry_limited || a.shadow_departed != b.shadow_departed)
-    return "symmetry_limited or shadow_departed";
+  if (!same_bits(a.dissipation_probe, b.dissipation_probe)) return "dissipation_probe";
+  if (a.symmetry_limited != b.symmetry_limited || a.symmetry_held != b.symmetry_held ||
+      a.shadow_departed != b.shadow_departed)
+    return "symmetry_limited, symmetry_held or shadow_departed";
   for (const auto profile :
        {&ensemble::MemberResult::row_dissipation, &ensemble::MemberResult::link_alignment}) {
     if ((a.*profile).size() != (b.*profile).size()) return "row profile size";

@@ -21,9 +21,10 @@ namespace rotorsweep::kernels {
 /// H = Σ_j [−a cos 2θ_j + A cos(θ_j − t)] + Σ_j Σ_{u=1..M} [b_u cos(θ_j − θ_{j+u}) − c_u cos(θ_j + θ_{j+u})]
 /// and g dθ_j/dt = −∂H/∂θ_j. Periodic rows wrap j + u (2M < N, so that no pair is counted twice);
 /// open rows drop the pairs that would cross an edge (M < N). The table is the same in every lane
-/// (a scene's), A and g are per lane. One sincos per row and one for the drive phase per
-/// evaluation; the pair terms follow from products. It carries the quadratures of the Integrals
-/// given at construction and satisfies LaneModel.
+/// (a scene's), A and g are per lane, and so is the quenched disorder of §7: A_j = A (1 + δ_j) and
+/// a_j = a (1 + α_j). One sincos per row and one for the drive phase per evaluation; the pair terms
+/// follow from products. It carries the quadratures of the Integrals given at construction and
+/// satisfies LaneModel.
 template <class V>
 class CoupledRows : public CarriedRowQuadratures {
  public:
@@ -42,10 +43,13 @@ class CoupledRows : public CarriedRowQuadratures {
     const double* c = nullptr;
     std::size_t range = 0;
     bool open = false;
+    const double* A_rows = nullptr;           ///< δ_j: A_j = A (1 + δ_j)
+    const double* anisotropy_rows = nullptr;  ///< α_j: a_j = a (1 + α_j)
   };
 
-  /// Lane values of caller storage the model keeps: b_u and c_u for u < N.
-  static constexpr std::size_t storage_size(std::size_t n) { return 2 * n; }
+  /// Lane values of caller storage the model keeps: b_u and c_u for u < N, and each row's factors
+  /// 1 + δ_j and 1 + α_j.
+  static constexpr std::size_t storage_size(std::size_t n) { return 4 * n; }
 
   struct Workspace {
     static constexpr std::size_t storage_size(std::size_t n) { return 5 * n; }
@@ -61,7 +65,15 @@ class CoupledRows : public CarriedRowQuadratures {
   };
 
   ROTORSWEEP_HD CoupledRows(std::size_t rows, LaneArena<V>& arena, Integrals carried)
-      : CarriedRowQuadratures(carried), rows_(rows), b_(arena.take(rows)), c_(arena.take(rows)) {}  // zeros
+      : CarriedRowQuadratures(carried),
+        rows_(rows),
+        b_(arena.take(rows)),
+        c_(arena.take(rows)),
+        A_row_(arena.take(rows)),
+        anisotropy_row_(arena.take(rows)) {
+    if (arena.counting()) return;
+    for (std::size_t j = 0; j < rows; ++j) A_row_[j] = anisotropy_row_[j] = V(1.0);
+  }
   ROTORSWEEP_HD CoupledRows(std::size_t rows, LaneArena<V>& arena, Integrals carried, const Parameters& p)
       : CoupledRows(rows, arena, carried) {
     for (std::size_t l = 0; l < lane_width<V>; ++l) set_lane(l, p);
@@ -79,15 +91,28 @@ class CoupledRows : public CarriedRowQuadratures {
       b_[u] = V(p.b[u]);
       c_[u] = V(p.c[u]);
     }
+    for (std::size_t j = 0; j < rows_; ++j) {
+      const double A_factor = p.A_rows ? 1.0 + p.A_rows[j] : 1.0;
+      const double anisotropy_factor = p.anisotropy_rows ? 1.0 + p.anisotropy_rows[j] : 1.0;
+      lane_set(A_row_[j], lane, A_factor);
+      lane_set(anisotropy_row_[j], lane, anisotropy_factor);
+      disordered_ = disordered_ || A_factor != 1.0 || anisotropy_factor != 1.0;
+    }
   }
 
   /// A bound on the spectral radius of g ∂f/∂θ in `lane` (Gershgorin, over every θ and t): a row
-  /// has at most two partners u apart, so 4 |a| + A + 4 Σ_u (|b_u| + |c_u|).
+  /// has at most two partners u apart, so max_j 4 |a_j| + |A_j| + 4 Σ_u (|b_u| + |c_u|).
   ROTORSWEEP_HD double curvature_bound(std::size_t lane) const {
     double couplings = 0.0;
     for (std::size_t u = 0; u < range_; ++u)
       couplings += std::fabs(lane_get(b_[u], 0)) + std::fabs(lane_get(c_[u], 0));
-    return 4.0 * std::fabs(lane_get(a_, 0)) + std::fabs(lane_get(A_, lane)) + 4.0 * couplings;
+    double on_site = 0.0;
+    for (std::size_t j = 0; j < rows_; ++j) {
+      const double row = 4.0 * std::fabs(lane_get(a_, 0) * lane_get(anisotropy_row_[j], lane)) +
+                         std::fabs(lane_get(A_, lane) * lane_get(A_row_[j], lane));
+      on_site = row > on_site ? row : on_site;
+    }
+    return on_site + 4.0 * couplings;
   }
 
   ROTORSWEEP_HD std::size_t dimension() const { return rows_; }
@@ -147,7 +172,9 @@ class CoupledRows : public CarriedRowQuadratures {
   // its rows' f, sums, J's rows and gradients. Each row's values come from the same operations in the
   // same order as the whole-row functions' above, so any split of the rows gives their f and J bit for bit.
 
-  /// The trigonometry of rows [begin, end) at (θ, t) into the workspace.
+  /// The trigonometry of rows [begin, end) at (θ, t) into the workspace. With disorder the lags
+  /// carry their row's factor, (1 + δ_j) sin(θ_j − t) and (1 + δ_j) cos(θ_j − t): every term that
+  /// reads them is one of A_j's, so each is A_j's term exactly (a factor 1 changes no bit).
   ROTORSWEEP_HD void trigonometry_range(Workspace& w, const V* theta, V t, std::size_t begin,
                                         std::size_t end) const {
     V sin_t, cos_t;
@@ -156,6 +183,10 @@ class CoupledRows : public CarriedRowQuadratures {
       lane_sincos(theta[j], w.sin_row[j], w.cos_row[j]);
       w.sin_lag[j] = w.sin_row[j] * cos_t - w.cos_row[j] * sin_t;
       w.cos_lag[j] = w.cos_row[j] * cos_t + w.sin_row[j] * sin_t;
+      if (disordered_) {
+        w.sin_lag[j] *= A_row_[j];
+        w.cos_lag[j] *= A_row_[j];
+      }
     }
   }
   /// f_j for rows [begin, end) and their sums of lags and of the cosines of the links after them, once
@@ -291,12 +322,14 @@ class CoupledRows : public CarriedRowQuadratures {
   /// Row j's own terms: g f_j before the pairs, and ∂f_j/∂θ_j before them.
   ROTORSWEEP_HD V on_site_torque(const Workspace& w, std::size_t j) const {
     const V sin_2theta = V(2.0) * w.sin_row[j] * w.cos_row[j];
-    return V(-2.0) * a_ * sin_2theta + A_ * w.sin_lag[j];
+    return V(-2.0) * anisotropy(j) * sin_2theta + A_ * w.sin_lag[j];
   }
   ROTORSWEEP_HD V on_site_curvature(const Workspace& w, std::size_t j) const {
     const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
-    return inv_g_ * (V(-4.0) * a_ * cos_2theta + A_ * w.cos_lag[j]);
+    return inv_g_ * (V(-4.0) * anisotropy(j) * cos_2theta + A_ * w.cos_lag[j]);
   }
+  /// a_j = a (1 + α_j), a without disorder.
+  ROTORSWEEP_HD V anisotropy(std::size_t j) const { return disordered_ ? a_ * anisotropy_row_[j] : a_; }
   /// cos(θ_j − θ_{j+1}) of link j, and its sine.
   ROTORSWEEP_HD V cos_link(const Workspace& w, std::size_t j) const {
     const std::size_t k = (j + 1) % rows_;
@@ -327,7 +360,7 @@ class CoupledRows : public CarriedRowQuadratures {
     V h(0.0);
     for (std::size_t j = begin; j < end; ++j) {
       const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
-      h += lane_neg(a_) * cos_2theta + A_ * w.cos_lag[j];
+      h += lane_neg(anisotropy(j)) * cos_2theta + A_ * w.cos_lag[j];
     }
     for_each_pair(begin, end, [&](std::size_t j, std::size_t k, std::size_t u) {
       const V cos_difference = w.cos_row[j] * w.cos_row[k] + w.sin_row[j] * w.sin_row[k];
@@ -384,6 +417,8 @@ class CoupledRows : public CarriedRowQuadratures {
 
   std::size_t rows_;
   V *b_, *c_;  ///< b_u, c_u at u − 1, the same in every lane
+  V *A_row_, *anisotropy_row_;  ///< 1 + δ_j and 1 + α_j per lane
+  bool disordered_ = false;     ///< some lane has a factor other than 1 (else the uniform terms)
   V a_ = V(1.5);
   std::size_t range_ = 0;
   bool open_ = false;

@@ -93,5 +93,7 @@ TEST_CASE("coupling keys are read, and bad tables are named", "[ensemble][coupli
           "model.coupling_table");
   refused("couplings = \"nearest\"\ncoupling_table = { a = 1.5, b = [1.0], c = [0.0] }\n", "exclude");
   refused("boundary = \"closed\"\n", "model.boundary");
-  refused("couplings = \"dipolar\"\n[disorder]\nA = 0.1\n", "disorder");
+  refused("couplings = \"dipolar\"\n[disorder]\ncoupling = 0.1\n", "disorder.coupling");
+  refused("boundary = \"open\"\n[disorder]\ncoupling_rows = [0.1, 0.0]\n", "disorder.coupling_rows");
+  CHECK_NOTHROW(parse_scene_text("[model]\nrows = 8\ncouplings = \"dipolar\"\n[disorder]\nA = 0.1\nanisotropy = 0.1\n" + rest, "s"));
 }

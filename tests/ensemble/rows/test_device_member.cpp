@@ -21,6 +21,7 @@
 #include "ensemble/rows/member_slots.hpp"
 #include "ensemble/rows/row_chunks.hpp"
 #include "ensemble/rows/shadow_run.hpp"
+#include "ensemble/rows/symmetry_probe.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -233,17 +234,20 @@ TEST_CASE("the device's chunks run shadow runs between the plan's and give the C
   const HostChunkRun gpu = run_host_chunks(scene, source, members.size(), 3);
   CHECK(gpu.progress == members.size());
 
-  std::size_t departed = 0, shadowed = 0;
+  std::size_t departed = 0, shadowed = 0, limited = 0;
   for (std::size_t i = 0; i < cpu.size(); ++i) {
     INFO("member " << i);
     CHECK(int(gpu.delivered[i]) == 1);
     CHECK(testing::result_difference(cpu[i], gpu.results[i]) == "");  // the error, the shadow's D, the flags
     departed += cpu[i].shadow_departed;
+    limited += cpu[i].symmetry_limited;
     shadowed += ensemble::needs_shadow(cpu[i]);
+    shadowed += ensemble::runs_probes(scene, false, members[i].rtol) && ensemble::needs_probe(cpu[i], false);
   }
-  CHECK(departed > 0);  // the test covers a departed shadow
-  // six plan chunks of 3 (4 periods each) and chunks of the shadows (2 averaged periods), the first
-  // of them started before the plan's last
+  CHECK(departed > 0);  // the test covers a departed shadow and a symmetry probe's verdict
+  CHECK(limited > 0);
+  // six plan chunks of 3 (4 periods each) and chunks of the shadows and symmetry probes (2 averaged
+  // periods), the first of them started before the plan's last
   std::size_t plan = 0, shadows = 0, last_plan = 0, first_shadows = gpu.chunks.size();
   for (std::size_t c = 0; c < gpu.chunks.size(); ++c) {
     const auto [stops, count] = gpu.chunks[c];
@@ -318,14 +322,15 @@ TEST_CASE("the device member driver with row profiles, periodic and open rows",
   check_backends_agree(open);
 }
 
-TEST_CASE("the device member driver with coupling tables: dipolar rows, an explicit table",
+TEST_CASE("the device member driver with coupling tables: dipolar rows, an explicit table with disorder",
           "[device_member][couplings]") {
   check_backends_agree(
       io::parse_scene_text(scene_text("rodas4p2", 8, "relax_periods = 1\naverage_periods = 2", "",
                                       "couplings = \"dipolar\"\nrange = \"all\"\n"),
                            "device-member-dipolar"));
   check_backends_agree(
-      io::parse_scene_text(scene_text("rodas4", 6, "relax_periods = 1\naverage_periods = 2", "",
+      io::parse_scene_text(scene_text("rodas4", 6, "relax_periods = 1\naverage_periods = 2",
+                                      "[disorder]\nA = 0.05\nanisotropy_rows = [0.02, -0.03]\nseed = 4\n",
                                       "coupling_table = { a = 1.2, b = [1.0, 0.2], c = [0.1, 0.05] }\n"),
                            "device-member-table"));
 }

@@ -150,13 +150,15 @@ TEST_CASE("a team carries every quadrature and the row profiles as one thread do
 }
 
 TEST_CASE(
-    "a team runs a coupling table as one thread does: dipolar rows, periodic and open, every quadrature",
+    "a team runs a coupling table as one thread does: dipolar rows, periodic and open (disordered), every "
+    "quadrature",
     "[team][device_member]") {
   const std::string observables =
       "[observables]\nestimators = true\nenergy = true\nmoments = true\nrow_profiles = true\n";
   const std::string dipolar = coupled_rows + "[sweep]\nA = [1.0, 6.0, 12.0]\n" + observables;
   check_teams_follow<Coupled>("[model]\ncouplings = \"dipolar\"\nrange = 4\n" + dipolar.substr(8), true);
-  check_teams_follow<Coupled>("[model]\nboundary = \"open\"\n" + dipolar.substr(8), true);
+  check_teams_follow<Coupled>(
+      "[model]\nboundary = \"open\"\n" + dipolar.substr(8) + "[disorder]\nA = 1e-3\nanisotropy = 1e-3\n", true);
 }
 
 TEST_CASE("a team of eight gives the CPU lanes' labels on the examples but where rounding decides them",

@@ -2,7 +2,8 @@
 // couplings"): Jacobian, ∂f/∂t and integrand gradients against central differences for random
 // tables, periodic and open; f = −∇H/g; the nearest-neighbour table against NearestNeighbourRows;
 // the dense LDLᵀ solve and its inertia against Eigen; SIMD lanes equal to scalar ones; the range
-// forms a team uses, over any split of the rows, give the whole-row bits.
+// forms a team uses, over any split of the rows, give the whole-row bits; per-row disorder of A and
+// the anisotropy (docs/model.md §7) written out, and a lane without deviations keeping its bits.
 #include <Eigen/Core>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -15,6 +16,7 @@
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "support/dense_reference.hpp"
 #include "support/kernel_scratch.hpp"
+#include "support/lane_linearization.hpp"
 #include "support/linearization_check.hpp"
 
 using namespace rotorsweep::kernels;
@@ -58,6 +60,20 @@ Evaluation evaluate(const Model& m, const std::vector<double>& theta, double t) 
   return e;
 }
 
+/// g f = −∂H/∂θ at (θ, t), by central differences of the model's energy.
+void check_force_is_energy_gradient(const Model& m, const std::vector<double>& theta, double t, double g) {
+  const double eps = 1e-6;
+  const auto e = evaluate(m, theta, t);
+  auto w = rotorsweep::testing::workspace(m);
+  for (std::size_t k = 0; k < theta.size(); ++k) {
+    auto plus = theta, minus = theta;
+    plus[k] += eps;
+    minus[k] -= eps;
+    const double dH = (m.energy(w, plus.data(), t) - m.energy(w, minus.data(), t)) / (2 * eps);
+    CHECK(g * e.f[k] == Approx(-dH).epsilon(1e-7).margin(1e-8));
+  }
+}
+
 }  // namespace
 
 TEST_CASE("coupled rows: Jacobian, df/dt and integrand gradients match central differences",
@@ -81,7 +97,7 @@ TEST_CASE("coupled rows: Jacobian, df/dt and integrand gradients match central d
 
 TEST_CASE("coupled rows: g f = -dH/dtheta, and H written out", "[kernels][model][couplings]") {
   const std::size_t n = 9;
-  const double A = 2.0, g = 0.05, t = 0.4, eps = 1e-6;
+  const double A = 2.0, g = 0.05, t = 0.4;
   for (bool open : {false, true}) {
     const Table table(open ? 5 : 4, 3);
     const auto m = rotorsweep::testing::model<Model>(n, every, table.parameters(A, g, open));
@@ -98,14 +114,70 @@ TEST_CASE("coupled rows: g f = -dH/dtheta, and H written out", "[kernels][model]
       }
     }
     CHECK(m.energy(w, theta.data(), t) == Approx(H).epsilon(1e-13));
-    for (std::size_t k = 0; k < n; ++k) {
-      auto plus = theta, minus = theta;
-      plus[k] += eps;
-      minus[k] -= eps;
-      const double dH = (m.energy(w, plus.data(), t) - m.energy(w, minus.data(), t)) / (2 * eps);
-      CHECK(g * e.f[k] == Approx(-dH).epsilon(1e-7).margin(1e-8));
-    }
+    check_force_is_energy_gradient(m, theta, t, g);
   }
+}
+
+TEST_CASE("coupled rows with per-row disorder: the equations of docs/model.md section 7, checked derivatives",
+          "[kernels][model][couplings]") {
+  const std::size_t n = 9;
+  const double A = 2.0, g = 0.05, t = 0.4;
+  const auto delta = random_values(n, 21, -0.3, 0.3), alpha = random_values(n, 22, -0.3, 0.3);
+  for (bool open : {false, true}) {
+    INFO("open " << open);
+    const Table table(open ? 5 : 4, 3);
+    auto p = table.parameters(A, g, open);
+    p.A_rows = delta.data();
+    p.anisotropy_rows = alpha.data();
+    const auto m = rotorsweep::testing::model<Model>(n, every, p);
+    const auto theta = random_values(n, 5, -3.0, 9.0);
+    rotorsweep::testing::check_linearization(m, theta, t);
+    const auto e = evaluate(m, theta, t);
+    auto w = rotorsweep::testing::workspace(m);
+    double H = 0, drive = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      const double A_j = A * (1 + delta[j]), a_j = table.a * (1 + alpha[j]);
+      H += -a_j * std::cos(2 * theta[j]) + A_j * std::cos(theta[j] - t);
+      drive += A_j * std::sin(theta[j] - t);
+      for (std::size_t u = 1; u <= table.b.size(); ++u) {
+        if (open && j + u >= n) continue;
+        const std::size_t k = (j + u) % n;
+        H += table.b[u - 1] * std::cos(theta[j] - theta[k]) - table.c[u - 1] * std::cos(theta[j] + theta[k]);
+      }
+    }
+    CHECK(m.energy(w, theta.data(), t) == Approx(H).epsilon(1e-13));
+    CHECK(e.q[every.drive_index()] == Approx(drive).epsilon(1e-13));
+    check_force_is_energy_gradient(m, theta, t, g);
+  }
+}
+
+TEST_CASE("coupled rows: a lane with zero deviations beside a disordered lane keeps the uniform bits",
+          "[kernels][model][couplings][simd]") {
+  using Simd = CoupledRows<simd_lane>;
+  const std::size_t n = 9;
+  const double t = 1.1;
+  const Table table(4, 8);
+  const auto delta = random_values(n, 23, -0.3, 0.3);
+  const std::vector<double> zeros(n, 0.0);
+  const auto p = table.parameters(4.0, 0.01, false);
+  auto simd = rotorsweep::testing::model<Simd>(n, every, Simd::Parameters{p.A, p.g, false, p.a, p.b, p.c, p.range});
+  auto disordered = Simd::Parameters{p.A, p.g, false, p.a, p.b, p.c, p.range};
+  disordered.A_rows = delta.data();
+  disordered.anisotropy_rows = delta.data();
+  auto flat = disordered;
+  flat.A_rows = flat.anisotropy_rows = zeros.data();
+  simd.set_lane(0, disordered);
+  simd.set_lane(1, flat);
+  const auto uniform = rotorsweep::testing::model<Model>(n, every, p);
+  const auto theta = random_values(n, 5, -3.0, 9.0);
+  const auto lanes = rotorsweep::testing::linearize_at(simd, theta, t, nq);
+  const auto scalar = rotorsweep::testing::linearize_at(uniform, theta, t, nq);
+  for (std::size_t l = 1; l < std::min<std::size_t>(3, lane_width<simd_lane>); ++l)  // SSE2: lane 1 only
+    rotorsweep::testing::check_lane_bits(lanes, l, scalar, [&](const auto& J_v, const auto& J, std::size_t lane) {
+      for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t k = 0; k < n; ++k) CHECK(lane_get(J_v.entry(j, k), lane) == J.entry(j, k));
+    });
+  CHECK(lane_get(lanes.f[0], 0) != scalar.f[0]);  // lane 0 is disordered
 }
 
 TEST_CASE("the nearest-neighbour table is the nearest-neighbour model", "[kernels][model][couplings]") {

@@ -11,6 +11,7 @@
 
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "support/kernel_scratch.hpp"
+#include "support/lane_linearization.hpp"
 #include "support/linearization_check.hpp"
 
 using namespace rotorsweep::kernels;
@@ -122,28 +123,16 @@ TEST_CASE("a lane with zero deviations beside a disordered lane keeps the unifor
   simd.set_lane(1, {4.0, 0.01, false, zeros.data(), zeros.data(), zeros.data()});
   const auto uniform = rotorsweep::testing::model<Model>(n, every, 4.0, 0.01);
   const auto theta = random_angles(n, 5);
-  lane_vector<simd_lane> theta_v(n), f_v(n), q_v(nq), df_dt_v(n), dq_dy_v(nq * n), dq_dt_v(nq);
-  for (std::size_t j = 0; j < n; ++j) theta_v[j] = simd_lane(theta[j]);
-  auto w_v = rotorsweep::testing::workspace(simd);
-  auto J_v = rotorsweep::testing::jacobian<Simd::Jacobian>(n);
-  simd.linearize(w_v, theta_v.data(), simd_lane(t), f_v.data(), q_v.data(), J_v, df_dt_v.data(),
-                 dq_dy_v.data(), dq_dt_v.data());
-  auto w = rotorsweep::testing::workspace(uniform);
-  auto J = rotorsweep::testing::jacobian<Model::Jacobian>(n);
-  std::vector<double> f(n), q(nq), df_dt(n), dq_dy(nq * n), dq_dt(nq);
-  uniform.linearize(w, theta.data(), t, f.data(), q.data(), J, df_dt.data(), dq_dy.data(), dq_dt.data());
-  for (std::size_t l = 1; l < std::min<std::size_t>(3, lane_width<simd_lane>); ++l) {  // SSE2: lane 1 only
-    INFO("lane " << l);
-    for (std::size_t j = 0; j < n; ++j) {
-      CHECK(lane_get(f_v[j], l) == f[j]);
-      CHECK(lane_get(df_dt_v[j], l) == df_dt[j]);
-      CHECK(lane_get(J_v.diag(j), l) == J.diag(j));
-      CHECK(lane_get(J_v.off(j), l) == J.off(j));
-    }
-    for (std::size_t p = 0; p < nq; ++p) CHECK(lane_get(q_v[p], l) == q[p]);
-    for (std::size_t k = 0; k < nq * n; ++k) CHECK(lane_get(dq_dy_v[k], l) == dq_dy[k]);
-  }
-  CHECK(lane_get(f_v[0], 0) != f[0]);  // lane 0 is disordered
+  const auto lanes = rotorsweep::testing::linearize_at(simd, theta, t, nq);
+  const auto scalar = rotorsweep::testing::linearize_at(uniform, theta, t, nq);
+  for (std::size_t l = 1; l < std::min<std::size_t>(3, lane_width<simd_lane>); ++l)  // SSE2: lane 1 only
+    rotorsweep::testing::check_lane_bits(lanes, l, scalar, [&](const auto& J_v, const auto& J, std::size_t lane) {
+      for (std::size_t j = 0; j < n; ++j) {
+        CHECK(lane_get(J_v.diag(j), lane) == J.diag(j));
+        CHECK(lane_get(J_v.off(j), lane) == J.off(j));
+      }
+    });
+  CHECK(lane_get(lanes.f[0], 0) != scalar.f[0]);  // lane 0 is disordered
 }
 
 TEST_CASE("a stage evaluation displaced from the linearisation point is evaluate() there",
