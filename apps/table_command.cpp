@@ -21,6 +21,7 @@
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/paper_table.hpp"
 #include "ensemble/rows/scene.hpp"
+#include "ensemble/rows/shadow_run.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/output_target.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -37,7 +38,7 @@ constexpr std::string_view csv_title =
     "# rotorsweep table: the paper's dissipation integrals (N = 20, g = 0.0011; docs/model.md §3)";
 /// The columns' names, after the provenance lines (each starting with "# ").
 constexpr std::string_view csv_header =
-    "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,R_error_kind";
+    "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,R_error_kind,W_error,S_error";
 
 /// Whether an entry's R error bounds its R (resolved, or too large to call it resolved), so that
 /// |R − paper R| over it means something; a symmetry-limited or shadow-departed error does not.
@@ -60,7 +61,10 @@ std::string provenance_lines(const TableOptions& options) {
   lines += text;
   return lines +
          "# R_error: the estimate for the mean of periods 3 and 4; it bounds R where R_error_kind is resolved "
-         "or unresolved, not where it is symmetry-limited or shadow-departed\n";
+         "or unresolved, not where it is symmetry-limited or shadow-departed\n"
+         "# W_error, S_error: in CP the shadow run's difference as R's (2 |X - X_shadow| / 0.9), outside CP the "
+         "tolerance pair's (2 |X(rtol) - X(tight)| s / (1 - s), s = tight / rtol); of the kind R_error_kind "
+         "says\n";
 }
 
 /// The paper's scene as a sweep of the scalar lane with the W, S, R estimators, their moments and
@@ -107,18 +111,42 @@ std::string error_flag(const ensemble::MemberResult& result) {
   return result.dissipation_resolved() ? "resolved" : "unresolved";
 }
 
-/// A member's value of estimator `channel` (whose moment channel is `moment`) over the averaged
-/// periods 3 and 4, t in [4π, 8π]: with the triangular window the mean of its integral over the
-/// periods [τ, τ + 2π], τ in [4π, 6π], which weighs t by (t − 4π)/2π on period 3 and (8π − t)/2π on
-/// period 4: M_3/2π + Q_4 − M_4/2π with M_k = ∫ (t − t_k) q̇ dt; uniform: (Q_3 + Q_4)/2.
-double windowed(const ensemble::MemberResult& result, ensemble::Channel channel, ensemble::Channel moment,
-                bool triangular) {
-  if (result.status != kernels::LaneStatus::ok || result.periods.size() < 4) return NAN;
-  const auto& third = result.periods[2];
-  const auto& fourth = result.periods[3];
+/// Estimator `channel` (whose moment channel is `moment`) over the periods `first` and `first + 1` of
+/// `periods`, the averaged periods 3 and 4, t in [4π, 8π]: with the triangular window the mean of its
+/// integral over the periods [τ, τ + 2π], τ in [4π, 6π], which weighs t by (t − 4π)/2π on period 3 and
+/// (8π − t)/2π on period 4: M_3/2π + Q_4 − M_4/2π with M_k = ∫ (t − t_k) q̇ dt; uniform: (Q_3 + Q_4)/2.
+double windowed_periods(const std::vector<ensemble::PeriodRecord>& periods, std::size_t first,
+                        ensemble::Channel channel, ensemble::Channel moment, bool triangular) {
+  if (periods.size() < first + 2) return NAN;
+  const auto& third = periods[first];
+  const auto& fourth = periods[first + 1];
   if (!triangular) return (third[channel] + fourth[channel]) / 2;
   const double two_pi = 2 * M_PI;
   return third[moment] / two_pi + fourth[channel] - fourth[moment] / two_pi;
+}
+/// A member's value of the estimator over its periods 3 and 4 (NaN where it failed).
+double windowed(const ensemble::MemberResult& result, ensemble::Channel channel, ensemble::Channel moment,
+                bool triangular) {
+  if (result.status != kernels::LaneStatus::ok) return NAN;
+  return windowed_periods(result.periods, 2, channel, moment, triangular);
+}
+
+/// The error of an entry's W or S (`channel`, `moment`): in CP, where they come from R's own run, its
+/// shadow's difference as R's global term, shadow_safety |X − X'| / (1 − s) over the shadow's periods (the
+/// same two; infinite without a shadow that reached the member's attractor); outside CP, where they come
+/// from the run `tight` at estimator_rtol, the tolerance pair's Richardson estimate of that run's error,
+/// shadow_safety |X(rtol) − X(tight)| s / (1 − s), s = estimator_rtol / rtol (infinite for s ≥ 1).
+double estimator_error(const paper::Entry& ref, const ensemble::MemberResult& result,
+                       const ensemble::MemberResult& tight, double s, ensemble::Channel channel,
+                       ensemble::Channel moment, bool triangular) {
+  const double own = windowed(result, channel, moment, triangular);
+  if (ref.cp) {
+    if (result.shadow_departed || result.shadow_periods.empty()) return INFINITY;
+    const double shadow = windowed_periods(result.shadow_periods, 0, channel, moment, triangular);
+    return ensemble::shadow_safety * std::fabs(own - shadow) / (1 - ensemble::shadow_tolerance_scale);
+  }
+  if (s >= 1) return INFINITY;  // one tolerance: no pair
+  return ensemble::shadow_safety * std::fabs(own - windowed(tight, channel, moment, triangular)) * s / (1 - s);
 }
 double windowed_R(const ensemble::MemberResult& r, bool triangular) {
   return windowed(r, ensemble::Channel::dissipation, ensemble::Channel::dissipation_moment, triangular);
@@ -216,9 +244,9 @@ int run_table(const TableOptions& options) {
     }
     csv << provenance_lines(options) << csv_header << "\n";
   }
-  std::printf("%5s %4s %14s %14s %14s %14s %10s %8s %14s %14s %10s %8s %s\n", "A", "IC", "W (work)",
-              "S (Stokes)", "R (drive)", "paper R", "R/paper-1", "steps/T", "paper W", "paper S", "R error",
-              "dev/unc", "R error is");
+  std::printf("%5s %4s %14s %14s %14s %14s %10s %8s %14s %14s %10s %8s %-16s %10s %10s\n", "A", "IC",
+              "W (work)", "S (Stokes)", "R (drive)", "paper R", "R/paper-1", "steps/T", "paper W", "paper S",
+              "R error", "dev/unc", "R error is", "W error", "S error");
   const auto start = std::chrono::steady_clock::now();
   ensemble::Disorder disorder;
   disorder.A = options.disorder;
@@ -237,19 +265,24 @@ int run_table(const TableOptions& options) {
     const double deviation = R / ref.paper_R - 1;
     const double error = result.dissipation_error();
     const std::string flag = error_flag(result);
+    const double s = options.estimator_rtol / options.rtol;
+    const double W_error = estimator_error(ref, result, tight, s, ensemble::Channel::work,
+                                           ensemble::Channel::work_moment, triangular);
+    const double S_error = estimator_error(ref, result, tight, s, ensemble::Channel::stokes,
+                                           ensemble::Channel::stokes_moment, triangular);
     const auto ic = ensemble::kind_name(ref.kind);
     char ratio[16] = "       -";  // dev/unc only where the error bounds R
     if (error_is_bound(flag))
       std::snprintf(ratio, sizeof ratio, "%8.2f",
                     std::fabs(R - ref.paper_R) / (error + paper_rounding(ref.paper_R)));
-    std::printf("%5.0f %4s %14.7e %14.7e %14.7e %14.7e %10.2e %8.0f %14.7e %14.7e %10.2e %s %s\n", ref.A,
-                ic.data(), W, S, R, ref.paper_R, deviation, steps_per_period, ref.paper_W, ref.paper_S, error,
-                ratio, flag.c_str());
+    std::printf("%5.0f %4s %14.7e %14.7e %14.7e %14.7e %10.2e %8.0f %14.7e %14.7e %10.2e %s %-16s %10.2e %10.2e\n",
+                ref.A, ic.data(), W, S, R, ref.paper_R, deviation, steps_per_period, ref.paper_W, ref.paper_S,
+                error, ratio, flag.c_str(), W_error, S_error);
     if (csv) {
-      char line[320];
-      std::snprintf(line, sizeof line, "%g,%s,%.10e,%.10e,%.10e,%.7e,%.3e,%.1f,%.7e,%.7e,%.3e,%s\n", ref.A,
-                    ic.data(), W, S, R, ref.paper_R, deviation, steps_per_period, ref.paper_W, ref.paper_S,
-                    error, flag.c_str());
+      char line[360];
+      std::snprintf(line, sizeof line, "%g,%s,%.10e,%.10e,%.10e,%.7e,%.3e,%.1f,%.7e,%.7e,%.3e,%s,%.3e,%.3e\n",
+                    ref.A, ic.data(), W, S, R, ref.paper_R, deviation, steps_per_period, ref.paper_W,
+                    ref.paper_S, error, flag.c_str(), W_error, S_error);
       csv << line;
     }
   }
@@ -258,7 +291,9 @@ int run_table(const TableOptions& options) {
       "stepper %s, rtol %g, %s window over periods 3 and 4 (W and S outside CP at rtol %g, where they "
       "converge, in CP from R's run; the paper's W at A = 11 lies 9e-5 below its R, ours equals R); R error: "
       "the estimate for the mean of periods 3 and 4 (a shadow run's where they slip); dev/unc: |R - paper R| "
-      "over R error plus half a unit of the paper's 7th digit, where R error bounds R (- where it does not)",
+      "over R error plus half a unit of the paper's 7th digit, where R error bounds R (- where it does not); "
+      "W and S error: in CP the shadow's difference as R's, outside CP the tolerance pair's estimate for the "
+      "tight run, of the kind R error is",
       options.stepper.c_str(), options.rtol, options.window.c_str(), options.estimator_rtol);
   if (options.disorder > 0)
     std::printf("; disorder sigma_A = %g (realization 0 of seed %llu)", options.disorder,

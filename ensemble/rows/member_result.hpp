@@ -124,6 +124,7 @@ struct MemberResult {
   /// estimates no error (shadow_departed).
   double dissipation_shadow = std::numeric_limits<double>::quiet_NaN();
   bool shadow_departed = false;
+  std::vector<PeriodRecord> shadow_periods;  ///< the shadow's periods, kept where `periods` are
   /// D of the member's symmetry probe (its averaged periods with A_j = A (1 + 0.1 rtol ξ_j); NaN where it
   /// had none: ensemble/rows/symmetry_probe.hpp) and whether the probe reached its attractor; whether
   /// an asymmetry below the tolerance decides D (symmetry-limited), and of those, whether the member

@@ -36,6 +36,7 @@ inline void take_shadow(MemberResult& primary, const MemberResult& shadow, bool 
   const bool finished = shadow.status == kernels::LaneStatus::ok;
   primary.dissipation_shadow = finished ? shadow.dissipation() : std::numeric_limits<double>::quiet_NaN();
   primary.shadow_departed = finished && !followed;
+  if (!primary.periods.empty()) primary.shadow_periods = shadow.periods;
   const double global = finished && followed
                             ? shadow_safety * std::fabs(primary.dissipation() - shadow.dissipation()) /
                                   (1 - shadow_tolerance_scale)

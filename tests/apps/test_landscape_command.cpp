@@ -190,10 +190,10 @@ TEST_CASE("landscape replaces a file that is not HDF5 only with --force", "[apps
 namespace {
 
 /// One row of table's CSV (A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,
-/// R_error_kind).
+/// R_error_kind,W_error,S_error).
 struct TableRow {
   double A = 0, W = 0, S = 0, R = 0, paper_R = 0, deviation = 0, steps = 0, paper_W = 0, paper_S = 0,
-         error = 0;
+         error = 0, W_error = 0, S_error = 0;
   std::string ic, kind;
 };
 
@@ -208,9 +208,9 @@ std::string provenance(std::istream& in, std::string& header) {
 TableRow table_row(const std::string& line) {
   TableRow row;
   char ic[8] = {}, kind[24] = {};
-  REQUIRE(std::sscanf(line.c_str(), "%lf,%7[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%23s", &row.A, ic, &row.W,
-                      &row.S, &row.R, &row.paper_R, &row.deviation, &row.steps, &row.paper_W, &row.paper_S,
-                      &row.error, kind) == 12);
+  REQUIRE(std::sscanf(line.c_str(), "%lf,%7[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%23[^,],%lf,%lf", &row.A, ic,
+                      &row.W, &row.S, &row.R, &row.paper_R, &row.deviation, &row.steps, &row.paper_W,
+                      &row.paper_S, &row.error, kind, &row.W_error, &row.S_error) == 14);
   row.ic = ic;
   row.kind = kind;
   return row;
@@ -229,20 +229,22 @@ TEST_CASE("table prints W and S that agree with R outside CP, beside the paper's
   std::string line;
   const std::string made = provenance(in, line);
   CHECK(line ==
-        "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,R_error_kind");
+        "A,ic,W,S,R,paper_R,relative_deviation,steps_per_period,paper_W,paper_S,R_error,R_error_kind,W_error,"
+        "S_error");
   // how it was made: program, stepper, tolerances, window, disorder, what R_error means
   CHECK_THAT(made, Catch::StartsWith("# rotorsweep table: the paper's dissipation integrals") &&
                        Catch::Contains("# written by rotorsweep ") &&
                        Catch::Contains("# stepper rodas4p2, rtol 1e-09 (W and S outside CP at rtol 1e-12), "
                                        "triangular window over periods 3 and 4\n") &&
-                       Catch::Contains("# disorder: none\n") && Catch::Contains("# R_error: "));
+                       Catch::Contains("# disorder: none\n") && Catch::Contains("# R_error: ") &&
+                       Catch::Contains("# W_error, S_error: "));
   // dev/unc only where the error bounds R: not for the symmetry-limited CP entries
   for (const char* entry : {"    6  AFM", "    8   FM"}) {
     const auto at = run.output.find(entry);
     REQUIRE(at != std::string::npos);
     const std::string row = run.output.substr(at, run.output.find('\n', at) - at);
     INFO(row);
-    CHECK_THAT(row, Catch::EndsWith("       - symmetry-limited"));
+    CHECK_THAT(row, Catch::Contains("       - symmetry-limited"));
   }
   int outside_cp = 0;
   while (std::getline(in, line)) {
@@ -256,6 +258,10 @@ TEST_CASE("table prints W and S that agree with R outside CP, beside the paper's
     if (A == 6 || A == 8) {  // CP: symmetry-limited, the error the shadow run's difference
       CHECK(kind == "symmetry-limited");
       CHECK(error > 1e-6 * R);  // far above the local estimate
+      CHECK(row.W_error > 1e-6 * R);  // W and S from R's run: their shadow's difference, finite
+      CHECK(row.S_error > 1e-6 * R);
+      CHECK(std::isfinite(row.W_error));
+      CHECK(std::isfinite(row.S_error));
       continue;
     }
     ++outside_cp;
@@ -264,6 +270,11 @@ TEST_CASE("table prints W and S that agree with R outside CP, beside the paper's
     CHECK(std::fabs(R / paper_R - 1) < 2 * error / R + 1e-6);  // the paper's 7 digits
     CHECK(std::fabs(W / R - 1) < 1e-6);  // at rtol 1e-9 alone they were off by up to 4.7e-4
     CHECK(std::fabs(S / R - 1) < 1e-6);
+    // the tolerance pair's estimate for the rtol 1e-12 run: 2e-3 of its difference from the 1e-9 run (up to 1.5e-6 R)
+    CHECK(row.W_error > 0);
+    CHECK(row.W_error < 1e-5 * R);
+    CHECK(row.S_error > 0);
+    CHECK(row.S_error < 1e-5 * R);
   }
   CHECK(outside_cp == 6);
   // each CP entry over noise draws, with its spread and its flags: none resolved, all symmetry-limited

@@ -21,7 +21,7 @@ TEST_CASE("D converges as the tolerance tightens outside CP", "[ensemble][tolera
       "[numerics]\nstepper = \"" +
           stepper +
           "\"\nrtol = [1e-6, 1e-8, 1e-10, 1e-12]\natol = [1e-9, 1e-11, 1e-13, 1e-15]\ncontroller = \"" +
-          controller + "\"\n",
+          controller + "\"\nglobal_error = \"local\"\n",  // no flags asked: no symmetry probes
       "tolerance.toml");
   const auto members = plan_members(scene);
   const auto outcome = run_sweep(scene, members, {.threads = 2});
