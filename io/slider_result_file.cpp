@@ -125,13 +125,15 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
                                      [](const SliderMember& m) { return std::int64_t(m.index.replica); }));
   c.push_back(Column::real_valued(
       "members/friction",
-      "mean drive force over the whole periods of sliding, N (NaN where status is not ok)",
+      "mean drive force over the averaged periods of sliding: those after drive.relax_periods (by default "
+      "the first, the transient after the rest; none where the run slides one period), N (NaN where status "
+      "is not ok)",
       [](const SliderMember& m) { return m.friction; }));
   c.push_back(Column::real_valued("members/order_x",
-                                  "mean over the sliding samples of cos(θ_i − θ_j) for x-neighbours",
+                                  "mean over the averaged periods' samples of cos(θ_i − θ_j) for x-neighbours",
                                   [](const SliderMember& m) { return m.order_x; }));
   c.push_back(Column::real_valued("members/order_y",
-                                  "mean over the sliding samples of cos(θ_i − θ_j) for y-neighbours",
+                                  "mean over the averaged periods' samples of cos(θ_i − θ_j) for y-neighbours",
                                   [](const SliderMember& m) { return m.order_y; }));
   c.push_back(Column::real_valued("members/steps_accepted", "accepted steps",
                                   [](const SliderMember& m) { return m.steps_accepted; }));

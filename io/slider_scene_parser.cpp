@@ -21,7 +21,7 @@ const std::map<std::string, std::set<std::string>> slider_keys{
      {"columns", "rows", "spacing", "moment", "inertia", "damping", "dynamics", "tilt", "shift_x",
       "shift_y"}},
     {"substrate", {"columns", "rows", "moment", "nodes_per_depth", "angle", "extent"}},
-    {"drive", {"speed", "rest", "end", "periods"}},
+    {"drive", {"speed", "rest", "end", "periods", "relax_periods"}},
     {"sweep", {"separation"}},
     {"initial", {"kind", "noise", "replicas", "seed", "angles"}},
     {"observables",
@@ -144,6 +144,22 @@ void read_run_length(const Section& drive, SliderScene& scene) {
     fail(drive.key("end"), "gives more than 10000 substrate periods of sliding");
 }
 
+/// drive.relax_periods: whole periods of sliding before the friction is averaged, fewer than the run
+/// slides (after read_run_length).
+void read_relax_periods(const Section& drive, SliderScene& scene) {
+  if (!drive.find("relax_periods")) return;
+  const double period = scene.spacing / scene.speed;
+  const auto sliding = scene.periods > 0 ? scene.periods
+                                         : std::size_t(std::floor((scene.end - scene.rest) / period + 1e-9));
+  const std::string what = "an integer from 0 to " + std::to_string(sliding - 1) +
+                           ": whole substrate periods of sliding before the friction is averaged, fewer "
+                           "than the " + std::to_string(sliding) + " the run slides";
+  const long long relax =
+      drive.integer("relax_periods", 1, what, [](long long p) { return p >= 0 && p < 10000; });
+  if (std::size_t(relax) >= sliding) fail(drive.key("relax_periods"), "must be " + what);
+  scene.relax_periods = std::size_t(relax);
+}
+
 /// The rest and the sample points a member's series hold: at most 10⁴ substrate periods of rest at the
 /// fastest speed (as of sliding), and at most 10⁷ points over the speeds (the series' columns × speeds).
 void check_samples(const SliderScene& scene) {
@@ -242,6 +258,7 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.speed = scene.speeds.front();
   scene.rest = drive.number("rest", scene.rest, "a number >= 0 (s)", [](double x) { return x >= 0; });
   read_run_length(drive, scene);
+  read_relax_periods(drive, scene);
 
   scene.separations = grid(section(root, "sweep"), "separation", "> 0 (layer separation h, m)", positive);
   for (const double h : scene.separations)

@@ -195,13 +195,13 @@ FIGURES = [
     ("README.md", r"in units of the spread \(([0-9.–]+) below the mean", "table", draws_range),
     ("README.md", r"come out\s+as ([0-9., N−-]+?) and [0-9.]+, [0-9.]+, [−-][0-9.]+ \(", "slider",
      lambda r: ", ".join(force(x) for x in r.slider["window_force"]) + " N"),
-    ("README.md", r"over the whole periods of sliding, gives ([0-9., N]+)\)", "slider",
+    ("README.md", r"over its averaged periods — the same window —, gives ([0-9., N]+)\)", "slider",
      lambda r: ", ".join(force(x) for x in r.slider["friction"]) + " N"),
     ("docs/model.md", r"the same window ([0-9.]+ N and [0-9.]+, [0-9.]+ N and\s+[0-9.]+, [0-9.]+ N and [−-][0-9.]+)",
      "slider", lambda r: "{} N and {:.3f}, {} N and {:.3f}, {} N and −{:.3f}".format(
          force(r.slider["window_force"][0]), r.slider["window_order"][0], force(r.slider["window_force"][1]),
          r.slider["window_order"][1], force(r.slider["window_force"][2]), -r.slider["window_order"][2])),
-    ("docs/model.md", r"over the whole periods of sliding \(([0-9., N]+)\)", "slider",
+    ("docs/model.md", r"over its averaged periods, the same window \(([0-9., N]+)\)", "slider",
      lambda r: ", ".join(force(x) for x in r.slider["friction"]) + " N"),
 ]
 

@@ -122,13 +122,14 @@ void summarize_slider_member(const SliderScene& scene, const SliderSampleGrid& g
     m.period_balance.push_back((work - dissipated - stored) /
                                std::max({std::fabs(work), std::fabs(dissipated), 1e-300}));
   }
-  m.friction = ok && grid.periods > 0 ? (at.impulse[grid.periods] - at.impulse[0]) /
-                                            (period * double(grid.periods)) * units.force
-                                      : nan;
+  const std::size_t first = grid.periods > 0 ? scene.averaging_start(grid.periods) : 0;
+  m.friction = ok && grid.periods > first ? (at.impulse[grid.periods] - at.impulse[first]) /
+                                                (period * double(grid.periods - first)) * units.force
+                                          : nan;
   double sum_x = 0.0, sum_y = 0.0;
   std::size_t count = 0;
   for (std::size_t k = 0; k < grid.stops.size(); ++k) {
-    if (grid.index[k] <= 0) continue;
+    if (grid.index[k] <= long(first * grid.samples_per_period)) continue;
     sum_x += m.order_x_series[k];
     sum_y += m.order_y_series[k];
     ++count;

@@ -50,7 +50,7 @@ struct SliderBoundaries {
 };
 
 /// Fills m's friction, work, dissipation, stored energy and balance per period, its mean friction and
-/// order parameters and (with SliderScene::forces) the per-period means of F_y and F_z, from its
+/// order parameters over the periods after SliderScene::averaging_start (the transient left out), and (with SliderScene::forces) the per-period means of F_y and F_z, from its
 /// series (on `grid`'s samples) and boundaries; NaN where the member failed (`ok` false: its values
 /// would describe a frozen state).
 void summarize_slider_member(const SliderScene& scene, const SliderSampleGrid& grid,

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -82,6 +83,14 @@ struct SliderScene {
   /// sets end = rest + periods a/v where periods is given.
   double speed = 8e-3;
   double end = 10.5;
+  /// Whole periods of sliding before the friction and the order parameters are averaged
+  /// (drive.relax_periods: the transient after the rest, as a row member's relax periods); unset, 1, or
+  /// none where the run slides one period only (averaging_start).
+  std::optional<std::size_t> relax_periods;
+  /// The first averaged period of a run that slides `sliding` ≥ 1 whole periods.
+  std::size_t averaging_start(std::size_t sliding) const {
+    return relax_periods ? *relax_periods : std::min<std::size_t>(1, sliding - 1);
+  }
 
   // [sweep]
   std::vector<double> separations{8e-3};  ///< h, m

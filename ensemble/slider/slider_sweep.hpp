@@ -20,10 +20,10 @@ struct SliderMember {
   double speed = 0.0;       ///< v, m/s
   double damping = 0.0;     ///< γ, kg m²/s
   double separation = 0.0;  ///< h, m
-  double friction = 0.0;    ///< mean drive force over the whole periods of sliding, N
+  double friction = 0.0;    ///< mean drive force over the averaged periods of sliding, N
   std::vector<double> period_friction, period_work, period_dissipation, period_stored;  ///< N, J, J, J
   std::vector<double> period_balance;   ///< (work − dissipation − stored) / max(|work|, dissipation)
-  double order_x = 0.0, order_y = 0.0;  ///< mean over the samples while sliding
+  double order_x = 0.0, order_y = 0.0;  ///< mean over the averaged periods' samples
   /// Per sample of the scan's timeline (SliderTimeline: NaN before the first sample of the member's speed)
   std::vector<double> friction_series, order_x_series, order_y_series, energy_series;
   std::vector<double> angles;  ///< samples × rotors, when asked for

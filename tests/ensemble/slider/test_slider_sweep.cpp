@@ -9,6 +9,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "ensemble/slider/slider_sweep.hpp"
@@ -45,6 +46,27 @@ TEST_CASE("slider units: the experiment's energy and time scales", "[ensemble][s
   CHECK(lattice.depth == 0.5);
 }
 
+TEST_CASE("slider friction averages the periods after drive.relax_periods", "[ensemble][slider]") {
+  const auto scene_with = [](const std::string& relax) {
+    return "[slider]\ncolumns = 2\nrows = 2\n[substrate]\ncolumns = 9\nrows = 9\n[drive]\nrest = 0.5\nperiods = 3\n" +
+           relax + "[sweep]\nseparation = 8e-3\n[observables]\nsamples_per_period = 20\n";
+  };
+  for (const auto& [relax, first] : {std::pair{std::string(), 1}, std::pair{std::string("relax_periods = 0\n"), 0},
+                                     std::pair{std::string("relax_periods = 2\n"), 2}}) {
+    INFO(relax);
+    const auto m = scan(scene_with(relax)).members.front();
+    REQUIRE(m.period_friction.size() == 3);
+    double sum = 0;
+    for (std::size_t p = std::size_t(first); p < 3; ++p) sum += m.period_friction[p];
+    CHECK(m.friction == Approx(sum / double(3 - first)).epsilon(1e-12));
+  }
+  // one period slid: it is averaged by default, and a relax_periods that leaves none is refused
+  const auto one = scan(scene_with("").replace(scene_with("").find("periods = 3"), 11, "periods = 1"));
+  CHECK(one.members.front().friction == Approx(one.members.front().period_friction[0]).epsilon(1e-12));
+  CHECK_THROWS_WITH(rotorsweep::io::parse_slider_scene_text(scene_with("relax_periods = 3\n"), "s"),
+                    Catch::Contains("drive.relax_periods") && Catch::Contains("fewer than the 3 the run slides"));
+}
+
 TEST_CASE("slider scan: samples, periods, energy balance and friction", "[ensemble][slider]") {
   const auto result = scan(small_scene());
   REQUIRE(result.members.size() == 4);
@@ -58,7 +80,7 @@ TEST_CASE("slider scan: samples, periods, energy balance and friction", "[ensemb
   for (const auto& m : result.members) {
     CHECK(m.status == "ok");
     REQUIRE(m.period_friction.size() == 2);
-    CHECK(m.friction == Approx(0.5 * (m.period_friction[0] + m.period_friction[1])));
+    CHECK(m.friction == Approx(m.period_friction[1]));  // the first period is the transient after the rest
     for (std::size_t p = 0; p < 2; ++p) {
       CHECK(std::fabs(m.period_balance[p]) < 1e-5);
       CHECK(m.period_work[p] == Approx(m.period_friction[p] * 16e-3).epsilon(1e-9));  // W = F̄ a
