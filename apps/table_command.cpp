@@ -143,7 +143,7 @@ double estimator_error(const paper::Entry& ref, const ensemble::MemberResult& re
   if (ref.cp) {
     if (result.shadow_departed || result.shadow_periods.empty()) return INFINITY;
     const double shadow = windowed_periods(result.shadow_periods, 0, channel, moment, triangular);
-    return ensemble::shadow_safety * std::fabs(own - shadow) / (1 - ensemble::shadow_tolerance_scale);
+    return ensemble::shadow_error(own, shadow);
   }
   if (s >= 1) return INFINITY;  // one tolerance: no pair
   return ensemble::shadow_safety * std::fabs(own - windowed(tight, channel, moment, triangular)) * s / (1 - s);

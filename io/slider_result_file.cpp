@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "ensemble/engine/replica_statistics.hpp"
+#include "ensemble/engine/shadow_estimate.hpp"
 #include "io/output_target.hpp"
+#include "io/toml_section.hpp"
 #include "kernels/steppers/lane_status.hpp"
 
 namespace rotorsweep::io {
@@ -45,8 +47,9 @@ void write_curve(const Hdf5Location& file, const ensemble::SliderScene& scene) {
   const auto members = file.open_group("members");
   const auto friction_of = members.read_doubles("friction"), order_x_of = members.read_doubles("order_x"),
              order_y_of = members.read_doubles("order_y");
+  const auto error_of = scene.shadow_runs ? members.read_doubles("friction_error") : std::vector<double>{};
   const auto status = members.read_strings("status");
-  std::vector<double> speed, damping, scaled_damping, separation, friction, spread, sem, order_x, order_y,
+  std::vector<double> speed, damping, scaled_damping, separation, friction, spread, sem, bias, order_x, order_y,
       paper_A, field_A;
   std::vector<std::int64_t> columns, rows, valid;
   for (std::size_t point = 0; point < scene.member_count() / scene.replicas; ++point) {
@@ -65,6 +68,10 @@ void write_curve(const Hdf5Location& file, const ensemble::SliderScene& scene) {
         scene.replicas, [&](std::size_t r) { return order_x_of[first + r]; }, ok);
     const auto y = ensemble::replica_statistics(
         scene.replicas, [&](std::size_t r) { return order_y_of[first + r]; }, ok);
+    if (scene.shadow_runs)
+      bias.push_back(
+          ensemble::replica_statistics(scene.replicas, [&](std::size_t r) { return error_of[first + r]; }, ok)
+              .mean);
     const double n = double(f.count);
     separation.push_back(h);
     columns.push_back(std::int64_t(size.columns));
@@ -92,8 +99,11 @@ void write_curve(const Hdf5Location& file, const ensemble::SliderScene& scene) {
   curve.write("friction_sem", sem, {},
               "standard error of friction: population spread / √(n − 1) over the replicas that finished, the "
               "statistic of every result file's curves (README \"Output file\"), N (NaN below 2 replicas)");
-  curve.write("order_x", order_x, {}, "mean alignment of x-neighbours, cos(θ_i − θ_j), while sliding");
-  curve.write("order_y", order_y, {}, "mean alignment of y-neighbours while sliding");
+  if (scene.shadow_runs)
+    curve.write("friction_bias", bias, {},
+                "mean of the replicas' friction_error: a bound on the integration's bias of friction, N");
+  curve.write("order_x", order_x, {}, "mean alignment of x-neighbours, cos(θ_i − θ_j), over the averaged periods");
+  curve.write("order_y", order_y, {}, "mean alignment of y-neighbours over the averaged periods");
   curve.write("replicas", valid, "replicas that finished (status ok)");
   curve.write("A_paper", paper_A, {}, "row model's A = (a/h)³ m_sub/m (docs/model.md §9)");
   curve.write("A_field", field_A, {},
@@ -102,6 +112,7 @@ void write_curve(const Hdf5Location& file, const ensemble::SliderScene& scene) {
   curve.set_units("speed", "m/s");
   curve.set_units("damping", "kg m²/s");
   for (const char* force : {"friction", "friction_std", "friction_sem"}) curve.set_units(force, "N");
+  if (scene.shadow_runs) curve.set_units("friction_bias", "N");
 }
 
 }  // namespace
@@ -129,6 +140,20 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
       "the first, the transient after the rest; none where the run slides one period), N (NaN where status "
       "is not ok)",
       [](const SliderMember& m) { return m.friction; }));
+  if (scene.shadow_runs) {
+    c.push_back(Column::real_valued(
+        "members/friction_shadow",
+        "friction of the member's shadow run, the same member at tolerances × " +
+            number_text(ensemble::shadow_tolerance_scale) + ", N (NaN where it or its shadow failed)",
+        [](const SliderMember& m) { return m.friction_shadow; }));
+    c.push_back(Column::real_valued(
+        "members/friction_error",
+        "estimated integration error of friction, " + number_text(ensemble::shadow_safety) +
+            " |friction − friction_shadow| / " + number_text(1 - ensemble::shadow_tolerance_scale) +
+            " (Richardson's estimate for an error proportional to the tolerance, with a margin), N "
+            "(infinite where the shadow failed, NaN where the member did)",
+        [](const SliderMember& m) { return m.friction_error; }));
+  }
   c.push_back(Column::real_valued("members/order_x",
                                   "mean over the averaged periods' samples of cos(θ_i − θ_j) for x-neighbours",
                                   [](const SliderMember& m) { return m.order_x; }));
@@ -229,6 +254,8 @@ std::vector<SliderColumn> slider_columns(const ensemble::SliderScene& scene,
                                                  {"members/speed", "m/s"},
                                                  {"members/damping", "kg m²/s"},
                                                  {"members/friction", "N"},
+                                                 {"members/friction_shadow", "N"},
+                                                 {"members/friction_error", "N"},
                                                  {"members/period_friction", "N"},
                                                  {"members/period_work", "J"},
                                                  {"members/period_dissipation", "J"},

@@ -26,7 +26,7 @@ const std::map<std::string, std::set<std::string>> slider_keys{
     {"initial", {"kind", "noise", "replicas", "seed", "angles"}},
     {"observables",
      {"samples_per_period", "series", "angles", "energies", "field", "sublattices", "torques", "forces"}},
-    {"numerics", {"stepper", "rtol", "atol", "max_steps", "device", "linear_solver"}},
+    {"numerics", {"stepper", "rtol", "atol", "max_steps", "device", "linear_solver", "global_error"}},
     {"output", {"path"}},
 };
 
@@ -308,6 +308,7 @@ SliderScene read_slider_scene(const toml::table& root) {
   scene.linear_solver = solver == "dense"    ? ensemble::SliderSolver::dense
                         : solver == "krylov" ? ensemble::SliderSolver::krylov
                                              : ensemble::SliderSolver::automatic;
+  scene.shadow_runs = numerics.choice("global_error", "shadow", {"shadow", "local"}) == "shadow";
 
   const Section output = section(root, "output");
   scene.output_path = output.text("path", scene.output_path);

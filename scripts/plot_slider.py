@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The slider scan of `rotorsweep slider` (docs/model.md §9): friction force against the layer separation h
-(the experiment's curve), the order parameters against h, and the friction's time series at three
+(the experiment's curve, with the integration error's bars where the file has them), the order parameters
+against h, and the friction's time series at three
 separations (the closest, the friction peak, the farthest). With --rows, the friction the row model
 predicts for the slider size whose columns equal its model.row_length (a `rotorsweep run` result), its
 A mapped to h both ways of docs/model.md §9: the paper's (a/h)³ m_sub/m and the substrate
@@ -130,6 +131,8 @@ def main(h5_path, png_path, rows_path=None):
                 sys.exit(f"error: {h5_path} scans {axis}s: draw it with --velocity (friction against speed)")
         curve = {name: c[name][:] for name in ("separation", "columns", "rows", "friction", "friction_std",
                                                 "order_x", "order_y", "A_paper", "A_field")}
+        # the integration error's bound (numerics.global_error = "shadow"); absent with "local"
+        curve["friction_bias"] = c["friction_bias"][:] if "friction_bias" in c else None
         curve["separation"] = curve["separation"] * 1e3
         energy_unit, spacing, period = f.attrs["energy_unit"], f.attrs["spacing"], f.attrs["period"]
         series = None
@@ -154,6 +157,10 @@ def main(h5_path, png_path, rows_path=None):
         line, = axes[0].plot(h, friction, "o-", ms=3, label=label)
         if np.isfinite(spread).any():
             axes[0].fill_between(h, friction - spread, friction + spread, color=line.get_color(), alpha=0.25)
+        if curve["friction_bias"] is not None:
+            bias = curve["friction_bias"][sel]
+            axes[0].errorbar(h, friction, yerr=bias, fmt="none", ecolor=line.get_color(), elinewidth=0.8,
+                             capsize=2, label=f"{label}: integration error (largest {np.nanmax(bias):.1e} N)")
         axes[1].plot(h, curve["order_x"][sel], "o-", ms=3, color=line.get_color(), label=f"{label}: x-neighbours")
         axes[1].plot(h, curve["order_y"][sel], "s--", ms=3, color=line.get_color(), label=f"{label}: y-neighbours")
         if (columns, rows) == compared:

@@ -7,15 +7,11 @@
 #include <cmath>
 #include <limits>
 
+#include "ensemble/engine/shadow_estimate.hpp"
 #include "ensemble/rows/member_result.hpp"
 
 namespace rotorsweep::ensemble {
 
-/// s: the shadow run's tolerances are rtol·s and atol·s.
-inline constexpr double shadow_tolerance_scale = 0.1;
-/// The factor on the Richardson estimate |D − D'| / (1 − s), which matched the actual global error
-/// to within ±30 % where D converges (σ_A = 1e-6, docs/numerics.md), so that it bounds it.
-inline constexpr double shadow_safety = 2.0;
 /// The least a slipping member's error is given, in units of its local estimate: the slips amplify
 /// the local error (by 1.4–210, median 50–70, on the coverage sets of docs/numerics.md), and where
 /// the shadow agrees with its primary by chance its difference alone would miss that.
@@ -37,10 +33,8 @@ inline void take_shadow(MemberResult& primary, const MemberResult& shadow, bool 
   primary.dissipation_shadow = finished ? shadow.dissipation() : std::numeric_limits<double>::quiet_NaN();
   primary.shadow_departed = finished && !followed;
   if (!primary.periods.empty()) primary.shadow_periods = shadow.periods;
-  const double global = finished && followed
-                            ? shadow_safety * std::fabs(primary.dissipation() - shadow.dissipation()) /
-                                  (1 - shadow_tolerance_scale)
-                            : std::numeric_limits<double>::infinity();
+  const double global = finished && followed ? shadow_error(primary.dissipation(), shadow.dissipation())
+                                             : std::numeric_limits<double>::infinity();
   double& error = primary.summary(Summary::mean, Channel::dissipation_error);
   error = std::max(shadow_local_floor * error, global);
 }

@@ -6,7 +6,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <deque>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -17,6 +19,7 @@
 #include "ensemble/slider/slider_member_summary.hpp"
 #include "ensemble/slider/slider_sample_grid.hpp"
 #include "ensemble/slider/slider_scene.hpp"
+#include "ensemble/slider/slider_shadow.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/lane.hpp"
@@ -26,17 +29,25 @@
 
 namespace rotorsweep::ensemble {
 
+/// What a lane runs: plan member `plan_index`, or (`shadow`) that member's shadow run.
+struct SliderRun {
+  std::size_t plan_index = 0;
+  bool shadow = false;
+  SliderRun(std::size_t index = 0, bool is_shadow = false) : plan_index(index), shadow(is_shadow) {}
+};
+
 /// Members (plan indices) of one slider size on the lanes of an IntegrationLoop over
 /// SliderModel<V, Inertial, Pairs> with Stepper, for LaneScheduler: each member's stops are its speed's
 /// sample grid's (`grids`, one per speed), where its lane is sampled (drive force, order parameters, energy;
 /// its quadratures at period boundaries); it retires after the last sample. Lanes sampled in the same step
-/// attempt share one evaluation of the model.
+/// attempt share one evaluation of the model. With shadow runs a finished member is held until its shadow
+/// (the same member at tolerances × s, queued before the plan's next) has run, then retires with its error.
 template <class V, bool Inertial, class Stepper, class Pairs = kernels::DirectPairs<V>>
 class SliderProblem {
  public:
   using Model = kernels::SliderModel<V, Inertial, Pairs>;
   using Loop = IntegrationLoop<Model, kernels::AdaptiveIntegrator<Model, Stepper>>;
-  using Member = std::size_t;  ///< a plan index
+  using Member = SliderRun;
   using Result = SliderMember;
   static constexpr std::size_t width = Loop::width;
 
@@ -57,14 +68,20 @@ class SliderProblem {
         lanes_(width) {}
 
   bool refill() const { return true; }
-  std::optional<Member> take_queued() { return std::nullopt; }
-  bool has_queued() const { return false; }
+  std::optional<Member> take_queued() {
+    if (queued_.empty()) return std::nullopt;
+    const Member run = queued_.front();
+    queued_.pop_front();
+    return run;
+  }
+  bool has_queued() const { return !queued_.empty(); }
 
-  /// Puts plan member `plan_index` into lane l: its substrate table, its speed's grid and damping, its
-  /// start; its schedule is one stop per sample.
-  StopSchedule start(std::size_t l, Member plan_index, bool) {
+  /// Puts plan member `run.plan_index` (or its shadow run) into lane l: its substrate table, its speed's
+  /// grid and damping, its start; its schedule is one stop per sample.
+  StopSchedule start(std::size_t l, Member run, bool) {
     Lane& lane = lanes_[l];
-    lane.member = slider_plan_member(scene_, plan_index);
+    lane.member = slider_plan_member(scene_, run.plan_index);
+    lane.shadow = run.shadow;
     const SliderScene variant = slider_variant(scene_, lane.member.index.speed, lane.member.index.damping);
     lane.grid = &grids_[lane.member.index.speed];
     lane.table = table(variant, lane.member.index);
@@ -85,6 +102,7 @@ class SliderProblem {
     const std::vector<double> theta = slider_start(scene_, lane.member.index);
     std::copy(theta.begin(), theta.end(), y0.begin());
     loop_.start(l, parameters, y0);
+    if (run.shadow) loop_.set_tolerance_scale(l, shadow_tolerance_scale);
     loop_.set_stop(l, lane.grid->stops.front());
     const std::size_t samples = lane.grid->stops.size();
     size_slider_series(lane.member, scene_, samples);
@@ -130,12 +148,22 @@ class SliderProblem {
     for (std::size_t k = lane.sample; k < lane.grid->stops.size(); ++k) record_sample(l, k);
     summarize_slider_member(scene_, *lane.grid, lane.boundaries, ok, m);
     loop_.release(l);
-    retire(std::move(m));
+    if (lane.shadow) {
+      auto primary = held_.extract(m.plan_index);
+      take_slider_shadow(primary.mapped(), m);
+      retire(std::move(primary.mapped()));
+    } else if (needs_slider_shadow(scene_, m)) {
+      queued_.push_back({m.plan_index, true});
+      held_.emplace(m.plan_index, std::move(m));
+    } else {
+      retire(std::move(m));
+    }
   }
 
  private:
   struct Lane {
     SliderMember member;
+    bool shadow = false;  ///< the member's shadow run
     const SliderSampleGrid* grid = nullptr;                ///< its speed's
     std::shared_ptr<const kernels::SubstrateTable> table;  ///< kept while the model may read it
     /// With SliderScene::forces: the tables at shifted tracks (SliderModel::GradientTable order)
@@ -246,6 +274,8 @@ class SliderProblem {
   std::shared_ptr<const kernels::SubstrateTable> last_table_;  ///< the last table built ...
   std::pair<std::size_t, std::size_t> last_table_key_{};       ///< ... for this (speed, separation)
   std::vector<Lane> lanes_;
+  std::deque<Member> queued_;                  ///< shadow runs waiting for a lane
+  std::map<std::size_t, SliderMember> held_;  ///< finished members waiting for their shadows, by plan index
 };
 
 }  // namespace rotorsweep::ensemble

@@ -135,6 +135,10 @@ struct SliderScene {
   /// slider_team_member.hpp; the slider's default stepper only).
   Device device = Device::cpu;
   SliderSolver linear_solver = SliderSolver::automatic;
+  /// numerics.global_error = "shadow": every member runs again at tolerances × shadow_tolerance_scale
+  /// and friction_error is the difference's Richardson estimate (ensemble/slider/slider_shadow.hpp);
+  /// "local": no shadow runs and no friction error
+  bool shadow_runs = true;
 
   std::string output_path = "results/slider.h5";
   std::string text;  ///< the scene file as read

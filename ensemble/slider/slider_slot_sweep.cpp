@@ -1,13 +1,17 @@
 // A slider scan through slots (docs/architecture.md "Teams"): groups of one size and speed, their
-// separations' substrate tables (docs/model.md §9 "Substrate field") built once, chunks on the device.
+// separations' substrate tables (docs/model.md §9 "Substrate field") built once, chunks on the device,
+// the members' shadow runs (ensemble/slider/slider_shadow.hpp) as chunks of their own between them.
 #include "ensemble/slider/slider_slot_sweep.hpp"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <deque>
+#include <map>
 #include <optional>
 
 #include "ensemble/engine/chunk_runs.hpp"
+#include "ensemble/slider/slider_shadow.hpp"
 #include "kernels/models/slider/slider_model.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -66,6 +70,8 @@ RunOutcome run_slider_members_in_slots(const SliderScene& scene, const std::vect
                                        SliderSlotDevice& device, const SliderTableBuilder& build_table) {
   const auto start = std::chrono::steady_clock::now();
   const double first_step_scale = slider_first_step_scale(scene);
+  const SliderScene shadow_scene = slider_shadow_scene(scene);
+  const double shadow_first_step_scale = slider_first_step_scale(shadow_scene);
   RunOutcome outcome;
   SweepStatistics& stats = outcome.statistics;
   stats.threads = control.thread_count();
@@ -94,24 +100,49 @@ RunOutcome run_slider_members_in_slots(const SliderScene& scene, const std::vect
     const std::vector<SliderTableViews> views = per_separation(device.place_tables(placed), scene.forces);
 
     const SliderSlotSchedule schedule = slider_slot_schedule(scene, first.speed, size, first_step_scale);
+    const SliderSlotSchedule shadow_schedule =
+        slider_slot_schedule(shadow_scene, first.speed, size, shadow_first_step_scale);
     const std::size_t capacity =
         std::min(std::max<std::size_t>(1, device.chunk_members(schedule)), end - begin);
     std::array<std::optional<SliderSlotChunk>, 2> chunks;  // a slot's chunk made at its first start
+    std::array<bool, 2> shadows{};                         // whether a slot's chunk runs shadows
     std::vector<std::size_t> claimed;                      // a chunk's plan indices
+    std::deque<std::size_t> queued;                        // members whose shadows wait for a chunk
+    std::map<std::size_t, SliderMember> held;              // finished members waiting for their shadows
     const bool halted = run_group_in_chunks(
-        device, {begin, end}, capacity, control, done, stats, [] { return std::size_t(0); },
+        device, {begin, end}, capacity, control, done, stats, [&] { return queued.size(); },
         [&](std::size_t slot, const std::vector<std::size_t>& positions) -> SliderSlotChunk& {
           claimed.clear();
           for (const std::size_t k : positions) claimed.push_back(plan_indices[k]);
+          shadows[slot] = positions.empty();  // the queued shadows
+          while (shadows[slot] && claimed.size() < capacity && !queued.empty()) {
+            claimed.push_back(queued.front());
+            queued.pop_front();
+          }
           if (!chunks[slot]) chunks[slot].emplace(scene, first.speed, schedule, capacity);
+          chunks[slot]->set_tolerances(shadows[slot] ? shadow_schedule : schedule);
           chunks[slot]->fill(claimed, views);
           return *chunks[slot];
         },
         [&](SliderSlotChunk& chunk) {
+          const bool shadow = chunks[1] && &chunk == &*chunks[1] ? shadows[1] : shadows[0];
           std::vector<SliderMember> members;
-          for (std::size_t k = 0; k < chunk.count(); ++k) members.push_back(chunk.member(k));
-          finished(std::move(members));
-          return ChunkDelivery{chunk.count(), 0.0};
+          for (std::size_t k = 0; k < chunk.count(); ++k) {
+            SliderMember member = chunk.member(k);
+            if (shadow) {
+              auto primary = held.extract(member.plan_index);
+              take_slider_shadow(primary.mapped(), member);
+              members.push_back(std::move(primary.mapped()));
+            } else if (needs_slider_shadow(scene, member)) {
+              queued.push_back(member.plan_index);
+              held.emplace(member.plan_index, std::move(member));
+            } else {
+              members.push_back(std::move(member));
+            }
+          }
+          const std::size_t count = members.size();
+          if (count > 0) finished(std::move(members));
+          return ChunkDelivery{count, 0.0};
         });
     if (halted) return end_run(true);
     begin = end;

@@ -89,6 +89,13 @@ class SliderSlotChunk {
 
   SliderSlotViews views();
   const SliderSlotSchedule& schedule() const { return schedule_; }
+  /// The tolerances (and the first step's scale) the next members run at: `schedule`'s, which must be
+  /// this chunk's but for them (a shadow run's, slider_slot_schedule of slider_shadow_scene).
+  void set_tolerances(const SliderSlotSchedule& schedule) {
+    schedule_.rtol = schedule.rtol;
+    schedule_.atol = schedule.atol;
+    schedule_.first_step_scale = schedule.first_step_scale;
+  }
   std::size_t count() const { return plan_indices_.size(); }
   std::size_t capacity() const { return capacity_; }
   /// The state's dimension (θ, and ω with inertia).

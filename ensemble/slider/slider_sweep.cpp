@@ -38,10 +38,10 @@ LaneSteps run_size(const SliderScene& scene, const std::vector<SliderSampleGrid>
             std::function<bool()>(stopped));
         try {
           scheduler.run(
-              [&]() -> std::optional<std::size_t> {
+              [&]() -> std::optional<SliderRun> {
                 const auto k = next();
                 if (!k) return std::nullopt;
-                return plan_indices[*k];
+                return SliderRun(plan_indices[*k]);
               },
               [&](SliderMember&& member) {
                 pad_to_timeline(member, samples);

@@ -2,6 +2,7 @@
 // OpenMP threads; friction per substrate period, energy balance, order parameters and time series in SI.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -21,6 +22,9 @@ struct SliderMember {
   double damping = 0.0;     ///< γ, kg m²/s
   double separation = 0.0;  ///< h, m
   double friction = 0.0;    ///< mean drive force over the averaged periods of sliding, N
+  /// With shadow runs (SliderScene::shadow_runs): the shadow's friction and friction's error estimate,
+  /// N (ensemble/slider/slider_shadow.hpp; NaN without them or where the member failed)
+  double friction_shadow = std::nan(""), friction_error = std::nan("");
   std::vector<double> period_friction, period_work, period_dissipation, period_stored;  ///< N, J, J, J
   std::vector<double> period_balance;   ///< (work − dissipation − stored) / max(|work|, dissipation)
   double order_x = 0.0, order_y = 0.0;  ///< mean over the averaged periods' samples

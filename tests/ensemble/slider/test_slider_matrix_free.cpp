@@ -15,14 +15,14 @@ using namespace rotorsweep::ensemble;
 namespace {
 
 /// A 7 × 6 slider (42 rotors: its lattice sums take the FFT) over 15 × 15 magnets, two separations, every
-/// optional series, half a period of rest and one of sliding at rtol 1e-9; `extra` adds keys.
+/// optional series, half a period of rest and one of sliding at rtol 1e-9, no shadow runs; `extra` adds keys.
 std::string scene(const std::string& solver, const std::string& dynamics, const std::string& extra = "") {
   return "[slider]\ncolumns = 7\nrows = 6\ndynamics = \"" + dynamics +
          "\"\n[substrate]\ncolumns = 15\nrows = 15\n[drive]\nrest = 1.0\nperiods = 1\n[sweep]\n"
          "separation = [7e-3, 9.5e-3]\n[observables]\nsamples_per_period = 20\nangles = true\nenergies = "
          "true\n"
          "field = true\nsublattices = true\ntorques = true\nforces = true\n[numerics]\nrtol = 1e-9\natol = "
-         "1e-9\n"
+         "1e-9\nglobal_error = \"local\"\n"
          "linear_solver = \"" +
          solver + "\"\n" + extra;
 }

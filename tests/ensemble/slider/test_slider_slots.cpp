@@ -73,6 +73,7 @@ void check_follows_lanes(const std::vector<SliderMember>& teams, const std::vect
     CHECK(t.status == l.status);
     CHECK(t.plan_index == l.plan_index);
     CHECK(std::fabs(t.friction - l.friction) < 1e-10 * friction_scale);
+    CHECK(std::fabs(t.friction_error - l.friction_error) < 1e-10 * friction_scale);  // the shadows' too
     REQUIRE(t.period_work.size() == l.period_work.size());
     for (std::size_t p = 0; p < l.period_work.size(); ++p) {
       CHECK(std::fabs(t.period_work[p] - l.period_work[p]) < 1e-10 * friction_scale * 16e-3);

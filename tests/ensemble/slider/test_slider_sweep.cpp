@@ -46,6 +46,26 @@ TEST_CASE("slider units: the experiment's energy and time scales", "[ensemble][s
   CHECK(lattice.depth == 0.5);
 }
 
+TEST_CASE("slider friction's error: its shadow run's difference bounds the deviation from a tight run",
+          "[ensemble][slider][global_error]") {
+  const auto loose = scan(small_scene("rtol = 1e-6\natol = 1e-6\n"), 2);
+  const auto tight = scan(small_scene("rtol = 1e-10\natol = 1e-10\nglobal_error = \"local\"\n"), 2);
+  double largest = 0;
+  for (std::size_t k = 0; k < loose.members.size(); ++k) {
+    const auto& m = loose.members[k];
+    INFO("member " << k << " friction " << m.friction << " error " << m.friction_error);
+    REQUIRE(m.status == "ok");
+    CHECK(m.friction_error > 0);
+    CHECK(m.friction_error < 1e-3 * std::fabs(m.friction));
+    CHECK(m.friction_error == Approx(2 * std::fabs(m.friction - m.friction_shadow) / 0.9));
+    const double deviation = std::fabs(m.friction - tight.members[k].friction);
+    CHECK(deviation <= m.friction_error);
+    largest = std::max(largest, deviation / m.friction_error);
+    CHECK(std::isnan(tight.members[k].friction_error));  // "local": no shadow, no error
+  }
+  CHECK(largest > 0.05);  // the estimate is an error's size, not a far bound
+}
+
 TEST_CASE("slider friction averages the periods after drive.relax_periods", "[ensemble][slider]") {
   const auto scene_with = [](const std::string& relax) {
     return "[slider]\ncolumns = 2\nrows = 2\n[substrate]\ncolumns = 9\nrows = 9\n[drive]\nrest = 0.5\nperiods = 3\n" +
@@ -307,7 +327,8 @@ TEST_CASE("slider scan: the run API's claim, progress, stops and stop", "[ensemb
     taken += std::size_t(std::count_if(members[k].friction_series.begin(), members[k].friction_series.end(),
                                        [](double x) { return !std::isnan(x); }));
   }
-  CHECK(samples == taken);  // a stop per sample
+  REQUIRE(scene.shadow_runs);
+  CHECK(samples == 2 * taken);  // a stop per sample, and per sample of each member's shadow run
 
   // progress after each member; a stop raised after the first leaves the others out
   std::size_t last = 0;
