@@ -66,6 +66,7 @@ def run_slider(rotorsweep, grid, threads):
     if grid["slide_end"] is not None:
         scene["drive"]["end"] = grid["slide_end"]
     del scene["output"]
+    scene["numerics"]["global_error"] = "local"  # the curve and the order only: no shadow runs
     with tempfile.TemporaryDirectory(prefix="dipolar-cp-window-") as scratch:
         path = pathlib.Path(scratch) / "slider.h5"
         rotorsweep.slider(scene, threads=threads, progress=False, output=path)

@@ -68,7 +68,8 @@ def run_array(rotorsweep, size, h_mm, threads, speed=SPEED, scale=SUBSTRATE_SCAL
              "drive": {"speed": speed, "rest": REST, "periods": PERIODS},
              "sweep": {"separation": [float(h) * 1e-3 for h in h_mm]},
              "initial": {"kind": "alternating_rows", "noise": NOISE, "seed": seed},
-             "observables": {"samples_per_period": SAMPLES, "angles": True, "field": True}}
+             "observables": {"samples_per_period": SAMPLES, "angles": True, "field": True},
+             "numerics": {"global_error": "local"}}  # no quoted number needs friction's error
     ds = rotorsweep.slider(scene, threads=threads, progress=False).isel(size=0, replica=0)
     assert (ds.status.values == "ok").all(), ds.status.values
     force_unit = ds.attrs["energy_unit"] / ds.attrs["spacing"]   # ε_pair / a, N
@@ -88,7 +89,8 @@ def run_rows(rotorsweep, size, A, g, threads):
     scene = {"model": {"rows": size, "couplings": "dipolar", "range": "all", "row_length": size,
                        "boundary": "open"},
              "drive": {"g": [g]}, "sweep": {"A": [float(a) for a in A]},
-             "initial": {"kinds": ["AFM"], "noise": NOISE / 2}, "schedule": ROW_SCHEDULE}
+             "initial": {"kinds": ["AFM"], "noise": NOISE / 2}, "schedule": ROW_SCHEDULE,
+             "numerics": {"global_error": "local"}}  # D and the regime only: no shadows or probes
     m = rotorsweep.members(rotorsweep.run(scene, threads=threads, progress=False, quiet=True))
     at = {float(a): k for k, a in enumerate(m.A.values)}
     order = [at[float(a)] for a in A]

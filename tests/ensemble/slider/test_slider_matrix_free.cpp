@@ -93,7 +93,8 @@ TEST_CASE("slider: box-sum tables and an infinite substrate through a scan",
   const std::string big = "[substrate]\ncolumns = 400\nrows = 400\n";
   const auto base = [&](const std::string& substrate) {
     return "[slider]\ncolumns = 7\nrows = 6\n" + substrate +
-           "[drive]\nrest = 0.5\nperiods = 1\n[sweep]\nseparation = 8e-3\n[observables]\nseries = false\n";
+           "[drive]\nrest = 0.5\nperiods = 1\n[sweep]\nseparation = 8e-3\n[observables]\nseries = false\n"
+           "[numerics]\nglobal_error = \"local\"\n";
   };
   const SliderScene finite = rotorsweep::io::parse_slider_scene_text(base(big), "t");
   CHECK(substrate_table_layout(finite, finite.sizes[0], 8e-3).sums == SubstrateSums::box);
