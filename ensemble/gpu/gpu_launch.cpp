@@ -2,6 +2,7 @@
 // environment, which scenes run on teams, and the team's size by N.
 #include "ensemble/gpu/gpu_launch.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdlib>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_register_shapes.hpp"
 #include "ensemble/gpu/gpu_registers.hpp"
+#include "ensemble/rows/symmetry_probe.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
@@ -95,7 +97,11 @@ std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape
   if (launch.team || scene.thermal.on() || !scene.couplings.nearest_neighbour() || scene.row_profiles ||
       kernels::stepper_family(scene.stepper) != kernels::StepperFamily::rosenbrock)
     return std::nullopt;
-  const bool disordered = scene.disorder.any();
+  // members that may run symmetry probes carry A's deviations in their rerun chunks: a shape that keeps
+  // factors per row runs them (ensemble/rows/symmetry_probe.hpp)
+  const bool probes = std::any_of(scene.rtol_values.begin(), scene.rtol_values.end(),
+                                  [&](double rtol) { return runs_probes(scene, false, rtol); });
+  const bool disordered = scene.disorder.any() || probes;
   const std::size_t stages =
       std::size_t(kernels::stepper_method<kernels::RosenbrockTableau>(scene.stepper).stages);
   std::optional<RegisterShape> best;

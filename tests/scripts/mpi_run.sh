@@ -64,7 +64,7 @@ rows = [4, 20]
 [drive]
 g = [0.0011]
 [sweep]
-A = { from = 0.5, to = 12.0, count = 60 }
+A = { from = 0.5, to = 12.0, count = 40 }
 [initial]
 kinds = ["AFM", "random"]
 replicas = 5

@@ -172,7 +172,7 @@ TEST_CASE("a register kernel runs the T = 0 nearest-neighbour scenes whose N a c
   const auto chosen = [&](const ensemble::Scene& scene, std::size_t rows) {
     return ensemble::choose_register_shape(shapes, scene, rows, {});
   };
-  const auto uniform = scene_of("rows = 20");
+  const auto uniform = scene_of("rows = 20", "[numerics]\nglobal_error = \"local\"\n");
   CHECK(chosen(uniform, 2) == RegisterShape{1, 2, false});
   CHECK(chosen(uniform, 4) == RegisterShape{4, 2, false});  // fewest slots in all, then most lanes
   CHECK(chosen(uniform, 8) == RegisterShape{4, 2, false});
@@ -184,6 +184,11 @@ TEST_CASE("a register kernel runs the T = 0 nearest-neighbour scenes whose N a c
   const auto disordered = scene_of("rows = 20", "[disorder]\nA = 1e-3\n");
   CHECK(chosen(disordered, 20) == RegisterShape{8, 3, true});
   CHECK_FALSE(chosen(disordered, 2));  // no disordered shape of one lane
+  // uniform rows with shadow runs may run symmetry probes, whose rerun chunks carry A's deviations
+  const auto probed = scene_of("rows = 20");
+  CHECK(chosen(probed, 20) == RegisterShape{8, 3, true});
+  CHECK_FALSE(chosen(probed, 2));
+  CHECK(chosen(scene_of("rows = 20", "[disorder]\nA = 1e-5\n"), 20) == RegisterShape{8, 3, true});
   // what a register kernel does not hold runs on teams or threads
   CHECK_FALSE(chosen(scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n"), 20));
   CHECK_FALSE(chosen(scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2"), 20));
@@ -200,8 +205,12 @@ TEST_CASE("a register shape with every quadrature runs the scenes asking for W, 
           "[gpu_launch]") {
   using ensemble::RegisterShape;
   const std::vector<RegisterShape> shapes{{8, 3, false, 6, 3, true}, {8, 3, false, 6, 3, false}};
+  // no shadow runs, so no symmetry probes (which would ask for a disordered shape)
+  const auto uniform = [](const char* observables) {
+    return scene_of("rows = 20", std::string(observables) + "[numerics]\nglobal_error = \"local\"\n");
+  };
   const auto chosen = [&](const char* observables) {
-    return ensemble::choose_register_shape(shapes, scene_of("rows = 20", observables), 20, {});
+    return ensemble::choose_register_shape(shapes, uniform(observables), 20, {});
   };
   // R and ρ̄ alone: the shape that carries no more (fewer registers)
   CHECK(chosen("") == RegisterShape{8, 3, false, 6, 3, false});
@@ -210,7 +219,7 @@ TEST_CASE("a register shape with every quadrature runs the scenes asking for W, 
     INFO(asks);
     CHECK(chosen(asks) == RegisterShape{8, 3, false, 6, 3, true});
     CHECK_FALSE(ensemble::choose_register_shape(std::vector<RegisterShape>{{8, 3, false, 6, 3, false}},
-                                                scene_of("rows = 20", asks), 20, {}));
+                                                uniform(asks), 20, {}));
   }
   CHECK(RegisterShape{.every_quadrature = true}.carriable() == kernels::all_integrals);
 }
@@ -220,7 +229,8 @@ TEST_CASE("a register shape with six stage vectors runs the six-stage tableaus, 
   using ensemble::RegisterShape;
   const std::vector<RegisterShape> shapes{{8, 3, false, 8}, {8, 3, false, 6}, {32, 4, false, 8}};
   const auto chosen = [&](const char* stepper, std::size_t rows) {
-    const auto scene = scene_of("rows = 20", std::string("[numerics]\nstepper = \"") + stepper + "\"\n");
+    const auto scene = scene_of("rows = 20", std::string("[numerics]\nstepper = \"") + stepper +
+                                                 "\"\nglobal_error = \"local\"\n");
     return ensemble::choose_register_shape(shapes, scene, rows, {});
   };
   CHECK(chosen("rodas4", 20) == RegisterShape{8, 3, false, 6});
@@ -291,7 +301,7 @@ TEST_CASE(
     "[gpu_launch]") {
   using ensemble::RegisterShape;
   const std::vector<RegisterShape> shapes{{8, 3, false, 6, 3}, {8, 3, false, 6, 0}};
-  const auto scene = scene_of("rows = 20");
+  const auto scene = scene_of("rows = 20", "[numerics]\nglobal_error = \"local\"\n");  // no probes
   ensemble::GpuLaunch launch;  // 128 threads per block
   CHECK(ensemble::choose_register_shape(shapes, scene, 20, launch) == RegisterShape{8, 3, false, 6, 3});
   launch.threads_per_block = 384;  // 3 × 128: still the bounded kernel's
