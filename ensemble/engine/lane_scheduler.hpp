@@ -8,22 +8,18 @@
 #include <utility>
 #include <vector>
 
+#include "ensemble/engine/lane_problem.hpp"
 #include "ensemble/engine/member_progress.hpp"
 
 namespace rotorsweep::ensemble {
 
-/// Runs the members of a Problem through its `width` lanes. The problem (ensemble/rows/row_problem.hpp
-/// for the row models) owns the integration loop and says what a member is and what it leaves:
-///   Member, Result, width, refill();
-///   start(lane, member, queued) → the member's StopSchedule;  step();
-///   failed(lane), any_stop_reached(), stop_reached(lane);
-///   close_stop(lane) → whether its steady test holds (read where the schedule has one);  next_stop(lane);
-///   finish(lane, progress, settled, retire): hands zero or one Result to retire();
-///   take_queued() / has_queued(): members it adds itself (shadow runs), run before the plan's.
-/// Each lane owns its member and its MemberProgress (stops closed, steady state, when it retires:
-/// the state machine DeviceMember keeps on a GPU thread); a member that finishes or fails retires
-/// at once and (with refill()) its lane takes the next.
-template <class Problem>
+/// Runs the members of a Problem (the LaneProblem concept: ensemble/rows/row_problem.hpp for the row
+/// models, ensemble/slider/slider_problem.hpp for the slider) through its `width` lanes; the steady test
+/// close_stop() answers is read where the member's schedule has one. Each lane owns its member and its
+/// MemberProgress (stops closed, steady state, when it retires: the state machine DeviceMember keeps on
+/// a GPU thread); a member that finishes or fails retires at once and (with refill()) its lane takes
+/// the next.
+template <LaneProblem Problem>
 class LaneScheduler {
  public:
   using Member = typename Problem::Member;

@@ -7,6 +7,7 @@
 
 #include "ensemble/engine/member_progress.hpp"
 #include "ensemble/rows/device_period_record.hpp"
+#include "ensemble/rows/member_body.hpp"
 #include "ensemble/rows/member_result.hpp"
 #include "ensemble/rows/member_slots.hpp"
 #include "ensemble/rows/steady_dissipation.hpp"
@@ -16,24 +17,11 @@
 
 namespace rotorsweep::ensemble {
 
-/// The rows' turn over an accepted step: max_j |Δθ_j| and, where slip energies are on, Σ_j Δθ_j² (from
-/// 0 in row order on one thread; a team's or a warp's sums of its threads' parts).
-struct SlipTurns {
-  double largest = 0.0, squares = 0.0;
-};
-
 /// Integrates chunk member k of `slots` with schedule s to its retirement and writes its slot: per
 /// step and per period what LaneScheduler does per lane (the same reducers, records and MemberProgress
-/// in the same order). `body` holds the member's rows and integrator, already started at slot k:
-///   static constexpr bool stochastic;  static constexpr double period;  bool attempt();
-///   double t() const, t_stop() const;  LaneStatus status() const;
-///   double quadrature(p) const (p: an index of s.quadratures);  double drive() const (R(t));
-///   double alignment_integrand() const (ρ̄ at the last attempt's start);  void keep_before();
-///   SlipTurns turns(bool squares) const;  double slip_rate(s, g) const (the counter's rate at g);
-///   void write_rows(double* out) const (θ_j into out[j]);  void one(f) (f on one of its threads);
-///   void next_period(bool wrap);  double steps_accepted() const, steps_rejected() const;
-///   and the row profile's profile_start(), profile_before(), profile_after(accepted), profile_take(out).
-template <class Body>
+/// in the same order). `body` holds the member's rows and integrator, already started at slot k (the
+/// MemberBody concept: ensemble/rows/member_body.hpp).
+template <MemberBody Body>
 ROTORSWEEP_HD void run_member(Body& body, const SlotSchedule& s, const SlotViews& slots, std::size_t k) {
   const std::size_t n = s.rows;
   const kernels::Integrals Q = s.quadratures;
