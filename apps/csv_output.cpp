@@ -1,5 +1,5 @@
 // take_csv_output: the OutputTarget of a CSV table, with the table's own first line as what it may
-// replace without --force (README "Other commands"), and the signal handler that removes it.
+// replace without --force (docs/cli.md "Other commands"), and the signal handler that removes it.
 #include "csv_output.hpp"
 
 #include <iostream>

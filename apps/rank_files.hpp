@@ -1,5 +1,6 @@
 // The rank files of a run under mpirun (PARTIAL.rank-R beside its partial file): each rank streams its
-// members into one, rank 0 joins them at the end, and --resume joins those a killed run left (README "MPI").
+// members into one, rank 0 joins them at the end, and --resume joins those a killed run left
+// (docs/scale.md "MPI").
 #pragma once
 
 #include <cstddef>

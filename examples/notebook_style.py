@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The paper's table and a friction curve from Python (PYTHONPATH=build/python; README "Python")."""
+"""The paper's table and a friction curve from Python (PYTHONPATH=build/python; docs/python.md "Python")."""
 import matplotlib.pyplot as plt
 import numpy as np
 import rotorsweep

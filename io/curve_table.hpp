@@ -1,4 +1,4 @@
-// /curves of a result file (README "Output file"): per-point statistics computed from the file's
+// /curves of a result file (docs/output.md "Output file"): per-point statistics computed from the file's
 // own /members, a block of points at a time, so that memory does not grow with the plan.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The columns of /members (README "Output file"): name, type, shape, description and how a
+// The columns of /members (docs/output.md "Output file"): name, type, shape, description and how a
 // member's row is filled, so that creating the file and writing rows share one list.
 #pragma once
 

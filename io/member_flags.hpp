@@ -1,4 +1,4 @@
-// What a result file's members warn of (README "Running a sweep"): members that did not finish, and of
+// What a result file's members warn of (docs/cli.md "Running a sweep"): members that did not finish, and of
 // those that did, whose D is not resolved for each reason apart: its error above 0.1 |D|, D decided
 // by an asymmetry below the tolerance (symmetry_limited, symmetry_held), a shadow run that departed (shadow_departed); and CP
 // members whose slips could not be told jumps or smooth (slip_jumps NaN).

@@ -1,5 +1,5 @@
-// Finished members on their way into a result file (README "Interrupting, resuming and splitting
-// a sweep"): buffered from the worker threads and written in batches at a bounded interval.
+// Finished members on their way into a result file (docs/scale.md "Interrupting, resuming and
+// splitting a sweep"): buffered from the worker threads and written in batches at a bounded interval.
 #pragma once
 
 #include <chrono>

@@ -1,5 +1,6 @@
-// What every streamed result file shares, whatever its kind (README "Output file"): rows allocated up
-// front for the plan or a shard's part of it, /members/done marking rows on disk, the complete flag last.
+// What every streamed result file shares, whatever its kind (docs/output.md "Output file"): rows
+// allocated up front for the plan or a shard's part of it, /members/done marking rows on disk, the complete
+// flag last.
 #pragma once
 
 #include <functional>

@@ -1,4 +1,4 @@
-// An output file written safely (README "Output file"): checked before any work, written to a
+// An output file written safely (docs/cli.md "Running a sweep"): checked before any work, written to a
 // temporary file beside it, and put in place by rename only when complete, so nothing is lost.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The output file of a sweep (README "Output file"): /members (one row per member, allocated
+// The output file of a sweep (docs/output.md "Output file"): /members (one row per member, allocated
 // up front and filled as members finish, /members/done marking them), /curves and root attributes.
 #pragma once
 

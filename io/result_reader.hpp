@@ -1,5 +1,5 @@
-// Reads the members of a result file, shard or partial file (README "Output file") back into
-// MemberResults, a block of rows at a time: every field the writer stores.
+// Reads the members of a result file, shard or partial file (docs/output.md "Output file")
+// back into MemberResults, a block of rows at a time: every field the writer stores.
 #pragma once
 
 #include <cstddef>

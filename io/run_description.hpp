@@ -1,4 +1,4 @@
-// The description of a row sweep before it starts (README "Running a sweep"): members and axes, the
+// The description of a row sweep before it starts (docs/cli.md "Running a sweep"): members and axes, the
 // integrator that runs them, threads and lanes, the device and the couplings; `run` and Python print it.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Scene parsing and validation with toml++: a table of allowed keys per section, typed
-// readers that name the key and the allowed values in every message (README "Scene files").
+// readers that name the key and the allowed values in every message (docs/scenes.md "Scene files").
 #include "io/scene_parser.hpp"
 
 #include <toml++/toml.h>

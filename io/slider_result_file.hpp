@@ -1,5 +1,6 @@
-// The slider scan's HDF5 result file (README "The experiment's slider"): per member its separation, mean
-// friction, per-period friction and energy balance, order parameters and time series, all in SI units.
+// The slider scan's HDF5 result file (docs/output.md "The slider's result file"): per member its
+// separation, mean friction, per-period friction and energy balance, order parameters and time series,
+// all in SI units.
 #pragma once
 
 #include <optional>

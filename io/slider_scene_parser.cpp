@@ -1,5 +1,6 @@
 // Slider scene parsing with the shared section readers (io/toml_section.hpp): SI values with their
-// allowed ranges, the separation scan as a grid, and the limits that keep a run meaningful (README "Slider").
+// allowed ranges, the separation scan as a grid, and the limits that keep a run meaningful
+// (docs/scenes.md "The slider's scene").
 #include "io/slider_scene_parser.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The columns of a pre-sized table (README "Output file"): name, type, shape, description and how a
+// The columns of a pre-sized table (docs/output.md "Output file"): name, type, shape, description and how a
 // row is filled from what one member produced, so that creating a file and writing its rows share one list.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Typed, validated access to the sections of a TOML scene file: the shared helpers, the range grid
-// { from, to, count, spacing }, the section check and reading the file (README "Scene files").
+// { from, to, count, spacing }, the section check and reading the file (docs/scenes.md "Scene files").
 #include "io/toml_section.hpp"
 
 #include <algorithm>

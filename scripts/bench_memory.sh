@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Peak memory of `rotorsweep run` against the plan size: the same N = 2 friction curve with 10^5
-# and 10^6 members (A × replicas), peak RSS from GNU time -v (README "Memory").
+# and 10^6 members (A × replicas), peak RSS from GNU time -v (docs/scale.md "Memory").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 exe=${ROTORSWEEP:-build/bin/rotorsweep}

@@ -1,6 +1,6 @@
 // The reruns a row member may need, for every backend (docs/numerics.md "The global error of D",
-// "Symmetry-limited members", README "observables.slip_kinds"): its shadow run, its symmetry probe and
-// its slower rerun, queued in one RerunQueue.
+// "Symmetry-limited members", docs/regimes.md "Jumps and smooth slips"): its shadow run, its symmetry
+// probe and its slower rerun, queued in one RerunQueue.
 #pragma once
 
 #include <cstddef>

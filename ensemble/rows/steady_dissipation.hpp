@@ -1,5 +1,6 @@
-// The row problem's steady-state test (README "schedule.steady_tol"): a member has settled once two
-// successive periods' dissipations agree to steady_tol, on CPU lanes and GPU threads alike.
+// The row problem's steady-state test (docs/scenes.md "Row scenes", key schedule.steady_tol): a member
+// has settled once two successive periods' dissipations agree to steady_tol, on CPU lanes and GPU threads
+// alike.
 #pragma once
 
 #include "kernels/lanes/host_device.hpp"

@@ -1,5 +1,5 @@
 """rotorsweep from Python: run scenes, read result files as xarray Datasets, and explore the
-two-angle energy landscape (README "Python"; docs/architecture.md "Python module").
+two-angle energy landscape (docs/python.md "Python"; docs/architecture.md "Python module").
 
     import rotorsweep
     ds = rotorsweep.run({"sweep": {"A": [1.0, 4.0]}, "initial": {"replicas": 2}})

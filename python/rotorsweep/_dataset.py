@@ -1,4 +1,4 @@
-"""A result file (README "Output file") as an xarray.Dataset: the plan's axes become dimensions,
+"""A result file (docs/output.md "Output file") as an xarray.Dataset: the plan's axes become dimensions,
 /members columns variables over them, /curves columns `curve_*` variables over all axes but replica
 (docs/architecture.md "Python module")."""
 
@@ -92,7 +92,7 @@ def from_hdf5(h5file, allow_incomplete=False):
     dims = tuple(axes)
     members = h5file["members"]
     # each member's cell on the full grid: noise and offset do not multiply random and exact starts,
-    # whose cells at other noise and offset values stay empty (README "Output file")
+    # whose cells at other noise and offset values stay empty (docs/output.md "Output file")
     positions = _core.plan_positions(attrs["scene"])
     count, cells = len(positions), int(np.prod(shape))
     if members["A"].shape[0] != count:

@@ -1,4 +1,4 @@
-"""A slider result file (README "The experiment's slider") as an xarray.Dataset: members over the
+"""A slider result file (docs/output.md "The slider's result file") as an xarray.Dataset: members over the
 dimensions size, speed, damping, separation and replica (speed and damping only where the scan has
 several; else scalar coordinates), their per-period values over period, their time series over time
 (over sample, with time per speed, where the scan has several speeds), and /curve's replica statistics

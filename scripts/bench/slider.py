@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Work-precision of the experiment's slider scan (examples/experiment_7x7.toml, 81 separations, README
-"The experiment's slider"): wall time of the whole scan against the largest relative error of the mean
+"""Work-precision of the experiment's slider scan (examples/experiment_7x7.toml, 81 separations, docs/slider.md
+"Speed and accuracy"): wall time of the whole scan against the largest relative error of the mean
 friction over the separations, per stepper and tolerance (median of --repeats runs), against a reference
 at rtol 1e-10 with the same table; and the error against the table's node spacing (reference: rtol 1e-10,
 64 nodes per h). Prints the

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The numerical-stability study behind the README section "Numerical stability": the stress
+# The numerical-stability study behind docs/stability.md "Numerical stability": the stress
 # scene, the quasi-static limit g → 0 and the tolerance sweep, then a summary of all three.
 set -euo pipefail
 cd "$(dirname "$0")/../.."

@@ -68,7 +68,8 @@ def scene(A, g, replicas, sigma=0.0, temperature=0.0, shadow=True):
         table["numerics"] = dict(TOLERANCE)
         if sigma > 0:
             table["disorder"] = {"A": sigma}
-        # σ = 0 is symmetry-limited: its shadow run (README "Regimes and slips") would cost a minute and bound nothing
+        # σ = 0 is symmetry-limited: its shadow run (docs/regimes.md "Errors in CP, and symmetry-limited
+        # members") would cost a minute and bound nothing
         if sigma == 0 or not shadow:
             table["numerics"]["global_error"] = "local"
     return table

@@ -1,6 +1,6 @@
-// `rotorsweep slider` end to end (README "The experiment's slider"): scene in, complete HDF5 file out with
-// its datasets and units, `info` on it; bad keys, the wrong kind of scene and what the GPU does not run
-// as exit code 2, no file written;
+// `rotorsweep slider` end to end (docs/slider.md "The experiment's slider"): scene in, complete HDF5
+// file out with its datasets and units, `info` on it; bad keys, the wrong kind of scene and what the GPU
+// does not run as exit code 2, no file written;
 // SIGINT, SIGTERM and a full disk keep the finished members for --resume, also while substrate tables are
 // built; shards
 // merge to the single-process file; sample points, axes and memory bounded before any work.

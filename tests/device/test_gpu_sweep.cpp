@@ -217,7 +217,8 @@ TEST_CASE(
     const auto gpu = run_on(scene, ensemble::Device::gpu, members);  // N = 20: in registers (8 × 3), or teams of 8
     for (std::size_t i = 0; i < members.size(); ++i) {
       INFO("member " << i);
-      if (cpu[i].symmetry_limited) continue;  // rounding decides these (README "Regimes and slips")
+      // rounding decides these (docs/regimes.md "Errors in CP, and symmetry-limited members")
+      if (cpu[i].symmetry_limited) continue;
       CHECK(gpu[i].regime == cpu[i].regime);
       CHECK(gpu[i].final_state.attractor == cpu[i].final_state.attractor);
     }

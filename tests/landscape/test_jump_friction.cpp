@@ -121,7 +121,8 @@ TEST_CASE("the paper's rational approximations agree with J within their reporte
     worst55 = std::max(worst55, std::fabs(paper_rational(A, P55, Q55) / J - 1));
   }
   CHECK(worst33 < 1.37e-4 * 1.01);  // paper: 1.37e-4
-  // paper: 5.27e-6; the published coefficients reach 7.4e-6 at A ≈ 8.63 (see README)
+  // paper: 5.27e-6; the published coefficients reach 7.4e-6 at A ≈ 8.63 (docs/numerics.md "How we
+  // know J is right")
   CHECK(worst55 < 7.5e-6);
 }
 

@@ -1,4 +1,4 @@
-"""scripts/plot_slider.py on a small slider scan and the row model of it (README "The experiment's
+"""scripts/plot_slider.py on a small slider scan and the row model of it (docs/slider.md "The experiment's
 slider"): the figure is written, and a file of another kind is refused with a clear message."""
 
 import pathlib

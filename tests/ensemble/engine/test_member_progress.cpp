@@ -1,6 +1,6 @@
-// MemberProgress, the stop schedule every backend follows (a row member's periods, README "schedule.*";
-// a slider member's samples): a fixed count, a problem's steady test after it but never at the first
-// stop, and the cap.
+// MemberProgress, the stop schedule every backend follows (a row member's periods, docs/scenes.md
+// "Row scenes", keys schedule.*; a slider member's samples): a fixed count, a problem's steady test after
+// it but never at the first stop, and the cap.
 #include <catch2/catch.hpp>
 #include <vector>
 

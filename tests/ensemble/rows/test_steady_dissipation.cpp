@@ -1,4 +1,5 @@
-// The row problem's steady test (ensemble/rows/steady_dissipation.hpp, README "schedule.steady_tol"):
+// The row problem's steady test (ensemble/rows/steady_dissipation.hpp, docs/scenes.md "Row scenes", key
+// schedule.steady_tol):
 // successive periods' dissipations agree to a relative tolerance, each against the period before.
 #include <catch2/catch.hpp>
 

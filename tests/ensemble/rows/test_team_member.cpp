@@ -90,8 +90,8 @@ const std::string coupled_rows =
     "[schedule]\nrelax_periods = 1\naverage_periods = 1\n[numerics]\nrtol = 1e-10\natol = 1e-13\n";
 
 /// The rows of the thermal paths: 20 as above, but at g = 0.05, where the Langevin stepper's steps (no
-/// longer than g/(2κ), README thermal.step_fraction) number some 4000 a period rather than 180 000 at
-/// g = 0.0011; the path's bits are the same question at any g. At T = 1e-3 the CP member at A = 6
+/// longer than g/(2κ), docs/scenes.md thermal.step_fraction) number some 4000 a period rather than
+/// 180 000 at g = 0.0011; the path's bits are the same question at any g. At T = 1e-3 the CP member at A = 6
 /// slips (5 to 19 times a period) above the noise's threshold, which at T = 0.05 no slip reaches.
 const std::string thermal_rows =
     "[model]\nrows = 20\n[drive]\ng = 0.05\n[initial]\nkinds = [\"AFM\"]\nnoise = 0.01\nreplicas = 2\n"

@@ -3,7 +3,7 @@
 // and the final angles of members in the AFM, CP and FM regimes agree within the integration error, for
 // teams of 1 … 8 ranks. The rows' substrate
 // strengths differ by 1e-6 (quenched disorder), so that in CP no rounding decides the slips
-// (README "Errors in CP, and symmetry-limited members").
+// (docs/regimes.md "Errors in CP, and symmetry-limited members").
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
