@@ -58,6 +58,7 @@ SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, con
   const SlotSchedule schedule =
       slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
   using Driver = RegisterMember<kernels::DeviceWarp<L>, R, PerRow, S, Q>;
+  static_assert(RegisterMemberForm<Driver, SlotSchedule, SlotViews, kernels::Integrals>);
   constexpr RegisterShape shape{L, R, PerRow, S, B, Q};
   if (!Driver::fits(schedule, shape.carriable()) || std::size_t(schedule.methods.rosenbrock.stages) > S)
     throw std::logic_error("a register kernel cannot run this schedule");

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "ensemble/engine/member_forms.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/rows/member_slots.hpp"
@@ -264,6 +265,7 @@ template <class Model, class Integrator>
 SweepOutcome run_slots(const Scene& scene, const VariantRange& range, const RunControl& control,
                        const ResultSink& sink) {
   using Driver = DeviceMember<Model, Integrator>;
+  static_assert(ThreadMemberForm<Driver, SlotSchedule, SlotViews>);
   available_gpu();
   const Member variant = range.source->at(range.begin);
   const SlotSchedule schedule =
@@ -342,6 +344,7 @@ template <class Integrator, class TeamIntegrator>
 SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team,
                                 const RunControl& control, const ResultSink& sink) {
   using Driver = TeamMember<const kernels::WarpTeam, TeamIntegrator>;
+  static_assert(TeamMemberForm<Driver, const kernels::WarpTeam, SlotSchedule, SlotViews>);
   const Member variant = range.source->at(range.begin);
   const SlotSchedule schedule =
       slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));

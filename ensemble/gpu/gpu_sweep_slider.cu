@@ -26,6 +26,7 @@ class GpuSliderDevice final : public SliderSlotDevice {
  public:
   using Integrator = SliderTeamIntegrator<Inertial>;
   using Driver = SliderTeamMember<const kernels::WarpTeam, Integrator>;
+  static_assert(TeamMemberForm<Driver, const kernels::WarpTeam, SliderSlotSchedule, SliderSlotViews>);
 
   std::size_t chunk_members(const SliderSlotSchedule& schedule) override {
     chunks_.reset();  // another size's buffers

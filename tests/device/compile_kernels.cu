@@ -1,7 +1,9 @@
 // The kernels compiled for a GPU (nvcc, no GPU needed): the row model and both stepper families on the
 // double lane, and on warp teams the stage solves (ring, dense, slider) and whole members
 // (nearest neighbours at T = 0 and T > 0, a coupling table at T = 0, the slider's), and members in a
-// warp's registers.
+// warp's registers; each member form's driver checked against its concept (ensemble/engine/member_forms.hpp).
+#include "ensemble/engine/member_forms.hpp"
+#include "ensemble/rows/device_member.hpp"
 #include "ensemble/rows/team_member.hpp"
 #include "ensemble/rows/warp_member.hpp"
 #include "ensemble/slider/slider_team_member.hpp"
@@ -157,8 +159,21 @@ __global__ void run_members_in_registers(const __grid_constant__ rotorsweep::ens
                                          rotorsweep::ensemble::SlotViews slots) {
   using Rows = WarpRows<DeviceWarp<L>, R, true, all_integrals>;
   using Driver = rotorsweep::ensemble::WarpMember<Rows, WarpIntegrator<Rows, WarpRosenbrock<Rows, 8>>>;
+  static_assert(rotorsweep::ensemble::RegisterMemberForm<Driver, rotorsweep::ensemble::SlotSchedule,
+                                                         rotorsweep::ensemble::SlotViews, Integrals>);
   Driver::run(schedule, slots, (blockIdx.x * std::size_t(blockDim.x) + threadIdx.x) / L);
 }
 
 template __global__ void run_members_in_registers<8, 3>(
     const __grid_constant__ rotorsweep::ensemble::SlotSchedule, rotorsweep::ensemble::SlotViews);
+
+namespace forms {
+using rotorsweep::ensemble::SlotSchedule;
+using rotorsweep::ensemble::SlotViews;
+using Rosenbrock = RosenbrockStepper<Model>;
+static_assert(rotorsweep::ensemble::ThreadMemberForm<
+              rotorsweep::ensemble::DeviceMember<Model, AdaptiveIntegrator<Model, Rosenbrock>>, SlotSchedule, SlotViews>);
+static_assert(rotorsweep::ensemble::TeamMemberForm<
+              rotorsweep::ensemble::TeamMember<const WarpTeam, TeamIntegrator<const WarpTeam, TeamRosenbrock<const WarpTeam, Model>>>,
+              const WarpTeam, SlotSchedule, SlotViews>);
+}  // namespace forms

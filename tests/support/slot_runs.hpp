@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "ensemble/engine/member_forms.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/rows/device_member.hpp"
 #include "ensemble/rows/member_plan.hpp"
@@ -95,6 +96,7 @@ struct HostSlotDevice final : ensemble::RowSlotDevice {
 template <class Model, class Integrator>
 std::vector<ensemble::MemberResult> on_one_thread(const ensemble::Scene& scene) {
   using Driver = ensemble::DeviceMember<Model, Integrator>;
+  static_assert(ensemble::ThreadMemberForm<Driver, ensemble::SlotSchedule, ensemble::SlotViews>);
   return through_slots<Integrator>(
       scene, [&](const ensemble::SlotSchedule& s, const ensemble::SlotViews& v, std::size_t k) {
         std::vector<double> storage(Driver::storage_size(s));
