@@ -91,7 +91,7 @@ void report_outcome(const io::Hdf5Location& file, const ensemble::Scene& scene) 
         "of them held on a symmetric set without slipping: their symmetry probe at rtol reached another "
         "attractor or moved D beyond its error, so no error bounds D; not counted as resolved); a tighter "
         "rtol does not help: give the scene disorder (e.g. [disorder] A = 1e-6) or a temperature above "
-        "rtol (README: regime rule); see /members/symmetry_limited\n",
+        "rtol (docs/regimes.md); see /members/symmetry_limited\n",
         counts.symmetry_limited, counts.symmetry_held);
   if (counts.shadow_departed > 0)
     std::fprintf(

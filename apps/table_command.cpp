@@ -223,7 +223,7 @@ void print_cp_draws(kernels::StepperId stepper, double rtol, const ensemble::Dis
   }
   std::printf(
       "error/R: the draws' mean error estimate of R; symmetry-limited members' R depends on the tolerance "
-      "itself and no error bounds it (README, \"Regimes and slips\")\n");
+      "itself and no error bounds it (docs/regimes.md, \"Errors in CP, and symmetry-limited members\")\n");
 }
 
 }  // namespace

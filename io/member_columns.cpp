@@ -89,9 +89,9 @@ void add_outcome(std::vector<MemberColumn>& columns, const ensemble::Scene& scen
     columns.push_back(MemberColumn::text_valued(
         "regime", longest({"FM", "AFM", "CP", "SA", "DW", "unsettled"}),
         scene.slip_kinds
-            ? "FM, AFM, CP, DW (slipping across domain walls), SA (smooth alternation) or unsettled (README: "
+            ? "FM, AFM, CP, DW (slipping across domain walls), SA (smooth alternation) or unsettled (docs/regimes.md: "
               "regime rule)"
-            : "FM, AFM, CP, DW (slipping across domain walls) or unsettled (README: regime rule)",
+            : "FM, AFM, CP, DW (slipping across domain walls) or unsettled (docs/regimes.md: regime rule)",
         [](auto&, auto& r) { return std::string(ensemble::regime_name(r.regime)); }));
   if (scene.slip_kinds) {
     columns.push_back(MemberColumn::real_valued("slip_jumps",

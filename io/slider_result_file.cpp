@@ -98,7 +98,7 @@ void write_curve(const Hdf5Location& file, const ensemble::SliderScene& scene) {
               "sample standard deviation over the replicas (÷ (n − 1)), N (NaN below 2 replicas)");
   curve.write("friction_sem", sem, {},
               "standard error of friction: population spread / √(n − 1) over the replicas that finished, the "
-              "statistic of every result file's curves (README \"Output file\"), N (NaN below 2 replicas)");
+              "statistic of every result file's curves (docs/output.md \"Output file\"), N (NaN below 2 replicas)");
   if (scene.shadow_runs)
     curve.write("friction_bias", bias, {},
                 "mean of the replicas' friction_error: a bound on the integration's bias of friction, N");

@@ -1,7 +1,7 @@
-// A member's way through its stops (README "schedule.*"): count the stops it closes (a row member's
-// periods, a slider member's samples) and decide when it retires, after a fixed count or, where its
-// problem tests for a steady state, once the test holds or at a cap; one state machine for CPU lanes
-// and GPU threads.
+// A member's way through its stops (docs/scenes.md "Row scenes", keys schedule.*): count the stops it
+// closes (a row member's periods, a slider member's samples) and decide when it retires, after a fixed
+// count or, where its problem tests for a steady state, once the test holds or at a cap; one state
+// machine for CPU lanes and GPU threads.
 #pragma once
 
 #include "kernels/lanes/host_device.hpp"

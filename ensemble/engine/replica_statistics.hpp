@@ -1,4 +1,4 @@
-// The replica statistic of every result file's curves (README "Output file"): over the replicas that
+// The replica statistic of every result file's curves (docs/output.md "Output file"): over the replicas that
 // finished, the mean, the population spread (÷ n), the standard error of the mean spread / √(n − 1), min,
 // max.
 #pragma once
