@@ -6,9 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <deque>
 #include <functional>
-#include <map>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -16,6 +14,7 @@
 
 #include "ensemble/engine/integration_loop.hpp"
 #include "ensemble/engine/member_progress.hpp"
+#include "ensemble/engine/rerun_queue.hpp"
 #include "ensemble/slider/slider_member_summary.hpp"
 #include "ensemble/slider/slider_sample_grid.hpp"
 #include "ensemble/slider/slider_scene.hpp"
@@ -68,13 +67,8 @@ class SliderProblem {
         lanes_(width) {}
 
   bool refill() const { return true; }
-  std::optional<Member> take_queued() {
-    if (queued_.empty()) return std::nullopt;
-    const Member run = queued_.front();
-    queued_.pop_front();
-    return run;
-  }
-  bool has_queued() const { return !queued_.empty(); }
+  std::optional<Member> take_queued() { return reruns_.take(); }
+  bool has_queued() const { return reruns_.queued() > 0; }
 
   /// Puts plan member `run.plan_index` (or its shadow run) into lane l: its substrate table, its speed's
   /// grid and damping, its start; its schedule is one stop per sample.
@@ -149,12 +143,12 @@ class SliderProblem {
     summarize_slider_member(scene_, *lane.grid, lane.boundaries, ok, m);
     loop_.release(l);
     if (lane.shadow) {
-      auto primary = held_.extract(m.plan_index);
-      take_slider_shadow(primary.mapped(), m);
-      retire(std::move(primary.mapped()));
+      std::optional<SliderMember> primary =
+          reruns_.finish(m.plan_index, [&](SliderMember& held) { take_slider_shadow(held, m); });
+      retire(std::move(*primary));
     } else if (needs_slider_shadow(scene_, m)) {
-      queued_.push_back({m.plan_index, true});
-      held_.emplace(m.plan_index, std::move(m));
+      const std::size_t index = m.plan_index;
+      reruns_.hold(index, std::move(m), {Member(index, true)});
     } else {
       retire(std::move(m));
     }
@@ -274,8 +268,7 @@ class SliderProblem {
   std::shared_ptr<const kernels::SubstrateTable> last_table_;  ///< the last table built ...
   std::pair<std::size_t, std::size_t> last_table_key_{};       ///< ... for this (speed, separation)
   std::vector<Lane> lanes_;
-  std::deque<Member> queued_;                  ///< shadow runs waiting for a lane
-  std::map<std::size_t, SliderMember> held_;  ///< finished members waiting for their shadows, by plan index
+  RerunQueue<Member, SliderMember> reruns_;  ///< shadow runs waiting for a lane, their members held
 };
 
 }  // namespace rotorsweep::ensemble

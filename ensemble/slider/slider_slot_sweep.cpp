@@ -6,11 +6,10 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <deque>
-#include <map>
 #include <optional>
 
 #include "ensemble/engine/chunk_runs.hpp"
+#include "ensemble/engine/rerun_queue.hpp"
 #include "ensemble/slider/slider_shadow.hpp"
 #include "kernels/models/slider/slider_model.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
@@ -107,18 +106,15 @@ RunOutcome run_slider_members_in_slots(const SliderScene& scene, const std::vect
     std::array<std::optional<SliderSlotChunk>, 2> chunks;  // a slot's chunk made at its first start
     std::array<bool, 2> shadows{};                         // whether a slot's chunk runs shadows
     std::vector<std::size_t> claimed;                      // a chunk's plan indices
-    std::deque<std::size_t> queued;                        // members whose shadows wait for a chunk
-    std::map<std::size_t, SliderMember> held;              // finished members waiting for their shadows
+    RerunQueue<std::size_t, SliderMember> reruns;          // shadows waiting for a chunk, their members held
     const bool halted = run_group_in_chunks(
-        device, {begin, end}, capacity, control, done, stats, [&] { return queued.size(); },
+        device, {begin, end}, capacity, control, done, stats, [&] { return reruns.queued(); },
         [&](std::size_t slot, const std::vector<std::size_t>& positions) -> SliderSlotChunk& {
           claimed.clear();
           for (const std::size_t k : positions) claimed.push_back(plan_indices[k]);
           shadows[slot] = positions.empty();  // the queued shadows
-          while (shadows[slot] && claimed.size() < capacity && !queued.empty()) {
-            claimed.push_back(queued.front());
-            queued.pop_front();
-          }
+          while (shadows[slot] && claimed.size() < capacity && reruns.queued() > 0)
+            claimed.push_back(*reruns.take());
           if (!chunks[slot]) chunks[slot].emplace(scene, first.speed, schedule, capacity);
           chunks[slot]->set_tolerances(shadows[slot] ? shadow_schedule : schedule);
           chunks[slot]->fill(claimed, views);
@@ -130,12 +126,11 @@ RunOutcome run_slider_members_in_slots(const SliderScene& scene, const std::vect
           for (std::size_t k = 0; k < chunk.count(); ++k) {
             SliderMember member = chunk.member(k);
             if (shadow) {
-              auto primary = held.extract(member.plan_index);
-              take_slider_shadow(primary.mapped(), member);
-              members.push_back(std::move(primary.mapped()));
+              members.push_back(*reruns.finish(
+                  member.plan_index, [&](SliderMember& held) { take_slider_shadow(held, member); }));
             } else if (needs_slider_shadow(scene, member)) {
-              queued.push_back(member.plan_index);
-              held.emplace(member.plan_index, std::move(member));
+              const std::size_t index = member.plan_index;
+              reruns.hold(index, std::move(member), {index});
             } else {
               members.push_back(std::move(member));
             }
