@@ -11,7 +11,7 @@
 
 #include "commands.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
-#include "ensemble/gpu/gpu_registers.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
@@ -44,18 +44,27 @@ std::string scene_text(const BenchScene& s, const std::string& device) {
 }
 
 /// How members are laid on the GPU for a row: threads per member and, for a team, where its
-/// scratch lives (set through ROTORSWEEP_GPU_TEAM and ROTORSWEEP_GPU_SCRATCH); team 0 is the
+/// scratch lives (the launch's team and scratch, on the environment's block shape); team 0 is the
 /// default mapping, and on the CPU the lanes.
 struct Mapping {
   int team = 0;
   std::string scratch;
 };
 
+/// The executor of mapping m: the environment's launch (gpu_executor) with m's team and scratch.
+ensemble::GpuExecutor executor_of(const Mapping& m) {
+  ensemble::GpuLaunch launch = ensemble::gpu_executor().launch();
+  launch.team = unsigned(m.team);
+  launch.scratch = m.scratch == "shared"   ? ensemble::GpuScratch::shared
+                   : m.scratch == "global" ? ensemble::GpuScratch::global
+                                           : ensemble::GpuScratch::automatic;
+  return ensemble::GpuExecutor(launch);
+}
+
 std::string mapping_label(const Mapping& m, const ensemble::Scene& scene, int rows, const BenchGpuOptions& options) {
   if (options.device == "cpu") return "lanes";
   if (m.team == 0) {
-    const auto shape = ensemble::choose_register_shape(ensemble::gpu_register_shapes(), scene, std::size_t(rows),
-                                                       ensemble::gpu_launch());
+    const auto shape = executor_of(m).plan(scene, std::size_t(rows)).shape;
     if (!shape) return "default";
     return "registers " + std::to_string(shape->lanes) + " × " + std::to_string(shape->slots) + ", " +
            std::to_string(shape->stages) + " stages";
@@ -64,24 +73,13 @@ std::string mapping_label(const Mapping& m, const ensemble::Scene& scene, int ro
   return "team " + std::to_string(m.team) + ", " + m.scratch;
 }
 
-void set_mapping(const Mapping& m) {
-  if (m.team > 0)
-    ::setenv("ROTORSWEEP_GPU_TEAM", std::to_string(m.team).c_str(), 1);
-  else
-    ::unsetenv("ROTORSWEEP_GPU_TEAM");
-  if (!m.scratch.empty())
-    ::setenv("ROTORSWEEP_GPU_SCRATCH", m.scratch.c_str(), 1);
-  else
-    ::unsetenv("ROTORSWEEP_GPU_SCRATCH");
-}
-
 /// The mappings a scene is measured with: the lanes on the CPU; on the GPU the registers where a
 /// register kernel holds the scene, a member per thread and per team of each size in options.teams up
 /// to N where teams run the scene, in shared and/or global memory.
 std::vector<Mapping> mappings_of(const ensemble::Scene& scene, int rows, const BenchGpuOptions& options) {
   if (options.device == "cpu") return {Mapping{}};
   std::vector<Mapping> out;
-  if (ensemble::choose_register_shape(ensemble::gpu_register_shapes(), scene, std::size_t(rows), {}))
+  if (ensemble::GpuExecutor().plan(scene, std::size_t(rows)).mapping == ensemble::GpuMapping::registers)
     out.push_back({});
   for (const int team : options.teams) {
     if (team == 1) out.push_back({1, ""});
@@ -105,11 +103,11 @@ std::string format_rate(double rate) {
 void run_row(const BenchScene& s, const BenchGpuOptions& options, const Mapping& m) {
   const auto scene = io::parse_scene_text(scene_text(s, options.device), "bench");
   const auto members = ensemble::plan_members(scene);
-  set_mapping(m);
   const std::string label = mapping_label(m, scene, s.rows, options);
   try {
+    const ensemble::GpuExecutor executor = options.device == "cpu" ? ensemble::GpuExecutor() : executor_of(m);
     const auto t0 = std::chrono::steady_clock::now();
-    const auto outcome = ensemble::run_sweep(scene, members, {.threads = options.threads});
+    const auto outcome = ensemble::run_sweep(scene, members, {.threads = options.threads}, &executor);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     double attempts = 0;
     std::size_t ok = 0;
@@ -134,7 +132,6 @@ void run_row(const BenchScene& s, const BenchGpuOptions& options, const Mapping&
                 s.dipolar ? " dipolar" : "", s.stepper, s.every_quadrature ? ", every quadrature" : "",
                 label.c_str(), members.size(), e.what());
   }
-  set_mapping({});
   std::fflush(stdout);
 }
 

@@ -9,7 +9,7 @@
 
 #include "build_info.hpp"
 #include "ensemble/engine/instruction_set.hpp"
-#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/member_stream.hpp"
@@ -74,7 +74,7 @@ int run_sweep_mpi(const RunOptions& options, const ensemble::Scene& scene, int t
                               [&signals] { signals.stop(); });
       outcome = ensemble::run_members(
           scene, source, {.threads = threads, .stop = [&] { return signals.stopped(); }, .claim = claim},
-          [&stream](ensemble::MemberResult&& r) { stream.add(std::move(r)); });
+          [&stream](ensemble::MemberResult&& r) { stream.add(std::move(r)); }, ensemble::device_for(scene.device));
       try {
         stream.flush();
         file->keep_partial(stream.written(), outcome.statistics);

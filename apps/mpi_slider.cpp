@@ -8,7 +8,7 @@
 
 #include "build_info.hpp"
 #include "ensemble/engine/instruction_set.hpp"
-#include "ensemble/gpu/gpu_slider.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "io/member_stream.hpp"
 #include "io/slider_result_file.hpp"
 #include "mpi_join.hpp"
@@ -68,7 +68,8 @@ int run_slider_mpi(const SliderOptions& options, const ensemble::SliderScene& sc
       try {
         ensemble::run_slider_members(
             scene, plan, {.threads = threads, .stop = [&] { return signals.stopped(); }, .claim = claim},
-            [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
+            [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); },
+            ensemble::device_for(scene.device));
       } catch (const std::bad_alloc&) {
         error = "out of memory (an allocation in a worker thread failed)";
       } catch (const std::exception& e) {

@@ -12,7 +12,7 @@
 #include "commands.hpp"
 #include "ensemble/engine/instruction_set.hpp"
 #include "ensemble/engine/thread_count.hpp"
-#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/gpu/gpu_launch.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
@@ -319,7 +319,8 @@ int run_sweep_command(const RunOptions& options) {
                [&](std::size_t count) { progress.update(count, periods.load(std::memory_order_relaxed)); },
            .stop = [&] { return signals.stopped(); },
            .stops = &periods},
-          [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); });
+          [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); },
+          ensemble::device_for(scene.device));
     });
     done_before += stream.written();
   }

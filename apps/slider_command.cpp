@@ -17,8 +17,7 @@
 #include "commands.hpp"
 #include "ensemble/engine/instruction_set.hpp"
 #include "ensemble/engine/thread_count.hpp"
-#include "ensemble/gpu/gpu_backend.hpp"
-#include "ensemble/gpu/gpu_slider.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "io/member_stream.hpp"
 #include "io/output_target.hpp"
@@ -194,7 +193,8 @@ int run_slider(const SliderOptions& options) {
                      .progress = [&](std::size_t done) { progress.update(done, samples.load()); },
                      .stop = [&] { return signals.stopped(); },
                      .stops = &samples},
-                    [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); })
+                    [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); },
+                    ensemble::device_for(scene.device))
                     .interrupted;
     });
     done_before += stream.written();

@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::io {

@@ -15,7 +15,7 @@
 #include <set>
 #include <sstream>
 
-#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "io/toml_section.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
@@ -83,7 +83,7 @@ void read_disorder(const Section& disorder, Scene& scene) {
 /// numerics.device = "gpu" runs every row scene (any stepper or temperature, disorder, coupling
 /// tables, open rows, row profiles) up to the rows one GPU thread's scratch holds.
 void check_gpu_scene(const Scene& scene) {
-  const std::size_t limit = ensemble::gpu_max_rows(scene);
+  const std::size_t limit = ensemble::gpu_executor().max_rows(scene);
   if (scene.max_rows() <= limit) return;
   const std::string integrator =
       scene.thermal.on()

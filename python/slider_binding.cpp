@@ -7,7 +7,7 @@
 
 #include "bindings.hpp"
 #include "ensemble/engine/instruction_set.hpp"
-#include "ensemble/gpu/gpu_slider.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "io/slider_scene_parser.hpp"
 #include "job_binding.hpp"
 #include "slider_job.hpp"

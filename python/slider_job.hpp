@@ -14,6 +14,7 @@
 #include "apps/run_needs.hpp"
 #include "background_job.hpp"
 #include "ensemble/engine/thread_count.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/slider/slider_scene.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "io/member_stream.hpp"
@@ -81,7 +82,8 @@ inline void SliderJob::run(int threads) {
       {.threads = threads,
        .progress = [this](std::size_t now) { done_.store(now, std::memory_order_relaxed); },
        .stop = [&] { return cancelled() || write_failed.load(); }},
-      [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); });
+      [&stream](std::vector<ensemble::SliderMember>&& block) { stream.add(std::move(block)); },
+      ensemble::device_for(scene_.device));
   const double seconds = outcome.statistics.wall_seconds;
   const bool finished = end_stream(stream, output_, [&](std::size_t written) {
     if (!keep_) return;  // as `rotorsweep slider` keeps them, for --resume

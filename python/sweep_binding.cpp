@@ -6,7 +6,7 @@
 #include "bindings.hpp"
 #include "ensemble/engine/instruction_set.hpp"
 #include "ensemble/engine/thread_count.hpp"
-#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/paper_table.hpp"
 #include "io/run_description.hpp"

@@ -7,6 +7,7 @@
 
 #include "apps/run_needs.hpp"
 #include "ensemble/engine/thread_count.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/member_stream.hpp"
 
@@ -63,7 +64,8 @@ void SweepJob::run(int threads) {
        .progress = [this](std::size_t done) { done_.store(done, std::memory_order_relaxed); },
        .stop = [&] { return cancelled() || write_failed.load(); },
        .stops = &periods_},
-      [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); });
+      [&stream](ensemble::MemberResult&& result) { stream.add(std::move(result)); },
+      ensemble::device_for(scene_.device));
   const bool finished =
       end_stream(stream, target_ ? target_->temporary() : "the result", [&](std::size_t written) {
         if (!target_) return;  // as `rotorsweep run` keeps them, for --resume

@@ -1,6 +1,6 @@
-// The GPU backend's entry points in a CUDA build: the device probe and the dispatch to a register
-// kernel's unit (gpu_sweep_registers.cu.in) where one holds the scene, else from the scene's stepper to
-// its family's unit (gpu_sweep_family.cu.in), or at T > 0 to the Langevin one.
+// The GPU backend's entry points in a CUDA build: the device probe and the dispatch by the variant's plan
+// to a register kernel's unit (gpu_sweep_registers.cu.in), else from the scene's stepper to its family's
+// unit (gpu_sweep_family.cu.in), or at T > 0 to the Langevin one.
 #include <cuda_runtime.h>
 
 #include <cstddef>
@@ -8,29 +8,31 @@
 #include <string>
 
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/gpu/gpu_register_shapes.hpp"
-#include "ensemble/gpu/gpu_registers.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
 
 namespace gpu {
 template <kernels::StepperFamily family>
-SweepOutcome run_stepper_family(const Scene&, const VariantRange&, const RunControl&, const ResultSink&);
-SweepOutcome run_langevin(const Scene&, const VariantRange&, const RunControl&, const ResultSink&);
+SweepOutcome run_stepper_family(const Scene&, const VariantRange&, const GpuPlan&, const RunControl&,
+                                const ResultSink&);
+SweepOutcome run_langevin(const Scene&, const VariantRange&, const GpuPlan&, const RunControl&, const ResultSink&);
 template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B, bool Q>
-SweepOutcome run_in_registers(const Scene&, const VariantRange&, const RunControl&, const ResultSink&);
+SweepOutcome run_in_registers(const Scene&, const VariantRange&, const GpuPlan&, const RunControl&,
+                              const ResultSink&);
 
-/// run_in_registers for `shape`, the i-th compiled shape or a later one.
+/// run_in_registers for the plan's shape, the i-th compiled shape or a later one.
 template <std::size_t i = 0>
-SweepOutcome run_registers(const RegisterShape& shape, const Scene& scene, const VariantRange& range,
+SweepOutcome run_registers(const Scene& scene, const VariantRange& range, const GpuPlan& plan,
                            const RunControl& control, const ResultSink& sink) {
   if constexpr (i < compiled_register_shapes.size()) {
     constexpr RegisterShape compiled = compiled_register_shapes[i];
-    if (shape == compiled)
+    if (*plan.shape == compiled)
       return run_in_registers<compiled.lanes, compiled.slots, compiled.disordered, compiled.stages,
-                              compiled.blocks, compiled.every_quadrature>(scene, range, control, sink);
-    return run_registers<i + 1>(shape, scene, range, control, sink);
+                              compiled.blocks, compiled.every_quadrature>(scene, range, plan, control, sink);
+    return run_registers<i + 1>(scene, range, plan, control, sink);
   } else {
     throw std::logic_error("no register kernel of this shape was compiled");
   }
@@ -77,14 +79,13 @@ void use_gpu() {
     throw std::runtime_error("cannot use CUDA device " + std::to_string(gpu_info().index));
 }
 
-SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, const RunControl& control,
-                               const ResultSink& sink) {
-  if (scene.thermal.on()) return gpu::run_langevin(scene, range, control, sink);
-  const std::size_t rows = range.source->at(range.begin).rows;
-  if (const auto shape = choose_register_shape(gpu_register_shapes(), scene, rows, gpu_launch()))
-    return gpu::run_registers(*shape, scene, range, control, sink);
+SweepOutcome GpuExecutor::run_variant(const Scene& scene, const VariantRange& range, const RunControl& control,
+                                      const ResultSink& sink) const {
+  const GpuPlan plan = this->plan(scene, range.source->at(range.begin).rows);
+  if (scene.thermal.on()) return gpu::run_langevin(scene, range, plan, control, sink);
+  if (plan.mapping == GpuMapping::registers) return gpu::run_registers(scene, range, plan, control, sink);
   return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
-    return gpu::run_stepper_family<family>(scene, range, control, sink);
+    return gpu::run_stepper_family<family>(scene, range, plan, control, sink);
   });
 }
 

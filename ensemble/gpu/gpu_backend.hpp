@@ -1,13 +1,9 @@
 // The GPU backend (docs/architecture.md "Backends", "Teams"): whether a CUDA GPU is there, and the
-// sweep of one variant on it, a member per thread (DeviceMember) or per team of threads (TeamMember).
+// limits of a member's scratch on a thread and on a team.
 #pragma once
 
 #include <cstddef>
 #include <string>
-
-#include "ensemble/gpu/gpu_launch.hpp"
-#include "ensemble/rows/scene.hpp"
-#include "ensemble/rows/sweep.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -30,10 +26,6 @@ const GpuInfo& gpu_info();
 /// Throws std::runtime_error where there is no GPU backend or no GPU.
 void use_gpu();
 
-/// "cpu", or for a scene with numerics.device = "gpu" the result file's "device": "gpu (<name>; 8
-/// threads per member)", the threads per member at each N where the scene has several.
-std::string device_label(const Scene& scene);
-
 /// Scratch (lane values per GPU thread) the kernel is compiled for: one size, so each stepper has
 /// one kernel. Local memory is reserved at this size for every resident thread (64 KiB each, about
 /// 18 GiB on an H100), but a member touches only DeviceMember::storage_size(N) of it.
@@ -44,15 +36,5 @@ inline constexpr std::size_t gpu_thread_scratch = 8192;
 /// neighbours, and for a coupling table its two dense N × N matrices (268 MB at 4096 rows).
 inline constexpr std::size_t gpu_team_max_rows = 1 << 16;
 inline constexpr std::size_t gpu_coupled_team_max_rows = 1 << 12;
-
-/// The most rows one member may have on the GPU with the scene's model and stepper: gpu_team_max_rows
-/// (gpu_coupled_team_max_rows with a coupling table) where it runs on teams, else what a thread's
-/// scratch of a fixed size holds (an even number like every row count).
-std::size_t gpu_max_rows(const Scene& scene);
-
-/// Runs the members of `range` (one variant) on the GPU; results go to `sink` as each chunk
-/// returns. Throws std::runtime_error where there is no GPU backend or no GPU.
-SweepOutcome run_gpu_row_sweep(const Scene& scene, const VariantRange& range, const RunControl& control,
-                               const ResultSink& sink);
 
 }  // namespace rotorsweep::ensemble

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "ensemble/gpu/gpu_backend.hpp"
-#include "ensemble/gpu/gpu_slider.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -18,13 +18,14 @@ const GpuInfo& gpu_info() {
 
 void use_gpu() { throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why); }
 
-SweepOutcome run_gpu_row_sweep(const Scene&, const VariantRange&, const RunControl&, const ResultSink&) {
+SweepOutcome GpuExecutor::run_variant(const Scene&, const VariantRange&, const RunControl&,
+                                      const ResultSink&) const {
   throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why);
 }
 
-RunOutcome run_gpu_slider_members(const SliderScene&, const std::vector<std::size_t>&, const RunControl&,
-                                  const std::function<void(std::vector<SliderMember>&&)>&,
-                                  const SliderTableBuilder&) {
+RunOutcome GpuExecutor::run_members(const SliderScene&, const std::vector<std::size_t>&, const RunControl&,
+                                    const std::function<void(std::vector<SliderMember>&&)>&,
+                                    const SliderTableBuilder&) const {
   throw std::runtime_error("numerics.device = \"gpu\": " + gpu_info().why);
 }
 

@@ -1,11 +1,8 @@
-// How the GPU backend lays a variant's members on threads (docs/architecture.md "Teams"): a member per
-// thread or per team of a warp's threads, the team's size by N, and the launch shape.
+// The GPU backend's launch settings (docs/architecture.md "Teams"): the block shape, a team's size and
+// its scratch as the environment asks for them, and the device of a node's rank.
 #pragma once
 
-#include <cstddef>
 #include <stdexcept>
-
-#include "ensemble/rows/scene.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -40,14 +37,5 @@ GpuLaunch gpu_launch();
 /// (SLURM_LOCALID), so that a node's ranks spread over its GPUs; device 0 outside them. A local rank
 /// that is not a non-negative integer throws GpuLaunchError naming the variable.
 int gpu_device_index(int devices);
-
-/// Whether the scene's members can run on a team (ensemble/rows/team_member.hpp): rows (nearest
-/// neighbours or a coupling table) at T > 0 or with a linearly implicit stepper.
-bool gpu_teams_fit(const Scene& scene);
-
-/// Threads per member of N = `rows`: 1 where teams do not fit the scene; else launch.team where set;
-/// else 1 up to 4 rows and above that the smallest power of two ≥ N/3 (two or three rows per thread),
-/// at most a warp (32).
-unsigned gpu_team_size(const Scene& scene, std::size_t rows, const GpuLaunch& launch);
 
 }  // namespace rotorsweep::ensemble

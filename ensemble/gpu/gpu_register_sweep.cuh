@@ -46,11 +46,10 @@ __global__ void __launch_bounds__(128 * B)
 }
 
 /// The variant's members in registers on L lanes × R slots with S stage vectors, bounded to B blocks,
-/// carrying every quadrature where Q (a shape of compiled_register_shapes that choose_register_shape
-/// picked for the scene and launch).
+/// carrying every quadrature where Q (the shape of compiled_register_shapes that the variant's plan holds).
 template <std::size_t L, std::size_t R, bool PerRow, std::size_t S, unsigned B, bool Q>
-SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, const RunControl& control,
-                              const ResultSink& sink) {
+SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, const GpuPlan& plan,
+                              const RunControl& control, const ResultSink& sink) {
   using Integrator =
       DeviceAdaptiveIntegrator<kernels::StepperFamily::rosenbrock, kernels::NearestNeighbourRows<double>>;
   available_gpu();
@@ -68,12 +67,11 @@ SweepOutcome run_in_registers(const Scene& scene, const VariantRange& range, con
     else
       return sweep_in_registers<L, R, PerRow, S, Q>;
   }();
-  const GpuLaunch launch = gpu_launch();
-  if (launch.threads_per_block > shape.max_threads_per_block())
+  if (plan.threads_per_block > shape.max_threads_per_block())
     throw std::logic_error("a register kernel cannot run blocks of this size");
-  ChunkGrid grid{resident_blocks(kernel, launch, 0), launch.threads_per_block, 0, 0};
+  ChunkGrid grid{resident_blocks(kernel, plan, 0), plan.threads_per_block, 0, 0};
   grid.resident = std::size_t(grid.blocks) * std::size_t(grid.threads_per_block) / L;
-  return run_chunks(scene, range, schedule, grid, control, sink,
+  return run_chunks(scene, range, schedule, grid, plan, control, sink,
                     [&](cudaStream_t stream, const SlotSchedule& chunk_schedule, const SlotViews& views,
                         unsigned long long count, unsigned long long* counter) {
                       kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(chunk_schedule, views, count,

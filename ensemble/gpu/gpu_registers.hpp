@@ -1,13 +1,10 @@
 // Which register kernel (docs/architecture.md "Register kernels") runs a row scene's members on the GPU:
-// the shapes a build compiled (lanes × slots, uniform or disordered rows) and the choice among them by N.
+// the shapes a build compiled (lanes × slots, uniform or disordered rows); gpu_plan.hpp chooses among them.
 #pragma once
 
 #include <cstddef>
-#include <optional>
 #include <span>
 
-#include "ensemble/gpu/gpu_launch.hpp"
-#include "ensemble/rows/scene.hpp"
 #include "kernels/models/rows/integrals.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
 
@@ -43,14 +40,5 @@ struct RegisterShape {
 
 /// The shapes this build compiled (CMake's ROTORSWEEP_GPU_REGISTER_SHAPES; none without CUDA).
 std::span<const RegisterShape> gpu_register_shapes();
-
-/// The shape among `shapes` that runs members of N = `rows` of the scene in registers, or none:
-/// T = 0, nearest neighbours, a linearly implicit stepper, no row profiles, no ROTORSWEEP_GPU_TEAM (which
-/// asks for a thread or a team), and a shape that holds N, disordered where the scene has disorder, with
-/// stage vectors for the scene's stepper, that can carry the scene's quadratures and whose occupancy
-/// bound admits the launch's threads per block. Of those that fit, the fewest slots in all, then the
-/// most lanes, then the fewest stages, then the fewest quadratures, then the most resident blocks.
-std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape> shapes, const Scene& scene,
-                                                   std::size_t rows, const GpuLaunch& launch);
 
 }  // namespace rotorsweep::ensemble

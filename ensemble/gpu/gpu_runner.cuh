@@ -14,11 +14,14 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "ensemble/engine/member_forms.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
+#include "ensemble/gpu/gpu_plan.hpp"
 #include "ensemble/rows/member_slots.hpp"
 #include "ensemble/rows/row_chunks.hpp"
 #include "ensemble/rows/team_member.hpp"
@@ -203,12 +206,12 @@ struct ChunkGrid {
   std::size_t resident = 0;
 };
 
-/// The blocks that fit on the GPU at once for `kernel` (or launch.blocks where set).
+/// The blocks that fit on the GPU at once for `kernel` (or plan.blocks where set).
 template <class Kernel>
-int resident_blocks(Kernel kernel, const GpuLaunch& launch, std::size_t shared_bytes) {
-  if (launch.blocks > 0) return launch.blocks;
+int resident_blocks(Kernel kernel, const GpuPlan& plan, std::size_t shared_bytes) {
+  if (plan.blocks > 0) return plan.blocks;
   int per_multiprocessor = 0;
-  check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_multiprocessor, kernel, launch.threads_per_block,
+  check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_multiprocessor, kernel, plan.threads_per_block,
                                                       shared_bytes),
         "sizing the grid");
   return std::max(1, per_multiprocessor) * gpu_info().multiprocessors;
@@ -233,16 +236,14 @@ class GpuRowDevice final : public RowSlotDevice {
   ChunkStream<SlotChunk, slot_views> stream_;
 };
 
-/// The variant's members on the GPU with `launch` (GpuRowDevice) through run_row_chunks: chunks of
-/// 8 × the members resident at once, at least 65 536; the stream's and events' creation counts as
-/// set-up.
+/// The variant's members on the GPU with `launch` (GpuRowDevice) through run_row_chunks, in chunks of the
+/// plan's size (GpuPlan::chunk_members); the stream's and events' creation counts as set-up.
 template <class Launch>
 SweepOutcome run_chunks(const Scene& scene, const VariantRange& range, const SlotSchedule& schedule,
-                        const ChunkGrid& grid, const RunControl& control, const ResultSink& sink,
-                        Launch&& launch) {
+                        const ChunkGrid& grid, const GpuPlan& plan, const RunControl& control,
+                        const ResultSink& sink, Launch&& launch) {
   const auto start = std::chrono::steady_clock::now();
-  const std::size_t members = range.end - range.begin;
-  const std::size_t chunk = std::min(members, std::max<std::size_t>(8 * grid.resident, 1 << 16));
+  const std::size_t chunk = plan.chunk_members(grid.resident, range.end - range.begin);
   GpuRowDevice device(launch);
   const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   SweepOutcome outcome = run_row_chunks(scene, range, schedule, chunk, control, sink, device);
@@ -262,8 +263,8 @@ inline const GpuInfo& available_gpu() {
 
 /// The variant's members, one per thread (DeviceMember<Model, Integrator>, the CPU lanes' bits).
 template <class Model, class Integrator>
-SweepOutcome run_slots(const Scene& scene, const VariantRange& range, const RunControl& control,
-                       const ResultSink& sink) {
+SweepOutcome run_slots(const Scene& scene, const VariantRange& range, const GpuPlan& plan,
+                       const RunControl& control, const ResultSink& sink) {
   using Driver = DeviceMember<Model, Integrator>;
   static_assert(ThreadMemberForm<Driver, SlotSchedule, SlotViews>);
   available_gpu();
@@ -272,14 +273,13 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, const RunC
       slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
   if (Driver::storage_size(schedule) > gpu_thread_scratch)
     throw std::runtime_error("model.rows = " + std::to_string(variant.rows) +
-                             " is more than the GPU backend holds (" + std::to_string(gpu_max_rows(scene)) +
+                             " is more than the GPU backend holds (" + std::to_string(GpuExecutor(GpuLaunch{.team = 1}).max_rows(scene)) +
                              " rows with this scene's model and stepper on one thread each)");
 
   const auto kernel = sweep_slots<Model, Integrator>;
-  const GpuLaunch launch = gpu_launch();
-  ChunkGrid grid{resident_blocks(kernel, launch, 0), launch.threads_per_block, 0, 0};
+  ChunkGrid grid{resident_blocks(kernel, plan, 0), plan.threads_per_block, 0, 0};
   grid.resident = std::size_t(grid.blocks) * std::size_t(grid.threads_per_block);
-  return run_chunks(scene, range, schedule, grid, control, sink,
+  return run_chunks(scene, range, schedule, grid, plan, control, sink,
                     [&](cudaStream_t stream, const SlotSchedule& chunk_schedule, const SlotViews& views,
                         unsigned long long count, unsigned long long* counter) {
                       kernel<<<grid.blocks, grid.threads_per_block, 0, stream>>>(chunk_schedule, views, count,
@@ -287,12 +287,11 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, const RunC
                     });
 }
 
-/// How teams of `team` threads are launched with `kernel` (a sweep_slots_on_teams) when each keeps
-/// `per_team` values of scratch: a block's teams in its shared memory where they fit (or
-/// ROTORSWEEP_GPU_SCRATCH says so), else in `scratch`, a global buffer of which the resident teams take
-/// at most a quarter of the GPU's memory. `automatic` is the choice without ROTORSWEEP_GPU_SCRATCH:
-/// shared where it fits, or global (the slider's, whose teams ran faster so on an H100: more of them
-/// resident, and the L1 cache left to the local arrays; docs/performance.md).
+/// How teams of plan.team threads are launched with `kernel` (a sweep_slots_on_teams) when each keeps
+/// `per_team` values of scratch: a block's teams in its shared memory where they fit and the plan puts
+/// them there (GpuPlan::scratch), else in `scratch`, a global buffer of which the resident teams take at
+/// most a quarter of the GPU's memory; shared memory that the plan was asked for and that does not fit
+/// is an error.
 struct TeamLaunch {
   ChunkGrid grid;
   std::size_t per_team = 0;
@@ -300,31 +299,28 @@ struct TeamLaunch {
   double* global() const { return scratch ? static_cast<double*>(scratch->data()) : nullptr; }
 };
 template <class Kernel>
-TeamLaunch team_launch(Kernel kernel, unsigned team, std::size_t per_team,
-                       GpuScratch automatic = GpuScratch::shared) {
+TeamLaunch team_launch(Kernel kernel, const GpuPlan& plan, std::size_t per_team) {
   const GpuInfo& info = available_gpu();
-  const GpuLaunch launch = gpu_launch();
-  const std::size_t teams_per_block = std::size_t(launch.threads_per_block) / team;
+  const std::size_t teams_per_block = std::size_t(plan.threads_per_block) / plan.team;
   const std::size_t block_bytes = teams_per_block * per_team * sizeof(double);
   int shared_limit = 0;
   check(cudaDeviceGetAttribute(&shared_limit, cudaDevAttrMaxSharedMemoryPerBlockOptin, 0),
         "querying the shared memory");
   const bool fits = block_bytes <= std::size_t(shared_limit);
-  if (launch.scratch == GpuScratch::shared && !fits)
+  if (plan.scratch_asked && plan.scratch == GpuScratch::shared && !fits)
     throw std::runtime_error("ROTORSWEEP_GPU_SCRATCH = shared: a block's " + std::to_string(teams_per_block) +
                              " teams need " + std::to_string(block_bytes / 1024) + " KiB, more than the " +
                              std::to_string(shared_limit / 1024) +
                              " KiB of shared memory a block has; use fewer threads per block "
                              "(ROTORSWEEP_GPU_BLOCK) or global");
-  const GpuScratch wanted = launch.scratch == GpuScratch::automatic ? automatic : launch.scratch;
-  const bool shared = fits && wanted != GpuScratch::global;
+  const bool shared = fits && plan.scratch == GpuScratch::shared;
   const std::size_t shared_bytes = shared ? block_bytes : 0;
   check(cudaFuncSetAttribute(kernel, cudaFuncAttributeMaxDynamicSharedMemorySize, int(shared_bytes)),
         "reserving shared memory");
 
   TeamLaunch out;
   out.per_team = per_team;
-  out.grid = {resident_blocks(kernel, launch, shared_bytes), launch.threads_per_block, shared_bytes, 0};
+  out.grid = {resident_blocks(kernel, plan, shared_bytes), plan.threads_per_block, shared_bytes, 0};
   if (!shared) {
     const double quarter = info.memory_gib * double(1ull << 30) / 4.0;
     out.grid.blocks =
@@ -336,12 +332,11 @@ TeamLaunch team_launch(Kernel kernel, unsigned team, std::size_t per_team,
   return out;
 }
 
-/// The variant's members, one per team of `team` threads of a warp with TeamIntegrator (TeamMember on
-/// const WarpTeam; the schedule's first-step scale is Integrator's, the same integrator on one lane).
-/// A block's teams keep their scratch in its shared memory where it fits (or ROTORSWEEP_GPU_SCRATCH
-/// says so), else in global memory, of which the resident teams take at most a quarter.
+/// The variant's members, one per team of plan.team threads of a warp with TeamIntegrator (TeamMember on
+/// const WarpTeam; the schedule's first-step scale is Integrator's, the same integrator on one lane),
+/// their scratch where team_launch puts it.
 template <class Integrator, class TeamIntegrator>
-SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, unsigned team,
+SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, const GpuPlan& plan,
                                 const RunControl& control, const ResultSink& sink) {
   using Driver = TeamMember<const kernels::WarpTeam, TeamIntegrator>;
   static_assert(TeamMemberForm<Driver, const kernels::WarpTeam, SlotSchedule, SlotViews>);
@@ -351,14 +346,26 @@ SweepOutcome run_slots_on_teams(const Scene& scene, const VariantRange& range, u
   if (!Driver::team_schedule_fits(schedule)) throw std::logic_error("a team cannot run this schedule");
 
   const auto kernel = sweep_slots_on_teams<TeamMember, TeamIntegrator, SlotSchedule, SlotViews>;
-  const TeamLaunch teams = team_launch(kernel, team, Driver::storage_size(schedule, team));
+  const unsigned team = plan.team;
+  const TeamLaunch teams = team_launch(kernel, plan, Driver::storage_size(schedule, team));
   return run_chunks(
-      scene, range, schedule, teams.grid, control, sink,
+      scene, range, schedule, teams.grid, plan, control, sink,
       [&](cudaStream_t stream, const SlotSchedule& chunk_schedule, const SlotViews& views,
           unsigned long long count, unsigned long long* counter) {
         kernel<<<teams.grid.blocks, teams.grid.threads_per_block, teams.grid.shared_bytes, stream>>>(
             chunk_schedule, views, count, counter, team, teams.global(), teams.per_team);
       });
+}
+
+/// The variant's members by the plan's mapping: a team per member with TeamIntegrator where the plan says
+/// so (void: the stepper has no team form), else a thread per member with Integrator over Model.
+template <class Model, class Integrator, class TeamIntegrator>
+SweepOutcome run_planned(const Scene& scene, const VariantRange& range, const GpuPlan& plan,
+                         const RunControl& control, const ResultSink& sink) {
+  if constexpr (!std::is_void_v<TeamIntegrator>)
+    if (plan.mapping == GpuMapping::team)
+      return run_slots_on_teams<Integrator, TeamIntegrator>(scene, range, plan, control, sink);
+  return run_slots<Model, Integrator>(scene, range, plan, control, sink);
 }
 
 }  // namespace rotorsweep::ensemble::gpu

@@ -5,15 +5,12 @@
 
 namespace rotorsweep::ensemble::gpu {
 
-SweepOutcome run_langevin(const Scene& scene, const VariantRange& range, const RunControl& control,
-                          const ResultSink& sink) {
+SweepOutcome run_langevin(const Scene& scene, const VariantRange& range, const GpuPlan& plan,
+                          const RunControl& control, const ResultSink& sink) {
   return with_device_model(scene, [&]<class Model>() {
-    using Integrator = kernels::LeimkuhlerMatthews<Model>;
-    const unsigned team = gpu_team_size(scene, range.source->at(range.begin).rows, gpu_launch());
-    if (team > 1)
-      return run_slots_on_teams<Integrator, kernels::TeamLeimkuhlerMatthews<const kernels::WarpTeam, Model>>(
-          scene, range, team, control, sink);
-    return run_slots<Model, Integrator>(scene, range, control, sink);
+    return run_planned<Model, kernels::LeimkuhlerMatthews<Model>,
+                       kernels::TeamLeimkuhlerMatthews<const kernels::WarpTeam, Model>>(scene, range, plan,
+                                                                                          control, sink);
   });
 }
 

@@ -1,10 +1,11 @@
 // The slider on the GPU (docs/architecture.md "Teams"): SliderTeamMember with a Rosenbrock stepper on warp teams,
 // inertial or overdamped; the substrate tables copied to device memory once per size and speed.
+#include <limits>
 #include <memory>
 #include <vector>
 
 #include "ensemble/gpu/gpu_runner.cuh"
-#include "ensemble/gpu/gpu_slider.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/slider/slider_slot_sweep.hpp"
 #include "ensemble/slider/slider_team_member.hpp"
 #include "kernels/models/slider/slider_on_teams.hpp"
@@ -20,20 +21,22 @@ using SliderTeamIntegrator = kernels::TeamIntegrator<
     const kernels::WarpTeam, kernels::TeamRosenbrock<const kernels::WarpTeam, kernels::SliderModel<double, Inertial>>>;
 
 /// Chunks of slider slots on the GPU, two in flight on the rows' ChunkStream, a member per team of a
-/// warp's threads (gpu_slider_team_size of the chunk's size).
+/// warp's threads, by the plan of the chunk's size (plan_slider_size).
 template <bool Inertial>
 class GpuSliderDevice final : public SliderSlotDevice {
  public:
+  explicit GpuSliderDevice(const GpuLaunch& launch) : launch_settings_(launch) {}
+
   using Integrator = SliderTeamIntegrator<Inertial>;
   using Driver = SliderTeamMember<const kernels::WarpTeam, Integrator>;
   static_assert(TeamMemberForm<Driver, const kernels::WarpTeam, SliderSlotSchedule, SliderSlotViews>);
 
   std::size_t chunk_members(const SliderSlotSchedule& schedule) override {
     chunks_.reset();  // another size's buffers
-    team_ = gpu_slider_team_size({schedule.grid.columns, schedule.grid.rows}, gpu_launch());
-    launch_ = std::make_unique<TeamLaunch>(
-        team_launch(kernel(), team_, Driver::storage_size(schedule, team_), GpuScratch::global));
-    return std::max<std::size_t>(4 * launch_->grid.resident, 1024);
+    const GpuPlan plan = plan_slider_size({schedule.grid.columns, schedule.grid.rows}, launch_settings_);
+    team_ = plan.team;
+    launch_ = std::make_unique<TeamLaunch>(team_launch(kernel(), plan, Driver::storage_size(schedule, team_)));
+    return plan.chunk_members(launch_->grid.resident, std::numeric_limits<std::size_t>::max());
   }
 
   std::vector<kernels::SubstrateTableView> place_tables(
@@ -73,6 +76,7 @@ class GpuSliderDevice final : public SliderSlotDevice {
     return sweep_slots_on_teams<SliderTeamMember, Integrator, SliderSlotSchedule, SliderSlotViews>;
   }
 
+  GpuLaunch launch_settings_;
   unsigned team_ = 32;
   std::unique_ptr<TeamLaunch> launch_;
   std::vector<std::unique_ptr<DeviceBuffer>> tables_;
@@ -81,16 +85,16 @@ class GpuSliderDevice final : public SliderSlotDevice {
 
 }  // namespace gpu
 
-RunOutcome run_gpu_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
-                                  const RunControl& control,
-                                  const std::function<void(std::vector<SliderMember>&&)>& finished,
-                                  const SliderTableBuilder& build_table) {
+RunOutcome GpuExecutor::run_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                                    const RunControl& control,
+                                    const std::function<void(std::vector<SliderMember>&&)>& finished,
+                                    const SliderTableBuilder& build_table) const {
   gpu::available_gpu();
   if (scene.overdamped) {
-    gpu::GpuSliderDevice<false> device;
+    gpu::GpuSliderDevice<false> device(launch_);
     return run_slider_members_in_slots(scene, plan_indices, control, finished, device, build_table);
   }
-  gpu::GpuSliderDevice<true> device;
+  gpu::GpuSliderDevice<true> device(launch_);
   return run_slider_members_in_slots(scene, plan_indices, control, finished, device, build_table);
 }
 

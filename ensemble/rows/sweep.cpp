@@ -1,11 +1,12 @@
 // run_sweep: variant by variant, dispatch from the scene's stepper to its family's instantiation (one
-// generated translation unit per family of kernels::steppers), or to the Langevin stepper at T > 0;
+// generated translation unit per family of kernels::steppers), to the Langevin stepper at T > 0, or to
+// the device executor its caller gave;
 // each backend runs the reruns of its members itself (RowReruns: LaneScheduler, run_row_chunks).
 #include "ensemble/rows/sweep.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
-#include "ensemble/gpu/gpu_backend.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::ensemble {
@@ -23,10 +24,13 @@ void SweepOutcome::append(SweepOutcome&& part) {
 
 namespace {
 
-/// The members of `range` on the scene's backend.
+/// The members of `range` on the scene's backend: `device`, or the CPU's lanes.
 SweepOutcome run_range(const Scene& scene, const VariantRange& range, const RunControl& control,
-                       const ResultSink& sink) {
-  if (scene.device == Device::gpu) return run_gpu_row_sweep(scene, range, control, sink);
+                       const ResultSink& sink, const RowDevice* device) {
+  if (scene.device == Device::gpu) {
+    if (!device) throw std::invalid_argument("numerics.device = \"gpu\": run_members was given no GPU executor");
+    return device->run_variant(scene, range, control, sink);
+  }
   if (scene.thermal.on()) return run_thermal_row_sweep(scene, range, control, sink);
   return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
     return run_row_sweep<family>(scene, range, control, sink);
@@ -36,7 +40,7 @@ SweepOutcome run_range(const Scene& scene, const VariantRange& range, const RunC
 }  // namespace
 
 SweepOutcome run_members(const Scene& scene, const MemberSource& source, const RunControl& control,
-                         const ResultSink& sink) {
+                         const ResultSink& sink, const RowDevice* device) {
   SweepOutcome outcome;
   std::size_t done_before = 0;
   for (std::size_t begin = 0; begin < source.count;) {
@@ -60,13 +64,14 @@ SweepOutcome run_members(const Scene& scene, const MemberSource& source, const R
     const std::size_t before = done_before;
     RunControl part = control;
     if (control.progress) part.progress = [&](std::size_t done) { control.progress(before + done); };
-    outcome.append(run_range(scene, range, part, sink));
+    outcome.append(run_range(scene, range, part, sink, device));
     done_before += range.end - range.begin;
   }
   return outcome;
 }
 
-SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, const RunControl& control) {
+SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, const RunControl& control,
+                       const RowDevice* device) {
   std::vector<MemberResult> results(members.size());
   std::vector<char> finished(members.size(), 0);
   const MemberSource source{members.size(), [&](std::size_t k) { return members[k]; }};
@@ -78,7 +83,8 @@ SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, c
         const auto k = std::size_t(at - members.begin());
         results[k] = std::move(result);
         finished[k] = 1;
-      });
+      },
+      device);
   outcome.results = std::move(results);
   outcome.finished = std::move(finished);
   return outcome;

@@ -36,17 +36,28 @@ struct VariantRange {
 /// worker threads, possibly at the same time.
 using ResultSink = std::function<void(MemberResult&&)>;
 
+/// An executor that runs a variant's members off the CPU's lanes (the GPU's: ensemble/gpu/gpu_executor.hpp),
+/// handed to run_members by its caller: the sweep names no backend.
+class RowDevice {
+ public:
+  virtual ~RowDevice() = default;
+  /// Runs the members of `range` (one variant) as run_members does.
+  virtual SweepOutcome run_variant(const Scene& scene, const VariantRange& range, const RunControl& control,
+                                   const ResultSink& sink) const = 0;
+};
+
 /// Runs the members of `source` (any part of the scene's plan, in plan order), handing each result
 /// to `sink` as it finishes and keeping none: outcome.results stays empty. Members of different
 /// variants run one variant after the other; control.claim, where set, is asked for positions k of
 /// the source within one variant's members; control.stops counts the periods members close. A stop
 /// returns early with outcome.interrupted set; members still in lanes are abandoned and reach no sink.
+/// A scene with numerics.device = "gpu" runs on `device` (an error where there is none).
 SweepOutcome run_members(const Scene& scene, const MemberSource& source, const RunControl& control,
-                         const ResultSink& sink);
+                         const ResultSink& sink, const RowDevice* device = nullptr);
 
 /// Runs `members` (any subset of the scene's plan, in plan order) as run_members does and returns
 /// their results in the same order.
-SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members,
-                       const RunControl& control = {});
+SweepOutcome run_sweep(const Scene& scene, const std::vector<Member>& members, const RunControl& control = {},
+                       const RowDevice* device = nullptr);
 
 }  // namespace rotorsweep::ensemble

@@ -34,6 +34,19 @@ class SliderSlotDevice : public SlotDevice<SliderSlotChunk> {
 using SliderTableBuilder = std::function<kernels::SubstrateTable(const SliderScene&, SliderSize, double h,
                                                                  double dy, double ddepth)>;
 
+/// An executor that runs slider members off the CPU's lanes (the GPU's: ensemble/gpu/gpu_executor.hpp),
+/// handed to run_slider_members by its caller: the scan names no backend.
+class SliderDevice {
+ public:
+  virtual ~SliderDevice() = default;
+  /// run_slider_members on the device: members `plan_indices` (ascending) in chunks of one size and speed,
+  /// each chunk's members to `finished` as it returns, the substrate tables built by `build_table` on the host.
+  virtual RunOutcome run_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
+                                 const RunControl& control,
+                                 const std::function<void(std::vector<SliderMember>&&)>& finished,
+                                 const SliderTableBuilder& build_table) const = 0;
+};
+
 /// The first-step scale of the scene's stepper at its tolerances (kernels::AdaptiveIntegrator's).
 double slider_first_step_scale(const SliderScene& scene);
 

@@ -5,13 +5,14 @@
 
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 
 #include "ensemble/engine/lane_groups.hpp"
 #include "ensemble/engine/lane_scheduler.hpp"
-#include "ensemble/gpu/gpu_slider.hpp"
 #include "ensemble/slider/slider_member_summary.hpp"
 #include "ensemble/slider/slider_problem.hpp"
+#include "ensemble/slider/slider_slot_sweep.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/models/slider/slider_model.hpp"
 #include "kernels/models/slider/spectral_pairs.hpp"
@@ -88,13 +89,17 @@ RunOutcome run_sizes(const SliderScene& scene, const std::vector<SliderSampleGri
 
 RunOutcome run_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                               const RunControl& control,
-                              const std::function<void(std::vector<SliderMember>&&)>& finished) {
-  if (scene.device == Device::gpu)
-    return run_gpu_slider_members(
+                              const std::function<void(std::vector<SliderMember>&&)>& finished,
+                              const SliderDevice* device) {
+  if (scene.device == Device::gpu) {
+    if (!device)
+      throw std::invalid_argument("numerics.device = \"gpu\": run_slider_members was given no GPU executor");
+    return device->run_members(
         scene, plan_indices, control, finished,
         [](const SliderScene& variant, SliderSize size, double separation, double dy, double ddepth) {
           return substrate_table<V>(variant, size, separation, dy, ddepth);
         });
+  }
   std::vector<SliderSampleGrid> grids;
   for (std::size_t v = 0; v < scene.speeds.size(); ++v) grids.emplace_back(slider_variant(scene, v, 0));
   // the members of each size in turn (a lane scheduler's loop has one grid of rotors)
@@ -155,15 +160,18 @@ std::size_t slider_thread_lanes(const SliderScene& scene) {
   return 1;
 }
 
-SliderResult run_slider_scan(const SliderScene& scene, const RunControl& control) {
+SliderResult run_slider_scan(const SliderScene& scene, const RunControl& control, const SliderDevice* device) {
   SliderResult result;
   result.timeline = slider_timeline(scene);
   result.members.resize(scene.member_count());
   std::vector<std::size_t> all(scene.member_count());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  result.outcome = run_slider_members(scene, all, control, [&](std::vector<SliderMember>&& block) {
-    for (auto& m : block) result.members[m.plan_index] = std::move(m);
-  });
+  result.outcome = run_slider_members(
+      scene, all, control,
+      [&](std::vector<SliderMember>&& block) {
+        for (auto& m : block) result.members[m.plan_index] = std::move(m);
+      },
+      device);
   return result;
 }
 

@@ -13,6 +13,8 @@
 
 namespace rotorsweep::ensemble {
 
+class SliderDevice;  // ensemble/slider/slider_slot_sweep.hpp
+
 /// One member's results, SI units.
 struct SliderMember {
   std::size_t plan_index = 0;  ///< its row in the plan (SliderMemberIndex's order)
@@ -73,10 +75,11 @@ std::size_t slider_thread_lanes(const SliderScene& scene);
 /// members share its block. control.claim, where set, is asked for positions in plan_indices within a
 /// group run together (one size; on the GPU one size and speed); control.stops counts the samples members
 /// take. An exception in a worker (std::bad_alloc) stops the other blocks and is rethrown here. With
-/// SliderScene::device = gpu the members run on the GPU (run_gpu_slider_members), a chunk at a time.
+/// SliderScene::device = gpu the members run on `device` (an error where there is none), a chunk at a time.
 RunOutcome run_slider_members(const SliderScene& scene, const std::vector<std::size_t>& plan_indices,
                               const RunControl& control,
-                              const std::function<void(std::vector<SliderMember>&&)>& finished);
+                              const std::function<void(std::vector<SliderMember>&&)>& finished,
+                              const SliderDevice* device = nullptr);
 
 /// Every member of the scene's plan, held in memory.
 struct SliderResult {
@@ -84,6 +87,7 @@ struct SliderResult {
   std::vector<SliderMember> members;  ///< in plan order; members left out by a stop are empty
   RunOutcome outcome;
 };
-SliderResult run_slider_scan(const SliderScene& scene, const RunControl& control = {});
+SliderResult run_slider_scan(const SliderScene& scene, const RunControl& control = {},
+                             const SliderDevice* device = nullptr);
 
 }  // namespace rotorsweep::ensemble

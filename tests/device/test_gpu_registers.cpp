@@ -8,6 +8,8 @@
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
 #include "ensemble/gpu/gpu_register_shapes.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
+#include "ensemble/gpu/gpu_plan.hpp"
 #include "ensemble/gpu/gpu_registers.hpp"
 #include "ensemble/gpu/register_member.hpp"
 #include "ensemble/rows/member_plan.hpp"
@@ -64,7 +66,9 @@ void check_compiled_shapes() {
                      << (shape.every_quadrature ? ", every quadrature" : "") << ", N = " << rows);
     REQUIRE(ensemble::choose_register_shape(ensemble::compiled_register_shapes, scene, rows, {}) == shape);
     const auto members = ensemble::plan_members(scene);
-    const auto gpu = ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)}).results;
+    const ensemble::GpuExecutor executor;
+    const auto gpu =
+        ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)}, &executor).results;
     using Driver = ensemble::RegisterMember<kernels::HostWarp<shape.lanes>, shape.slots, shape.disordered,
                                             shape.stages, shape.every_quadrature>;
     using Integrator = ensemble::DeviceAdaptiveIntegrator<kernels::StepperFamily::rosenbrock,

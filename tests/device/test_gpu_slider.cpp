@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "io/slider_scene_parser.hpp"
 #include "support/scoped_variable.hpp"
@@ -47,8 +48,10 @@ void check_same_members(const std::vector<SliderMember>& gpu, const std::vector<
   }
 }
 
+/// The scan on the GPU with the environment's launch as it is now.
 std::vector<SliderMember> on_gpu(const ensemble::SliderScene& scene) {
-  return ensemble::run_slider_scan(scene).members;
+  const ensemble::GpuExecutor gpu(ensemble::gpu_launch());
+  return ensemble::run_slider_scan(scene, {}, &gpu).members;
 }
 
 /// A 3 × 2 slider at two speeds, dampings and separations, two replicas, every optional series.

@@ -11,6 +11,7 @@
 
 #include "ensemble/engine/thread_count.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/paper_table.hpp"
 #include "ensemble/rows/sweep.hpp"
@@ -29,11 +30,13 @@ namespace {
 
 using testing::ScopedVariable;
 
-/// The members on `device`, on every core (OMP_NUM_THREADS where set) for the CPU's part.
+/// The members on `device` (the GPU with the environment's launch as it is now), on every core
+/// (OMP_NUM_THREADS where set) for the CPU's part.
 std::vector<ensemble::MemberResult> run_on(ensemble::Scene scene, ensemble::Device device,
                                            const std::vector<ensemble::Member>& members) {
   scene.device = device;
-  return ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)}).results;
+  const ensemble::GpuExecutor gpu(ensemble::gpu_launch());
+  return ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)}, &gpu).results;
 }
 
 /// A member per GPU thread against the CPU lanes: the same bits.
@@ -243,11 +246,10 @@ TEST_CASE("a member that fails on the GPU leaves the others' bits alone", "[gpu]
   auto scene = io::parse_scene_text(curve_scene("rodas4", 20, "1e-6"), "failure");
   scene.device = ensemble::Device::gpu;
   auto members = ensemble::plan_members(scene);
-  const auto clean = ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)}).results;
+  const auto clean = run_on(scene, ensemble::Device::gpu, members);
   const std::size_t broken = members.size() / 3;
   members[broken].A = std::numeric_limits<double>::quiet_NaN();
-  const auto with_failure =
-      ensemble::run_sweep(scene, members, {.threads = ensemble::thread_count(0)}).results;
+  const auto with_failure = run_on(scene, ensemble::Device::gpu, members);
   CHECK(with_failure[broken].status == kernels::LaneStatus::non_finite);
   CHECK(std::isnan(with_failure[broken].dissipation()));
   std::size_t differ = 0;

@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "io/scene_parser.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 #include "support/scene_text.hpp"
@@ -303,14 +303,14 @@ TEST_CASE("the GPU takes every row scene up to its row limit, which the refusal 
   const std::string rest = "[drive]\ng = [0.001]\n[sweep]\nA = [1]\n" + gpu;
   CHECK(error_of("[model]\nrows = 20\ncouplings = \"dipolar\"\nrange = 2\n" + rest) == "");
   CHECK(error_of("[model]\nrows = 20\nboundary = \"open\"\n" + rest) == "");
-  const auto limit = rotorsweep::ensemble::gpu_max_rows(parse_scene_text(minimal + gpu, "test.toml"));
+  const auto limit = rotorsweep::ensemble::gpu_executor().max_rows(parse_scene_text(minimal + gpu, "test.toml"));
   CHECK(limit >= 128);
   CHECK(error_of("[model]\nrows = " + std::to_string(limit) + "\n" + rest) == "");
   CHECK_THAT(error_of("[model]\nrows = " + std::to_string(limit + 2) + "\n" + rest),
              Catch::Contains("'model.rows'") && Catch::Contains("at most " + std::to_string(limit)) &&
                  Catch::Contains("numerics.device = \"cpu\""));
   const std::string dipolar = "couplings = \"dipolar\"\nboundary = \"open\"\n";
-  const auto coupled_limit = rotorsweep::ensemble::gpu_max_rows(
+  const auto coupled_limit = rotorsweep::ensemble::gpu_executor().max_rows(
       parse_scene_text("[model]\nrows = 4\n" + dipolar + rest, "test.toml"));
   CHECK_THAT(error_of("[model]\nrows = " + std::to_string(coupled_limit + 2) + "\n" + dipolar + rest),
              Catch::Contains("'model.rows'") && Catch::Contains("coupling table"));

@@ -1,6 +1,6 @@
-// How the GPU backend lays members on threads (ensemble/gpu/gpu_launch.hpp), on the host: which scenes
-// run in registers or on teams, the team's size by N (and the slider's by its rotors), the environment's
-// settings and their errors, the file's label.
+// How the GPU backend lays members on threads (ensemble/gpu/gpu_plan.hpp, gpu_launch.hpp), on the host:
+// which scenes run in registers or on teams, the team's size by N (and the slider's by its rotors), a
+// team's scratch and the chunk's size, the environment's settings and their errors, the file's label.
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <stdexcept>
@@ -8,9 +8,11 @@
 #include <vector>
 
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/gpu/gpu_launch.hpp"
-#include "ensemble/gpu/gpu_registers.hpp"
-#include "ensemble/gpu/gpu_slider.hpp"
+#include "ensemble/gpu/gpu_plan.hpp"
+#include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "io/slider_scene_parser.hpp"
 #include "support/scoped_variable.hpp"
@@ -25,6 +27,9 @@ ensemble::Scene scene_of(const std::string& model, const std::string& rest = "")
   return io::parse_scene_text("[model]\n" + model + "\n[drive]\ng = [0.01]\n[sweep]\nA = [1, 8]\n" + rest,
                               "launch");
 }
+
+/// An executor of the environment's launch as it is now (gpu_executor() reads it once per process).
+ensemble::GpuExecutor from_environment() { return ensemble::GpuExecutor(ensemble::gpu_launch()); }
 
 std::string launch_error() {
   try {
@@ -122,9 +127,9 @@ TEST_CASE("the environment sets the launch; a bad value is one error naming it",
 
 TEST_CASE("a member on a team has no per-thread row limit; on one thread it has", "[gpu_launch]") {
   const auto scene = scene_of("rows = 20");
-  CHECK(ensemble::gpu_max_rows(scene) == ensemble::gpu_team_max_rows);
+  CHECK(from_environment().max_rows(scene) == ensemble::gpu_team_max_rows);
   const ScopedVariable team("ROTORSWEEP_GPU_TEAM", "1");
-  const std::size_t per_thread = ensemble::gpu_max_rows(scene);
+  const std::size_t per_thread = from_environment().max_rows(scene);
   CHECK(per_thread >= 100);
   CHECK(per_thread < ensemble::gpu_team_max_rows);
 }
@@ -132,9 +137,9 @@ TEST_CASE("a member on a team has no per-thread row limit; on one thread it has"
 TEST_CASE("a coupling table on a team holds up to 4096 rows, on one thread what its dense matrices leave",
           "[gpu_launch]") {
   const auto scene = scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = \"all\"\nboundary = \"open\"");
-  CHECK(ensemble::gpu_max_rows(scene) == ensemble::gpu_coupled_team_max_rows);
+  CHECK(from_environment().max_rows(scene) == ensemble::gpu_coupled_team_max_rows);
   const ScopedVariable team("ROTORSWEEP_GPU_TEAM", "1");
-  const std::size_t per_thread = ensemble::gpu_max_rows(scene);
+  const std::size_t per_thread = from_environment().max_rows(scene);
   CHECK(per_thread >= 49);  // the experiment's slider, as rows
   CHECK(per_thread < 91);   // N² values of 8192
 }
@@ -148,20 +153,20 @@ TEST_CASE("the result file's device says how many threads run a member", "[gpu_l
   };
   auto scene = scene_of("rows = 20");
   scene.device = ensemble::Device::gpu;
-  CHECK_THAT(ensemble::device_label(scene),
+  CHECK_THAT(from_environment().label(scene),
              Catch::StartsWith("gpu (") && Catch::EndsWith("; " + teams_of_8(scene) + ")"));
   auto pair = scene_of("rows = [2, 20]");
   pair.device = ensemble::Device::gpu;
-  CHECK_THAT(ensemble::device_label(pair),
+  CHECK_THAT(from_environment().label(pair),
              Catch::EndsWith("; 1 thread per member at N = 2; " + teams_of_8(pair) + " at N = 20)"));
   const ScopedVariable eight("ROTORSWEEP_GPU_TEAM", "8");  // a team, whatever the build compiled
-  CHECK_THAT(ensemble::device_label(scene), Catch::EndsWith("; 8 threads per member)"));
+  CHECK_THAT(from_environment().label(scene), Catch::EndsWith("; 8 threads per member)"));
   auto coupled = scene_of("rows = 20\ncouplings = \"dipolar\"\nrange = 2");
   coupled.device = ensemble::Device::gpu;
-  CHECK_THAT(ensemble::device_label(coupled), Catch::EndsWith("; 8 threads per member)"));
+  CHECK_THAT(from_environment().label(coupled), Catch::EndsWith("; 8 threads per member)"));
   auto explicit_stepper = scene_of("rows = 20", "[numerics]\nstepper = \"dopri5\"\n");
   explicit_stepper.device = ensemble::Device::gpu;
-  CHECK_THAT(ensemble::device_label(explicit_stepper), Catch::EndsWith("; 1 thread per member)"));
+  CHECK_THAT(from_environment().label(explicit_stepper), Catch::EndsWith("; 1 thread per member)"));
 }
 
 TEST_CASE("a register kernel runs the T = 0 nearest-neighbour scenes whose N a compiled shape holds",
@@ -263,10 +268,10 @@ TEST_CASE("a slider member's team: two or three rotors a thread, at most a warp;
       "[slider]\ncolumns = [7, 3]\nrows = [7, 2]\n[sweep]\nseparation = [8e-3]\n[numerics]\ndevice = "
       "\"gpu\"\n",
       "label");
-  CHECK_THAT(ensemble::slider_device_label(scene),
+  CHECK_THAT(from_environment().label(scene),
              Catch::Contains("threads per member: 32 at 7 × 7, 2 at 3 × 2"));
   const ScopedVariable team("ROTORSWEEP_GPU_TEAM", "16");
-  CHECK_THAT(ensemble::slider_device_label(scene), Catch::Contains("16 at 7 × 7, 16 at 3 × 2"));
+  CHECK_THAT(from_environment().label(scene), Catch::Contains("16 at 7 × 7, 16 at 3 × 2"));
 }
 
 TEST_CASE("under mpirun or srun each rank of a node takes the GPU of its local rank", "[gpu_launch]") {
@@ -312,4 +317,61 @@ TEST_CASE(
       ensemble::choose_register_shape(std::vector<RegisterShape>{{8, 3, false, 6, 3}}, scene, 20, launch));
   CHECK(RegisterShape{8, 3, false, 6, 3}.max_threads_per_block() == 384);
   CHECK(RegisterShape{8, 3, false, 6, 0}.max_threads_per_block() == 1024);
+}
+
+TEST_CASE("the plan: a variant's mapping, a team's scratch and the chunk's size, for rows and the slider",
+          "[gpu_launch]") {
+  ensemble::GpuLaunch launch;
+  const auto thermal = scene_of("rows = 20", "[thermal]\ntemperature = 0.01\n");
+  auto plan = ensemble::plan_row_variant(thermal, 20, launch);
+  CHECK(plan.mapping == ensemble::GpuMapping::team);
+  CHECK(plan.team == 8);
+  CHECK(plan.scratch == ensemble::GpuScratch::shared);  // where a block's teams fit
+  CHECK_FALSE(plan.scratch_asked);
+  CHECK(plan.chunk_members(1000, 1'000'000) == 65536);  // at least 65 536
+  CHECK(plan.chunk_members(10'000, 1'000'000) == 80'000);  // 8 × the resident members
+  CHECK(plan.chunk_members(10'000, 5'000) == 5'000);  // the group's members at most
+  CHECK(plan.threads_per_member() == "8 threads per member");
+  plan = ensemble::plan_row_variant(scene_of("rows = 2"), 2, launch);
+  CHECK(plan.mapping == ensemble::GpuMapping::thread);
+  CHECK(plan.threads_per_member() == "1 thread per member");
+  const std::vector<ensemble::RegisterShape> shapes{{8, 3, false}};
+  plan = ensemble::plan_row_variant(scene_of("rows = 20", "[numerics]\nglobal_error = \"local\"\n"), 20,
+                                    launch, shapes);
+  CHECK(plan.mapping == ensemble::GpuMapping::registers);
+  CHECK(plan.shape == shapes.front());
+  CHECK(plan.team == 8);
+  CHECK(plan.threads_per_member() == "8 threads per member, rows in registers");
+  launch.scratch = ensemble::GpuScratch::global;
+  launch.threads_per_block = 256;
+  launch.blocks = 7;
+  plan = ensemble::plan_row_variant(thermal, 20, launch);
+  CHECK(plan.scratch == ensemble::GpuScratch::global);
+  CHECK(plan.scratch_asked);
+  CHECK(plan.threads_per_block == 256);
+  CHECK(plan.blocks == 7);
+
+  const auto slider = ensemble::plan_slider_size({7, 7}, ensemble::GpuLaunch{});
+  CHECK(slider.mapping == ensemble::GpuMapping::team);
+  CHECK(slider.team == 32);
+  CHECK(slider.scratch == ensemble::GpuScratch::global);  // unless asked otherwise
+  CHECK_FALSE(slider.scratch_asked);
+  CHECK(slider.chunk_members(100, 1'000'000) == 1024);  // at least 1 024
+  CHECK(slider.chunk_members(1000, 1'000'000) == 4000);  // 4 × the resident members
+  ensemble::GpuLaunch shared;
+  shared.scratch = ensemble::GpuScratch::shared;
+  CHECK(ensemble::plan_slider_size({7, 7}, shared).scratch == ensemble::GpuScratch::shared);
+}
+
+TEST_CASE("a GPU scene runs on the executor its caller gives, and without one is an error", "[gpu_launch]") {
+  auto scene = scene_of("rows = 4");
+  scene.device = ensemble::Device::gpu;
+  const auto members = ensemble::plan_members(scene);
+  CHECK_THROWS_WITH(ensemble::run_sweep(scene, members), Catch::Contains("no GPU executor"));
+  CHECK(ensemble::device_for(ensemble::Device::cpu) == nullptr);
+  CHECK(ensemble::device_for(ensemble::Device::gpu) == &ensemble::gpu_executor());
+  if (!ensemble::gpu_info().available) {  // the executor says why it cannot run
+    const ensemble::GpuExecutor executor;
+    CHECK_THROWS_WITH(ensemble::run_sweep(scene, members, {}, &executor), Catch::Contains("numerics.device"));
+  }
 }

@@ -17,6 +17,7 @@
 
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/gpu/gpu_executor.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_slots.hpp"
 #include "ensemble/rows/row_chunks.hpp"
@@ -350,7 +351,7 @@ TEST_CASE("a GPU thread's row limit depends on the model, the integrator and the
           "[device_member]") {
   ::setenv("ROTORSWEEP_GPU_TEAM", "1", 1);  // a member per thread, also where a team could run it
   const auto limit = [](const std::string& text) {
-    return ensemble::gpu_max_rows(io::parse_scene_text(text, "device-member-limit"));
+    return ensemble::gpu_executor().max_rows(io::parse_scene_text(text, "device-member-limit"));
   };
   const std::string plain = scene_text("rodas4p2", 6, "relax_periods = 1\naverage_periods = 2");
   const std::size_t nearest = limit(plain);
