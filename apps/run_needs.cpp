@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/rows/row_models.hpp"
 #include "ensemble/rows/working_set.hpp"
 #include "ensemble/slider/slider_sweep.hpp"
 #include "io/member_columns.hpp"
@@ -51,9 +52,9 @@ std::optional<std::string> sweep_memory_refusal(const ensemble::Scene& scene, in
                 block / 0x1p30, scene.max_rows(), held_bytes > 0 ? ", and the result held in memory" : "");
   return memory_refusal(double(threads) * block + held_bytes, "the sweep", how,
                         std::string("use fewer --threads or rows") +
-                            (scene.couplings.nearest_neighbour()
-                                 ? ""
-                                 : " (a dense coupling table grows as N²: a shorter range)") +
+                            (ensemble::row_model_traits(scene.model).coupling_table
+                                 ? " (a dense coupling table grows as N²: a shorter range)"
+                                 : "") +
                             (held_bytes > 0 ? ", or write the result to a file (output=)" : ""));
 }
 

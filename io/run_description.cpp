@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "ensemble/gpu/gpu_executor.hpp"
+#include "ensemble/rows/row_models.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
 namespace rotorsweep::io {
@@ -72,7 +73,7 @@ std::string run_description(const ensemble::Scene& scene, const std::string& nam
   if (scene.device == ensemble::Device::gpu)
     text += format("device: %s (%d host threads summarize)\n", ensemble::device_label(scene).c_str(), threads);
   const auto& couplings = scene.couplings;
-  if (couplings.nearest_neighbour()) return text;
+  if (!ensemble::row_model_traits(scene.model).coupling_table) return text;
   std::string what = "nearest neighbours";
   if (couplings.kind == ensemble::RowCouplings::Kind::table)
     what = "the table of model.coupling_table (range " + std::to_string(couplings.table.range()) + ")";

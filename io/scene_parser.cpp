@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "ensemble/gpu/gpu_executor.hpp"
+#include "ensemble/rows/row_models.hpp"
 #include "io/toml_section.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
@@ -26,7 +27,7 @@ namespace {
 using ensemble::Scene;
 
 const std::map<std::string, std::set<std::string>> allowed_keys{
-    {"model", {"rows", "couplings", "range", "row_length", "coupling_table", "boundary"}},
+    {"model", {"kind", "rows", "couplings", "range", "row_length", "coupling_table", "boundary"}},
     {"drive", {"g"}},
     {"sweep", {"A"}},
     {"initial", {"kinds", "noise", "offset", "angles", "replicas", "seed"}},
@@ -89,7 +90,8 @@ void check_gpu_scene(const Scene& scene) {
       scene.thermal.on()
           ? std::string("the Langevin stepper (thermal.temperature > 0)")
           : "numerics.stepper = \"" + std::string(kernels::stepper_names[scene.stepper]) + "\"";
-  const std::string model = scene.couplings.nearest_neighbour() ? "" : ", a coupling table or open rows";
+  const auto& traits = ensemble::row_model_traits(scene.model);
+  const std::string model = traits.coupling_table ? std::string(", ") + traits.description : "";
   const std::string profiles = scene.row_profiles ? ", row profiles" : "";
   fail("model.rows", "at most " + std::to_string(limit) + " rows run on the GPU with " + integrator + model +
                          profiles + " (got " + std::to_string(scene.max_rows()) +
@@ -135,6 +137,34 @@ std::size_t range_or_all(const Section& model, std::string_view k, const char* w
 }
 
 /// model.couplings, range, row_length, coupling_table, boundary (docs/model.md §1, §8).
+/// Each of `keys` given in `section` is one error: the model of `traits` has no use for it.
+void refuse_keys(const Section& section, const ensemble::RowModelTraits& traits,
+                 const std::vector<std::string>& keys) {
+  for (const std::string& k : keys)
+    if (section.find(k))
+      fail(section.key(k), std::string("does not apply to ") + traits.description + " (model.kind = \"" +
+                               traits.scene_value + "\"" + (traits.fixed_rows ? ", N = " + std::to_string(traits.fixed_rows) : "") + ")");
+}
+
+/// model.kind: "rows" (nearest neighbours or a coupling table, as the couplings say) or a model of its own
+/// (ensemble/rows/row_models.hpp), whose traits the other sections are read by.
+const ensemble::RowModelTraits& read_model_kind(const Section& model, Scene& scene) {
+  std::set<std::string> kinds;
+  for (const auto& t : ensemble::row_model_table) kinds.insert(t.scene_value);
+  const std::string kind = model.choice("kind", "rows", kinds);
+  for (const auto& t : ensemble::row_model_table)
+    if (kind == t.scene_value) {
+      scene.model = t.kind;
+      std::vector<std::string> keys;
+      if (t.fixed_rows) keys.push_back("rows");
+      if (!t.takes_couplings)
+        keys.insert(keys.end(), {"couplings", "range", "row_length", "coupling_table", "boundary"});
+      refuse_keys(model, t, keys);
+      return t;
+    }
+  throw std::logic_error("model.kind: no model of that name");
+}
+
 void read_couplings(const Section& model, Scene& scene) {
   auto& couplings = scene.couplings;
   couplings.open = model.choice("boundary", "periodic", {"periodic", "open"}) == "open";
@@ -188,11 +218,19 @@ Scene read_scene(const toml::table& root) {
   check_sections(root, allowed_keys);
   Scene scene;
   const Section model = section(root, "model");
+  const ensemble::RowModelTraits& traits = read_model_kind(model, scene);
   scene.row_counts.clear();
-  for (long long n : model.integers("rows", "an even integer from 2 to 100000",
-                                    [](long long n) { return n >= 2 && n <= 100000 && n % 2 == 0; }))
-    scene.row_counts.push_back(std::size_t(n));
-  read_couplings(model, scene);
+  if (traits.fixed_rows) {
+    scene.row_counts.push_back(traits.fixed_rows);
+  } else {
+    for (long long n : model.integers("rows", "an even integer from 2 to 100000",
+                                      [](long long n) { return n >= 2 && n <= 100000 && n % 2 == 0; }))
+      scene.row_counts.push_back(std::size_t(n));
+  }
+  if (traits.takes_couplings) {
+    read_couplings(model, scene);
+    scene.model = ensemble::row_model_for(scene.couplings);
+  }
 
   scene.g_values = grid(section(root, "drive"), "g", "> 0", [](double g) { return g > 0; });
   scene.A_values = grid(section(root, "sweep"), "A", ">= 0", [](double A) { return A >= 0; });
@@ -243,10 +281,16 @@ Scene read_scene(const toml::table& root) {
     initial.require("angles", angles_what + " when kinds has \"exact\"");
   }
 
-  read_disorder(section(root, "disorder"), scene);
+  const Section disorder = section(root, "disorder");
+  if (!traits.row_disorder)
+    refuse_keys(disorder, traits, {"A", "anisotropy", "coupling", "A_rows", "anisotropy_rows", "coupling_rows", "seed"});
+  read_disorder(disorder, scene);
   const Section thermal = section(root, "thermal");
   scene.thermal.temperature = thermal.number("temperature", 0.0, "a number from 0 to 1e6 (units of ε)",
                                              [](double T) { return T >= 0 && T <= 1e6; });
+  if (scene.thermal.on() && !traits.langevin)
+    fail(thermal.key("temperature"), std::string("must be 0 with ") + traits.description +
+                                         " (model.kind = \"" + traits.scene_value + "\" has no Langevin stepper)");
   scene.thermal.steps_per_period = int(thermal.integer("steps_per_period", scene.thermal.steps_per_period,
                                                        "an integer from 16 to 10000000",
                                                        [](long long n) { return n >= 16 && n <= 10000000; }));
@@ -277,6 +321,16 @@ Scene read_scene(const toml::table& root) {
   scene.refill = schedule.boolean("refill", scene.refill);
 
   const Section observables = section(root, "observables");
+  if (!traits.row_observables) {  // D alone
+    for (std::size_t i = 0; i < ensemble::observable_count; ++i)
+      if (ensemble::Observable(i) != ensemble::Observable::dissipation)
+        scene.observables.set(ensemble::Observable(i), false);
+    std::vector<std::string> row_keys{"row_profiles", "slip_kinds", "slip_rate"};
+    for (std::size_t i = 0; i < ensemble::observable_count; ++i)
+      if (ensemble::Observable(i) != ensemble::Observable::dissipation)
+        row_keys.emplace_back(ensemble::declaration(ensemble::Observable(i)).key);
+    refuse_keys(observables, traits, row_keys);
+  }
   for (std::size_t i = 0; i < ensemble::observable_count; ++i) {
     const auto observable = ensemble::Observable(i);
     scene.observables.set(observable,
@@ -322,8 +376,11 @@ Scene read_scene(const toml::table& root) {
   if (scene.thermal.on() && scene.controller == kernels::StepController::pi)
     fail(numerics.key("controller"),
          "must be \"integral\" when thermal.temperature > 0 (the Langevin stepper takes fixed steps)");
-  scene.lanes = numerics.choice("lanes", "simd", {"simd", "scalar"}) == "simd" ? ensemble::LaneKind::simd
-                                                                               : ensemble::LaneKind::scalar;
+  scene.lanes = numerics.choice("lanes", traits.simd_lanes ? "simd" : "scalar",
+                                traits.simd_lanes ? std::set<std::string>{"simd", "scalar"}
+                                                  : std::set<std::string>{"scalar"}) == "simd"
+                    ? ensemble::LaneKind::simd
+                    : ensemble::LaneKind::scalar;
 
   scene.wrap_angles = numerics.boolean("wrap_angles", scene.wrap_angles);
   scene.shadow_runs = numerics.choice("global_error", "shadow", {"shadow", "local"}) == "shadow";
@@ -333,13 +390,17 @@ Scene read_scene(const toml::table& root) {
          "member, and at T > 0 D's error is its standard error over the averaged periods");
   scene.device = numerics.choice("device", "cpu", {"cpu", "gpu"}) == "gpu" ? ensemble::Device::gpu
                                                                            : ensemble::Device::cpu;
+  if (scene.device == ensemble::Device::gpu && !traits.device)
+    fail(numerics.key("device"), std::string("must be \"cpu\" with ") + traits.description + " (model.kind = \"" +
+                                     traits.scene_value + "\" runs on the CPU's lanes)");
   if (scene.slip_kinds && scene.device == ensemble::Device::gpu)
     fail(numerics.key("device"),
          "must be \"cpu\" with observables.slip_kinds (its reruns at g/10 run on the CPU backend)");
 
   const Section output = section(root, "output");
   scene.output_path = output.text("path", scene.output_path);
-  if (!scene.couplings.nearest_neighbour() && (scene.disorder.coupling > 0 || !scene.disorder.coupling_rows.empty()))
+  if (!ensemble::row_model_traits(scene.model).bond_disorder &&
+      (scene.disorder.coupling > 0 || !scene.disorder.coupling_rows.empty()))
     fail(scene.disorder.coupling > 0 ? "disorder.coupling" : "disorder.coupling_rows",
          "works with nearest-neighbour periodic rows only (model.couplings = \"nearest\", "
          "model.boundary = \"periodic\": a bond j, j + 1 has one coupling); a coupling table or open rows "

@@ -6,9 +6,8 @@
 #include <type_traits>
 
 #include "ensemble/rows/device_member.hpp"
+#include "ensemble/rows/row_models.hpp"
 #include "ensemble/rows/scene.hpp"
-#include "kernels/models/rows/coupled_rows.hpp"
-#include "kernels/models/rows/nearest_neighbour_rows.hpp"
 #include "kernels/models/rows/row_models_on_teams.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/leimkuhler_matthews.hpp"
@@ -27,22 +26,21 @@ template <kernels::StepperFamily family, class Team, class Model>
 using DeviceTeamStepper = std::conditional_t<family == kernels::StepperFamily::rosenbrock,
                                              kernels::TeamRosenbrock<Team, Model>, void>;
 
-/// Calls f.template operator()<Model>() with the scene's row model on the double lane, as
-/// with_row_model picks it for the CPU: NearestNeighbourRows, or CoupledRows for a coupling table
-/// or open rows.
-template <class F>
+/// Calls f.template operator()<Model>() with the scene's model (row_models.hpp) on the double lane, among
+/// the models with a GPU form (a member per thread and per team; `form`: with the Langevin stepper too).
+template <RowModelForm form = RowModelForm::device, class F>
 decltype(auto) with_device_model(const Scene& scene, F&& f) {
-  if (scene.couplings.nearest_neighbour())
-    return f.template operator()<kernels::NearestNeighbourRows<double>>();
-  return f.template operator()<kernels::CoupledRows<double>>();
+  return with_double_lane_model<form>(scene.model, std::forward<F>(f));
 }
 
 /// Calls f.template operator()<Model, Integrator>() with the scene's model and integrator: the
 /// Langevin stepper at T > 0, else the adaptive integrator of the scene's stepper.
 template <class F>
 decltype(auto) with_device_driver(const Scene& scene, F&& f) {
+  if (scene.thermal.on())
+    return with_device_model<RowModelForm::device_langevin>(
+        scene, [&]<class Model>() { return f.template operator()<Model, kernels::LeimkuhlerMatthews<Model>>(); });
   return with_device_model(scene, [&]<class Model>() {
-    if (scene.thermal.on()) return f.template operator()<Model, kernels::LeimkuhlerMatthews<Model>>();
     return kernels::with_stepper_family(scene.stepper, [&]<kernels::StepperFamily family>() {
       return f.template operator()<Model, DeviceAdaptiveIntegrator<family, Model>>();
     });

@@ -31,10 +31,4 @@ void use_gpu();
 /// 18 GiB on an H100), but a member touches only DeviceMember::storage_size(N) of it.
 inline constexpr std::size_t gpu_thread_scratch = 8192;
 
-/// The most rows a member on a team may have: its scratch lives in global or shared memory, sized
-/// at launch; the limits keep one team's well below a GPU's memory: about 60 N values for nearest
-/// neighbours, and for a coupling table its two dense N × N matrices (268 MB at 4096 rows).
-inline constexpr std::size_t gpu_team_max_rows = 1 << 16;
-inline constexpr std::size_t gpu_coupled_team_max_rows = 1 << 12;
-
 }  // namespace rotorsweep::ensemble

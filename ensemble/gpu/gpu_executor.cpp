@@ -4,6 +4,7 @@
 
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_backend.hpp"
+#include "ensemble/rows/row_models.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -27,8 +28,7 @@ std::string GpuExecutor::label(const SliderScene& scene) const {
 }
 
 std::size_t GpuExecutor::max_rows(const Scene& scene) const {
-  if (gpu_team_size(scene, gpu_team_max_rows, launch_) > 1)
-    return scene.couplings.nearest_neighbour() ? gpu_team_max_rows : gpu_coupled_team_max_rows;
+  if (gpu_team_size(scene, std::size_t(1) << 16, launch_) > 1) return row_model_traits(scene.model).team_max_rows;
   return with_device_driver(scene, [&]<class Model, class Integrator>() {
     SlotSchedule s;  // what the scratch depends on: rows, quadratures, row profiles
     s.quadratures = scene.observables.quadratures();

@@ -27,9 +27,11 @@ class GpuExecutor final : public RowDevice, public SliderDevice {
   std::string label(const Scene& scene) const;
   std::string label(const SliderScene& scene) const;
 
-  /// The most rows one member may have with the scene's model and stepper: gpu_team_max_rows
-  /// (gpu_coupled_team_max_rows with a coupling table) where it runs on teams, else what a thread's
-  /// scratch of a fixed size holds (an even number like every row count).
+  /// The most rows one member may have with the scene's model and stepper: its model's team_max_rows
+  /// (row_models.hpp: a team's scratch lives in global or shared memory, sized at launch; the caps keep
+  /// one team's well below a GPU's memory: about 60 N values for nearest neighbours, 65 536 rows, and
+  /// for a coupling table its two dense N × N matrices, 268 MB at 4 096 rows) where it runs on teams,
+  /// else what a thread's scratch of a fixed size holds (an even number like every row count).
   std::size_t max_rows(const Scene& scene) const;
 
   /// The variant's members by its plan; results go to `sink` as each chunk returns. Throws

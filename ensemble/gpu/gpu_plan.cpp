@@ -10,6 +10,7 @@
 
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/gpu/gpu_register_shapes.hpp"
+#include "ensemble/rows/row_models.hpp"
 #include "ensemble/rows/symmetry_probe.hpp"
 #include "kernels/lanes/team.hpp"
 #include "kernels/steppers/stepper_list.hpp"
@@ -47,7 +48,7 @@ std::span<const RegisterShape> gpu_register_shapes() { return compiled_register_
 std::optional<RegisterShape> choose_register_shape(std::span<const RegisterShape> shapes, const Scene& scene,
                                                    std::size_t rows, const GpuLaunch& launch) {
   const kernels::Integrals q = scene.observables.quadratures();
-  if (launch.team || scene.thermal.on() || !scene.couplings.nearest_neighbour() || scene.row_profiles ||
+  if (launch.team || scene.thermal.on() || !row_model_traits(scene.model).register_form || scene.row_profiles ||
       kernels::stepper_family(scene.stepper) != kernels::StepperFamily::rosenbrock)
     return std::nullopt;
   // members that may run symmetry probes carry A's deviations in their rerun chunks: a shape that keeps

@@ -7,7 +7,7 @@ namespace rotorsweep::ensemble::gpu {
 
 SweepOutcome run_langevin(const Scene& scene, const VariantRange& range, const GpuPlan& plan,
                           const RunControl& control, const ResultSink& sink) {
-  return with_device_model(scene, [&]<class Model>() {
+  return with_device_model<RowModelForm::device_langevin>(scene, [&]<class Model>() {
     return run_planned<Model, kernels::LeimkuhlerMatthews<Model>,
                        kernels::TeamLeimkuhlerMatthews<const kernels::WarpTeam, Model>>(scene, range, plan,
                                                                                           control, sink);

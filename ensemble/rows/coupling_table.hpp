@@ -39,8 +39,6 @@ struct RowCouplings {
   CouplingTable table;         ///< kind table: as given
   bool open = false;           ///< open rows: pairs across an edge are dropped
 
-  /// Today's model (nearest neighbours, periodic rows), integrated by NearestNeighbourRows.
-  bool nearest_neighbour() const { return kind == Kind::nearest && !open; }
   /// The largest range `rows` rows allow: N − 1 open, N/2 periodic (minimum image).
   static std::size_t largest_range(std::size_t rows, bool open) { return open ? rows - 1 : rows / 2; }
   /// The table for N = rows: range "all" resolved to largest_range. Periodic rows are a ring, each

@@ -10,6 +10,7 @@
 #include "ensemble/rows/disorder.hpp"
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/member_summary.hpp"
+#include "ensemble/rows/row_models.hpp"
 #include "ensemble/rows/symmetry_probe.hpp"
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/counter_random.hpp"
@@ -51,7 +52,7 @@ SlotSchedule slot_schedule(const Scene& scene, const Member& variant, double fir
   s.A_rows = !d.A.empty();
   s.anisotropy_rows = !d.anisotropy.empty();
   s.coupling_rows = !d.coupling.empty();
-  if (!scene.couplings.nearest_neighbour()) {
+  if (row_model_traits(scene.model).coupling_table) {
     const CouplingTable table = scene.couplings.for_rows(s.rows);
     s.coupling_a = table.a;
     s.coupling_range = table.range();

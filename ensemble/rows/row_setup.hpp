@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "ensemble/rows/disorder.hpp"
@@ -12,6 +13,7 @@
 #include "ensemble/rows/scene.hpp"
 #include "ensemble/rows/symmetry_probe.hpp"
 #include "kernels/lanes/counter_random.hpp"
+#include "kernels/lanes/lane_arena.hpp"
 
 namespace rotorsweep::ensemble {
 
@@ -22,19 +24,28 @@ struct RowSetup {
   const Scene* scene;
 
   /// The model's construction arguments after the rows and the arena: the quadratures the scene's
-  /// observables need.
-  std::tuple<kernels::Integrals> model_arguments() const { return {scene->observables.quadratures()}; }
+  /// observables need, where the model chooses them (a model of one quadrature takes none).
+  auto model_arguments() const {
+    if constexpr (std::is_constructible_v<Model, std::size_t, kernels::LaneArena<typename Model::lane_type>&,
+                                          kernels::Integrals>)
+      return std::tuple<kernels::Integrals>{scene->observables.quadratures()};
+    else
+      return std::tuple<>{};
+  }
 
   std::vector<double> initial_state(const Member& member) const {
     return member_initial_angles(*scene, member);
   }
 
   /// A member that starts with all rows equal is marked strict FM (symmetry protection); a symmetry
-  /// probe carries its deviations (member_deviations). The
-  /// parameters point into this setup's buffers (its disorder, and the coupling table of its N).
+  /// probe carries its deviations (member_deviations). The parameters point into this setup's buffers
+  /// (its disorder, and the coupling table of its N); a model takes those of them its Parameters have.
   typename Model::Parameters parameters(const Member& member, const std::vector<double>& theta) {
-    const bool strict_fm = std::all_of(theta.begin(), theta.end(), [&](double x) { return x == theta[0]; });
-    typename Model::Parameters p{member.A, member.g, strict_fm};
+    typename Model::Parameters p{};
+    p.A = member.A;
+    p.g = member.g;
+    if constexpr (requires { p.strict_fm; })
+      p.strict_fm = std::all_of(theta.begin(), theta.end(), [&](double x) { return x == theta[0]; });
     if constexpr (coupled) {
       if (table_rows != member.rows) {
         table = scene->couplings.for_rows(member.rows);
@@ -46,12 +57,14 @@ struct RowSetup {
       p.range = table.range();
       p.open = scene->couplings.open;
     }
-    if (!scene->disorder.any() && member.rerun != Rerun::probe) return p;
-    deviations = member_deviations(scene->disorder, member);
-    const auto rows_or_null = [](const std::vector<double>& v) { return v.empty() ? nullptr : v.data(); };
-    p.A_rows = rows_or_null(deviations.A);
-    p.anisotropy_rows = rows_or_null(deviations.anisotropy);
-    if constexpr (!coupled) p.coupling_rows = rows_or_null(deviations.coupling);
+    if constexpr (requires { p.A_rows; }) {
+      if (!scene->disorder.any() && member.rerun != Rerun::probe) return p;
+      deviations = member_deviations(scene->disorder, member);
+      const auto rows_or_null = [](const std::vector<double>& v) { return v.empty() ? nullptr : v.data(); };
+      p.A_rows = rows_or_null(deviations.A);
+      p.anisotropy_rows = rows_or_null(deviations.anisotropy);
+      if constexpr (requires { p.coupling_rows; }) p.coupling_rows = rows_or_null(deviations.coupling);
+    }
     return p;
   }
 

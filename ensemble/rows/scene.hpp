@@ -20,6 +20,9 @@
 
 namespace rotorsweep::ensemble {
 
+/// The model a scene's members run: its kinds and traits in ensemble/rows/row_models.hpp.
+enum class RowModelKind : unsigned char;
+
 enum class LaneKind { simd, scalar };
 
 /// One (N, tolerances) setting of a scene; members of different variants run in separate
@@ -44,6 +47,7 @@ struct Scene {
   std::string text;  ///< the scene file as written, stored in the output for provenance
 
   std::vector<std::size_t> row_counts{20};  ///< model.rows: every N to run
+  RowModelKind model{};                     ///< model.kind, or for rows the couplings' (row_model_for)
   RowCouplings couplings;                   ///< model.couplings, range, row_length, coupling_table, boundary
   std::vector<double> rtol_values{1e-6};    ///< numerics.rtol, paired with atol_values
   std::vector<double> atol_values{1e-9};

@@ -7,7 +7,7 @@ namespace rotorsweep::ensemble {
 
 SweepOutcome run_thermal_row_sweep(const Scene& scene, const VariantRange& range, const RunControl& control,
                                    const ResultSink& sink) {
-  return with_row_model(scene, [&]<class Model>() {
+  return with_row_model<RowModelForm::langevin>(scene, [&]<class Model>() {
     return run_lane_schedulers<Model, kernels::LeimkuhlerMatthews<Model>>(
         scene, range, RowSetup<Model>(&scene), control, sink);
   });

@@ -3,15 +3,16 @@
 #pragma once
 
 #include <optional>
+#include <type_traits>
 
 #include "ensemble/engine/compile_time_choice.hpp"
 #include "ensemble/engine/lane_groups.hpp"
 #include "ensemble/engine/lane_scheduler.hpp"
+#include "ensemble/rows/row_models.hpp"
 #include "ensemble/rows/row_problem.hpp"
 #include "ensemble/rows/row_setup.hpp"
 #include "ensemble/rows/sweep.hpp"
-#include "kernels/models/rows/coupled_rows.hpp"
-#include "kernels/models/rows/nearest_neighbour_rows.hpp"
+#include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/stepper_list.hpp"
 
@@ -45,17 +46,19 @@ SweepOutcome run_lane_schedulers(const Scene& scene, const VariantRange& range, 
   return outcome;
 }
 
-/// Calls f.template operator()<Model>() with the row model in the scene's lane type:
-/// NearestNeighbourRows for today's model, CoupledRows for a coupling table or open rows. The
-/// quadratures its observables need are chosen at run time (RowSetup::model_arguments).
-template <class F>
+/// Calls f.template operator()<Model>() with the scene's model (row_models.hpp) among the models with
+/// `form`: on SIMD lanes where the scene asks for them and the model has them, else on the double lane.
+/// The quadratures its observables need are chosen at run time (RowSetup::model_arguments).
+template <RowModelForm form = RowModelForm::lanes, class F>
 decltype(auto) with_row_model(const Scene& scene, F&& f) {
-  return with_flag(scene.lanes == LaneKind::simd, [&]<bool simd>() {
-    using V = std::conditional_t<simd, kernels::simd_lane, double>;
-    return with_flag(!scene.couplings.nearest_neighbour(), [&]<bool coupled>() {
-      using Model = std::conditional_t<coupled, kernels::CoupledRows<V>, kernels::NearestNeighbourRows<V>>;
-      return f.template operator()<Model>();
-    });
+  return with_row_model_entry<form>(scene.model, [&]<class Entry>() -> decltype(auto) {
+    if constexpr (Entry::traits.simd_lanes)
+      return with_flag(scene.lanes == LaneKind::simd, [&]<bool simd>() -> decltype(auto) {
+        using V = std::conditional_t<simd, kernels::simd_lane, double>;
+        return f.template operator()<typename Entry::template model<V>>();
+      });
+    else
+      return f.template operator()<typename Entry::template model<double>>();
   });
 }
 

@@ -21,6 +21,10 @@ class DiagonalJacobian {
 
   ROTORSWEEP_HD V& diag(std::size_t i) { return diag_[i]; }
   ROTORSWEEP_HD const V& diag(std::size_t i) const { return diag_[i]; }
+  /// y += J x (as the other Jacobians: what a linearization is checked against differences by).
+  ROTORSWEEP_HD void multiply_add(const V* x, V* y) const {
+    for (std::size_t i = 0; i < n_; ++i) y[i] += diag_[i] * x[i];
+  }
 
   ROTORSWEEP_HD void factor(V shift) {
     positive_definite_ = shift - diag_[0] > V(0.0);

@@ -1,7 +1,8 @@
 // The engine with a second model: one overdamped rotor in a rotating field (kernels/models/single_rotor.hpp,
-// docs/model.md §1) through the same lane scheduler as the row model, against its closed form, and
-// through the GPU's member driver and chunk loop on the host, against the lanes' bits
-// (docs/architecture.md "Worked example: adding a model").
+// docs/model.md §1) through the same lane scheduler as the row model, against its closed form, through
+// the GPU's member driver and chunk loop on the host, against the lanes' bits, and as a scene names it
+// (model.kind = "single_rotor", ensemble/rows/row_models.hpp) through run_members; its Jacobian against
+// central differences (docs/architecture.md "Worked example: adding a model").
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <memory>
@@ -12,12 +13,17 @@
 #include "ensemble/engine/lane_scheduler.hpp"
 #include "ensemble/gpu/device_drivers.hpp"
 #include "ensemble/rows/device_member.hpp"
+#include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/row_chunks.hpp"
+#include "ensemble/rows/row_models.hpp"
 #include "ensemble/rows/row_problem.hpp"
 #include "kernels/models/single_rotor.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
 #include "kernels/steppers/stepper_list.hpp"
+#include "io/scene_parser.hpp"
+#include "support/kernel_scratch.hpp"
+#include "support/linearization_check.hpp"
 #include "support/same_results.hpp"
 #include "support/slot_runs.hpp"
 
@@ -144,4 +150,63 @@ TEST_CASE("a second model through the same scheduler: the single rotor's closed 
   }
   // locked state: R per period → 2π g
   CHECK(scalar.back().periods.back()[Channel::dissipation] == Approx(2 * pi * g).epsilon(1e-6));
+}
+
+TEST_CASE("the single rotor's linearization agrees with central differences", "[ensemble][model]") {
+  auto m = testing::model<kernels::SingleRotor<double>>(1);
+  for (const auto& [A, g] : {std::pair{0.6, 0.5}, {4.6, 0.5}, {2.0, 3.0}}) {
+    m.set_lane(0, {A, g});
+    for (const double theta : {0.3, 2.0, -4.1})
+      for (const double t : {0.0, 1.3, 5.9}) {
+        INFO("A = " << A << ", g = " << g << ", theta = " << theta << ", t = " << t);
+        testing::check_linearization(m, {theta}, t);
+      }
+  }
+}
+
+TEST_CASE("a scene names the single rotor and run_members sweeps it to its closed form", "[ensemble][model]") {
+  const std::string text =
+      "[model]\nkind = \"single_rotor\"\n[drive]\ng = [0.5]\n[sweep]\nA = { from = 0.6, to = 4.6, count = 11 "
+      "}\n[initial]\nkinds = [\"FM\"]\nnoise = [0]\noffset = [2.14, 2.64, 3.14]\n[schedule]\nrelax_periods = "
+      "0\naverage_periods = 3\n[observables]\nperiod_series = true\n[numerics]\nrtol = 1e-10\natol = 1e-12\n";
+  for (const char* stepper : {"rodas4", "dopri5"}) {
+    const auto scene = io::parse_scene_text(text + "stepper = \"" + stepper + "\"\n", "single_rotor");
+    REQUIRE(scene.model == ensemble::RowModelKind::single_rotor);
+    REQUIRE(scene.row_counts == std::vector<std::size_t>{1});
+    CHECK(scene.lanes == ensemble::LaneKind::scalar);
+    CHECK_FALSE(scene.has(ensemble::Observable::alignment));
+    CHECK_FALSE(scene.has(ensemble::Observable::slips));
+    const auto members = ensemble::plan_members(scene);
+    REQUIRE(members.size() == 33);
+    const auto results = ensemble::run_sweep(scene, members, {.threads = 2}).results;
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      const double A = members[i].A, g = members[i].g, psi0 = members[i].offset - pi;
+      INFO(stepper << ", member " << i << ": A/g = " << A / g << ", psi0 = " << psi0);
+      REQUIRE(results[i].status == kernels::LaneStatus::ok);
+      REQUIRE(results[i].periods.size() == 3);
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double t0 = 2 * pi * double(k), t1 = t0 + 2 * pi;
+        const double R = g * (closed_form_theta(A, g, psi0, t1) - closed_form_theta(A, g, psi0, t0));
+        CHECK(results[i].periods[k][Channel::dissipation] == Approx(R).epsilon(1e-7).margin(1e-9));
+      }
+    }
+  }
+  const auto refused = [&](const std::string& extra, const std::string& key) {
+    INFO(extra);
+    CHECK_THROWS_WITH(io::parse_scene_text(text + extra, "single_rotor"), Catch::Contains(key));
+  };
+  refused("device = \"gpu\"\n", "numerics.device");
+  refused("lanes = \"simd\"\n", "numerics.lanes");
+  refused("[thermal]\ntemperature = 0.1\n", "thermal.temperature");
+  refused("[disorder]\nA = 0.01\n", "disorder.A");
+  const std::string model_keys = text.substr(0, text.find("[drive]"));
+  for (const char* key : {"rows = 2", "couplings = \"dipolar\"", "boundary = \"open\""}) {
+    INFO(key);
+    CHECK_THROWS_WITH(io::parse_scene_text(model_keys + key + "\n" + text.substr(model_keys.size()), "s"),
+                      Catch::Contains("model.") && Catch::Contains("single_rotor"));
+  }
+  CHECK_THROWS_WITH(io::parse_scene_text(text.substr(0, text.find("[numerics]")) + "alignment = true\n", "s"),
+                    Catch::Contains("observables.alignment"));
+  CHECK_THROWS_WITH(io::parse_scene_text("[model]\nkind = \"rotor\"\n" + text.substr(model_keys.size()), "s"),
+                    Catch::Contains("model.kind") && Catch::Contains("rows") && Catch::Contains("single_rotor"));
 }

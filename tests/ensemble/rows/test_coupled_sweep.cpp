@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ensemble/rows/member_plan.hpp"
+#include "ensemble/rows/row_models.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 
@@ -65,7 +66,7 @@ TEST_CASE("coupling keys are read, and bad tables are named", "[ensemble][coupli
   CHECK(dipolar.couplings.range == 3);
   CHECK(dipolar.couplings.row_length == 7);
   CHECK(dipolar.couplings.open);
-  CHECK_FALSE(dipolar.couplings.nearest_neighbour());
+  CHECK(dipolar.model == rotorsweep::ensemble::RowModelKind::coupled);
   CHECK(dipolar.couplings.for_rows(8).b == dipolar_table(3, 7).b);
   // periodic rows: a partner N/2 away is counted once
   const auto ring =
@@ -73,7 +74,10 @@ TEST_CASE("coupling keys are read, and bad tables are named", "[ensemble][coupli
   const auto table = ring.couplings.for_rows(8);
   REQUIRE(table.range() == 4);
   CHECK(table.b[3] == 0.5 * dipolar_table(4, 0).b[3]);
-  CHECK(parse_scene_text("[model]\nrows = 8\n" + rest, "s").couplings.nearest_neighbour());
+  CHECK(parse_scene_text("[model]\nrows = 8\n" + rest, "s").model ==
+        rotorsweep::ensemble::RowModelKind::nearest_neighbour);
+  CHECK(parse_scene_text("[model]\nrows = 8\nboundary = \"open\"\n" + rest, "s").model ==
+        rotorsweep::ensemble::RowModelKind::coupled);
 
   const auto refused = [&](const std::string& model, const std::string& key) {
     INFO(model);
