@@ -360,6 +360,9 @@ Scene read_scene(const toml::table& root) {
 
   const Section numerics = section(root, "numerics");
   scene.stepper = read_stepper(numerics);
+  if (!traits.explicit_steppers && kernels::stepper_family(scene.stepper) != kernels::StepperFamily::rosenbrock)
+    fail(numerics.key("stepper"), std::string("must be a linearly implicit stepper with ") + traits.description +
+                                      " (model.kind = \"" + traits.scene_value + "\")");
   scene.rtol_values = numerics.numbers("rtol", scene.rtol_values, rtol_range, valid_rtol);
   scene.atol_values = numerics.numbers("atol", scene.atol_values, atol_range, valid_atol);
   if (scene.atol_values.size() == 1)

@@ -25,6 +25,7 @@ struct RowModelTraits {
   const char* scene_value;  ///< model.kind that names it ("rows": the couplings pick nearest or coupled)
   const char* description;  ///< in messages: "a coupling table or open rows"
   bool simd_lanes = true;   ///< it runs on SIMD lanes too (else numerics.lanes is "scalar")
+  bool explicit_steppers = true;  ///< the explicit family (dopri5) too, not only the linearly implicit one
   bool langevin = false;    ///< thermal.temperature > 0 (the Langevin stepper needs its curvature bound)
   bool device = false;      ///< on the GPU, a member per thread and per team of a warp's threads
   bool register_form = false;      ///< in the register kernels (kernels/models/rows/warp_rows.hpp)
@@ -85,6 +86,7 @@ struct SingleRotorModel {
                                          .scene_value = "single_rotor",
                                          .description = "a single rotor",
                                          .simd_lanes = false,
+                                         .explicit_steppers = false,
                                          .fixed_rows = 1};
 };
 
@@ -109,13 +111,15 @@ constexpr RowModelKind row_model_for(const RowCouplings& c) {
                                                           : RowModelKind::coupled;
 }
 
-/// The instantiations a dispatch may make: the CPU's lanes (adaptive steppers), the Langevin stepper on
-/// them, the GPU's members (thread and team: a model with the device form has both).
-enum class RowModelForm { lanes, langevin, device, device_langevin };
+/// The instantiations a dispatch may make: the CPU's lanes (the linearly implicit steppers, the explicit
+/// ones, or only their storage), the Langevin stepper on them, the GPU's members (thread and team: a
+/// model with the device form has both).
+enum class RowModelForm { lanes, explicit_lanes, langevin, device, device_langevin };
 
 constexpr bool has_form(const RowModelTraits& t, RowModelForm form) {
   switch (form) {
     case RowModelForm::lanes: return true;
+    case RowModelForm::explicit_lanes: return t.explicit_steppers;
     case RowModelForm::langevin: return t.langevin;
     case RowModelForm::device: return t.device;
     case RowModelForm::device_langevin: return t.device && t.langevin;

@@ -67,7 +67,9 @@ decltype(auto) with_row_model(const Scene& scene, F&& f) {
 template <kernels::StepperFamily family>
 SweepOutcome run_row_sweep(const Scene& scene, const VariantRange& range, const RunControl& control,
                            const ResultSink& sink) {
-  return with_row_model(scene, [&]<class Model>() {
+  constexpr RowModelForm form =
+      family == kernels::StepperFamily::rosenbrock ? RowModelForm::lanes : RowModelForm::explicit_lanes;
+  return with_row_model<form>(scene, [&]<class Model>() {
     using Stepper = kernels::family_stepper<family, Model>;
     return run_lane_schedulers<Model, kernels::AdaptiveIntegrator<Model, Stepper>>(
         scene, range, RowSetup<Model>(&scene), control, sink);

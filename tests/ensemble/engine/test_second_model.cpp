@@ -169,7 +169,7 @@ TEST_CASE("a scene names the single rotor and run_members sweeps it to its close
       "[model]\nkind = \"single_rotor\"\n[drive]\ng = [0.5]\n[sweep]\nA = { from = 0.6, to = 4.6, count = 11 "
       "}\n[initial]\nkinds = [\"FM\"]\nnoise = [0]\noffset = [2.14, 2.64, 3.14]\n[schedule]\nrelax_periods = "
       "0\naverage_periods = 3\n[observables]\nperiod_series = true\n[numerics]\nrtol = 1e-10\natol = 1e-12\n";
-  for (const char* stepper : {"rodas4", "dopri5"}) {
+  for (const char* stepper : {"rodas4", "ros2"}) {
     const auto scene = io::parse_scene_text(text + "stepper = \"" + stepper + "\"\n", "single_rotor");
     REQUIRE(scene.model == ensemble::RowModelKind::single_rotor);
     REQUIRE(scene.row_counts == std::vector<std::size_t>{1});
@@ -196,6 +196,7 @@ TEST_CASE("a scene names the single rotor and run_members sweeps it to its close
     CHECK_THROWS_WITH(io::parse_scene_text(text + extra, "single_rotor"), Catch::Contains(key));
   };
   refused("device = \"gpu\"\n", "numerics.device");
+  refused("stepper = \"dopri5\"\n", "numerics.stepper");
   refused("lanes = \"simd\"\n", "numerics.lanes");
   refused("[thermal]\ntemperature = 0.1\n", "thermal.temperature");
   refused("[disorder]\nA = 0.01\n", "disorder.A");
