@@ -43,6 +43,18 @@ double closed_form_theta(double A, double g, double psi0, double t) {
   return t + pi + 2 * std::atan(v - a);
 }
 
+/// The member's three averaged periods against the closed form: R over period k is
+/// g (θ(t_{k+1}) − θ(t_k)), from ψ0.
+void check_periods_follow_closed_form(const ensemble::MemberResult& result, double A, double g, double psi0) {
+  REQUIRE(result.status == kernels::LaneStatus::ok);
+  REQUIRE(result.periods.size() == 3);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double t0 = 2 * pi * double(k), t1 = t0 + 2 * pi;
+    const double R = g * (closed_form_theta(A, g, psi0, t1) - closed_form_theta(A, g, psi0, t0));
+    CHECK(result.periods[k][Channel::dissipation] == Approx(R).epsilon(1e-7).margin(1e-9));
+  }
+}
+
 /// How a member of the rotor enters a lane: its start is Member::start (θ0 = π + ψ0), A and g its own.
 template <class V>
 struct RotorSetup {
@@ -131,14 +143,7 @@ TEST_CASE("a second model through the same scheduler: the single rotor's closed 
   for (std::size_t i = 0; i < members.size(); ++i) {
     const double A = members[i].A, start = psi0[i];
     INFO("member " << i << ": A/g = " << A / g << ", psi0 = " << start);
-    REQUIRE(scalar[i].status == kernels::LaneStatus::ok);
-    REQUIRE(scalar[i].periods.size() == 3);
-    for (std::size_t k = 0; k < 3; ++k) {
-      // R over period k is g (θ(t_{k+1}) - θ(t_k))
-      const double t0 = 2 * pi * double(k), t1 = t0 + 2 * pi;
-      const double R = g * (closed_form_theta(A, g, start, t1) - closed_form_theta(A, g, start, t0));
-      CHECK(scalar[i].periods[k][Channel::dissipation] == Approx(R).epsilon(1e-7).margin(1e-9));
-    }
+    check_periods_follow_closed_form(scalar[i], A, g, start);
     CHECK(scalar[i].theta_final[0] ==
           Approx(kernels::wrap_2pi(closed_form_theta(A, g, start, 6 * pi))).margin(1e-7));
     // SIMD lanes give the scalar bits
@@ -182,13 +187,7 @@ TEST_CASE("a scene names the single rotor and run_members sweeps it to its close
     for (std::size_t i = 0; i < members.size(); ++i) {
       const double A = members[i].A, g = members[i].g, psi0 = members[i].offset - pi;
       INFO(stepper << ", member " << i << ": A/g = " << A / g << ", psi0 = " << psi0);
-      REQUIRE(results[i].status == kernels::LaneStatus::ok);
-      REQUIRE(results[i].periods.size() == 3);
-      for (std::size_t k = 0; k < 3; ++k) {
-        const double t0 = 2 * pi * double(k), t1 = t0 + 2 * pi;
-        const double R = g * (closed_form_theta(A, g, psi0, t1) - closed_form_theta(A, g, psi0, t0));
-        CHECK(results[i].periods[k][Channel::dissipation] == Approx(R).epsilon(1e-7).margin(1e-9));
-      }
+      check_periods_follow_closed_form(results[i], A, g, psi0);
     }
   }
   const auto refused = [&](const std::string& extra, const std::string& key) {
