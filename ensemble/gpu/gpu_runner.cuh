@@ -271,10 +271,12 @@ SweepOutcome run_slots(const Scene& scene, const VariantRange& range, const GpuP
   const Member variant = range.source->at(range.begin);
   const SlotSchedule schedule =
       slot_schedule(scene, variant, device_first_step_scale<Integrator>(scene, variant));
-  if (Driver::storage_size(schedule) > gpu_thread_scratch)
+  if (Driver::storage_size(schedule) > gpu_thread_scratch) {
+    const std::size_t per_thread = GpuExecutor(GpuLaunch{.team = 1}).max_rows(scene);  // a thread's limit
     throw std::runtime_error("model.rows = " + std::to_string(variant.rows) +
-                             " is more than the GPU backend holds (" + std::to_string(GpuExecutor(GpuLaunch{.team = 1}).max_rows(scene)) +
+                             " is more than the GPU backend holds (" + std::to_string(per_thread) +
                              " rows with this scene's model and stepper on one thread each)");
+  }
 
   const auto kernel = sweep_slots<Model, Integrator>;
   ChunkGrid grid{resident_blocks(kernel, plan, 0), plan.threads_per_block, 0, 0};
