@@ -104,6 +104,10 @@ static_assert([] {
 }());
 
 constexpr const RowModelTraits& row_model_traits(RowModelKind kind) { return row_model_table[std::size_t(kind)]; }
+/// The kind's description, or a placeholder for a value outside the enumeration (an error's text).
+constexpr const char* row_model_description(RowModelKind kind) {
+  return std::size_t(kind) < row_model_table.size() ? row_model_table[std::size_t(kind)].description : "(unknown)";
+}
 
 /// The rows' model for the couplings a scene gives: nearest neighbours on a ring, else a coupling table.
 constexpr RowModelKind row_model_for(const RowCouplings& c) {
@@ -144,7 +148,7 @@ R dispatch_row_model(RowModelKind kind, F& f) {
   if constexpr (sizeof...(Rest) > 0)
     return dispatch_row_model<form, R, F, Rest...>(kind, f);
   else
-    throw std::logic_error(std::string("the row model of ") + row_model_traits(kind).description +
+    throw std::logic_error(std::string("the row model of ") + row_model_description(kind) +
                            " has no such form; the scene parser refuses such scenes");
 }
 
