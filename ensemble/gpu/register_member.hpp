@@ -9,7 +9,7 @@
 #include "ensemble/rows/warp_member.hpp"
 #include "kernels/models/rows/warp_rows.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
-#include "kernels/steppers/warp_integrator.hpp"
+#include "kernels/steppers/warp_member_form.hpp"
 #include "kernels/steppers/warp_rosenbrock.hpp"
 
 namespace rotorsweep::ensemble {

@@ -112,6 +112,11 @@ WarpLanes<L> lane_select(const WarpMask<L>& m, const WarpLanes<L>& a, const Warp
   count_warp_operations(&WarpOperationCount::other);
   return WarpLanes<L>::each([&](std::size_t l) { return m.bits[l] ? a.v[l] : b.v[l]; });
 }
+/// A member's decision, alike in every lane (a device thread's select).
+template <std::size_t L>
+WarpLanes<L> lane_select(bool m, const WarpLanes<L>& a, const WarpLanes<L>& b) {
+  return m ? a : b;
+}
 template <std::size_t L, class F>
 WarpLanes<L> lanewise(const WarpLanes<L>& x, F&& f) {
   count_warp_operations(&WarpOperationCount::other);

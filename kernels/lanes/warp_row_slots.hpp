@@ -38,7 +38,7 @@ struct WarpRowSlots {
   /// The ring index of the row in slot r (where real).
   ROTORSWEEP_HD V row(std::size_t r) const { return first_row + (V(double(r)) - first_slot); }
   /// x[r] at each lane's first row.
-  ROTORSWEEP_HD V at_first(const V (&x)[R]) const {
+  ROTORSWEEP_HD V at_first(const V* x) const {
     V out = x[R - 1];
     for (std::size_t r = R - 1; r-- > 0;) out = lane_select(first(r), x[r], out);
     return out;

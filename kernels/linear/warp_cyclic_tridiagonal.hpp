@@ -112,7 +112,7 @@ class WarpCyclicTridiagonal {
   ROTORSWEEP_HD bool positive_definite() const { return definite_; }
 
   /// Solves M x = r in place (r becomes x), with M from the last factor().
-  ROTORSWEEP_HD void solve(const Slots& slots, V (&x)[R]) const {
+  ROTORSWEEP_HD void solve(const Slots& slots, V* x) const {
     if (circulant_) {
       const double r0 = W::from_lane(x[R - 1], 0);
       M constant = x[R - 1] == x[R - 1];
@@ -152,8 +152,7 @@ class WarpCyclicTridiagonal {
   static constexpr std::size_t step_storage = reduction_steps > 0 ? reduction_steps : 1;
 
   /// z = T⁻¹ z over the interior slots, in place, from the chain's LU (solve_tridiagonal_chain's order).
-  template <std::size_t N>
-  ROTORSWEEP_HD void substitute(V (&z)[N]) const {
+  ROTORSWEEP_HD void substitute(V* z) const {
     V running = z[0] * inv_pivot_[0];
     z[0] = running;
     ROTORSWEEP_UNROLL
@@ -169,8 +168,7 @@ class WarpCyclicTridiagonal {
   }
 
   /// z at the lane's first row where it is an interior slot, else 0.
-  template <std::size_t N>
-  ROTORSWEEP_HD static V at_first_interior(const Slots& slots, const V (&z)[N]) {
+  ROTORSWEEP_HD static V at_first_interior(const Slots& slots, const V* z) {
     V out(0.0);
     ROTORSWEEP_UNROLL
     for (std::size_t r = 0; r < interior; ++r) out = lane_select(slots.first(r), z[r], out);

@@ -7,6 +7,7 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/lanes/lane_arena.hpp"
+#include "kernels/steppers/arena_storage.hpp"
 #include "kernels/steppers/lane_state.hpp"
 #include "kernels/steppers/lane_status.hpp"
 #include "kernels/steppers/model_concept.hpp"
@@ -17,9 +18,10 @@ namespace rotorsweep::kernels {
 /// components in order, the model's own evaluate (for a first step's rate and the Langevin step);
 /// LaneStageForm adds the Rosenbrock stages' needs.
 template <LaneModel System>
-class LaneMemberForm {
+class LaneMemberForm : public ArenaStorage<typename System::lane_type> {
  public:
   using value_type = typename System::lane_type;
+  using scalar_type = value_type;
   using State = LaneState<value_type>;
   using Context = const System&;
   static constexpr std::size_t max_quadratures = System::max_quadratures;

@@ -53,6 +53,7 @@ ROTORSWEEP_HD V state_error_squares(const Model& model, const Tolerances& tol, c
                                     const V* y_error, std::size_t begin, std::size_t end) {
   const V absolute_scale_inv(1.0 / (tol.atol + tol.rtol));
   V sum(0.0);
+  ROTORSWEEP_UNROLL
   for (std::size_t k = begin; k < end; ++k) {
     const V r = scaled_error(model.scale(k), tol, absolute_scale_inv, y_error[k], y[k], y_new[k]);
     sum += r * r;

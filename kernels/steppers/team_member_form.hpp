@@ -8,6 +8,7 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/team.hpp"
+#include "kernels/steppers/arena_storage.hpp"
 #include "kernels/steppers/lane_status.hpp"
 
 namespace rotorsweep::kernels {
@@ -31,9 +32,10 @@ struct TeamMemberState {
 /// the stepper's evaluate. TeamStageForm and TeamLangevinForm add what the Rosenbrock and Langevin steps
 /// need.
 template <class Team, class Model>
-class TeamMemberForm {
+class TeamMemberForm : public ArenaStorage<double> {
  public:
   using value_type = double;
+  using scalar_type = double;
   using State = TeamMemberState;
   struct Context {
     Team& team;

@@ -1,5 +1,5 @@
-// A Rosenbrock step (Hairer & Wanner Eq. IV.7.25, as RosenbrockStepper) of one member whose rows
-// live in registers across its lanes (docs/architecture.md "Register kernels"), any tableau as data.
+// A Rosenbrock step (Hairer & Wanner Eq. IV.7.25, as RosenbrockStages) of one member whose rows live in
+// registers across its lanes (docs/architecture.md "Register kernels"), any tableau as data.
 #pragma once
 
 #include <cstddef>
@@ -7,32 +7,37 @@
 #include "kernels/lanes/host_device.hpp"
 #include "kernels/lanes/lane.hpp"
 #include "kernels/steppers/rosenbrock_tableaus.hpp"
+#include "kernels/steppers/warp_member_form.hpp"
 
 namespace rotorsweep::kernels {
 
-/// RosenbrockStepper's stages for a WarpRows model with every vector a register array of R slots
+/// RosenbrockStages' arithmetic for a WarpRows model with every vector a register array of R slots
 /// per lane and S stage vectors (at least the tableau's stages): every loop over slots and stages is
 /// unrolled with compile-time bounds (a tableau with fewer stages skips the rest), the coefficients
 /// are read from the tableau, zero argument and solution weights skipped as in combine_stages, and
 /// the quadratures' stage values come from warp sums of their gradients' products with the stage.
-/// The quadratures are held by kind (WarpRows).
+/// The quadratures are held by kind (WarpRows). The stepper AdaptiveSteps drives for a member in
+/// registers (WarpIntegrator). RosenbrockStages written for this form too needed more registers
+/// (docs/performance.md "The warp as a form of the shared steppers"), so its stages are written out here;
+/// tests/kernels/steppers/test_stepper_forms.cpp holds the three forms to one another.
 template <class Model, std::size_t S>
 class WarpRosenbrock {
  public:
   using V = typename Model::V;
   using W = typename Model::Warp;
+  using Method = RosenbrockTableau;
   static constexpr std::size_t R = Model::slots_per_lane;
   static constexpr std::size_t kinds = Model::kinds;
 
   /// `table` outlives the stepper (a device reads it from the kernel's parameters).
-  ROTORSWEEP_HD explicit WarpRosenbrock(const RosenbrockTableau& table) : table_(&table) {}
+  ROTORSWEEP_HD WarpRosenbrock(const RosenbrockTableau& table, RegisterArena&) : table_(&table) {}
 
   ROTORSWEEP_HD int embedded_order() const { return table_->embedded_order; }
 
   /// One step of size h from (t, y, q) into y_new, q_new and the error estimates; returns whether it
   /// resolves every unstable direction (RosenbrockStepper::attempt), alike in every lane.
-  ROTORSWEEP_HD bool attempt(Model& model, double t, double h, const V (&y)[R], const double (&q)[kinds],
-                             V (&y_new)[R], double (&q_new)[kinds], V (&y_error)[R], double (&q_error)[kinds]) {
+  ROTORSWEEP_HD bool attempt(Model& model, double t, double h, const V* y, const double* q, V* y_new,
+                             double* q_new, V* y_error, double* q_error) {
     const RosenbrockTableau& T = *table_;
     V f[R];
     model.linearize(y, t, f, start_qdot_, jacobian_, df_dt_, gradient_, dq_dt_);
@@ -108,7 +113,8 @@ class WarpRosenbrock {
   }
 
   /// The quadratures' integrands at the start of the last attempt, by kind.
-  ROTORSWEEP_HD const double (&start_integrands() const)[kinds] { return start_qdot_; }
+  ROTORSWEEP_HD const double* start_integrands() const { return start_qdot_; }
+
 
  private:
   const RosenbrockTableau* table_;

@@ -25,7 +25,7 @@
 #include "kernels/steppers/team_integrator.hpp"
 #include "kernels/steppers/team_leimkuhler_matthews.hpp"
 #include "kernels/steppers/team_rosenbrock.hpp"
-#include "kernels/steppers/warp_integrator.hpp"
+#include "kernels/steppers/warp_member_form.hpp"
 #include "kernels/steppers/warp_rosenbrock.hpp"
 
 using namespace rotorsweep::kernels;

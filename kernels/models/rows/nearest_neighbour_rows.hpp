@@ -15,6 +15,7 @@
 #include "kernels/linear/cyclic_tridiagonal.hpp"
 #include "kernels/steppers/model_concept.hpp"
 #include "kernels/models/rows/integrals.hpp"
+#include "kernels/models/rows/row_equations.hpp"
 #include "kernels/models/rows/row_quadratures.hpp"
 
 namespace rotorsweep::kernels {
@@ -352,8 +353,8 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
     const V cos_2theta = w.cos_row[j] * w.cos_row[j] - w.sin_row[j] * w.sin_row[j];
     const V coupled = scaled<per_row>(coupling_row_, j, w.cos_link[j]);
     const V lag = scaled<per_row>(A_row_, j, w.cos_lag[j]);
-    return {inv_g_ * (V(-6.0) * scaled<per_row>(anisotropy_row_, j, cos_2theta) + coupled +
-                      scaled<per_row>(coupling_row_, jm, w.cos_link[jm]) + A_ * lag),
+    return {row_stiffness(inv_g_, scaled<per_row>(anisotropy_row_, j, cos_2theta), coupled,
+                          scaled<per_row>(coupling_row_, jm, w.cos_link[jm]), A_ * lag),
             lane_neg(inv_g_) * coupled, lane_neg(inv_g_) * A_ * lag};
   }
 
@@ -471,8 +472,7 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
   ROTORSWEEP_HD V torque(std::size_t j, const Row& r, const V& link_after, const V& link_before,
                          const V& inv_g, const V& A) const {
     const V sin_2theta = V(2.0) * r.sin * r.cos;
-    return inv_g *
-           (V(-3.0) * scaled<per_row>(anisotropy_row_, j, sin_2theta) + link_after - link_before + A * r.lag);
+    return row_torque(inv_g, scaled<per_row>(anisotropy_row_, j, sin_2theta), link_after, link_before, A * r.lag);
   }
 
   /// One pass over the rows from w.sin_t, w.cos_t and each row's sincos, which row_sincos(j, s, c)

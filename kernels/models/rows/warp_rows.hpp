@@ -12,6 +12,7 @@
 #include "kernels/lanes/warp_row_slots.hpp"
 #include "kernels/linear/warp_cyclic_tridiagonal.hpp"
 #include "kernels/models/rows/integrals.hpp"
+#include "kernels/models/rows/row_equations.hpp"
 #include "kernels/models/rows/row_quadratures.hpp"
 
 namespace rotorsweep::kernels {
@@ -71,6 +72,8 @@ class WarpRows {
 
   // What the error norm asks of a model (kernels/steppers/step_control.hpp), by kind.
   ROTORSWEEP_HD std::size_t dimension() const { return slots_.rows; }
+  /// Every state component is an angle.
+  ROTORSWEEP_HD static constexpr StateScale scale(std::size_t) { return StateScale::absolute; }
   ROTORSWEEP_HD static constexpr std::size_t quadrature_count() { return kinds; }
   ROTORSWEEP_HD bool error_controlled(std::size_t kind) const {
     return carries(kind) && row_error_controlled(all_integrals, kind);
@@ -98,7 +101,7 @@ class WarpRows {
   /// A bound on g·|∂f/∂θ| would be curvature_bound's; the register kernels run T = 0 only.
 
   /// f = dθ/dt and the integrands qdot[kind] at (θ, t).
-  ROTORSWEEP_HD void evaluate(const V (&theta)[R], double t, V (&f)[R], double (&qdot)[kinds]) const {
+  ROTORSWEEP_HD void evaluate(const V* theta, double t, V* f, double* qdot) const {
     Trigonometry trig;
     trig.at(theta, t);
     Rows rows;
@@ -108,8 +111,8 @@ class WarpRows {
 
   /// evaluate() at (θ + δ, t + τ), (θ, t) the point of the last linearize(): each sincos from the one
   /// there by angle addition (lane_sincos_displaced).
-  ROTORSWEEP_HD void evaluate_displaced(const V (&theta)[R], const V (&delta)[R], double t, double tau,
-                                        V (&f)[R], double (&qdot)[kinds]) const {
+  ROTORSWEEP_HD void evaluate_displaced(const V* theta, const V* delta, double t, double tau, V* f,
+                                        double* qdot) const {
     Trigonometry trig;
     ROTORSWEEP_UNROLL
     for (std::size_t r = 0; r < R; ++r)
@@ -124,8 +127,8 @@ class WarpRows {
   /// evaluate() plus J (into jacobian's diag and off), ∂f/∂t, the carried integrands' gradients
   /// grad[kind][slot] = ∂qdot_kind/∂θ and dq_dt[kind] = ∂qdot_kind/∂t; keeps the point for
   /// evaluate_displaced().
-  ROTORSWEEP_HD void linearize(const V (&theta)[R], double t, V (&f)[R], double (&qdot)[kinds], Jacobian& J,
-                               V (&df_dt)[R], V (&grad)[kinds][R], double (&dq_dt)[kinds]) {
+  ROTORSWEEP_HD void linearize(const V* theta, double t, V* f, double* qdot, Jacobian& J, V* df_dt,
+                               V (&grad)[kinds][R], double* dq_dt) {
     start_.at(theta, t);
     Rows rows;
     pass(start_, rows, f);
@@ -137,8 +140,9 @@ class WarpRows {
       const V cos_2theta = start_.cos_row[r] * start_.cos_row[r] - start_.sin_row[r] * start_.sin_row[r];
       const V coupled_before = r == 0 ? before_cos : lane_select(slots_.first(r), before_cos, rows.coupled_cos[r - 1]);
       const V lag = scaled(A_row_, r, rows.cos_lag[r]);
-      const V diag = V(inv_g_) * (V(-6.0) * scaled(anisotropy_row_, r, cos_2theta) + rows.coupled_cos[r] +
-                                  coupled_before + V(A_) * lag);
+      const V diag =
+          row_stiffness(V(inv_g_), scaled(anisotropy_row_, r, cos_2theta), rows.coupled_cos[r], coupled_before,
+                        V(A_) * lag);
       J.diag[r] = lane_select(real, diag, V(0.0));
       J.off[r] = lane_select(real, V(-inv_g_) * rows.coupled_cos[r], V(0.0));
       df_dt[r] = lane_select(real, V(-inv_g_) * V(A_) * lag, V(0.0));
@@ -152,7 +156,7 @@ class WarpRows {
   struct Trigonometry {
     V sin_row[R], cos_row[R];
     double sin_t = 0.0, cos_t = 0.0;
-    ROTORSWEEP_HD void at(const V (&theta)[R], double t) {
+    ROTORSWEEP_HD void at(const V* theta, double t) {
       ROTORSWEEP_UNROLL
       for (std::size_t r = 0; r < R; ++r) lane_sincos(theta[r], sin_row[r], cos_row[r]);
       lane_sincos(t, sin_t, cos_t);
@@ -183,7 +187,7 @@ class WarpRows {
   }
 
   /// Every slot's lags, links and torque f_j from the trigonometry.
-  ROTORSWEEP_HD void pass(const Trigonometry& trig, Rows& rows, V (&f)[R]) const {
+  ROTORSWEEP_HD void pass(const Trigonometry& trig, Rows& rows, V* f) const {
     const V sin_t(trig.sin_t), cos_t(trig.cos_t);
     const V next_sin = W::from_next(slots_.at_first(trig.sin_row));
     const V next_cos = W::from_next(slots_.at_first(trig.cos_row));
@@ -211,8 +215,8 @@ class WarpRows {
       const V link_before =
           r == 0 ? before_sin : lane_select(slots_.first(r), before_sin, rows.coupled_sin[r - 1]);
       const V sin_2theta = V(2.0) * s * c;
-      const V torque = V(inv_g_) * (V(-3.0) * scaled(anisotropy_row_, r, sin_2theta) + rows.coupled_sin[r] -
-                                    link_before + V(A_) * rows.lag[r]);
+      const V torque = row_torque(V(inv_g_), scaled(anisotropy_row_, r, sin_2theta), rows.coupled_sin[r],
+                                  link_before, V(A_) * rows.lag[r]);
       f[r] = lane_select(slots_.real(r), torque, V(0.0));
     }
   }
@@ -228,8 +232,8 @@ class WarpRows {
 
   /// The integrands at time t by kind (row_quadratures.hpp's integrands_from_team_sums over all_integrals'
   /// layout; a kind not carried gets a value from zero sums, never read).
-  ROTORSWEEP_HD void integrands(const Trigonometry& trig, const Rows& rows, const V (&f)[R], double t,
-                                double (&qdot)[kinds]) const {
+  ROTORSWEEP_HD void integrands(const Trigonometry& trig, const Rows& rows, const V* f, double t,
+                                double* qdot) const {
     RowRangeSums<double> sums;
     IntegrandRangeSums<double> more;
     if (Carriable.drive && carried_.drive) sums.lag = row_sum([&](std::size_t r) { return rows.lag[r]; });
@@ -254,7 +258,7 @@ class WarpRows {
   }
 
   /// (J x)_k at every slot: J's rows through diag and off, x's neighbours across lanes.
-  ROTORSWEEP_HD void product(const Jacobian& J, const V (&x)[R], V (&out)[R]) const {
+  ROTORSWEEP_HD void product(const Jacobian& J, const V* x, V* out) const {
     const V next = W::from_next(slots_.at_first(x));
     const V before = W::from_previous(J.off[R - 1] * x[R - 1]);  // the previous lane's last link times its row
     ROTORSWEEP_UNROLL
@@ -267,8 +271,8 @@ class WarpRows {
 
   /// The carried integrands' gradients and time derivatives (row_integrand_gradient_range's formulas:
   /// R, W, S, ρ̄, H, then the moments), each time sum a warp sum.
-  ROTORSWEEP_HD void gradients(const Rows& rows, const V (&f)[R], const Jacobian& J, const V (&df_dt)[R], double t,
-                               const double (&qdot)[kinds], V (&grad)[kinds][R], double (&dq_dt)[kinds]) const {
+  ROTORSWEEP_HD void gradients(const Rows& rows, const V* f, const Jacobian& J, const V* df_dt, double t,
+                               const double* qdot, V (&grad)[kinds][R], double* dq_dt) const {
     const auto slot = [](Quadrature q) { return std::size_t(q); };
     const V A(A_), g(g_);
     if (Carriable.drive && carried_.drive) {

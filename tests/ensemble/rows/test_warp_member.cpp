@@ -17,7 +17,7 @@
 #include "kernels/models/rows/warp_rows.hpp"
 #include "kernels/steppers/adaptive_integrator.hpp"
 #include "kernels/steppers/rosenbrock.hpp"
-#include "kernels/steppers/warp_integrator.hpp"
+#include "kernels/steppers/warp_member_form.hpp"
 #include "kernels/steppers/warp_rosenbrock.hpp"
 #include "support/member_follows.hpp"
 #include "support/slot_runs.hpp"

@@ -1,6 +1,6 @@
-// A member with its rows in registers (kernels/steppers/warp_integrator.hpp, on the host's emulation of
-// a warp) follows the lanes' integration (AdaptiveIntegrator over NearestNeighbourRows) over two
-// periods: every lane count and fill of the slots, uniform and disordered rows, every quadrature; and
+// A member with its rows in registers (kernels/steppers/warp_member_form.hpp and warp_rosenbrock.hpp, on
+// the host's emulation of a warp) follows the lanes' integration (AdaptiveIntegrator over
+// NearestNeighbourRows) over two periods: every lane count and fill of the slots, uniform and disordered rows, every quadrature; and
 // with fewer stage vectors (a shape's stage count) the same bits.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -8,49 +8,17 @@
 
 #include "kernels/lanes/warp.hpp"
 #include "kernels/models/rows/nearest_neighbour_rows.hpp"
-#include "kernels/models/rows/warp_rows.hpp"
-#include "kernels/steppers/adaptive_integrator.hpp"
-#include "kernels/steppers/rosenbrock.hpp"
-#include "kernels/steppers/warp_integrator.hpp"
-#include "kernels/steppers/warp_rosenbrock.hpp"
 #include "support/kernel_scratch.hpp"
 #include "support/lanes_reference.hpp"
+#include "support/member_forms.hpp"
 
 using namespace rotorsweep::kernels;
 
 namespace {
 
 using Lanes = NearestNeighbourRows<double>;
-using rotorsweep::testing::afm_start;
+using rotorsweep::testing::in_registers;
 using rotorsweep::testing::TwoPeriods;
-constexpr Tolerances tight = rotorsweep::testing::tight_tolerances;
-
-template <std::size_t L, std::size_t R, bool PerRow, std::size_t S = 8>
-TwoPeriods in_registers(std::size_t n, const Lanes::Parameters& p, const RosenbrockTableau& table) {
-  using W = HostWarp<L>;
-  using Model = WarpRows<W, R, PerRow, all_integrals>;
-  using Integrator = WarpIntegrator<Model, WarpRosenbrock<Model, S>>;
-  const WarpRowSlots<W, R> slots(n);
-  Model model(slots, all_integrals, {p.A, p.g, p.strict_fm, p.A_rows, p.anisotropy_rows, p.coupling_rows});
-  const double scale = AdaptiveIntegrator<Lanes, RosenbrockStepper<Lanes>>::first_step_scale(tight, table);
-  Integrator integrator(table, tight, StepLimits{}, scale);
-  typename Integrator::State state;
-  const auto theta = afm_start(n);
-  for (std::size_t r = 0; r < R; ++r)
-    for (std::size_t l = 0; l < L; ++l)
-      lane_set(state.y[r], l,
-               mask_get(slots.real(r), l) ? theta[std::size_t(lane_get(slots.row(r), l))] : 0.0);
-  state.t_stop = 2 * two_pi;
-  while (state.stepping()) integrator.attempt(model, state);
-  REQUIRE(state.status == LaneStatus::ok);
-  TwoPeriods run{std::vector<double>(n), std::vector<double>(state.quad, state.quad + 8),
-                 state.steps_accepted + state.steps_rejected};
-  for (std::size_t r = 0; r < R; ++r)
-    for (std::size_t l = 0; l < L; ++l)
-      if (mask_get(slots.real(r), l))
-        run.theta[std::size_t(lane_get(slots.row(r), l))] = lane_get(state.y[r], l);
-  return run;
-}
 
 /// The member in registers against the lanes at g = 0.0011: AFM and FM within 1e-9, and with disorder
 /// (which breaks the rows' symmetry that rounding otherwise breaks at each slip) CP's four slips per
@@ -71,16 +39,7 @@ void check_follows(std::size_t n, const RosenbrockTableau& table = rodas4p2_tabl
     const TwoPeriods warp = in_registers<L, R, PerRow>(n, p, table);
     INFO(table.name << ", L = " << L << ", R = " << R << ", N = " << n << ", A = " << A << ": R "
                     << lanes.quad[0] << ", steps " << lanes.steps << " and " << warp.steps);
-    const double tolerance = A == 6.0 ? 1e-7 : 1e-9;
-    for (std::size_t q = 0; q < 8; ++q) {
-      INFO("quadrature " << q);
-      CHECK(warp.quad[q] == Approx(lanes.quad[q]).epsilon(tolerance).margin(1e-12));
-    }
-    double largest = 0;
-    for (std::size_t j = 0; j < n; ++j)
-      largest = std::max(largest, std::fabs(warp.theta[j] - lanes.theta[j]));
-    CHECK(largest < tolerance);
-    CHECK(warp.steps == Approx(lanes.steps).epsilon(0.01));
+    rotorsweep::testing::check_follows_lanes(warp, lanes, A == 6.0 ? 1e-7 : 1e-9);
   }
 }
 
