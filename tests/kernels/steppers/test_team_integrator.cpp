@@ -13,11 +13,10 @@
 #include "support/lanes_reference.hpp"
 #include "support/member_forms.hpp"
 
-using namespace rotorsweep::kernels;
-using Model = NearestNeighbourRows<double>;
-using rotorsweep::testing::TwoPeriods;
-
 TEST_CASE("a member on a team of 1 … 8 ranks follows the lanes' integration", "[kernels][team][steppers]") {
+  using namespace rotorsweep::kernels;
+  using Model = NearestNeighbourRows<double>;
+  using rotorsweep::testing::TwoPeriods;
   // blocks of 1 to 36 rows, split evenly and not (the team's stage solve alone: rings of 2 … 1024 rows)
   for (std::size_t n : {4u, 20u, 36u})
     for (double A : {2.0, 6.0, 12.0}) {  // AFM, CP (four slips per period), FM at g = 0.0011
