@@ -106,7 +106,8 @@ static_assert([] {
 constexpr const RowModelTraits& row_model_traits(RowModelKind kind) { return row_model_table[std::size_t(kind)]; }
 /// The kind's description, or a placeholder for a value outside the enumeration (an error's text).
 constexpr const char* row_model_description(RowModelKind kind) {
-  return std::size_t(kind) < row_model_table.size() ? row_model_table[std::size_t(kind)].description : "(unknown)";
+  return std::size_t(kind) < row_model_table.size() ? row_model_table[std::size_t(kind)].description
+                                                    : "(unknown)";
 }
 
 /// The rows' model for the couplings a scene gives: nearest neighbours on a ring, else a coupling table.

@@ -81,7 +81,8 @@ class AdaptiveSteps {
     V* y_new = y_new_.data();
     V* y_error = y_error_.data();
     D q_new[nq + 1], q_error[nq + 1];  // the stepped quadratures' (read where written)
-    const lane_mask<D> resolved = form_.step(stepper_, c, s.t, h, s.y, s.quad, y_new, q_new, y_error, q_error);
+    const lane_mask<D> resolved =
+        form_.step(stepper_, c, s.t, h, s.y, s.quad, y_new, q_new, y_error, q_error);
     // the norm against rtol·scale, atol·scale (dividing by a scale of 1 changes no bit)
     const auto& model = Form::model(c);
     const D squares = form_.sum(c, [&](std::size_t begin, std::size_t end) {
@@ -107,9 +108,9 @@ class AdaptiveSteps {
         ROTORSWEEP_UNROLL
         for (std::size_t k = begin; k < end; ++k) s.y[k] = lane_select(accept, y_new[k], s.y[k]);
       });
-    ROTORSWEEP_UNROLL
-    for (std::size_t p = 0; p < quadratures; ++p)
-      if (form_.carries(c, p)) s.quad[p] = lane_select(accept, q_new[p], s.quad[p]);
+      ROTORSWEEP_UNROLL
+      for (std::size_t p = 0; p < quadratures; ++p)
+        if (form_.carries(c, p)) s.quad[p] = lane_select(accept, q_new[p], s.quad[p]);
     }
     s.t = lane_select(accept, lane_select(clipped, s.t_stop, s.t + h), s.t);
 

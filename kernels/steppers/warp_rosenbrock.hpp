@@ -115,7 +115,6 @@ class WarpRosenbrock {
   /// The quadratures' integrands at the start of the last attempt, by kind.
   ROTORSWEEP_HD const double* start_integrands() const { return start_qdot_; }
 
-
  private:
   const RosenbrockTableau* table_;
   typename Model::Jacobian jacobian_;

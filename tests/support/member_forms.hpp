@@ -4,11 +4,10 @@
 #pragma once
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstddef>
 #include <vector>
-
-#include <catch2/catch.hpp>
 
 #include "kernels/lanes/angles.hpp"
 #include "kernels/lanes/team.hpp"
@@ -47,13 +46,15 @@ inline TwoPeriods on_team(const RowsOnLanes& model, std::size_t n, std::size_t r
   HostTeam team(ranks);
   integrator.advance(team, model, state);
   REQUIRE(state.status == LaneStatus::ok);
-  return {theta, std::vector<double>(state.quad, state.quad + 8), state.steps_accepted + state.steps_rejected};
+  return {theta, std::vector<double>(state.quad, state.quad + 8),
+          state.steps_accepted + state.steps_rejected};
 }
 
 /// afm_start's two periods of the rows with parameters p (N = n) in the registers of L emulated lanes of
 /// R slots each (WarpRows, every quadrature) with S stage vectors, `table` at tight_tolerances.
 template <std::size_t L, std::size_t R, bool PerRow, std::size_t S = 8>
-TwoPeriods in_registers(std::size_t n, const RowsOnLanes::Parameters& p, const kernels::RosenbrockTableau& table) {
+TwoPeriods in_registers(std::size_t n, const RowsOnLanes::Parameters& p,
+                        const kernels::RosenbrockTableau& table) {
   using namespace kernels;
   using W = HostWarp<L>;
   using Model = WarpRows<W, R, PerRow, all_integrals>;
@@ -67,7 +68,8 @@ TwoPeriods in_registers(std::size_t n, const RowsOnLanes::Parameters& p, const k
   const auto theta = afm_start(n);
   for (std::size_t r = 0; r < R; ++r)
     for (std::size_t l = 0; l < L; ++l)
-      lane_set(state.y[r], l, mask_get(slots.real(r), l) ? theta[std::size_t(lane_get(slots.row(r), l))] : 0.0);
+      lane_set(state.y[r], l,
+               mask_get(slots.real(r), l) ? theta[std::size_t(lane_get(slots.row(r), l))] : 0.0);
   state.t_stop = 2 * two_pi;
   integrator.advance(model, state);
   REQUIRE(state.status == LaneStatus::ok);
@@ -75,7 +77,8 @@ TwoPeriods in_registers(std::size_t n, const RowsOnLanes::Parameters& p, const k
                  state.steps_accepted + state.steps_rejected};
   for (std::size_t r = 0; r < R; ++r)
     for (std::size_t l = 0; l < L; ++l)
-      if (mask_get(slots.real(r), l)) run.theta[std::size_t(lane_get(slots.row(r), l))] = lane_get(state.y[r], l);
+      if (mask_get(slots.real(r), l))
+        run.theta[std::size_t(lane_get(slots.row(r), l))] = lane_get(state.y[r], l);
   return run;
 }
 

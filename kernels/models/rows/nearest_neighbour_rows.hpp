@@ -472,7 +472,8 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
   ROTORSWEEP_HD V torque(std::size_t j, const Row& r, const V& link_after, const V& link_before,
                          const V& inv_g, const V& A) const {
     const V sin_2theta = V(2.0) * r.sin * r.cos;
-    return row_torque(inv_g, scaled<per_row>(anisotropy_row_, j, sin_2theta), link_after, link_before, A * r.lag);
+    return row_torque(inv_g, scaled<per_row>(anisotropy_row_, j, sin_2theta), link_after, link_before,
+                      A * r.lag);
   }
 
   /// One pass over the rows from w.sin_t, w.cos_t and each row's sincos, which row_sincos(j, s, c)

@@ -32,7 +32,8 @@ TEST_CASE("lanes, a team and a warp's registers take the same steps with each fo
       INFO(table->name << ", A = " << A << ": R " << lanes.quad[0] << ", steps " << lanes.steps);
       {
         INFO("on a team of 4 ranks");
-        rotorsweep::testing::check_follows_lanes(rotorsweep::testing::on_team(model, n, 4, *table), lanes, 1e-9);
+        rotorsweep::testing::check_follows_lanes(rotorsweep::testing::on_team(model, n, 4, *table), lanes,
+                                                 1e-9);
       }
       {
         INFO("in the registers of 8 lanes × 3 slots");

@@ -32,8 +32,8 @@ TEST_CASE("a member on a team of 1 … 8 ranks follows the lanes' integration", 
         if (ranks > n) continue;
         INFO("N = " << n << ", A = " << A << ", ranks = " << ranks << ": R " << lanes.quad[0] << ", steps "
                     << lanes.steps);
-        rotorsweep::testing::check_follows_lanes(rotorsweep::testing::on_team(model, n, ranks, rodas4p2_tableau),
-                                                 lanes, 1e-9);
+        rotorsweep::testing::check_follows_lanes(
+            rotorsweep::testing::on_team(model, n, ranks, rodas4p2_tableau), lanes, 1e-9);
       }
     }
 }

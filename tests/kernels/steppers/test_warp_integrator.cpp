@@ -1,7 +1,7 @@
 // A member with its rows in registers (kernels/steppers/warp_member_form.hpp and warp_rosenbrock.hpp, on
 // the host's emulation of a warp) follows the lanes' integration (AdaptiveIntegrator over
-// NearestNeighbourRows) over two periods: every lane count and fill of the slots, uniform and disordered rows, every quadrature; and
-// with fewer stage vectors (a shape's stage count) the same bits.
+// NearestNeighbourRows) over two periods: every lane count and fill of the slots, uniform and disordered
+// rows, every quadrature; and with fewer stage vectors (a shape's stage count) the same bits.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
