@@ -104,7 +104,7 @@ static_assert([] {
 }());
 
 constexpr const RowModelTraits& row_model_traits(RowModelKind kind) { return row_model_table[std::size_t(kind)]; }
-/// The kind's description, or a placeholder for a value outside the enumeration (an error's text).
+/// The kind's description for an error's text; "(unknown)" for a value outside the enumeration.
 constexpr const char* row_model_description(RowModelKind kind) {
   return std::size_t(kind) < row_model_table.size() ? row_model_table[std::size_t(kind)].description
                                                     : "(unknown)";
