@@ -8,18 +8,19 @@
 
 #include "landscape/bifurcation_curves.hpp"
 #include "landscape/critical_points.hpp"
+#include "support/dipolar_range_4.hpp"
 
 using namespace rotorsweep::landscape;
+using rotorsweep::testing::dipolar_range_4;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
-/// Coefficients beyond nearest neighbours: point-dipole rows with range 4 (infinite rows, as
-/// `rotorsweep couplings --range 4` prints them) and an arbitrary table.
-const TwoAngleCoefficients dipolar4{2.1154969038, 2.3926076195, 2.1015765433};
+/// Coefficients beyond nearest neighbours: point-dipole rows with range 4 (dipolar_range_4) and an
+/// arbitrary table.
 const TwoAngleCoefficients arbitrary{1.2, 2.6, 0.7};
-const TwoAngleCoefficients all_coefficients[] = {TwoAngleCoefficients{}, dipolar4, arbitrary};
+const TwoAngleCoefficients all_coefficients[] = {TwoAngleCoefficients{}, dipolar_range_4, arbitrary};
 
 /// Smallest |eigenvalue| of the Hessian over all critical points at (A, τ), and the point.
 double most_degenerate(const TwoAngleEnergy& h) {
@@ -141,7 +142,7 @@ TEST_CASE("alignment curve: its rho = 1/2 point is a maximum, saddle, minimum on
 
 TEST_CASE("beyond nearest neighbours: A_- is the minimum of A_L, A_* its end on the transverse curve",
           "[landscape][curves]") {
-  for (const auto& k : {dipolar4, arbitrary}) {
+  for (const auto& k : {dipolar_range_4, arbitrary}) {
     INFO("(a, b, c) = " << k.a << ", " << k.b << ", " << k.c);
     const auto AL = [&](double z) { return off_diagonal_point(z, -1, k).A; };
     double lo = 0.05, hi = 0.95;  // golden section, independent of the closed-form slope
@@ -168,14 +169,14 @@ TEST_CASE("beyond nearest neighbours: A_- is the minimum of A_L, A_* its end on 
           Approx(fundamental_phase(chi - std::atan2(S, C))).epsilon(1e-12));
   }
   // the dipolar interval is wider than the nearest-neighbour one at both ends
-  CHECK(A_minus(dipolar4) < A_minus());
-  CHECK(A_star(dipolar4) > A_star() + 4);
+  CHECK(A_minus(dipolar_range_4) < A_minus());
+  CHECK(A_star(dipolar_range_4) > A_star() + 4);
 }
 
 TEST_CASE(
     "beyond nearest neighbours: the alignment curve holds a rho = 1/2 point that changes type where found",
     "[landscape][curves]") {
-  for (const auto& k : {dipolar4, arbitrary}) {
+  for (const auto& k : {dipolar_range_4, arbitrary}) {
     const auto changes = alignment_type_changes(k);
     INFO("(a, b, c) = " << k.a << ", " << k.b << ", " << k.c << ": " << changes.size() << " type changes");
     std::vector<MorseType> types;

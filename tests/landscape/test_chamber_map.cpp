@@ -7,24 +7,23 @@
 
 #include "landscape/bifurcation_curves.hpp"
 #include "landscape/chamber_map.hpp"
+#include "support/dipolar_range_4.hpp"
 
 using namespace rotorsweep::landscape;
+using rotorsweep::testing::dipolar_range_4;
 
 namespace {
 
 constexpr double half_pi = std::numbers::pi / 2;
 constexpr double A_max = 12;
 
-/// Point-dipole rows with range 4 (infinite rows; `rotorsweep couplings --range 4`): their CP interval
-/// reaches A_* = 13.0, so their map spans A ≤ 16.
-const TwoAngleCoefficients dipolar4{2.1154969038, 2.3926076195, 2.1015765433};
-
 const ChamberMap& test_map() {
   static const ChamberMap map = chamber_map({0, A_max, 120, 90});
   return map;
 }
+/// Point-dipole rows with range 4: their CP interval reaches A_* = 13.0, so their map spans A ≤ 16.
 const ChamberMap& dipolar_map() {
-  static const ChamberMap map = chamber_map({0, 16, 160, 90, dipolar4});
+  static const ChamberMap map = chamber_map({0, 16, 160, 90, dipolar_range_4});
   return map;
 }
 

@@ -16,7 +16,7 @@ using namespace rotorsweep::landscape;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 double torus_distance(double a, double b) {
   const double d = std::fabs(std::remainder(a - b, 2 * pi));

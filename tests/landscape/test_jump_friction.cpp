@@ -11,8 +11,10 @@
 #include "landscape/jump_friction.hpp"
 #include "landscape/trig_roots.hpp"
 #include "landscape/two_angle_energy.hpp"
+#include "support/dipolar_range_4.hpp"
 
 using namespace rotorsweep::landscape;
+using rotorsweep::testing::dipolar_range_4;
 
 namespace {
 
@@ -128,36 +130,36 @@ TEST_CASE("the paper's rational approximations agree with J within their reporte
 
 TEST_CASE("J_M beyond nearest neighbours: the recipe's states, positive drops, cubic end at A_*",
           "[landscape][jump]") {
-  const TwoAngleCoefficients dipolar4{2.1154969038, 2.3926076195, 2.1015765433};  // couplings --range 4
-  const double lo = A_minus(dipolar4), hi = A_star(dipolar4);
-  CHECK(std::isnan(jump_friction(lo - 1e-9, dipolar4)));
-  CHECK(std::isnan(jump_friction(hi + 1e-9, dipolar4)));
-  CHECK(jump_friction(hi, dipolar4) == Approx(0).margin(1e-12));
-  CHECK(jump_friction(lo, dipolar4) > jump_friction(A_minus()));  // a stronger peak than nearest neighbours
+  const double lo = A_minus(dipolar_range_4), hi = A_star(dipolar_range_4);
+  CHECK(std::isnan(jump_friction(lo - 1e-9, dipolar_range_4)));
+  CHECK(std::isnan(jump_friction(hi + 1e-9, dipolar_range_4)));
+  CHECK(jump_friction(hi, dipolar_range_4) == Approx(0).margin(1e-12));
+  // a stronger peak than nearest neighbours
+  CHECK(jump_friction(lo, dipolar_range_4) > jump_friction(A_minus()));
   int sequences = 0;
   for (int i = 1; i < 40; ++i) {
     const double A = lo + (hi - lo) * i / 40;
     INFO("A = " << A);
-    const auto e = jump_events(A, dipolar4);
+    const auto e = jump_events(A, dipolar_range_4);
     if (std::isnan(e.J)) continue;  // the recipe's sequence does not occur here
     ++sequences;
     CHECK(e.energy_fm_transverse - e.landing_transverse > 0);
     CHECK(e.energy_low - e.landing_low > 0);
     // transverse event: a strict-FM critical point at τ_T with zero transverse curvature and the
     // event's energy, found among all strict-FM critical points there
-    const TwoAngleEnergy h{A, e.tau_transverse, dipolar4};
+    const TwoAngleEnergy h{A, e.tau_transverse, dipolar_range_4};
     bool found = false;
     for (double chi : trig_polynomial_roots([&](double y) { return h.strict_fm_stationarity(y); }, 2)) {
       const auto [ee, eo, oo] = h.hessian(chi, chi);
-      if (std::fabs(ee - eo) < 1e-9 * (dipolar4.hessian_scale() + A))
+      if (std::fabs(ee - eo) < 1e-9 * (dipolar_range_4.hessian_scale() + A))
         found = found || std::fabs(h.energy(chi, chi) - e.energy_fm_transverse) < 1e-11 * (1 + A);
     }
     CHECK(found);
     // lower event: a degenerate off-diagonal critical point with the event's energy
-    const auto low = off_diagonal_degenerate_point(e.zeta_low, -1, dipolar4);
+    const auto low = off_diagonal_degenerate_point(e.zeta_low, -1, dipolar_range_4);
     CHECK(low.A == Approx(A).epsilon(1e-13));
     const double phi = std::acos(e.zeta_low);
-    const TwoAngleEnergy hl{A, e.tau_low, dipolar4};
+    const TwoAngleEnergy hl{A, e.tau_low, dipolar_range_4};
     const auto [ge, go] = hl.gradient(low.chi + phi, low.chi - phi);
     CHECK(std::hypot(ge, go) < 1e-10);
     const auto [lee, leo, loo] = hl.hessian(low.chi + phi, low.chi - phi);
@@ -166,6 +168,7 @@ TEST_CASE("J_M beyond nearest neighbours: the recipe's states, positive drops, c
   }
   CHECK(sequences > 15);
   std::vector<double> d, J;
-  for (double x = 1e-2; x <= 3.1e-2; x *= 1.2) d.push_back(x), J.push_back(jump_friction(hi - x, dipolar4));
+  for (double x = 1e-2; x <= 3.1e-2; x *= 1.2)
+    d.push_back(x), J.push_back(jump_friction(hi - x, dipolar_range_4));
   CHECK(log_slope(d, J) == Approx(3).margin(0.05));
 }

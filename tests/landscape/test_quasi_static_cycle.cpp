@@ -7,8 +7,10 @@
 #include "landscape/bifurcation_curves.hpp"
 #include "landscape/jump_friction.hpp"
 #include "landscape/quasi_static_cycle.hpp"
+#include "support/dipolar_range_4.hpp"
 
 using namespace rotorsweep::landscape;
+using rotorsweep::testing::dipolar_range_4;
 
 namespace {
 
@@ -42,15 +44,14 @@ TEST_CASE("nearest neighbours: the cycle's friction is the recipe's J on [A_-, A
 
 TEST_CASE("dipolar coefficients: the recipe where its sequence occurs, slips of strict FM where not",
           "[landscape][cycle]") {
-  const TwoAngleCoefficients dipolar4{2.1154969038, 2.3926076195, 2.1015765433};  // couplings --range 4
   int recipe = 0, fm_slips = 0;
   for (int i = 1; i < 30; ++i) {
-    const double A = A_minus(dipolar4) + (A_star(dipolar4) - A_minus(dipolar4)) * i / 30;
+    const double A = A_minus(dipolar_range_4) + (A_star(dipolar_range_4) - A_minus(dipolar_range_4)) * i / 30;
     INFO("A = " << A);
-    const auto cycle = quasi_static_cycle(A, dipolar4);
+    const auto cycle = quasi_static_cycle(A, dipolar_range_4);
     check_drops(cycle);
     CHECK(cycle.J > 0);
-    const double J = jump_friction(A, dipolar4);
+    const double J = jump_friction(A, dipolar_range_4);
     if (std::isfinite(J)) {
       ++recipe;
       CHECK(cycle.J == Approx(J).margin(1e-6));
@@ -61,6 +62,6 @@ TEST_CASE("dipolar coefficients: the recipe where its sequence occurs, slips of 
   }
   CHECK(recipe > 10);
   CHECK(fm_slips > 5);
-  CHECK(quasi_static_cycle(A_star(dipolar4) + 0.5, dipolar4).J == 0);
-  CHECK(quasi_static_cycle(A_minus(dipolar4) - 0.5, dipolar4).J == 0);
+  CHECK(quasi_static_cycle(A_star(dipolar_range_4) + 0.5, dipolar_range_4).J == 0);
+  CHECK(quasi_static_cycle(A_minus(dipolar_range_4) - 0.5, dipolar_range_4).J == 0);
 }

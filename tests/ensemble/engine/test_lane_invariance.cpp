@@ -1,18 +1,17 @@
 // A member's bits depend on the member alone: scalar or SIMD lanes, the order of the A list, the
 // thread count, also past 20π in time and angle and in blocks mixing small and large arguments.
 #include <catch2/catch.hpp>
-#include <cstring>
 #include <string>
 
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "support/same_results.hpp"
 
 using namespace rotorsweep;
+using rotorsweep::testing::same_bits;
 
 namespace {
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 struct SceneText {
   int rows = 20;

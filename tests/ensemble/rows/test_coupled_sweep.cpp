@@ -10,17 +10,13 @@
 #include "ensemble/rows/row_models.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "support/scene_sweep.hpp"
 
 using namespace rotorsweep::ensemble;
 using Catch::Detail::Approx;
+using rotorsweep::testing::sweep;
 
 namespace {
-
-std::vector<MemberResult> sweep(const std::string& text, int threads = 1) {
-  const auto scene = rotorsweep::io::parse_scene_text(text, "coupled-test");
-  return run_sweep(scene, plan_members(scene), {.threads = threads}).results;
-}
-
 const std::string grid =
     "[drive]\ng = [0.0011]\n[sweep]\nA = [1.0, 3.0, 11.0, 12.0]\n[initial]\nkinds = [\"AFM\", \"FM\"]\n"
     "[numerics]\nrtol = 1e-10\natol = 1e-13\n";
@@ -99,5 +95,6 @@ TEST_CASE("coupling keys are read, and bad tables are named", "[ensemble][coupli
   refused("boundary = \"closed\"\n", "model.boundary");
   refused("couplings = \"dipolar\"\n[disorder]\ncoupling = 0.1\n", "disorder.coupling");
   refused("boundary = \"open\"\n[disorder]\ncoupling_rows = [0.1, 0.0]\n", "disorder.coupling_rows");
-  CHECK_NOTHROW(parse_scene_text("[model]\nrows = 8\ncouplings = \"dipolar\"\n[disorder]\nA = 0.1\nanisotropy = 0.1\n" + rest, "s"));
+  CHECK_NOTHROW(parse_scene_text(
+      "[model]\nrows = 8\ncouplings = \"dipolar\"\n[disorder]\nA = 0.1\nanisotropy = 0.1\n" + rest, "s"));
 }

@@ -10,16 +10,12 @@
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "support/scene_sweep.hpp"
 
 using namespace rotorsweep::ensemble;
+using rotorsweep::testing::sweep;
 
 namespace {
-
-std::vector<MemberResult> sweep(const std::string& text, int threads = 1) {
-  const auto scene = rotorsweep::io::parse_scene_text(text, "disorder-test");
-  return run_sweep(scene, plan_members(scene), {.threads = threads}).results;
-}
-
 /// The paper's CP members (N = 20, g = 0.0011, AFM start) with drawn disorder of the A_j.
 std::string cp_scene(double rtol, const std::string& disorder) {
   char numerics[96];

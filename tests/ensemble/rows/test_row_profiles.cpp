@@ -11,20 +11,16 @@
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
 #include "support/same_results.hpp"
+#include "support/scene_sweep.hpp"
 
 using namespace rotorsweep::ensemble;
 using Catch::Detail::Approx;
+using rotorsweep::testing::sweep;
 
 namespace {
-
-std::vector<MemberResult> sweep(const std::string& text, int threads = 1) {
-  const auto scene = rotorsweep::io::parse_scene_text(text, "row-profile-test");
-  return run_sweep(scene, plan_members(scene), {.threads = threads}).results;
-}
-
 const std::string open_rows = "[model]\nrows = 10\ncouplings = \"dipolar\"\nrange = 3\nboundary = \"open\"\n";
 
-std::string grid(const std::string& rtol) {
+std::string profile_grid(const std::string& rtol) {
   return "[drive]\ng = [0.05]\n[sweep]\nA = [1.0, 3.0, 12.0]\n[initial]\nkinds = [\"FM\"]\nnoise = 0.0\n"
          "[numerics]\nrtol = " +
          rtol + "\natol = 1e-13\n";
@@ -42,7 +38,7 @@ double largest_magnitude(const std::vector<double>& values) {
 
 TEST_CASE("open rows: D_j sums to D, links average to ρ̄, the profile is mirror-symmetric with distinct edges",
           "[ensemble][profiles]") {
-  const auto results = sweep(open_rows + grid("1e-10"));
+  const auto results = sweep(open_rows + profile_grid("1e-10"));
   REQUIRE(results.size() == 3);
   bool edges_differ = false;
   for (const auto& r : results) {
@@ -63,7 +59,8 @@ TEST_CASE("open rows: D_j sums to D, links average to ρ̄, the profile is mirro
 }
 
 TEST_CASE("periodic rows started alike share D equally", "[ensemble][profiles]") {
-  const auto results = sweep("[model]\nrows = 6\n[observables]\nrow_profiles = true\n" + grid("1e-10"));
+  const auto results =
+      sweep("[model]\nrows = 6\n[observables]\nrow_profiles = true\n" + profile_grid("1e-10"));
   for (const auto& r : results) {
     REQUIRE(r.row_dissipation.size() == 6);
     REQUIRE(r.link_alignment.size() == 6);
@@ -75,11 +72,11 @@ TEST_CASE("periodic rows started alike share D equally", "[ensemble][profiles]")
 }
 
 TEST_CASE("the row profile converges with the tolerance", "[ensemble][profiles]") {
-  const auto reference = sweep(open_rows + grid("1e-12"));
+  const auto reference = sweep(open_rows + profile_grid("1e-12"));
   double previous = 0;
   for (const char* rtol_text : {"1e-5", "1e-7", "1e-9"}) {
     const double rtol = std::stod(rtol_text);
-    const auto results = sweep(open_rows + grid(rtol_text));
+    const auto results = sweep(open_rows + profile_grid(rtol_text));
     double error = 0;
     for (std::size_t i = 0; i < results.size(); ++i)
       for (std::size_t j = 0; j < 10; ++j)

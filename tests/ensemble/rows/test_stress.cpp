@@ -1,16 +1,17 @@
 // A reduced copy of examples/stress.toml (N = 2 and 64, the extreme A and g): every member
 // ends ok or with a documented failure, NaN appears only where the status says so, and
 // members that fail leave all others bit-identical to a run without them.
-#include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "support/same_results.hpp"
 #include "test_paths.hpp"
 
 using namespace rotorsweep::ensemble;
 using rotorsweep::kernels::LaneStatus;
+using rotorsweep::testing::same_bits;
 
 namespace {
 
@@ -20,10 +21,6 @@ Scene reduced_stress_scene() {
   scene.A_values = {0.0, 0.01, 1.0, 10.0, 1000.0};
   scene.g_values = {scene.g_values.front(), scene.g_values[2], scene.g_values.back()};
   return scene;
-}
-
-bool same_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
 }  // namespace

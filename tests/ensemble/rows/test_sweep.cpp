@@ -4,14 +4,15 @@
 // periods are kept, with the same summary; the stop flag ends a sweep early.
 #include <algorithm>
 #include <atomic>
-#include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "support/same_results.hpp"
 
 using namespace rotorsweep::ensemble;
+using rotorsweep::testing::same_bits;
 
 namespace {
 
@@ -30,10 +31,6 @@ Scene curve_scene(const std::string& extra = "", const std::string& observables 
 
 SweepOutcome sweep(const Scene& scene, int threads = 1) {
   return run_sweep(scene, plan_members(scene), {.threads = threads});
-}
-
-bool same_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
 void require_identical(const std::vector<MemberResult>& a, const std::vector<MemberResult>& b) {

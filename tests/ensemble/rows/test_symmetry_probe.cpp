@@ -8,15 +8,14 @@
 
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "support/scene_sweep.hpp"
 
 using namespace rotorsweep::ensemble;
 
 namespace {
 
-std::vector<MemberResult> sweep(const std::string& text) {
-  const Scene scene = rotorsweep::io::parse_scene_text(text, "symmetry-probe.toml");
-  return run_sweep(scene, plan_members(scene), {.threads = 2}).results;
-}
+/// The scene's members on two threads.
+std::vector<MemberResult> probe_sweep(const std::string& text) { return rotorsweep::testing::sweep(text, 2); }
 
 /// N = 16 periodic rows at A = 9, g = 2e-3 (CP), random starts of seed 11: replica 2 falls into
 /// strict FM during relaxation at rtol 1e-10 and stays there without slipping.
@@ -30,7 +29,7 @@ std::string held_scene(const std::string& extra = "") {
 
 TEST_CASE("a random start held in strict FM through the CP regime is symmetry-limited, not resolved",
           "[ensemble][symmetry_probe]") {
-  const auto results = sweep(held_scene());
+  const auto results = probe_sweep(held_scene());
   std::size_t held = 0;
   for (const auto& r : results) {
     INFO("replica " << r.index << " regime " << regime_name(r.regime) << " D " << r.dissipation());
@@ -41,7 +40,7 @@ TEST_CASE("a random start held in strict FM through the CP regime is symmetry-li
       CHECK(r.symmetry_limited);
       CHECK(r.symmetry_held);
       CHECK(r.dissipation_error() < 1e-6 * r.dissipation());  // the local estimate alone would read resolved
-      CHECK(r.dissipation_probe > 3 * r.dissipation());        // an asymmetry makes it slip
+      CHECK(r.dissipation_probe > 3 * r.dissipation());       // an asymmetry makes it slip
       ++held;
     }
   }
@@ -50,10 +49,11 @@ TEST_CASE("a random start held in strict FM through the CP regime is symmetry-li
 
 TEST_CASE("open dipolar rows whose D converges are not symmetry-limited; a uniform ring's CP members are",
           "[ensemble][symmetry_probe]") {
-  const auto open = sweep(
+  const auto open = probe_sweep(
       "[model]\nrows = 4\ncouplings = \"dipolar\"\nrange = \"all\"\nrow_length = 7\nboundary = \"open\"\n"
       "[drive]\ng = [0.154]\n[sweep]\nA = [5.61765]\n[initial]\nkinds = [\"AFM\"]\nnoise = 0.1309\n"
-      "[schedule]\nrelax_periods = 1\naverage_periods = 4\n[numerics]\nrtol = [1e-6, 1e-8]\natol = [1e-9, 1e-11]\n");
+      "[schedule]\nrelax_periods = 1\naverage_periods = 4\n[numerics]\nrtol = [1e-6, 1e-8]\natol = [1e-9, "
+      "1e-11]\n");
   for (const auto& r : open) {
     INFO("rtol member " << r.index);
     REQUIRE(r.slips_per_period() > 0);
@@ -63,7 +63,7 @@ TEST_CASE("open dipolar rows whose D converges are not symmetry-limited; a unifo
   }
   CHECK(std::fabs(open[0].dissipation() - open[1].dissipation()) < open[0].dissipation_error());
 
-  const auto ring = sweep(
+  const auto ring = probe_sweep(
       "[model]\nrows = 8\n[drive]\ng = [0.002]\n[sweep]\nA = [6.0, 8.0]\n[initial]\nkinds = [\"AFM\"]\n"
       "[numerics]\nrtol = 1e-7\natol = 1e-10\n");
   for (const auto& r : ring) {
@@ -76,11 +76,11 @@ TEST_CASE("open dipolar rows whose D converges are not symmetry-limited; a unifo
 
 TEST_CASE("with a disorder above rtol no probe runs; disorder works with coupling tables",
           "[ensemble][symmetry_probe][disorder]") {
-  for (const auto& r : sweep(held_scene("[disorder]\nA = 1e-6\n"))) {
+  for (const auto& r : probe_sweep(held_scene("[disorder]\nA = 1e-6\n"))) {
     CHECK(std::isnan(r.dissipation_probe));
     CHECK_FALSE(r.symmetry_limited);
   }
-  const auto dipolar = sweep(
+  const auto dipolar = probe_sweep(
       "[model]\nrows = 6\ncouplings = \"dipolar\"\nrange = 2\n[drive]\ng = [0.01]\n[sweep]\nA = [6.0]\n"
       "[initial]\nkinds = [\"AFM\"]\n[numerics]\nrtol = 1e-8\natol = 1e-11\n[disorder]\nA = 1e-6\n"
       "anisotropy = 1e-6\n");

@@ -8,16 +8,12 @@
 #include "ensemble/rows/member_plan.hpp"
 #include "ensemble/rows/sweep.hpp"
 #include "io/scene_parser.hpp"
+#include "support/scene_sweep.hpp"
 
 using namespace rotorsweep::ensemble;
+using rotorsweep::testing::sweep;
 
 namespace {
-
-std::vector<MemberResult> sweep(const std::string& text, int threads = 1) {
-  const auto scene = rotorsweep::io::parse_scene_text(text, "thermal-test");
-  return run_sweep(scene, plan_members(scene), {.threads = threads}).results;
-}
-
 /// ⟨H⟩ = ∫ H e^{-H/T} dθ0 dθ1 / Z for N = 2 at A = 0: H = -3/2 (cos 2θ0 + cos 2θ1) + 2 cos(θ0 - θ1),
 /// by the midpoint rule on a 600 × 600 grid (spectrally accurate for this periodic integrand).
 double boltzmann_energy(double T) {
