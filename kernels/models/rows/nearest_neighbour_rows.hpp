@@ -13,10 +13,10 @@
 #include "kernels/lanes/lane_arena.hpp"
 #include "kernels/lanes/lane_math.hpp"
 #include "kernels/linear/cyclic_tridiagonal.hpp"
-#include "kernels/steppers/model_concept.hpp"
 #include "kernels/models/rows/integrals.hpp"
 #include "kernels/models/rows/row_equations.hpp"
 #include "kernels/models/rows/row_quadratures.hpp"
+#include "kernels/steppers/model_concept.hpp"
 
 namespace rotorsweep::kernels {
 
@@ -300,11 +300,25 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
     integrands<per_row>(w, sums, f, qdot);
   }
 
+  /// A row's sine and cosine for rows_pass: at θ_j, or at θ_j + δ_j from the linearisation point's.
+  /// Functions that are always inlined into the pass (a call per row would spill its lane registers).
+  struct RowSincosAt {
+    const V* theta;
+    ROTORSWEEP_HD ROTORSWEEP_INLINE void operator()(std::size_t j, V& s, V& c) const {
+      lane_sincos(theta[j], s, c);
+    }
+  };
+  struct RowSincosDisplaced {
+    const V *theta, *delta, *start_sin, *start_cos;
+    ROTORSWEEP_HD ROTORSWEEP_INLINE void operator()(std::size_t j, V& s, V& c) const {
+      lane_sincos_displaced(theta[j], delta[j], start_sin[j], start_cos[j], s, c);
+    }
+  };
+
   template <bool per_row>
   ROTORSWEEP_HD void evaluate_rows(Workspace& w, const V* theta, V t, V* f, V* qdot, bool store) const {
     lane_sincos(t, w.sin_t, w.cos_t);
-    pass_and_integrands<per_row>(
-        w, [&](std::size_t j, V& s, V& c) { lane_sincos(theta[j], s, c); }, f, qdot, store);
+    pass_and_integrands<per_row>(w, RowSincosAt{theta}, f, qdot, store);
     row_moment_integrands(integrals_, t, qdot);
   }
 
@@ -312,12 +326,8 @@ class NearestNeighbourRows : public CarriedRowQuadratures {
   ROTORSWEEP_HD void evaluate_displaced_rows(Workspace& w, const V* theta, const V* delta, V t, V tau, V* f,
                                              V* qdot) const {
     lane_sincos_displaced(t, tau, w.start_sin_t, w.start_cos_t, w.sin_t, w.cos_t);
-    pass_and_integrands<per_row>(
-        w,
-        [&](std::size_t j, V& s, V& c) {
-          lane_sincos_displaced(theta[j], delta[j], w.start_sin_row[j], w.start_cos_row[j], s, c);
-        },
-        f, qdot, reads_rows_);
+    pass_and_integrands<per_row>(w, RowSincosDisplaced{theta, delta, w.start_sin_row, w.start_cos_row}, f,
+                                 qdot, reads_rows_);
     row_moment_integrands(integrals_, t + tau, qdot);
   }
 
