@@ -76,15 +76,15 @@ struct HostSteps {
 /// `scattered`, as a GPU sweep delivers them: every fourth member first (its averaged periods did not
 /// slip), the other three after their shadow runs.
 double time_writes(const ensemble::Scene& scene, const ensemble::MemberPlan& plan,
-                   const std::vector<ensemble::MemberResult>& results, bool scattered,
+                   std::vector<ensemble::MemberResult> results, bool scattered,
                    const std::filesystem::path& path) {
   std::filesystem::remove(path);
   const io::ResultFile file(path.string(), scene, io::Provenance{"bench host", "", "", "cpu", ""});
   io::MemberStream stream(file, plan, {}, [] {});
   const auto start = std::chrono::steady_clock::now();
   for (const int pass : {0, 1})
-    for (const auto& r : results)
-      if (!scattered ? pass == 0 : (r.index % 4 == 0) == (pass == 0)) stream.add(ensemble::MemberResult(r));
+    for (auto& r : results)
+      if (!scattered ? pass == 0 : (r.index % 4 == 0) == (pass == 0)) stream.add(std::move(r));
   stream.flush();
   const double seconds = seconds_since(start);
   std::filesystem::remove(path);

@@ -347,13 +347,15 @@ bool select_rows(hid_t space, int rank, const hsize_t dims[3], const hsize_t* fi
 
 // HDF5 1.10 unites k hyperslabs in more than k² steps (per column of a 10⁶-row dataset, every fourth
 // row: 1 000 take 9 ms, 16 000 7.4 s, 64 000 528 s), and a GPU sweep, whose shadowed members follow
-// their shadows' chunks, leaves batches of scattered rows. So a batch of more than 16 runs goes as
-// points where a row holds a few values (HDF5 selects points in linear time: 0.16 µs per one-value
-// row) and otherwise in parts of 16 runs, one H5Dwrite each (3.4 µs per 128-value row, against 16 µs
-// as points); docs/performance.md.
+// their shadows' chunks, leaves batches of scattered rows. So a batch of more than 16 runs whose rows
+// fill at least an eighth of their span goes as that span: the span read back, the batch's rows laid
+// over it, one contiguous write (the rows between keep their bytes). A sparser batch goes as points
+// where a row holds a few values (HDF5 selects points in linear time: 0.16 µs per one-value row) and
+// otherwise in parts of 16 runs, one H5Dwrite each (3.4 µs per 128-value row, against 16 µs as
+// points); docs/performance.md.
 void Hdf5Location::write_selected_rows(const std::string& name, const std::vector<hsize_t>& rows,
                                        hid_t memory_type, const void* data) const {
-  constexpr std::size_t runs_per_part = 16, most_values_as_points = 8;
+  constexpr std::size_t runs_per_part = 16, most_values_as_points = 8, span_per_row = 8;
   if (rows.empty()) return;
   auto set = open_dataset(name);
   const Hdf5Handle file_space(H5Dget_space(set.id()), H5Sclose);
@@ -365,8 +367,13 @@ void Hdf5Location::write_selected_rows(const std::string& name, const std::vecto
     fail("select rows of", name);
   std::size_t runs = 1;
   for (std::size_t i = 1; i < rows.size(); ++i) runs += rows[i] != rows[i - 1] + 1;
-  const bool points = runs > runs_per_part && dims[1] * dims[2] <= most_values_as_points;
   const std::size_t row_bytes = H5Tget_size(memory_type) * dims[1] * dims[2];
+  const hsize_t span = rows.back() - rows.front() + 1;
+  if (runs > runs_per_part && span <= span_per_row * rows.size()) {
+    write_span(set.id(), file_space.id(), rank, dims, rows, memory_type, row_bytes, data, name);
+    return close_written(std::move(set), name);
+  }
+  const bool points = runs > runs_per_part && dims[1] * dims[2] <= most_values_as_points;
   for (std::size_t first = 0; first < rows.size();) {
     std::size_t last = first + 1;
     if (points || runs <= runs_per_part)
@@ -383,9 +390,30 @@ void Hdf5Location::write_selected_rows(const std::string& name, const std::vecto
       fail("write rows of", name);
     first = last;
   }
+  close_written(std::move(set), name);
+}
+
+void Hdf5Location::write_span(hid_t set, hid_t file_space, int rank, const hsize_t dims[3],
+                              const std::vector<hsize_t>& rows, hid_t memory_type, std::size_t row_bytes,
+                              const void* data, const std::string& name) const {
+  const hsize_t first = rows.front(), span = rows.back() - first + 1;
+  const hsize_t start[3] = {first, 0, 0}, count[3] = {span, dims[1], dims[2]};
+  if (H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, count, nullptr) < 0)
+    fail("select rows of", name);
+  const Hdf5Handle memory_space(H5Screate_simple(rank, count, nullptr), H5Sclose);
+  std::vector<char> bytes(std::size_t(span) * row_bytes);
+  if (H5Dread(set, memory_type, memory_space.id(), file_space, H5P_DEFAULT, bytes.data()) < 0)
+    fail("read back rows of", name);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    std::memcpy(bytes.data() + (rows[i] - first) * row_bytes, static_cast<const char*>(data) + i * row_bytes,
+                row_bytes);
+  if (H5Dwrite(set, memory_type, memory_space.id(), file_space, H5P_DEFAULT, bytes.data()) < 0)
+    fail("write rows of", name);
+}
+
+void Hdf5Location::close_written(Hdf5Handle set, const std::string& name) const {
   // closing writes the dataset's buffered rows: a failure there is a failed write too
-  auto closing = std::move(set);
-  if (H5Dclose(closing.release()) < 0) fail("write rows of", name);
+  if (H5Dclose(set.release()) < 0) fail("write rows of", name);
 }
 
 void Hdf5Location::write_rows(const std::string& name, const std::vector<hsize_t>& rows,

@@ -142,6 +142,13 @@ class Hdf5Location {
   std::vector<T> read_numbers(const std::string& name, hid_t memory_type, std::vector<hsize_t>* dims) const;
   void write_selected_rows(const std::string& name, const std::vector<hsize_t>& rows, hid_t memory_type,
                            const void* data) const;
+  /// Rows `rows` (ascending) of dataset `set` written as their whole span: the span read, the rows laid
+  /// over it, written back in one piece.
+  void write_span(hid_t set, hid_t file_space, int rank, const hsize_t dims[3],
+                  const std::vector<hsize_t>& rows, hid_t memory_type, std::size_t row_bytes,
+                  const void* data, const std::string& name) const;
+  /// Closes a dataset just written; a failure to write its buffered rows there throws.
+  void close_written(Hdf5Handle set, const std::string& name) const;
   void read_selected_rows(const std::string& name, hsize_t first, hsize_t count, hid_t memory_type,
                           void* data) const;
 

@@ -63,7 +63,9 @@ void ResultFile::write_rows(std::vector<hsize_t> rows, const std::vector<ensembl
 void ResultFile::write_results(const ensemble::MemberPlan& plan,
                                std::vector<ensemble::MemberResult> results) const {
   if (results.empty()) return;
-  std::sort(results.begin(), results.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  const auto by_index = [](const auto& a, const auto& b) { return a.index < b.index; };
+  if (!std::is_sorted(results.begin(), results.end(), by_index))
+    std::sort(results.begin(), results.end(), by_index);
   std::vector<hsize_t> rows;
   std::vector<ensemble::Member> members;
   for (const auto& r : results) {
