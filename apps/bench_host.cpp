@@ -1,6 +1,6 @@
 // `rotorsweep bench host`: the host's share of a GPU sweep per member, measured without a GPU: a chunk's
-// fill, the members' summaries, and the summaries with the result file's writes (as `rotorsweep run`), the
-// rows in order and scattered as a GPU sweep delivers them (shadowed members after their shadows).
+// fill, the members' summaries, the summaries with the result file's writes (as `rotorsweep run`), the rows
+// packed for the file, and the packed rows' writes in order and scattered as a GPU sweep delivers them.
 #include <unistd.h>
 
 #include <algorithm>
@@ -69,22 +69,22 @@ double median(std::vector<double> x) {
 
 /// The median seconds of each step for chunks of `members` of the curve's scene at N rows.
 struct HostSteps {
-  double fill, summaries, writes, ordered_writes, scattered_writes;
+  double fill, summaries, writes, packing, ordered_writes, scattered_writes;
 };
 
-/// The seconds one thread takes to write `results` into a new result file at `path`, rows in order or,
-/// `scattered`, as a GPU sweep delivers them: every fourth member first (its averaged periods did not
-/// slip), the other three after their shadow runs.
+/// The seconds one thread takes to write the packed rows `packed` into a new result file at `path`, rows
+/// in order or, `scattered`, as a GPU sweep delivers them: every fourth member first (its averaged periods
+/// did not slip), the other three after their shadow runs.
 double time_writes(const ensemble::Scene& scene, const ensemble::MemberPlan& plan,
-                   std::vector<ensemble::MemberResult> results, bool scattered,
-                   const std::filesystem::path& path) {
+                   std::vector<io::PackedRow> packed, bool scattered, const std::filesystem::path& path) {
   std::filesystem::remove(path);
   const io::ResultFile file(path.string(), scene, io::Provenance{"bench host", "", "", "cpu", ""});
   io::MemberStream stream(file, plan, {}, [] {});
+  io::ResultStream<io::PackedRow>& rows = stream;  // rows already packed, as the workers leave them
   const auto start = std::chrono::steady_clock::now();
   for (const int pass : {0, 1})
-    for (auto& r : results)
-      if (!scattered ? pass == 0 : (r.index % 4 == 0) == (pass == 0)) stream.add(std::move(r));
+    for (auto& r : packed)
+      if (!scattered ? pass == 0 : (r.index % 4 == 0) == (pass == 0)) rows.add(std::move(r));
   stream.flush();
   const double seconds = seconds_since(start);
   std::filesystem::remove(path);
@@ -96,7 +96,7 @@ HostSteps time_host_steps(int rows, std::size_t members, int threads, int repeat
   const auto scene = io::parse_scene_text(curve_scene(rows), "bench host");
   const ensemble::MemberPlan plan(scene);
   ensemble::SlotChunk chunk(ensemble::slot_schedule(scene, plan[0], 1.0), members);
-  std::vector<double> fill, summaries, writes, ordered, scattered;
+  std::vector<double> fill, summaries, writes, packing, ordered, scattered;
   for (int repeat = 0; repeat < repeats; ++repeat) {
     auto start = std::chrono::steady_clock::now();
     std::vector<ensemble::Member> chunk_members;  // decoded from the plan, as the GPU's loop does
@@ -127,10 +127,16 @@ HostSteps time_host_steps(int rows, std::size_t members, int threads, int repeat
       results.push_back(std::move(r));
     });
     std::sort(results.begin(), results.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
-    ordered.push_back(time_writes(scene, plan, results, false, path));
-    scattered.push_back(time_writes(scene, plan, results, true, path));
+    const auto columns = io::member_columns(scene);  // what ResultFile::pack packs
+    std::vector<io::PackedRow> packed;
+    start = std::chrono::steady_clock::now();
+    for (const auto& r : results) packed.push_back({r.index, io::pack_table_row(columns, plan[r.index], r)});
+    packing.push_back(seconds_since(start));
+    ordered.push_back(time_writes(scene, plan, packed, false, path));
+    scattered.push_back(time_writes(scene, plan, std::move(packed), true, path));
   }
-  return {median(fill), median(summaries), median(writes), median(ordered), median(scattered)};
+  return {median(fill),    median(summaries), median(writes),
+          median(packing), median(ordered),   median(scattered)};
 }
 
 }  // namespace
@@ -172,6 +178,7 @@ int run_bench_host(const BenchHostOptions& options) {
     row("fill (one thread)", steps.fill);
     row("summaries", steps.summaries);
     row("summaries and file writes", steps.writes);
+    row("rows packed for the file (one thread)", steps.packing);
     row("file writes alone (one thread)", steps.ordered_writes);
     row("file writes alone, rows scattered (one thread)", steps.scattered_writes);
     std::fflush(stdout);

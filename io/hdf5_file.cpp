@@ -443,7 +443,15 @@ void Hdf5Location::write_rows(const std::string& name, const std::vector<hsize_t
       fail("write '" + data[i] + "' (longer than " + std::to_string(length) + " bytes) into", name);
     std::copy(data[i].begin(), data[i].end(), packed.begin() + std::ptrdiff_t(i * length));
   }
-  write_selected_rows(name, rows, type.id(), packed.data());
+  write_rows(name, rows, packed.data(), length);
+}
+
+void Hdf5Location::write_rows(const std::string& name, const std::vector<hsize_t>& rows, const char* text,
+                              std::size_t length) const {
+  const auto set = open_dataset(name);
+  const Hdf5Handle type(H5Dget_type(set.id()), H5Tclose);
+  if (H5Tget_size(type.id()) != length) fail("write text of " + std::to_string(length) + " bytes into", name);
+  write_selected_rows(name, rows, type.id(), text);
 }
 
 std::string Hdf5Location::column_mismatch(const std::string& name, ColumnType type,

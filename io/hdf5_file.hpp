@@ -93,6 +93,9 @@ class Hdf5Location {
   void write_rows(const std::string& name, const std::vector<hsize_t>& rows, const signed char* data) const;
   void write_rows(const std::string& name, const std::vector<hsize_t>& rows,
                   const std::vector<std::string>& data) const;
+  /// Text rows already padded with NUL to `length` bytes each, the column's length.
+  void write_rows(const std::string& name, const std::vector<hsize_t>& rows, const char* text,
+                  std::size_t length) const;
   /// Rows [first, first + count) of a column (any number of values per row).
   std::vector<double> read_rows_doubles(const std::string& name, hsize_t first, hsize_t count) const;
   std::vector<std::int64_t> read_rows_integers(const std::string& name, hsize_t first, hsize_t count) const;

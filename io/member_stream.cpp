@@ -61,6 +61,14 @@ void ResultStream<Result>::write(std::vector<Result> batch) {
 }
 
 template <class Result>
+void ResultStream<Result>::fail(std::exception_ptr failure) {
+  const std::lock_guard writer(write_lock_);
+  if (failure_) return;
+  failure_ = std::move(failure);
+  if (on_failure_) on_failure_();
+}
+
+template <class Result>
 void ResultStream<Result>::flush() {
   const std::lock_guard writer(write_lock_);
   std::vector<Result> batch;
@@ -79,16 +87,26 @@ std::size_t ResultStream<Result>::written() const {
   return written_;
 }
 
-template class ResultStream<ensemble::MemberResult>;
+template class ResultStream<PackedRow>;
 template class ResultStream<ensemble::SliderMember>;
 
 MemberStream::MemberStream(const ResultFile& file, const ensemble::MemberPlan& plan, FlushPolicy policy,
                            std::function<void()> on_failure)
-    : ResultStream(
-          [&file, &plan](std::vector<ensemble::MemberResult>&& batch) {
-            file.write_results(plan, std::move(batch));
-          },
-          policy, std::move(on_failure)) {}
+    : ResultStream([&file](std::vector<PackedRow>&& batch) { file.write_packed(std::move(batch)); }, policy,
+                   std::move(on_failure)),
+      file_(file),
+      plan_(plan) {}
+
+void MemberStream::add(ensemble::MemberResult&& result) {
+  PackedRow row;
+  try {
+    row = file_.pack(plan_[result.index], result);
+  } catch (...) {  // a text longer than its column: the run stops as on a failed write
+    fail(std::current_exception());
+    return;
+  }
+  ResultStream::add(std::move(row));
+}
 
 SliderMemberStream::SliderMemberStream(const SliderResultFile& file, std::function<void()> on_failure)
     : ResultStream([&file](std::vector<ensemble::SliderMember>&& batch) { file.write_members(batch); },

@@ -40,6 +40,10 @@ class ResultStream {
   /// Members written so far.
   std::size_t written() const;
 
+ protected:
+  /// Records a failure to prepare a result as a failed write: on_failure once, thrown again by flush().
+  void fail(std::exception_ptr failure);
+
  private:
   /// Writes a batch if one is due and no other thread is writing (buffer_lock_ held by `buffer`).
   void write_if_due(std::unique_lock<std::mutex>& buffer);
@@ -57,11 +61,17 @@ class ResultStream {
   std::exception_ptr failure_;
 };
 
-/// A row sweep's results into its ResultFile (rows in plan order, then /members/done).
-class MemberStream : public ResultStream<ensemble::MemberResult> {
+/// A row sweep's results into its ResultFile (rows in plan order, then /members/done), each packed into
+/// its row's bytes by the thread that adds it, so that the writing thread only gathers and writes.
+class MemberStream : public ResultStream<PackedRow> {
  public:
   MemberStream(const ResultFile& file, const ensemble::MemberPlan& plan, FlushPolicy policy,
                std::function<void()> on_failure);
+  void add(ensemble::MemberResult&& result);
+
+ private:
+  const ResultFile& file_;
+  const ensemble::MemberPlan& plan_;
 };
 
 /// A slider scan's members into its SliderResultFile, each chunk's (or lane block's) members as they

@@ -54,25 +54,30 @@ void ResultFile::create(const Provenance& provenance) const {
   create_member_columns(members, columns_, rows_);
 }
 
-void ResultFile::write_rows(std::vector<hsize_t> rows, const std::vector<ensemble::Member>& members,
-                            const std::vector<ensemble::MemberResult>& results) const {
-  write_table_rows(file_.open_group("members"), columns_, rows, members, results);
+PackedRow ResultFile::pack(const ensemble::Member& member, const ensemble::MemberResult& result) const {
+  return {result.index, pack_table_row(columns_, member, result)};
+}
+
+void ResultFile::write_packed(std::vector<PackedRow> packed) const {
+  if (packed.empty()) return;
+  const auto by_index = [](const auto& a, const auto& b) { return a.index < b.index; };
+  if (!std::is_sorted(packed.begin(), packed.end(), by_index))
+    std::sort(packed.begin(), packed.end(), by_index);
+  std::vector<hsize_t> rows;
+  std::vector<const PackedRow*> order;
+  for (const auto& p : packed) {
+    rows.push_back(row_of(p.index));
+    order.push_back(&p);
+  }
+  write_packed_rows(file_.open_group("members"), columns_, rows, order);
   mark_done(rows);
 }
 
 void ResultFile::write_results(const ensemble::MemberPlan& plan,
-                               std::vector<ensemble::MemberResult> results) const {
-  if (results.empty()) return;
-  const auto by_index = [](const auto& a, const auto& b) { return a.index < b.index; };
-  if (!std::is_sorted(results.begin(), results.end(), by_index))
-    std::sort(results.begin(), results.end(), by_index);
-  std::vector<hsize_t> rows;
-  std::vector<ensemble::Member> members;
-  for (const auto& r : results) {
-    rows.push_back(row_of(r.index));
-    members.push_back(plan[r.index]);
-  }
-  write_rows(std::move(rows), members, results);
+                               const std::vector<ensemble::MemberResult>& results) const {
+  std::vector<PackedRow> packed;
+  for (const auto& r : results) packed.push_back(pack(plan[r.index], r));
+  write_packed(std::move(packed));
 }
 
 void ResultFile::write_statistics(const ensemble::SweepStatistics& statistics) const {

@@ -40,7 +40,12 @@ class ResultFile : public MemberTableFile {
 
   /// Writes each result (in any order) into the row of its member (`plan` gives the members),
   /// flushes, then marks the rows done and flushes again.
-  void write_results(const ensemble::MemberPlan& plan, std::vector<ensemble::MemberResult> results) const;
+  void write_results(const ensemble::MemberPlan& plan,
+                     const std::vector<ensemble::MemberResult>& results) const;
+  /// Member `member`'s row of every /members column, for write_packed (on any thread).
+  PackedRow pack(const ensemble::Member& member, const ensemble::MemberResult& result) const;
+  /// write_results for rows already packed.
+  void write_packed(std::vector<PackedRow> rows) const;
   /// The run statistics an earlier part of the run recorded (keep_partial): its wall time, threads, lane
   /// width and occupancy; where none were recorded (that part was killed), `threads` and `lane_width`.
   ensemble::SweepStatistics recorded_statistics(int threads, std::size_t lane_width) const;
@@ -53,8 +58,6 @@ class ResultFile : public MemberTableFile {
  private:
   ResultFile(Hdf5Location file, const ensemble::Scene& scene, std::optional<ShardLabel> shard);
   void create(const Provenance& provenance) const;
-  void write_rows(std::vector<hsize_t> rows, const std::vector<ensemble::Member>& members,
-                  const std::vector<ensemble::MemberResult>& results) const;
   void write_statistics(const ensemble::SweepStatistics& statistics) const;
 
   ensemble::Scene scene_;

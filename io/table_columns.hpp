@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -110,35 +111,112 @@ void check_table_columns(const Hdf5Location& at, const std::vector<TableColumn<R
                                ": the file does not hold its scene's results");
 }
 
-/// Writes member i (values[i]... of each Row) into row rows[i] of every column (rows ascending).
+/// One member's values of every column, in column order, as the file holds them (8-byte numbers, text
+/// padded with NUL to its length): taken on the thread where the member finished, so that the thread
+/// writing a batch only gathers bytes.
+struct PackedRow {
+  std::size_t index = 0;  ///< the plan index of the member whose row it is
+  std::vector<char> bytes;
+};
+
+/// Bytes a column's value takes in a packed row (flags, which no member fills, none).
 template <class... Row>
-void write_table_rows(const Hdf5Location& at, const std::vector<TableColumn<Row...>>& columns,
-                      const std::vector<hsize_t>& rows, const std::vector<Row>&... values) {
-  const std::size_t n = rows.size();
+std::size_t packed_bytes(const TableColumn<Row...>& column) {
+  switch (column.type) {
+    case ColumnType::float64:
+    case ColumnType::int64: return 8 * column.values();
+    case ColumnType::text: return std::max<std::size_t>(column.text_length, 1);
+    case ColumnType::flag: break;
+  }
+  return 0;
+}
+
+/// The values of every column for one member (`row`...); throws std::runtime_error where a text is longer
+/// than its column's length.
+template <class... Row>
+std::vector<char> pack_table_row(const std::vector<TableColumn<Row...>>& columns, const Row&... row) {
+  std::size_t size = 0;
+  for (const auto& column : columns) size += packed_bytes(column);
+  std::vector<char> bytes(size, '\0');
+  std::vector<double> reals;
+  char* out = bytes.data();
   for (const auto& column : columns) {
     switch (column.type) {
       case ColumnType::float64: {
-        const std::size_t width = column.values();
-        std::vector<double> out(n * width, std::numeric_limits<double>::quiet_NaN());
-        for (std::size_t i = 0; i < n; ++i) column.real(values[i]..., out.data() + i * width);
-        at.write_rows(column.name, rows, out.data());
+        reals.assign(column.values(), std::numeric_limits<double>::quiet_NaN());
+        column.real(row..., reals.data());
+        std::memcpy(out, reals.data(), 8 * reals.size());
         break;
       }
       case ColumnType::int64: {
-        std::vector<std::int64_t> out(n);
-        for (std::size_t i = 0; i < n; ++i) out[i] = column.integer(values[i]...);
-        at.write_rows(column.name, rows, out.data());
+        const std::int64_t value = column.integer(row...);
+        std::memcpy(out, &value, 8);
         break;
       }
       case ColumnType::text: {
-        std::vector<std::string> out(n);
-        for (std::size_t i = 0; i < n; ++i) out[i] = column.text(values[i]...);
-        at.write_rows(column.name, rows, out);
+        const std::string text = column.text(row...);
+        if (text.size() > packed_bytes(column))
+          throw std::runtime_error("cannot write '" + text + "' (longer than " +
+                                   std::to_string(packed_bytes(column)) + " bytes) into column " +
+                                   column.name);
+        std::memcpy(out, text.data(), text.size());
         break;
       }
       case ColumnType::flag: break;
     }
+    out += packed_bytes(column);
   }
+  return bytes;
+}
+
+/// Writes packed[i] into row rows[i] of every column (rows ascending): each column's values gathered from
+/// the packed rows, one write per column.
+template <class... Row>
+void write_packed_rows(const Hdf5Location& at, const std::vector<TableColumn<Row...>>& columns,
+                       const std::vector<hsize_t>& rows, const std::vector<const PackedRow*>& packed) {
+  std::size_t offset = 0;
+  for (const auto& column : columns) {
+    const std::size_t bytes = packed_bytes(column), n = packed.size();
+    const auto gather = [&](void* into) {
+      for (std::size_t i = 0; i < n; ++i)
+        std::memcpy(static_cast<char*>(into) + i * bytes, packed[i]->bytes.data() + offset, bytes);
+    };
+    switch (column.type) {
+      case ColumnType::float64: {
+        std::vector<double> values(n * column.values());
+        gather(values.data());
+        at.write_rows(column.name, rows, values.data());
+        break;
+      }
+      case ColumnType::int64: {
+        std::vector<std::int64_t> values(n);
+        gather(values.data());
+        at.write_rows(column.name, rows, values.data());
+        break;
+      }
+      case ColumnType::text: {
+        std::vector<char> text(n * bytes);
+        gather(text.data());
+        at.write_rows(column.name, rows, text.data(), bytes);
+        break;
+      }
+      case ColumnType::flag: break;
+    }
+    offset += bytes;
+  }
+}
+
+/// Writes member i (values[i]... of each Row) into row rows[i] of every column (rows ascending).
+template <class... Row>
+void write_table_rows(const Hdf5Location& at, const std::vector<TableColumn<Row...>>& columns,
+                      const std::vector<hsize_t>& rows, const std::vector<Row>&... values) {
+  std::vector<PackedRow> packed(rows.size());
+  std::vector<const PackedRow*> order;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    packed[i].bytes = pack_table_row(columns, values[i]...);
+    order.push_back(&packed[i]);
+  }
+  write_packed_rows(at, columns, rows, order);
 }
 
 }  // namespace rotorsweep::io

@@ -1,4 +1,4 @@
-// `rotorsweep bench host` (apps/bench_host.cpp): its five steps each with a finite positive rate, the
+// `rotorsweep bench host` (apps/bench_host.cpp): its six steps each with a finite positive rate, the
 // result file it writes removed afterwards and when a signal stops it; bad options and a read-only scratch
 // directory as exit code 2. No timing is asserted.
 #include <catch2/catch.hpp>
@@ -24,7 +24,8 @@ TEST_CASE("bench host times the fill, the summaries and the file writes and leav
   CHECK_THAT(run.output, Catch::Contains("600 members per chunk, 2 host threads"));
   for (const std::string rows : {"4", "6"})
     for (const std::string step : {"fill (one thread)", "summaries", "summaries and file writes",
-                                   "file writes alone (one thread)", "file writes alone, rows scattered (one thread)"}) {
+                                   "rows packed for the file (one thread)", "file writes alone (one thread)",
+                                   "file writes alone, rows scattered (one thread)"}) {
       INFO("N = " << rows << ": " << step);
       const std::string cell = "| " + rows + " | " + step + " |";
       const auto at = run.output.find(cell);
