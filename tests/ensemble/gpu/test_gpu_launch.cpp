@@ -317,6 +317,16 @@ TEST_CASE(
       ensemble::choose_register_shape(std::vector<RegisterShape>{{8, 3, false, 6, 3}}, scene, 20, launch));
   CHECK(RegisterShape{8, 3, false, 6, 3}.max_threads_per_block() == 384);
   CHECK(RegisterShape{8, 3, false, 6, 0}.max_threads_per_block() == 1024);
+  // the gpu preset's four 8 × 3 six-stage kernels: a scene with symmetry probes takes the bounded
+  // disordered one (8x3ds6b3), the unbounded 8x3ds6 beyond its blocks
+  const std::vector<RegisterShape> preset{
+      {8, 3, false, 6, 3}, {8, 3, false, 6, 0}, {8, 3, true, 6, 0}, {8, 3, true, 6, 3}};
+  const auto probed = scene_of("rows = 20");
+  launch.threads_per_block = 128;
+  CHECK(ensemble::choose_register_shape(preset, probed, 20, launch) == RegisterShape{8, 3, true, 6, 3});
+  CHECK(ensemble::choose_register_shape(preset, scene, 20, launch) == RegisterShape{8, 3, false, 6, 3});
+  launch.threads_per_block = 512;
+  CHECK(ensemble::choose_register_shape(preset, probed, 20, launch) == RegisterShape{8, 3, true, 6, 0});
 }
 
 TEST_CASE("the plan: a variant's mapping, a team's scratch and the chunk's size, for rows and the slider",
