@@ -169,7 +169,11 @@ Hdf5Location Hdf5Location::open_file(const std::string& path) {
 
 Hdf5Location Hdf5Location::open_file_for_writing(const std::string& path) {
   prepare_hdf5();
-  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  // without HDF5's file lock: a reader holding the file open (`info`, h5py) must not make a run fail as it
+  // reopens the file it has just created; OutputTarget's locks keep writers apart
+  const Hdf5Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_file_locking(access.id(), false, true);
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDWR, access.id());
   if (id < 0) unopenable(path, R_OK | W_OK, "cannot open '" + path + "' for writing" + innermost_error());
   return Hdf5Location(Hdf5Handle(id, H5Fclose), path);
 }

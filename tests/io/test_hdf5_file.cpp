@@ -1,5 +1,8 @@
 // The HDF5 wrapper (io/hdf5_file): round trips of every dataset and attribute kind, and no
 // timestamps in the file, so that equal content gives equal bytes.
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -151,4 +154,39 @@ TEST_CASE("scattered rows (a GPU's first and second pass) land where they belong
     wrong += !right;
   }
   CHECK(wrong == 0);
+}
+
+TEST_CASE("a reader holding a file open does not keep its writer from opening it", "[io][hdf5]") {
+  // a run reopens the file it created once it is in place; `info` or h5py reading it at that moment, in
+  // another process, must not make the run fail (OutputTarget's locks, not HDF5's, keep writers apart)
+  const auto dir = rotorsweep::testing::scratch_directory("hdf5-reader-writer");
+  const std::string path = (dir / "shared.h5").string();
+  Hdf5Location::create_file(path).set_flag("complete", false);
+  int held[2], release[2];
+  REQUIRE(::pipe(held) == 0);
+  REQUIRE(::pipe(release) == 0);
+  char byte = 1;
+  const pid_t reader = ::fork();
+  REQUIRE(reader >= 0);
+  if (reader == 0) {  // the reader: holds the file open until told to let go
+    {
+      const auto file = Hdf5Location::open_file(path);
+      if (::write(held[1], &byte, 1) != 1) ::_exit(1);
+      if (::read(release[0], &byte, 1) != 1) ::_exit(1);
+    }
+    ::_exit(0);
+  }
+  REQUIRE(::read(held[0], &byte, 1) == 1);  // an event: the reader has the file open
+  std::string failure;
+  try {
+    Hdf5Location::open_file_for_writing(path).set_flag("complete", true);
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
+  REQUIRE(::write(release[1], &byte, 1) == 1);
+  int status = 0;
+  ::waitpid(reader, &status, 0);
+  CHECK(failure.empty());
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+  CHECK(Hdf5Location::open_file(path).attribute_flag("complete"));
 }
