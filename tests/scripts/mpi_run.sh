@@ -41,9 +41,10 @@ killed_and_resumed() {
   for _ in $(seq 2000); do
     done=$("$exe" info "$out.partial.rank-0" 2> /dev/null | sed -n 's/^partial *\([0-9]*\) of .*/\1/p' || true)
     [ "${done:-0}" -gt 0 ] && break
+    kill -0 "$launcher" 2> /dev/null || break  # mpirun ended: the ranks stopped or finished first
     sleep 0.05
   done
-  [ "${done:-0}" -gt 0 ] || { echo "$command: rank 0's file never held a member" >&2; exit 1; }
+  [ "${done:-0}" -gt 0 ] || { cat "$out.log"; echo "$command: rank 0's file never held a member" >&2; exit 1; }
   pkill -KILL -n -f "^[^ ]*rotorsweep[^ ]* $command $scene -q --threads 1 $flush-o $out\$" || true
   wait "$launcher" || code=$?
   [ "$code" -ne 0 ] || { echo "$command: mpirun exit 0 after a rank was killed" >&2; exit 1; }
