@@ -1,5 +1,5 @@
 // Finished members on their way into a result file (docs/scale.md "Interrupting, resuming and
-// splitting a sweep"): buffered from the worker threads and written in batches at a bounded interval.
+// splitting a sweep"): packed and buffered by the worker threads, written in batches at a bounded interval.
 #pragma once
 
 #include <chrono>

@@ -1,5 +1,5 @@
 // The columns of a pre-sized table (docs/output.md "Output file"): name, type, shape, description and how a
-// row is filled from what one member produced, so that creating a file and writing its rows share one list.
+// row is packed from what one member produced, so that creating a file and writing its rows share one list.
 #pragma once
 
 #include <algorithm>
