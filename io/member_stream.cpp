@@ -39,8 +39,8 @@ void ResultStream<Result>::write_if_due(std::unique_lock<std::mutex>& buffer) {
   if (!writer.owns_lock()) return;  // another thread is writing; the next add takes the rest
   std::vector<Result> batch;
   batch.swap(buffer_);
-  buffer_.reserve(
-      batch.size());  // the next batch, as large as this one, moved in once rather than on every growth
+  // the next batch, as large as this one, moved in once rather than again at every growth
+  buffer_.reserve(batch.size());
   last_write_ = std::chrono::steady_clock::now();
   buffer.unlock();
   write(std::move(batch));

@@ -60,9 +60,7 @@ PackedRow ResultFile::pack(const ensemble::Member& member, const ensemble::Membe
 
 void ResultFile::write_packed(std::vector<PackedRow> packed) const {
   if (packed.empty()) return;
-  const auto by_index = [](const auto& a, const auto& b) { return a.index < b.index; };
-  if (!std::is_sorted(packed.begin(), packed.end(), by_index))
-    std::sort(packed.begin(), packed.end(), by_index);
+  std::sort(packed.begin(), packed.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
   std::vector<hsize_t> rows;
   std::vector<const PackedRow*> order;
   for (const auto& p : packed) {

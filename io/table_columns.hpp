@@ -123,8 +123,8 @@ struct PackedRow {
 template <class... Row>
 std::size_t packed_bytes(const TableColumn<Row...>& column) {
   switch (column.type) {
-    case ColumnType::float64:
-    case ColumnType::int64: return 8 * column.values();
+    case ColumnType::float64: return 8 * column.values();
+    case ColumnType::int64: return 8;  // integer() gives one value per member
     case ColumnType::text: return std::max<std::size_t>(column.text_length, 1);
     case ColumnType::flag: break;
   }
